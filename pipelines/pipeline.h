@@ -1,0 +1,58 @@
+// The interface every renderer implements, and the name -> factory registry.
+// A pipeline owns its GPU representation of a Scene: prepare() converts and uploads,
+// update() poses it for an animation state on the CPU, render() draws into the bound
+// framebuffer. Adding a variant = a new folder under pipelines/ and one line in registry.cpp.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pipelines/result.h"
+#include "pipelines/scene/animation.h"
+#include "pipelines/scene/camera_rule.h"
+#include "pipelines/scene/scene.h"
+
+namespace mb {
+
+// Measured counters. Byte counts are summed from the sizes actually passed to GL upload
+// calls (glBufferData / glBufferSubData / glTexImage / glUniform*), never from constants.
+struct PipelineStats {
+  uint64_t vertexBytes = 0;        // shading attributes (position, frame, uv)
+  uint64_t skinVertexBytes = 0;    // joints + weights attributes
+  uint64_t indexBytes = 0;
+  uint64_t textureBytes = 0;
+  uint64_t uniformBytesPerFrame = 0;  // per-frame + per-draw uniforms of the last render()
+  uint64_t skinBytesPerFrame = 0;     // joint palette of the last update()/render()
+  uint64_t vertices = 0;              // vertices uploaded
+  // Floats per vertex / transform / joint, derived from the upload sizes and strides.
+  double floatsPerVertex = 0, floatsPerTransform = 0, floatsPerJoint = 0;
+  int draws = 0;                      // draw calls of the last render()
+  double conversionMs = 0;            // load-time conversion inside prepare()
+  double updateMs = 0;                // last update() (hierarchy, animation, palette)
+  // Fallbacks taken (counted per node / vertex as named).
+  int nonUniformScaleNodes = 0;       // handled by a per-leaf fallback
+  int negativeScaleNodes = 0;
+  int shearMatrixNodes = 0;
+  int zeroScalarFrames = 0;           // tangent rotors whose scalar part was exactly 0
+};
+
+class Pipeline {
+public:
+  virtual ~Pipeline() = default;
+  virtual std::string name() const = 0;
+  // Converts and uploads `scene` (which must outlive the pipeline). Needs a current GL context.
+  virtual Status prepare(const Scene& scene) = 0;
+  // Poses the scene on the CPU for `state` (sampling, hierarchy, skin palette).
+  virtual void update(const AnimState& state) = 0;
+  // Draws the posed scene into the bound framebuffer.
+  virtual void render(const View& view) = 0;
+  virtual PipelineStats stats() const = 0;
+};
+
+// nullptr when `name` is not registered.
+std::unique_ptr<Pipeline> createPipeline(const std::string& name);
+// Registered names, the matrix baseline first.
+std::vector<std::string> pipelineNames();
+
+}  // namespace mb

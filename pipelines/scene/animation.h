@@ -1,0 +1,29 @@
+// Animation sampling shared by every pipeline: local TRS of every node for an animation state.
+#pragma once
+#include <vector>
+
+#include "pipelines/scene/scene.h"
+
+namespace mb {
+
+// Which animation(s) to pose. anim < 0: rest pose. anim2 < 0: no blend.
+struct AnimState {
+  int anim = -1;
+  float time = 0.0f;
+  int anim2 = -1;
+  float time2 = 0.0f;
+  float blend = 0.0f;  // 0: only anim, 1: only anim2
+};
+
+// Local TRS of every node (scene.nodes.size() entries) for animation `anim` at `time`
+// (clamped to the animation's range). Unanimated nodes keep their rest TRS; anim < 0 or out
+// of range gives the rest pose.
+std::vector<TRS> sampleAnimation(const Scene& scene, int anim, float time);
+
+// Per-node blend: translation and scale lerp, rotation shortest-arc slerp; w = weight of b.
+std::vector<TRS> blendPoses(const std::vector<TRS>& a, const std::vector<TRS>& b, float w);
+
+// sampleAnimation + blendPoses as the state asks.
+std::vector<TRS> samplePose(const Scene& scene, const AnimState& state);
+
+}  // namespace mb

@@ -1,0 +1,150 @@
+// The pipeline-neutral Scene: what the glTF loader produces and every pipeline consumes.
+// Attributes are decoded into tight float streams; transforms are kept as authored (TRS or
+// matrix). Nothing here is pipeline-specific: each pipeline's prepare() converts it.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace mb {
+
+struct TRS {
+  glm::vec3 translation{0.0f};
+  glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // glm order (w, x, y, z)
+  glm::vec3 scale{1.0f};
+};
+
+struct Node {
+  std::string name;
+  TRS local;                      // rest pose; decomposed from `matrix` when authored as one
+  bool hasMatrix = false;         // authored as a 4x4 matrix
+  glm::mat4 matrix{1.0f};         // as authored (column-major, glTF convention)
+  bool matrixHasShear = false;    // matrix not representable exactly as TRS
+  int parent = -1;
+  std::vector<int> children;
+  int mesh = -1, skin = -1, camera = -1;
+};
+
+struct Primitive {
+  // Streams all have positions.size() entries (or are empty when absent).
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;     // always filled after loading (flat normals generated)
+  std::vector<glm::vec4> tangents;    // xyz + handedness w in {-1,+1}; filled when the
+                                      // material is normal-mapped (generated if absent)
+  std::vector<glm::vec2> uv0, uv1;
+  std::vector<glm::vec4> colors;      // COLOR_0 as RGBA
+  std::vector<glm::u16vec4> joints;   // JOINTS_0 (at most 4 influences kept)
+  std::vector<glm::vec4> weights;     // WEIGHTS_0, L1-normalised
+  std::vector<uint32_t> indices;      // triangle list; generated 0..n-1 when not indexed
+  int material = -1;                  // -1: default material
+  bool hadTangents = false;           // TANGENT was authored
+  bool generatedNormals = false;
+  bool generatedTangents = false;
+};
+
+struct Mesh {
+  std::string name;
+  std::vector<Primitive> primitives;
+};
+
+struct TextureRef {
+  int texture = -1;    // index into Scene::textures, -1 = none
+  int texCoord = 0;    // which TEXCOORD_n
+  float scale = 1.0f;  // normalTexture.scale or occlusionTexture.strength
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+struct Material {
+  std::string name;
+  glm::vec4 baseColorFactor{1.0f};
+  float metallicFactor = 1.0f, roughnessFactor = 1.0f;
+  glm::vec3 emissiveFactor{0.0f};
+  TextureRef baseColor, metallicRoughness, normal, occlusion, emissive;
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  float alphaCutoff = 0.5f;
+  bool doubleSided = false;
+};
+
+struct Sampler {  // GL enums; glTF defaults
+  int magFilter = 0x2601;  // GL_LINEAR
+  int minFilter = 0x2703;  // GL_LINEAR_MIPMAP_LINEAR
+  int wrapS = 0x2901, wrapT = 0x2901;  // GL_REPEAT
+};
+
+struct Image {
+  std::string name;
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgba;  // width*height*4, decoded
+};
+
+struct Texture {
+  int image = -1, sampler = -1;  // sampler -1: default Sampler
+};
+
+struct Skin {
+  std::string name;
+  std::vector<int> joints;              // node indices
+  std::vector<glm::mat4> inverseBind;   // one per joint (identity when absent)
+  int skeleton = -1;
+};
+
+enum class AnimPath { Translation, Rotation, Scale };
+enum class Interpolation { Linear, Step, CubicSpline };
+
+struct Channel {
+  int node = -1;
+  AnimPath path = AnimPath::Translation;
+  Interpolation interpolation = Interpolation::Linear;
+  std::vector<float> times;
+  // Packed keyframe values: 3 floats per key (T, S) or 4 (R, glTF order x,y,z,w).
+  // CUBICSPLINE: per key [in-tangent, value, out-tangent], as glTF stores them.
+  std::vector<float> values;
+};
+
+struct Animation {
+  std::string name;
+  std::vector<Channel> channels;
+  float duration = 0.0f;  // max input time
+};
+
+struct Camera {
+  std::string name;
+  bool perspective = true;
+  float yfov = 0.8f, aspect = 0.0f, znear = 0.1f, zfar = 100.0f;  // aspect 0: viewport's
+  float xmag = 1.0f, ymag = 1.0f;                                 // orthographic
+};
+
+// What the loader had to do to the data; each counter is reported by `inspect`.
+struct LoadStats {
+  int flatNormalsGenerated = 0;       // primitives without NORMAL
+  int tangentsGenerated = 0;          // normal-mapped primitives without TANGENT
+  int badNormalsReplaced = 0;         // zero-length / NaN normals (vertices)
+  int badTangentsReplaced = 0;        // zero-length / NaN / parallel tangents (vertices)
+  int weightsRenormalised = 0;        // vertices whose weights did not sum to 1
+  int weightsZeroSum = 0;             // vertices with all-zero weights (bound to joint 0)
+  int influencesTruncated = 0;        // vertices with > 4 influences (JOINTS_1...)
+  int nonFinitePositions = 0;         // NaN / Inf positions (vertices, set to 0)
+  int skippedPrimitives = 0;          // non-triangle modes etc. (listed in unsupported)
+};
+
+struct Scene {
+  std::string source;  // file path or built-in name
+  std::vector<Node> nodes;
+  std::vector<int> roots;  // root nodes of the default (or first) scene
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<Texture> textures;
+  std::vector<Sampler> samplers;
+  std::vector<Image> images;
+  std::vector<Skin> skins;
+  std::vector<Animation> animations;
+  std::vector<Camera> cameras;
+  std::vector<std::string> unsupported;  // features present but not rendered, one line each
+  LoadStats stats;
+};
+
+}  // namespace mb

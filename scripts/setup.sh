@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs every Debian package motorbench needs. Idempotent: only missing packages are
+# installed. Run as root (or with sudo available) on Debian 12.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config git
+  clang libclang-rt-14-dev          # sanitizers and libFuzzer
+  libglm-dev                        # matrix pipeline, test reference
+  libtinygltf-dev nlohmann-json3-dev libstb-dev
+  libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
+  libopenimageio-dev openimageio-tools
+  libbenchmark-dev libgtest-dev libgmock-dev
+  glslang-tools spirv-tools
+  python3 python3-matplotlib
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+[ "$(id -u)" -ne 0 ] && SUDO="sudo"
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
