@@ -1,0 +1,102 @@
+#include "pipelines/gl/program.h"
+
+namespace mb::gl {
+namespace {
+
+std::string shaderLog(GLuint shader) {
+  GLint len = 0;
+  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &len);
+  std::string log(size_t(len > 0 ? len : 1), '\0');
+  glGetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
+  return log.c_str();
+}
+
+std::string programLog(GLuint program) {
+  GLint len = 0;
+  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &len);
+  std::string log(size_t(len > 0 ? len : 1), '\0');
+  glGetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
+  return log.c_str();
+}
+
+// Compiles one stage; on failure `error` holds the log with positions mapped to files.
+GLuint compile(GLenum stage, const std::string& path, const Defines& defines, std::string& error) {
+  auto src = expandShaderFile(path, defines);
+  if (!src) {
+    error = src.error();
+    return 0;
+  }
+  GLuint shader = glCreateShader(stage);
+  const char* text = src->text.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    error = src->files[0] + ": compile failed:\n" + mapLog(shaderLog(shader), src->files);
+    glDeleteShader(shader);
+    return 0;
+  }
+  return shader;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<Program>> Program::fromFiles(const std::string& vsPath,
+                                                    const std::string& fsPath,
+                                                    const Defines& defines) {
+  using R = Result<std::unique_ptr<Program>>;
+  std::string error;
+  GLuint vs = compile(GL_VERTEX_SHADER, vsPath, defines, error);
+  if (!vs) return R::fail(error);
+  GLuint fs = compile(GL_FRAGMENT_SHADER, fsPath, defines, error);
+  if (!fs) {
+    glDeleteShader(vs);
+    return R::fail(error);
+  }
+  std::unique_ptr<Program> p(new Program());
+  p->id_ = glCreateProgram();
+  glAttachShader(p->id_, vs);
+  glAttachShader(p->id_, fs);
+  glLinkProgram(p->id_);
+  glDetachShader(p->id_, vs);
+  glDetachShader(p->id_, fs);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  GLint ok = 0;
+  glGetProgramiv(p->id_, GL_LINK_STATUS, &ok);
+  if (!ok) return R::fail(vsPath + " + " + fsPath + ": link failed:\n" + programLog(p->id_));
+  return p;
+}
+
+Program::~Program() {
+  if (id_) glDeleteProgram(id_);
+}
+
+GLint Program::uniform(const std::string& name) const {
+  auto it = uniforms_.find(name);
+  if (it != uniforms_.end()) return it->second;
+  GLint loc = glGetUniformLocation(id_, name.c_str());
+  uniforms_.emplace(name, loc);
+  return loc;
+}
+
+GLint Program::attribute(const std::string& name) const {
+  return glGetAttribLocation(id_, name.c_str());
+}
+
+bool Program::bindStorageBlock(const std::string& block, GLuint binding) const {
+  GLuint index = glGetProgramResourceIndex(id_, GL_SHADER_STORAGE_BLOCK, block.c_str());
+  if (index == GL_INVALID_INDEX) return false;
+  glShaderStorageBlockBinding(id_, index, binding);
+  return true;
+}
+
+bool Program::bindUniformBlock(const std::string& block, GLuint binding) const {
+  GLuint index = glGetUniformBlockIndex(id_, block.c_str());
+  if (index == GL_INVALID_INDEX) return false;
+  glUniformBlockBinding(id_, index, binding);
+  return true;
+}
+
+}  // namespace mb::gl

@@ -1,0 +1,43 @@
+// A linked GL program from a vertex and a fragment shader file, with #include/#define
+// expansion (shader_source.h). Compile and link errors come back as a Result whose message
+// names the file and line of each diagnostic.
+#pragma once
+#include <memory>
+#include <string>
+#include <unordered_map>
+
+#include "pipelines/gl/gl_api.h"
+#include "pipelines/gl/shader_source.h"
+#include "pipelines/result.h"
+
+namespace mb::gl {
+
+class Program {
+public:
+  // `vsPath` and `fsPath` are absolute or relative to shaderDir(); `defines` go to both stages.
+  // Needs a current context.
+  static Result<std::unique_ptr<Program>> fromFiles(const std::string& vsPath,
+                                                    const std::string& fsPath,
+                                                    const Defines& defines = {});
+  ~Program();
+  Program(const Program&) = delete;
+  Program& operator=(const Program&) = delete;
+
+  GLuint id() const { return id_; }
+  void use() const { glUseProgram(id_); }
+  // Location of a uniform (cached); -1 when the program does not use it.
+  GLint uniform(const std::string& name) const;
+  // Location of a vertex input; -1 when the program does not use it.
+  GLint attribute(const std::string& name) const;
+  // Binds the shader storage block `block` to binding point `binding`; false when inactive.
+  bool bindStorageBlock(const std::string& block, GLuint binding) const;
+  // Binds the uniform block `block` to binding point `binding`; false when inactive.
+  bool bindUniformBlock(const std::string& block, GLuint binding) const;
+
+private:
+  Program() = default;
+  GLuint id_ = 0;
+  mutable std::unordered_map<std::string, GLint> uniforms_;
+};
+
+}  // namespace mb::gl

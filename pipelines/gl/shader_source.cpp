@@ -1,0 +1,159 @@
+#include "pipelines/gl/shader_source.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace mb::gl {
+namespace fs = std::filesystem;
+
+namespace {
+
+bool readText(const fs::path& p, std::string& out) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  out = ss.str();
+  return true;
+}
+
+std::vector<std::string> splitLines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+// The quoted name of an `#include "name"` line, or "" when the line is no include.
+std::string includeTarget(const std::string& line) {
+  static const std::regex re(R"(^\s*#\s*include\s+"([^"]+)\"\s*(//.*)?$)");
+  std::smatch m;
+  return std::regex_match(line, m, re) ? m[1].str() : "";
+}
+
+bool isVersionLine(const std::string& line) {
+  static const std::regex re(R"(^\s*#\s*version\b.*)");
+  return std::regex_match(line, re);
+}
+
+struct Expander {
+  ExpandedSource out;
+  std::vector<std::string> stack;  // files being expanded, for cycle detection
+  std::string error;
+
+  int idOf(const std::string& file) {
+    for (size_t i = 0; i < out.files.size(); ++i)
+      if (out.files[i] == file) return int(i);
+    out.files.push_back(file);
+    return int(out.files.size()) - 1;
+  }
+
+  // Appends the body of `file` (already read as `lines`) starting at its line `first` (0-based).
+  bool expand(const std::string& file, const std::vector<std::string>& lines, size_t first) {
+    stack.push_back(file);
+    const int id = idOf(file);
+    for (size_t i = first; i < lines.size(); ++i) {
+      std::string target = includeTarget(lines[i]);
+      if (target.empty()) {
+        // #version belongs to the top file only; an include's copy becomes a blank line.
+        out.text += (stack.size() > 1 && isVersionLine(lines[i])) ? "" : lines[i];
+        out.text += '\n';
+        continue;
+      }
+      std::string where = file + ":" + std::to_string(i + 1);
+      fs::path local = fs::path(file).parent_path() / target;
+      fs::path found = fs::exists(local) ? local : fs::path(shaderDir()) / target;
+      std::string name = fs::weakly_canonical(found).string();
+      for (const std::string& open : stack)
+        if (open == name) {
+          error = where + ": #include cycle: \"" + target + "\" is already being included";
+          return false;
+        }
+      bool seen = false;
+      for (const std::string& f : out.files) seen = seen || f == name;
+      if (seen) {  // included before: once-only, keep line numbering with a blank line
+        out.text += "\n";
+        continue;
+      }
+      std::string body;
+      if (!readText(found, body)) {
+        error = where + ": cannot open #include \"" + target + "\" (looked in " +
+                local.parent_path().string() + " and " + shaderDir() + ")";
+        return false;
+      }
+      out.text += "#line 1 " + std::to_string(idOf(name)) + "\n";
+      if (!expand(name, splitLines(body), 0)) return false;
+      out.text += "#line " + std::to_string(i + 2) + " " + std::to_string(id) + "\n";
+    }
+    stack.pop_back();
+    return true;
+  }
+};
+
+}  // namespace
+
+std::string shaderDir() {
+  const char* env = std::getenv("MB_SHADER_DIR");
+  if (env && *env) return env;
+#ifdef MB_SHADER_DIR
+  return MB_SHADER_DIR;
+#else
+  return "shaders";
+#endif
+}
+
+Result<ExpandedSource> expandShaderFile(const std::string& path, const Defines& defines) {
+  using R = Result<ExpandedSource>;
+  fs::path p = fs::path(path).is_absolute() ? fs::path(path) : fs::path(shaderDir()) / path;
+  std::string text;
+  if (!readText(p, text)) return R::fail(p.string() + ": cannot open shader source");
+  std::string file = fs::weakly_canonical(p).string();
+  std::vector<std::string> lines = splitLines(text);
+  // Find #version: only blank lines and // comments may precede it.
+  size_t v = 0;
+  while (v < lines.size() && !isVersionLine(lines[v])) {
+    std::string t = lines[v];
+    t.erase(0, t.find_first_not_of(" \t"));
+    if (!t.empty() && t.rfind("//", 0) != 0)
+      return R::fail(file + ":" + std::to_string(v + 1) + ": expected #version before any code");
+    ++v;
+  }
+  if (v == lines.size()) return R::fail(file + ": no #version line");
+
+  Expander e;
+  e.out.files.push_back(file);
+  for (size_t i = 0; i <= v; ++i) e.out.text += lines[i] + "\n";
+  for (const auto& [name, value] : defines)
+    e.out.text += "#define " + name + (value.empty() ? "" : " " + value) + "\n";
+  e.out.text += "#line " + std::to_string(v + 2) + " 0\n";
+  if (!e.expand(file, lines, v + 1)) return R::fail(e.error);
+  return e.out;
+}
+
+std::string mapLog(const std::string& log, const std::vector<std::string>& files) {
+  // Mesa: "0:12(5): error: ..."; NVIDIA: "0(12) : error ...".
+  static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\):\s*(.*)$)");
+  static const std::regex nvidia(R"(^(\d+)\((\d+)\)\s*:\s*(.*)$)");
+  std::string out;
+  for (const std::string& line : splitLines(log)) {
+    std::smatch m;
+    std::string mapped = line;
+    if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia)) {
+      size_t id = std::stoul(m[1].str());
+      bool hasColumn = m.size() == 5;
+      if (id < files.size())
+        mapped = files[id] + ":" + m[2].str() + (hasColumn ? ":" + m[3].str() : "") + ": " +
+                 m[m.size() - 1].str();
+    }
+    out += mapped + "\n";
+  }
+  return out;
+}
+
+}  // namespace mb::gl
