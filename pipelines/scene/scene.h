@@ -114,7 +114,8 @@ struct Animation {
 struct Camera {
   std::string name;
   bool perspective = true;
-  float yfov = 0.8f, aspect = 0.0f, znear = 0.1f, zfar = 100.0f;  // aspect 0: viewport's
+  float yfov = 0.8f, aspect = 0.0f, znear = 0.1f, zfar = 100.0f;  // aspect 0: viewport's;
+                                                                  // zfar 0 (loaded): infinite
   float xmag = 1.0f, ymag = 1.0f;                                 // orthographic
 };
 
@@ -129,6 +130,12 @@ struct LoadStats {
   int influencesTruncated = 0;        // vertices with > 4 influences (JOINTS_1...)
   int nonFinitePositions = 0;         // NaN / Inf positions (vertices, set to 0)
   int skippedPrimitives = 0;          // non-triangle modes etc. (listed in unsupported)
+  int normalsRenormalised = 0;        // normals whose length differed from 1 by > 1e-3
+  int jointsOutOfRange = 0;           // influences naming a joint the skin lacks (weight 0)
+  int stripsFansConverted = 0;        // TRIANGLE_STRIP / TRIANGLE_FAN primitives -> lists
+  int degenerateUvTriangles = 0;      // tangent generation: triangles with zero uv area
+  int tangentSplitVertices = 0;       // vertices duplicated because corners disagree in w
+  int imagesNotDecoded = 0;           // images replaced by 1x1 white (listed in unsupported)
 };
 
 struct Scene {

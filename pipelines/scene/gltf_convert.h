@@ -1,0 +1,32 @@
+// Internal steps of the glTF loader: tinygltf::Model -> Scene parts. Each returns an error
+// message without the file name (the loader prefixes it) and records what it could not
+// represent in scene.unsupported.
+#pragma once
+#include <cstdint>
+
+#include "pipelines/result.h"
+#include "pipelines/scene/scene.h"
+
+namespace tinygltf {
+class Model;
+}
+
+namespace mb {
+
+// Mesh `index`: decoded, validated, repaired primitives. `jointCount` bounds JOINTS_n values
+// (smallest joint count of the skins used with this mesh; 65536 when none). Uses
+// scene.materials (already converted) to decide where tangents are needed.
+Result<Mesh> convertMesh(const tinygltf::Model& model, int index, uint32_t jointCount,
+                         Scene& scene);
+
+// All animations (T/R/S channels; weights channels are recorded as unsupported).
+Status convertAnimations(const tinygltf::Model& model, Scene& scene);
+
+// Materials, textures, samplers and images (decoded to RGBA8).
+Status convertMaterials(const tinygltf::Model& model, Scene& scene);
+
+// Nodes (hierarchy validated: indices in range, one parent each, no cycles), skins, cameras,
+// default scene roots.
+Status convertNodes(const tinygltf::Model& model, Scene& scene);
+
+}  // namespace mb

@@ -1,0 +1,144 @@
+// loadGltfFile / loadGltfMemory / loadScene: preflight, tinygltf parse, conversion to Scene.
+#include "pipelines/scene/loader.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/scene/gltf_convert.h"
+#include "pipelines/scene/preflight.h"
+
+namespace mb {
+namespace {
+
+constexpr uint64_t kMaxFileBytes = uint64_t(2) << 30;  // tinygltf takes an unsigned int length
+
+struct LoadContext {
+  bool allowFiles = false;
+  std::vector<std::string> imageNotes;
+};
+
+// Filesystem callbacks: the defaults, except that in-memory loads without a base directory
+// must not resolve relative URIs against the working directory.
+bool fsExists(const std::string& path, void* user) {
+  return static_cast<LoadContext*>(user)->allowFiles && tinygltf::FileExists(path, nullptr);
+}
+std::string fsExpand(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
+bool fsRead(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  if (!static_cast<LoadContext*>(user)->allowFiles) {
+    if (err) *err += "external file '" + path + "' not allowed (no base directory)\n";
+    return false;
+  }
+  return tinygltf::ReadWholeFile(out, err, path, nullptr);
+}
+bool fsWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "writing files is not allowed while loading\n";
+  return false;
+}
+
+// Undecodable images do not fail the file: the image stays empty and is replaced later.
+bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
+               int reqWidth, int reqHeight, const unsigned char* bytes, int size, void* user) {
+  std::string myErr;
+  if (tinygltf::LoadImageData(image, index, &myErr, warn, reqWidth, reqHeight, bytes, size, nullptr))
+    return true;
+  (void)err;
+  std::string reason = myErr.substr(0, myErr.find('\n'));
+  static_cast<LoadContext*>(user)->imageNotes.push_back("image " + std::to_string(index) + ": " + reason);
+  image->image.clear();
+  return true;
+}
+
+std::string firstLines(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  for (auto& c : s)
+    if (c == '\n') c = ';';
+  return s.size() > 400 ? s.substr(0, 400) + "..." : s;
+}
+
+void noteExtensions(const tinygltf::Model& m, Scene& scene) {
+  static const std::set<std::string> supported = {"KHR_mesh_quantization"};
+  static const std::set<std::string> geometry = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
+                                                 "EXT_mesh_gpu_instancing", "KHR_meshopt_compression"};
+  std::set<std::string> seen;
+  for (const auto* list : {&m.extensionsRequired, &m.extensionsUsed})
+    for (const auto& ext : *list) {
+      if (supported.count(ext) || !seen.insert(ext).second) continue;
+      scene.unsupported.push_back("extension " + ext + (geometry.count(ext) ? " changes geometry: not supported"
+                                                                            : " not supported (ignored)"));
+    }
+}
+
+Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadContext& ctx) {
+  Scene scene;
+  scene.source = name;
+  noteExtensions(m, scene);
+  Status s = convertNodes(m, scene);
+  if (s) s = convertMaterials(m, scene);
+  if (!s) return Result<Scene>::fail(name + ": " + s.error());
+  for (auto& note : ctx.imageNotes) scene.unsupported.push_back(note);
+  // JOINTS_n bounds: the smallest skin a mesh is drawn with.
+  std::vector<uint32_t> jointLimit(m.meshes.size(), 65536u);
+  for (const auto& n : scene.nodes)
+    if (n.mesh >= 0 && n.skin >= 0)
+      jointLimit[size_t(n.mesh)] = std::min(jointLimit[size_t(n.mesh)], uint32_t(scene.skins[size_t(n.skin)].joints.size()));
+  for (size_t i = 0; i < m.meshes.size(); ++i) {
+    auto mesh = convertMesh(m, int(i), jointLimit[i], scene);
+    if (!mesh) return Result<Scene>::fail(name + ": " + mesh.error());
+    scene.meshes.push_back(mesh.take());
+  }
+  if (s = convertAnimations(m, scene); !s) return Result<Scene>::fail(name + ": " + s.error());
+  return scene;
+}
+
+}  // namespace
+
+Result<Scene> loadGltfMemory(const std::vector<uint8_t>& bytes, const std::string& name,
+                             const std::string& baseDir) {
+  try {
+    bool glb = false;
+    if (bytes.size() >= kMaxFileBytes) return Result<Scene>::fail(name + ": file too large");
+    if (Status s = preflightGltf(bytes, name, &glb); !s) return Result<Scene>::fail(name + ": " + s.error());
+    LoadContext ctx;
+    ctx.allowFiles = !baseDir.empty();
+    tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks({&fsExists, &fsExpand, &fsRead, &fsWrite, &ctx});
+    loader.SetImageLoader(&loadImage, &ctx);
+    tinygltf::Model model;
+    std::string err, warn;
+    bool ok = glb ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir)
+                  : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                               unsigned(bytes.size()), baseDir);
+    if (!ok) return Result<Scene>::fail(name + ": " + (err.empty() ? "tinygltf failed to parse" : firstLines(err)));
+    return convert(model, name, ctx);
+  } catch (const std::exception& e) {
+    return Result<Scene>::fail(name + ": " + e.what());
+  }
+}
+
+Result<Scene> loadGltfFile(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return Result<Scene>::fail(path + ": no such file");
+  uint64_t size = fs::file_size(path, ec);
+  if (ec || size >= kMaxFileBytes) return Result<Scene>::fail(path + ": cannot read (size)");
+  std::ifstream in(path, std::ios::binary);
+  std::vector<uint8_t> bytes(size_t(size), 0);
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
+    return Result<Scene>::fail(path + ": read error");
+  std::string dir = fs::path(path).parent_path().string();
+  return loadGltfMemory(bytes, path, dir.empty() ? "." : dir);
+}
+
+Result<Scene> loadScene(const std::string& fileOrBuiltinName) {
+  if (!isBuiltinScene(fileOrBuiltinName)) return loadGltfFile(fileOrBuiltinName);
+  auto glb = builtinSceneGlb(fileOrBuiltinName);
+  if (!glb) return Result<Scene>::fail(glb.error());
+  return loadGltfMemory(*glb, fileOrBuiltinName);
+}
+
+}  // namespace mb

@@ -1,0 +1,104 @@
+// Materials, textures, samplers and images (RGBA8) from a tinygltf::Model.
+#include <tiny_gltf.h>
+
+#include "pipelines/scene/gltf_convert.h"
+
+namespace mb {
+namespace {
+
+// Any tinygltf image (1-4 channels, 8 or 16 bits) -> RGBA8; false when the data is unusable.
+bool toRgba8(const tinygltf::Image& src, Image* dst) {
+  int comps = src.component, bytes = src.bits / 8;
+  if (src.width <= 0 || src.height <= 0 || comps < 1 || comps > 4 || (bytes != 1 && bytes != 2))
+    return false;
+  size_t pixels = size_t(src.width) * size_t(src.height);
+  if (src.image.size() != pixels * size_t(comps) * size_t(bytes)) return false;
+  dst->width = src.width;
+  dst->height = src.height;
+  dst->rgba.resize(pixels * 4);
+  for (size_t i = 0; i < pixels; ++i) {
+    uint8_t c[4] = {0, 0, 0, 255};
+    for (int k = 0; k < comps; ++k)  // 16-bit little-endian: keep the high byte
+      c[k] = src.image[(i * size_t(comps) + size_t(k)) * size_t(bytes) + size_t(bytes - 1)];
+    if (comps <= 2) {  // grey (+ alpha)
+      uint8_t a = comps == 2 ? c[1] : 255;
+      c[1] = c[2] = c[0];
+      c[3] = a;
+    }
+    for (int k = 0; k < 4; ++k) dst->rgba[i * 4 + size_t(k)] = c[k];
+  }
+  return true;
+}
+
+Status textureRef(const tinygltf::Model& m, int index, int texCoord, double scale,
+                  const std::string& where, TextureRef* out) {
+  if (index < -1 || index >= int(m.textures.size()))
+    return Status::fail(where + ": texture " + std::to_string(index) + " does not exist");
+  out->texture = index;
+  out->texCoord = texCoord;
+  out->scale = float(scale);
+  return {};
+}
+
+}  // namespace
+
+Status convertMaterials(const tinygltf::Model& m, Scene& scene) {
+  for (size_t i = 0; i < m.images.size(); ++i) {
+    Image img;
+    img.name = m.images[i].name;
+    if (!toRgba8(m.images[i], &img)) {
+      img.width = img.height = 1;
+      img.rgba = {255, 255, 255, 255};
+      scene.unsupported.push_back("image " + std::to_string(i) + " (" +
+                                  (m.images[i].uri.size() > 64 ? m.images[i].uri.substr(0, 64) + "..." : m.images[i].uri) +
+                                  ") not decoded: replaced by 1x1 white");
+      ++scene.stats.imagesNotDecoded;
+    }
+    scene.images.push_back(std::move(img));
+  }
+  for (const auto& s : m.samplers) {
+    Sampler out;
+    if (s.magFilter >= 0) out.magFilter = s.magFilter;
+    if (s.minFilter >= 0) out.minFilter = s.minFilter;
+    out.wrapS = s.wrapS;
+    out.wrapT = s.wrapT;
+    scene.samplers.push_back(out);
+  }
+  for (size_t i = 0; i < m.textures.size(); ++i) {
+    const auto& t = m.textures[i];
+    if (t.source < -1 || t.source >= int(m.images.size()) || t.sampler < -1 ||
+        t.sampler >= int(m.samplers.size()))
+      return Status::fail("texture " + std::to_string(i) + " refers to a missing image or sampler");
+    for (const auto& [ext, v] : t.extensions)
+      scene.unsupported.push_back("texture " + std::to_string(i) + ": extension " + ext + " ignored");
+    scene.textures.push_back({t.source, t.sampler});
+  }
+  for (size_t i = 0; i < m.materials.size(); ++i) {
+    const auto& src = m.materials[i];
+    std::string where = "material " + std::to_string(i);
+    Material mat;
+    mat.name = src.name;
+    const auto& pbr = src.pbrMetallicRoughness;
+    for (size_t k = 0; k < 4 && k < pbr.baseColorFactor.size(); ++k) mat.baseColorFactor[int(k)] = float(pbr.baseColorFactor[k]);
+    for (size_t k = 0; k < 3 && k < src.emissiveFactor.size(); ++k) mat.emissiveFactor[int(k)] = float(src.emissiveFactor[k]);
+    mat.metallicFactor = float(pbr.metallicFactor);
+    mat.roughnessFactor = float(pbr.roughnessFactor);
+    Status s;
+    if (s = textureRef(m, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, 1.0, where, &mat.baseColor); !s) return s;
+    if (s = textureRef(m, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, 1.0, where, &mat.metallicRoughness); !s) return s;
+    if (s = textureRef(m, src.normalTexture.index, src.normalTexture.texCoord, src.normalTexture.scale, where, &mat.normal); !s) return s;
+    if (s = textureRef(m, src.occlusionTexture.index, src.occlusionTexture.texCoord, src.occlusionTexture.strength, where, &mat.occlusion); !s) return s;
+    if (s = textureRef(m, src.emissiveTexture.index, src.emissiveTexture.texCoord, 1.0, where, &mat.emissive); !s) return s;
+    mat.alphaMode = src.alphaMode == "MASK" ? AlphaMode::Mask : src.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
+    mat.alphaCutoff = float(src.alphaCutoff);
+    mat.doubleSided = src.doubleSided;
+    for (const auto& [ext, v] : src.extensions) scene.unsupported.push_back(where + ": extension " + ext + " ignored");
+    for (const auto* info : {&pbr.baseColorTexture, &pbr.metallicRoughnessTexture, &src.emissiveTexture})
+      for (const auto& [ext, v] : info->extensions) scene.unsupported.push_back(where + ": texture extension " + ext + " ignored");
+    for (const auto& [ext, v] : src.normalTexture.extensions) scene.unsupported.push_back(where + ": texture extension " + ext + " ignored");
+    scene.materials.push_back(std::move(mat));
+  }
+  return {};
+}
+
+}  // namespace mb

@@ -1,0 +1,128 @@
+// Nodes (validated hierarchy), skins, cameras and the default scene's roots.
+#include <tiny_gltf.h>
+
+#include "pipelines/scene/accessors.h"
+#include "pipelines/scene/gltf_convert.h"
+#include "pipelines/scene/transform.h"
+
+namespace mb {
+namespace {
+
+bool inRange(int i, size_t n) { return i >= 0 && size_t(i) < n; }
+
+Status convertNode(const tinygltf::Model& m, size_t i, Node* out) {
+  const auto& src = m.nodes[i];
+  std::string where = "node " + std::to_string(i);
+  out->name = src.name;
+  out->mesh = src.mesh;
+  out->skin = src.skin;
+  out->camera = src.camera;
+  if ((src.mesh != -1 && !inRange(src.mesh, m.meshes.size())) ||
+      (src.skin != -1 && !inRange(src.skin, m.skins.size())) ||
+      (src.camera != -1 && !inRange(src.camera, m.cameras.size())))
+    return Status::fail(where + ": mesh, skin or camera index out of range");
+  if (src.matrix.size() == 16) {
+    out->hasMatrix = true;
+    for (int k = 0; k < 16; ++k) out->matrix[k / 4][k % 4] = float(src.matrix[size_t(k)]);
+    out->matrixHasShear = !decomposeMatrix(out->matrix, &out->local);
+    return {};
+  }
+  if (!src.matrix.empty() || (!src.translation.empty() && src.translation.size() != 3) ||
+      (!src.rotation.empty() && src.rotation.size() != 4) || (!src.scale.empty() && src.scale.size() != 3))
+    return Status::fail(where + ": matrix/translation/rotation/scale has the wrong length");
+  if (!src.translation.empty()) out->local.translation = glm::vec3(src.translation[0], src.translation[1], src.translation[2]);
+  if (!src.scale.empty()) out->local.scale = glm::vec3(src.scale[0], src.scale[1], src.scale[2]);
+  if (!src.rotation.empty()) {
+    glm::quat q(float(src.rotation[3]), float(src.rotation[0]), float(src.rotation[1]), float(src.rotation[2]));
+    float len = glm::length(q);
+    out->local.rotation = len > 0.0f && std::isfinite(len) ? q / len : glm::quat(1, 0, 0, 0);
+  }
+  return {};
+}
+
+}  // namespace
+
+Status convertNodes(const tinygltf::Model& m, Scene& scene) {
+  size_t n = m.nodes.size();
+  scene.nodes.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    if (Status s = convertNode(m, i, &scene.nodes[i]); !s) return s;
+    for (const auto& [ext, v] : m.nodes[i].extensions)
+      scene.unsupported.push_back("node " + std::to_string(i) + ": extension " + ext + " ignored");
+  }
+  for (size_t i = 0; i < n; ++i) {
+    for (int c : m.nodes[i].children) {
+      if (!inRange(c, n)) return Status::fail("node " + std::to_string(i) + ": child " + std::to_string(c) + " does not exist");
+      if (scene.nodes[size_t(c)].parent != -1 || size_t(c) == i)
+        return Status::fail("node " + std::to_string(c) + " has more than one parent");
+      scene.nodes[size_t(c)].parent = int(i);
+      scene.nodes[i].children.push_back(c);
+    }
+  }
+  for (size_t i = 0; i < n; ++i) {  // cycle check: every chain of parents ends within n steps
+    int p = int(i);
+    for (size_t steps = 0; p != -1; ++steps, p = scene.nodes[size_t(p)].parent)
+      if (steps > n) return Status::fail("node hierarchy has a cycle through node " + std::to_string(i));
+  }
+
+  for (size_t s = 0; s < m.skins.size(); ++s) {
+    const auto& src = m.skins[s];
+    std::string where = "skin " + std::to_string(s);
+    Skin skin;
+    skin.name = src.name;
+    skin.skeleton = src.skeleton;
+    if (src.skeleton != -1 && !inRange(src.skeleton, n)) return Status::fail(where + ": skeleton node does not exist");
+    for (int j : src.joints) {
+      if (!inRange(j, n)) return Status::fail(where + ": joint node " + std::to_string(j) + " does not exist");
+      skin.joints.push_back(j);
+    }
+    skin.inverseBind.assign(skin.joints.size(), glm::mat4(1.0f));
+    if (src.inverseBindMatrices >= 0) {
+      auto ibm = readAccessorFloat(m, src.inverseBindMatrices, "inverseBindMatrices");
+      if (!ibm) return Status::fail(ibm.error());
+      if (ibm->components != 16 || ibm->count < skin.joints.size())
+        return Status::fail(where + ": inverseBindMatrices must be MAT4 with one per joint");
+      for (size_t j = 0; j < skin.joints.size(); ++j)
+        for (int k = 0; k < 16; ++k) skin.inverseBind[j][k / 4][k % 4] = ibm->values[16 * j + size_t(k)];
+    }
+    scene.skins.push_back(std::move(skin));
+  }
+
+  for (const auto& c : m.cameras) {
+    Camera cam;
+    cam.name = c.name;
+    cam.perspective = c.type != "orthographic";
+    if (cam.perspective) {
+      cam.yfov = float(c.perspective.yfov);
+      cam.aspect = float(c.perspective.aspectRatio);
+      cam.znear = float(c.perspective.znear);
+      cam.zfar = float(c.perspective.zfar);
+    } else {
+      cam.xmag = float(c.orthographic.xmag);
+      cam.ymag = float(c.orthographic.ymag);
+      cam.znear = float(c.orthographic.znear);
+      cam.zfar = float(c.orthographic.zfar);
+    }
+    scene.cameras.push_back(cam);
+  }
+
+  int which = m.defaultScene >= 0 ? m.defaultScene : (m.scenes.empty() ? -1 : 0);
+  if (which >= int(m.scenes.size())) return Status::fail("default scene " + std::to_string(which) + " does not exist");
+  if (which < 0) {  // no scene: every parentless node is a root
+    for (size_t i = 0; i < n; ++i)
+      if (scene.nodes[i].parent == -1) scene.roots.push_back(int(i));
+    return {};
+  }
+  for (int r : m.scenes[size_t(which)].nodes) {
+    if (!inRange(r, n)) return Status::fail("scene " + std::to_string(which) + ": node " + std::to_string(r) + " does not exist");
+    if (scene.nodes[size_t(r)].parent != -1) {
+      scene.unsupported.push_back("scene " + std::to_string(which) + ": node " + std::to_string(r) +
+                                  " listed as root but has a parent (ignored as root)");
+      continue;
+    }
+    scene.roots.push_back(r);
+  }
+  return {};
+}
+
+}  // namespace mb

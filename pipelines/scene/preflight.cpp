@@ -1,0 +1,94 @@
+#include "pipelines/scene/preflight.h"
+
+#include <cstring>
+
+#include <nlohmann/json.hpp>
+
+namespace mb {
+namespace {
+
+uint32_t u32(const std::vector<uint8_t>& b, size_t at) {
+  uint32_t v;
+  std::memcpy(&v, b.data() + at, 4);
+  return v;
+}
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  if (s.size() < suffix.size()) return false;
+  for (size_t i = 0; i < suffix.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])) != suffix[i]) return false;
+  return true;
+}
+
+// GLB layout (glTF 2.0 section 4.4): 12-byte header, JSON chunk, optional BIN chunk.
+Status checkGlb(const std::vector<uint8_t>& b, size_t* jsonBegin, size_t* jsonLength) {
+  if (b.size() < 12) return Status::fail("truncated GLB: " + std::to_string(b.size()) + " bytes, header needs 12");
+  if (u32(b, 4) != 2) return Status::fail("unsupported GLB version " + std::to_string(u32(b, 4)));
+  uint64_t length = u32(b, 8);
+  if (length > b.size())
+    return Status::fail("truncated GLB: header declares " + std::to_string(length) + " bytes, file has " +
+                        std::to_string(b.size()));
+  if (length < 20) return Status::fail("truncated GLB: no JSON chunk");
+  uint64_t jsonLen = u32(b, 12);
+  if (u32(b, 16) != 0x4E4F534Au) return Status::fail("GLB first chunk is not JSON");
+  if (20 + jsonLen > length) return Status::fail("truncated GLB: JSON chunk runs past the end of the file");
+  uint64_t at = 20 + ((jsonLen + 3) & ~uint64_t(3));
+  if (at < length) {
+    if (at + 8 > length) return Status::fail("truncated GLB: incomplete BIN chunk header");
+    uint64_t binLen = u32(b, size_t(at));
+    if (at + 8 + binLen > length) return Status::fail("truncated GLB: BIN chunk runs past the end of the file");
+  }
+  *jsonBegin = 20;
+  *jsonLength = size_t(jsonLen);
+  return {};
+}
+
+uint64_t field(const nlohmann::json& o, const char* key, uint64_t fallback, bool* ok) {
+  auto it = o.find(key);
+  if (it == o.end()) return fallback;
+  if (!it->is_number_unsigned()) *ok = false;
+  return it->is_number_unsigned() ? it->get<uint64_t>() : 0;
+}
+
+}  // namespace
+
+Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb) {
+  *isGlb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  size_t begin = 0, length = bytes.size();
+  if (*isGlb) {
+    if (Status s = checkGlb(bytes, &begin, &length); !s) return s;
+  } else if (endsWith(nameHint, ".glb")) {
+    return Status::fail("bad GLB magic (expected 'glTF')");
+  }
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(bytes.begin() + long(begin), bytes.begin() + long(begin + length));
+  } catch (const nlohmann::json::exception& e) {
+    return Status::fail(std::string("invalid JSON: ") + e.what());
+  }
+  if (!doc.is_object()) return Status::fail("invalid glTF: top-level JSON is not an object");
+  auto arr = [&](const char* key) {
+    auto it = doc.find(key);
+    return it != doc.end() && it->is_array() ? *it : nlohmann::json::array();
+  };
+  nlohmann::json buffers = arr("buffers"), views = arr("bufferViews");
+  for (size_t i = 0; i < views.size(); ++i) {
+    std::string who = "bufferView " + std::to_string(i);
+    const auto& v = views[i];
+    bool ok = v.is_object();
+    if (!ok) return Status::fail(who + " is not an object");
+    uint64_t buf = field(v, "buffer", ~uint64_t(0), &ok);
+    uint64_t off = field(v, "byteOffset", 0, &ok), len = field(v, "byteLength", 0, &ok);
+    if (!ok) return Status::fail(who + ": malformed buffer/byteOffset/byteLength");
+    if (buf >= buffers.size()) return Status::fail(who + " refers to missing buffer " + std::to_string(int64_t(buf)));
+    bool bok = buffers[buf].is_object();
+    uint64_t blen = bok ? field(buffers[buf], "byteLength", 0, &bok) : 0;
+    if (!bok) return Status::fail("buffer " + std::to_string(buf) + ": malformed byteLength");
+    if (off > blen || len > blen - off)
+      return Status::fail(who + " (byteOffset " + std::to_string(off) + ", byteLength " + std::to_string(len) +
+                          ") exceeds buffer " + std::to_string(buf) + " (" + std::to_string(blen) + " bytes)");
+  }
+  return {};
+}
+
+}  // namespace mb

@@ -1,0 +1,18 @@
+// Container checks run before tinygltf sees the bytes: GLB header and chunk sizes, JSON
+// syntax, and every bufferView against its buffer's declared byteLength. tinygltf 2.7 reads
+// image bufferViews without a range check, so this is what keeps malformed files from
+// causing out-of-range reads; it also yields precise messages.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pipelines/result.h"
+
+namespace mb {
+
+// Returns an error (without file name) or success; *isGlb tells which container it is.
+// `nameHint` (the file name) turns a non-GLB file named *.glb into "bad GLB magic".
+Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb);
+
+}  // namespace mb
