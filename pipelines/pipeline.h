@@ -20,6 +20,7 @@ namespace mb {
 struct PipelineStats {
   uint64_t vertexBytes = 0;        // shading attributes (position, frame, uv)
   uint64_t skinVertexBytes = 0;    // joints + weights attributes
+  uint64_t extraVertexBytes = 0;   // optional streams uploaded only when present (uv1, colour)
   uint64_t indexBytes = 0;
   uint64_t textureBytes = 0;
   uint64_t uniformBytesPerFrame = 0;  // per-frame + per-draw uniforms of the last render()

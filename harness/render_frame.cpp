@@ -1,0 +1,148 @@
+#include "harness/render_frame.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "pipelines/gl/context.h"
+#include "pipelines/gl/framebuffer.h"
+#include "pipelines/scene/camera_rule.h"
+
+namespace mb {
+namespace {
+
+// Index of `value` among `count` items named by `nameOf`, accepting a number or a name.
+template <class NameOf>
+Result<int> resolveIndex(const std::string& option, const std::string& value, size_t count,
+                         NameOf nameOf, const std::string& source) {
+  char* end = nullptr;
+  long i = std::strtol(value.c_str(), &end, 10);
+  if (!value.empty() && *end == '\0') {
+    if (i >= 0 && size_t(i) < count) return int(i);
+    return Result<int>::fail("--" + option + " " + value + ": " + source + " has " +
+                             std::to_string(count) + " (indices 0.." +
+                             std::to_string(long(count) - 1) + ")");
+  }
+  for (size_t k = 0; k < count; ++k)
+    if (nameOf(k) == value) return int(k);
+  return Result<int>::fail("--" + option + " " + value + ": no such name in " + source);
+}
+
+Result<std::pair<int, int>> parseSize(const std::string& s) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  int n = std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra);
+  if (n == 1) h = w;
+  else if (n != 3 || (x != 'x' && x != 'X'))
+    return Result<std::pair<int, int>>::fail("--size " + s + ": expected WxH, e.g. 512x512");
+  if (w < 1 || h < 1 || w > 16384 || h > 16384)
+    return Result<std::pair<int, int>>::fail("--size " + s + ": out of range 1..16384");
+  return std::make_pair(w, h);
+}
+
+}  // namespace
+
+const std::vector<std::string>& frameOptionNames() {
+  static const std::vector<std::string> names = {"anim", "time", "anim2", "time2",
+                                                 "blend", "camera", "size"};
+  return names;
+}
+
+Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene) {
+  using R = Result<FrameSettings>;
+  FrameSettings s;
+  auto animName = [&](size_t k) { return scene.animations[k].name; };
+  const std::string& src = scene.source;
+  if (auto a = args.get("anim")) {
+    auto i = resolveIndex("anim", *a, scene.animations.size(), animName, src + " (animations)");
+    if (!i) return R::fail(i.error());
+    s.anim.anim = *i;
+  }
+  if (auto a = args.get("anim2")) {
+    auto i = resolveIndex("anim2", *a, scene.animations.size(), animName, src + " (animations)");
+    if (!i) return R::fail(i.error());
+    s.anim.anim2 = *i;
+  }
+  if (auto c = args.get("camera")) {
+    auto camName = [&](size_t k) { return scene.cameras[k].name; };
+    auto i = resolveIndex("camera", *c, scene.cameras.size(), camName, src + " (cameras)");
+    if (!i) return R::fail(i.error());
+    s.camera = *i;
+  }
+  try {
+    s.anim.time = float(args.number("time", 0.0));
+    s.anim.time2 = float(args.number("time2", s.anim.time));
+    s.anim.blend = float(args.number("blend", s.anim.anim2 >= 0 ? 0.5 : 0.0));
+  } catch (const std::exception& e) {
+    return R::fail(e.what());
+  }
+  if (s.anim.blend < 0.0f || s.anim.blend > 1.0f)
+    return R::fail("--blend " + args.get("blend", "") + ": expected a weight in [0, 1]");
+  if (args.has("blend") && s.anim.anim2 < 0)
+    return R::fail("--blend needs --anim2 (the animation to blend towards)");
+  if (auto size = args.get("size")) {
+    auto wh = parseSize(*size);
+    if (!wh) return R::fail(wh.error());
+    s.width = wh->first;
+    s.height = wh->second;
+  }
+  return s;
+}
+
+Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
+                          const FrameSettings& settings) {
+  using R = Result<Frame>;
+  const std::string where = scene.source + " [" + pipeline + "]: ";
+  bool registered = false;
+  for (const std::string& n : pipelineNames()) registered = registered || n == pipeline;
+  if (!registered) {
+    std::string known;
+    for (const std::string& n : pipelineNames()) known += (known.empty() ? "" : ", ") + n;
+    return R::fail("unknown pipeline '" + pipeline + "' (registered: " + known + ")");
+  }
+  std::unique_ptr<Pipeline> p = createPipeline(pipeline);
+  if (!p)
+    return R::fail("pipeline '" + pipeline +
+                   "' is registered but not implemented yet (its factory is a placeholder "
+                   "that returns nullptr)");
+  auto ctx = gl::sharedContext();
+  if (!ctx) return R::fail(where + ctx.error());
+  auto fb = gl::Framebuffer::create(settings.width, settings.height);
+  if (!fb) return R::fail(where + fb.error());
+
+  Frame frame;
+  frame.width = settings.width;
+  frame.height = settings.height;
+  frame.glRenderer = (*ctx)->info().renderer;
+  frame.glVersion = (*ctx)->info().version;
+  frame.glBackend = (*ctx)->info().backend;
+  Status prepared = p->prepare(scene);
+  if (!prepared) return R::fail(where + prepared.error());
+  p->update(settings.anim);
+  frame.view = frameScene(scene, settings.anim, float(settings.width) / float(settings.height),
+                          settings.camera);
+  (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
+  p->render(frame.view);
+  frame.rgba = (*fb)->readRgba();
+  GLenum err = glGetError();
+  if (err != GL_NO_ERROR) return R::fail(where + "GL error after render: " + gl::errorName(err));
+  frame.stats = p->stats();
+  return frame;
+}
+
+Status writePng(const std::string& path, const std::vector<uint8_t>& rgba, int width, int height) {
+  if (rgba.size() != size_t(width) * size_t(height) * 4)
+    return Status::fail(path + ": image data does not match " + std::to_string(width) + "x" +
+                        std::to_string(height) + " RGBA8");
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) return Status::fail(path + ": cannot create PNG writer: " + OIIO::geterror());
+  OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
+  if (!out->open(path, spec)) return Status::fail(path + ": cannot open for writing: " + out->geterror());
+  bool ok = out->write_image(OIIO::TypeDesc::UINT8, rgba.data());
+  ok = out->close() && ok;
+  if (!ok) return Status::fail(path + ": write failed: " + out->geterror());
+  return {};
+}
+
+}  // namespace mb

@@ -1,0 +1,48 @@
+// The one way the harness turns (scene, pipeline, animation state, camera, size) into an
+// image: used by `render` and `compare`, and by any later command that needs frames.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "harness/args.h"
+#include "pipelines/pipeline.h"
+#include "pipelines/result.h"
+
+namespace mb {
+
+struct FrameSettings {
+  AnimState anim;       // animation indices already resolved against the scene
+  int camera = -1;      // glTF camera index, -1 = automatic framing (camera_rule.h)
+  int width = 512, height = 512;
+};
+
+struct Frame {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgba;  // width * height * 4, top row first, alpha 1 (opaque)
+  PipelineStats stats;
+  View view;
+  std::string glRenderer, glVersion, glBackend;
+};
+
+// Background every pipeline clears to (RGBA8 values / 255, written as-is).
+constexpr float kBackground[4] = {0.2f, 0.2f, 0.22f, 1.0f};
+
+// Renders `scene` with the registered pipeline `pipeline` on the shared headless context:
+// create, prepare, update(settings.anim), render(frameScene(...)), read back. Errors name the
+// scene source and the reason: unknown pipeline (listing the registered ones), a placeholder
+// pipeline (registered, factory returns nullptr), GL context/shader/upload failures.
+Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
+                          const FrameSettings& settings);
+
+// The options shared by render/compare: --anim A --time T [--anim2 B --time2 T2 --blend W]
+// --camera C --size WxH (or N for NxN). Animations and cameras are indices or names (checked
+// against `scene`); --time2 defaults to --time. Errors name the option and the value.
+Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene);
+// The option names frameSettingsFromArgs reads (for unknown-option checks).
+const std::vector<std::string>& frameOptionNames();
+
+// Writes RGBA8 top-down pixels as a PNG (OpenImageIO). Errors name the file.
+Status writePng(const std::string& path, const std::vector<uint8_t>& rgba, int width, int height);
+
+}  // namespace mb

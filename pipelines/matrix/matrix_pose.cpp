@@ -1,0 +1,37 @@
+#include "pipelines/matrix/matrix_pose.h"
+
+#include "pipelines/scene/camera_rule.h"
+
+namespace mb::matrix {
+
+glm::mat4 normalMatrix(const glm::mat4& m) {
+  glm::mat4 n = glm::transpose(glm::inverse(m));
+  n[3] = glm::vec4(0.0f, 0.0f, 0.0f, glm::determinant(glm::mat3(m)) < 0.0f ? -1.0f : 1.0f);
+  return n;
+}
+
+Pose poseScene(const Scene& scene, const AnimState& state) {
+  Pose pose;
+  pose.world = worldMatrices(scene, samplePose(scene, state));
+  for (size_t n = 0; n < scene.nodes.size(); ++n) {
+    const Node& node = scene.nodes[n];
+    if (node.mesh < 0 || node.skin < 0 || size_t(node.skin) >= scene.skins.size()) continue;
+    const Skin& skin = scene.skins[size_t(node.skin)];
+    SkinPalette palette;
+    palette.node = int(n);
+    glm::mat4 toMesh = glm::inverse(pose.world[n]);
+    for (size_t j = 0; j < skin.joints.size(); ++j) {
+      int jn = skin.joints[j];
+      glm::mat4 joint = jn >= 0 && size_t(jn) < pose.world.size() ? pose.world[size_t(jn)]
+                                                                  : glm::mat4(1.0f);
+      glm::mat4 bind = j < skin.inverseBind.size() ? skin.inverseBind[j] : glm::mat4(1.0f);
+      glm::mat4 m = toMesh * joint * bind;
+      palette.matrices.push_back(m);
+      palette.matrices.push_back(glm::transpose(glm::inverse(m)));
+    }
+    pose.palettes.push_back(std::move(palette));
+  }
+  return pose;
+}
+
+}  // namespace mb::matrix

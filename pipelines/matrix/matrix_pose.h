@@ -1,0 +1,33 @@
+// CPU side of the matrix pipeline: node hierarchy, animation and skin palettes with GLM
+// matrices, as the glTF-Sample-Viewer computes them.
+#pragma once
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "pipelines/scene/animation.h"
+#include "pipelines/scene/scene.h"
+
+namespace mb::matrix {
+
+struct SkinPalette {
+  int node = -1;  // the skinned mesh node
+  // Two matrices per joint, interleaved as the shader's Joint struct reads them:
+  // [2j] = inverse(mesh node world) * joint world * inverse bind, [2j+1] = its normal matrix.
+  std::vector<glm::mat4> matrices;
+};
+
+struct Pose {
+  std::vector<glm::mat4> world;      // per node
+  std::vector<SkinPalette> palettes; // one per skinned mesh node reachable from the roots
+};
+
+// Poses `scene` for `state`: samplePose (shared animation sampling and blending), world
+// matrices, then a palette for every node that has both a mesh and a skin.
+Pose poseScene(const Scene& scene, const AnimState& state);
+
+// transpose(inverse(m)) with the [3][3] entry set to sign(det(upper 3x3 of m)): matrix.vs
+// transforms directions with w = 0 and reads the handedness flip from that free entry.
+glm::mat4 normalMatrix(const glm::mat4& m);
+
+}  // namespace mb::matrix
