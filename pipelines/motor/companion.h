@@ -1,0 +1,252 @@
+// pipelines/motor/companion.h: the CPU-only part of the PGA toolbox (what never runs on the
+// GPU), header-only, built on the float instantiation of shaders/pga.glsl (mb::Pga<float>).
+//
+//   motorFromMatrix3 / motorFromMatrix   3x3 / 4x4 (column-major, GLM / glTF) -> motor, with the
+//                                        scale check: per-axis scales, rigid / uniform /
+//                                        non-uniform, negative (reflection), shear
+//   motorToMatrix                        motor -> 4x4 (column-major)
+//   rotorFromQuat, translator,           glTF TRS -> motor (quaternion (x,y,z,w) ->
+//   motorFromTRS                         [w,-x,-y,-z], translation t -> [1,0,0,0,-t/2,0])
+//   bivectorInverse                      1/B for any bivector with a Euclidean part
+//   euclideanFactorization               M = T R (R about the origin)
+//   invariantFactorization               M = T R = R T (Mozzi-Chasles: screw axis)
+//   encodeTangentRotor / decodeTangentRotor   (normal, tangent, handedness w) <-> 4-float rotor
+//
+// Tangent-rotor handedness rule (see encodeTangentRotor): the frame (tangent, normal x tangent,
+// normal) is a proper rotation; its rotor R and -R give the same frame, and the sign of R's
+// scalar part carries glTF's handedness w. The reference implementation breaks when that
+// scalar is exactly 0 (180-degree turns of the basis frame, e.g. on axis-aligned boxes): it
+// compares Math.sign(s), which is 0, and stores -0, so w = +1 decodes as -1; signed zero also
+// does not survive SNORM/half packing or GPUs that flush. Here the sign is chosen with signbit
+// (so +-0 are handled) and then |s| is clamped to at least kMinTangentScalar = 1/32767 (the
+// QTangent bias of Crytek and Filament), renormalising the vector part, so the stored scalar
+// is never zero, survives 16-bit SNORM, and every decoder (sign(s), sign(1/s), s < 0) agrees.
+// The clamp turns the frame by at most 2 * kMinTangentScalar rad (6.1e-5), only for frames
+// within that angle of a 180-degree turn.
+#pragma once
+#include <cmath>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "shaders/shim/pga.h"
+
+namespace mb::companion {
+
+using P = Pga<float>;
+using Motor = P::motor;
+using Line = P::line;
+using Vec3 = P::vec3;
+using Vec4 = P::vec4;
+
+inline constexpr float kScaleTolerance = 1e-4f;     // relative, as the reference's scale check
+inline constexpr float kShearTolerance = 1e-4f;     // |cos| between normalised columns
+inline constexpr float kMinTangentScalar = 1.0f / 32767.0f;
+
+inline Vec3 toVec3(const glm::vec3& v) { return Vec3(v.x, v.y, v.z); }
+inline glm::vec3 toGlm(const Vec3& v) { return glm::vec3(v.x, v.y, v.z); }
+inline Motor identityMotor() { return Motor(Vec4(1.0f, 0.0f, 0.0f, 0.0f), Vec4(0.0f)); }
+
+// ---- glTF TRS -------------------------------------------------------------------------------
+
+// Unit quaternion (GLM stores w, x, y, z; glTF x, y, z, w) -> rotor [w, -x, -y, -z].
+inline Motor rotorFromQuat(const glm::quat& q) {
+  return Motor(Vec4(q.w, -q.x, -q.y, -q.z), Vec4(0.0f));
+}
+// Translation t -> translator [1, 0, 0, 0, -t/2, 0].
+inline Motor translator(const glm::vec3& t) {
+  return Motor(Vec4(1.0f, 0.0f, 0.0f, 0.0f), Vec4(-0.5f * t.x, -0.5f * t.y, -0.5f * t.z, 0.0f));
+}
+// Node transform T R (scale is tracked separately, see classifyScale).
+inline Motor motorFromTRS(const glm::vec3& t, const glm::quat& q) {
+  return pga<float>.gp_tr(translator(t), rotorFromQuat(q));
+}
+// glTF arrays: translation [x, y, z], rotation [x, y, z, w].
+inline Motor motorFromGltf(const float t[3], const float q[4]) {
+  return motorFromTRS(glm::vec3(t[0], t[1], t[2]), glm::quat(q[3], q[0], q[1], q[2]));
+}
+
+// ---- scale check ----------------------------------------------------------------------------
+
+enum class ScaleKind { Rigid, Uniform, NonUniform };
+
+inline const char* toString(ScaleKind k) {
+  return k == ScaleKind::Rigid ? "rigid" : k == ScaleKind::Uniform ? "uniform" : "non-uniform";
+}
+
+// Rigid: every |s_i| within kScaleTolerance of 1 and no reflection. Uniform: the three scales
+// (signs included) agree within the relative tolerance. Otherwise non-uniform.
+inline ScaleKind classifyScale(const glm::vec3& s) {
+  auto near = [](float a, float b) { return std::abs(a / b - 1.0f) <= kScaleTolerance; };
+  if (near(s.x, 1.0f) && near(s.y, 1.0f) && near(s.z, 1.0f)) return ScaleKind::Rigid;
+  if (near(s.x, s.y) && near(s.y, s.z)) return ScaleKind::Uniform;
+  return ScaleKind::NonUniform;
+}
+
+struct MatrixMotor {
+  Motor motor{Vec4(1.0f, 0.0f, 0.0f, 0.0f), Vec4(0.0f)};  // the rigid part (rotation, then translation)
+  glm::vec3 scale{1.0f};          // per-axis scale applied before the motor; all three are
+                                  // negated when the matrix reflects (det < 0), so that
+                                  // matrix = motor-matrix * diag(scale) holds
+  ScaleKind kind = ScaleKind::Rigid;
+  bool negative = false;          // det < 0: a reflection, carried by the negative scale
+  bool sheared = false;           // columns not orthogonal: the motor is the nearest rotation
+                                  // of the normalised columns, not exact
+  bool degenerate = false;        // a zero column: motor is the translation only
+  float uniformScale() const { return (scale.x + scale.y + scale.z) / 3.0f; }
+};
+
+namespace detail {
+
+// Rotor of an orthonormal, proper 3x3 matrix given by columns (Shepperd's method: pick the
+// largest of the four quaternion magnitudes, then normalise).
+inline Vec4 rotorFromColumns(const glm::vec3& c0, const glm::vec3& c1, const glm::vec3& c2) {
+  // m_ij = column i, row j.
+  const float m00 = c0.x, m01 = c0.y, m02 = c0.z, m10 = c1.x, m11 = c1.y, m12 = c1.z,
+              m20 = c2.x, m21 = c2.y, m22 = c2.z;
+  const float tr = m00 + m11 + m22;
+  Vec4 r;
+  if (tr > 0.0f)
+    r = Vec4(tr + 1.0f, m21 - m12, m02 - m20, m10 - m01);
+  else if (m00 > m11 && m00 > m22)
+    r = Vec4(m21 - m12, 1.0f + m00 - m11 - m22, m01 + m10, m02 + m20);
+  else if (m11 > m22)
+    r = Vec4(m02 - m20, m01 + m10, 1.0f + m11 - m00 - m22, m12 + m21);
+  else
+    r = Vec4(m10 - m01, m02 + m20, m12 + m21, 1.0f + m22 - m00 - m11);
+  return r * (1.0f / std::sqrt(P::dot(r, r)));
+}
+
+}  // namespace detail
+
+// 3x3 linear part -> rotor + scale check. Column-major (m[i] is column i), as GLM and glTF.
+inline MatrixMotor motorFromMatrix3(const glm::mat3& m) {
+  MatrixMotor out;
+  glm::vec3 s(glm::length(m[0]), glm::length(m[1]), glm::length(m[2]));
+  if (!(s.x > 0.0f && s.y > 0.0f && s.z > 0.0f)) {
+    out.degenerate = true;
+    out.kind = ScaleKind::NonUniform;
+    out.scale = s;
+    return out;
+  }
+  out.negative = glm::determinant(m) < 0.0f;
+  if (out.negative) s = -s;
+  out.scale = s;
+  out.kind = classifyScale(s);
+  const glm::vec3 c0 = m[0] / s.x, c1 = m[1] / s.y, c2 = m[2] / s.z;
+  out.sheared = std::abs(glm::dot(c0, c1)) > kShearTolerance ||
+                std::abs(glm::dot(c1, c2)) > kShearTolerance ||
+                std::abs(glm::dot(c0, c2)) > kShearTolerance;
+  out.motor = Motor(detail::rotorFromColumns(c0, c1, c2), Vec4(0.0f));
+  return out;
+}
+
+// 4x4 affine (last row 0 0 0 1) -> motor T R + scale check of the linear part.
+inline MatrixMotor motorFromMatrix(const glm::mat4& m) {
+  MatrixMotor out = motorFromMatrix3(glm::mat3(m));
+  out.motor = pga<float>.gp_tr(translator(glm::vec3(m[3])), out.motor);
+  return out;
+}
+// 16 floats, column-major (glTF node.matrix, glm::value_ptr).
+inline MatrixMotor motorFromMatrix(const float* m16) {
+  glm::mat4 m;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) m[c][r] = m16[c * 4 + r];
+  return motorFromMatrix(m);
+}
+
+// Normalised motor -> 4x4 matrix: columns are the images of x, y, z (sw_mx.. doubled) and
+// of the origin.
+inline glm::mat4 motorToMatrix(const Motor& M) {
+  P& p = pga<float>;
+  const Vec3 x = p.sw_mx(M) * 2.0f, y = p.sw_my(M) * 2.0f, z = p.sw_mz(M) * 2.0f, o = p.sw_mo(M);
+  return glm::mat4(glm::vec4(toGlm(x), 0.0f), glm::vec4(toGlm(y), 0.0f),
+                   glm::vec4(toGlm(z), 0.0f), glm::vec4(toGlm(o), 1.0f));
+}
+
+// ---- bivector inverse and factorisations ---------------------------------------------------
+
+// 1/B = ~B / (B ~B), where B ~B = a + b e0123 (a = u.u, b = -2 u.v) is a Study number with
+// inverse 1/a - b/a^2 e0123. Gives (-u/a, -v/a + 2 (u.v)/a^2 u). Requires u != 0.
+inline Line bivectorInverse(const Line& B) {
+  const Vec3 u = B[0], v = B[1];
+  const float a = P::dot(u, u), uv = P::dot(u, v);
+  return Line(-u / a, -v / a + (2.0f * uv / (a * a)) * u);
+}
+
+struct MotorFactors {
+  Motor T;  // translator
+  Motor R;  // rotor
+};
+
+// M = T R with R the Euclidean part (rotation about the origin) and T = M ~R. M normalised.
+inline MotorFactors euclideanFactorization(const Motor& M) {
+  P& p = pga<float>;
+  const Motor R(M[0], Vec4(0.0f));
+  const Motor t = p.gp_mr(M, p.reverse_m(R));
+  return {Motor(Vec4(1.0f, 0.0f, 0.0f, 0.0f), Vec4(Vec3(t[1].xyz), 0.0f)), R};
+}
+
+// M = T R = R T (Mozzi-Chasles): T = 1 + <M>_4 / <M>_2 translates along the screw axis and
+// commutes with R = M ~T. With e0123 B^-1 = (0, -Euclidean part of B^-1):
+// T = [1, 0, 0, 0, -m7 * (B^-1)_u, 0]. A pure translation (no Euclidean part) gives T = M.
+inline MotorFactors invariantFactorization(const Motor& M) {
+  P& p = pga<float>;
+  const Line B(Vec3(M[0].yzw), Vec3(M[1].xyz));
+  if (P::dot(B[0], B[0]) == 0.0f)
+    return {Motor(Vec4(1.0f, 0.0f, 0.0f, 0.0f), Vec4(B[1], 0.0f)), identityMotor()};
+  const Line Bi = bivectorInverse(B);
+  const Motor T(Vec4(1.0f, 0.0f, 0.0f, 0.0f), Vec4(-M[1].w * Bi[0], 0.0f));
+  return {T, p.gp_mt(M, p.reverse_m(T))};
+}
+
+// ---- tangent rotors -------------------------------------------------------------------------
+
+struct TangentRotor {
+  glm::vec4 rotor{1.0f, 0.0f, 0.0f, 0.0f};  // (s, e23, e31, e12); sign(s) = handedness
+  bool scalarWasZero = false;               // the frame's rotor scalar was exactly +-0
+  bool clamped = false;                     // |s| was raised to kMinTangentScalar
+};
+
+// (normal, tangent, w) -> tangent rotor. normal and tangent need not be unit or orthogonal
+// (Gram-Schmidt: the normal wins); w < 0 means handedness -1, anything else +1. The rotor maps
+// x -> tangent, y -> normal x tangent, z -> normal (extractNormalTangent's convention).
+inline TangentRotor encodeTangentRotor(const glm::vec3& normal, const glm::vec3& tangent, float w) {
+  const glm::vec3 n = glm::normalize(normal);
+  const glm::vec3 t = glm::normalize(tangent - n * glm::dot(n, tangent));
+  const glm::vec3 b = glm::cross(n, t);
+  Vec4 r = detail::rotorFromColumns(t, b, n);
+  TangentRotor out;
+  out.scalarWasZero = r.x == 0.0f;
+  const bool wantNegative = w < 0.0f;
+  if (std::signbit(r.x) != wantNegative) r = -r;  // signbit: +0 and -0 count too
+  if (std::abs(r.x) < kMinTangentScalar) {
+    const Vec3 v = r.yzw;
+    const float k = std::sqrt(1.0f - kMinTangentScalar * kMinTangentScalar) / P::length(v);
+    r = Vec4(wantNegative ? -kMinTangentScalar : kMinTangentScalar, v * k);
+    out.clamped = true;
+  }
+  out.rotor = glm::vec4(r.x, r.y, r.z, r.w);
+  return out;
+}
+
+struct TangentFrame {
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};
+  glm::vec3 tangent{1.0f, 0.0f, 0.0f};
+  float w = 1.0f;
+};
+
+// What the GPU does with a vertex rotor: extractNormalTangent (0.5-scaled, normalised here as
+// the fragment shader does) and handedness sign(1.0 / s) (IEEE: +-0 -> +-inf), which for the
+// never-zero scalars of encodeTangentRotor equals sign(s).
+inline TangentFrame decodeTangentRotor(const glm::vec4& rotor) {
+  const Motor R(Vec4(rotor.x, rotor.y, rotor.z, rotor.w), Vec4(0.0f));
+  const P::mat2x3 nt = pga<float>.extractNormalTangent(R);
+  TangentFrame f;
+  f.normal = glm::normalize(toGlm(nt[0]));
+  f.tangent = glm::normalize(toGlm(nt[1]));
+  f.w = std::signbit(rotor.x) ? -1.0f : 1.0f;
+  return f;
+}
+
+}  // namespace mb::companion
