@@ -2,7 +2,23 @@
 
 #include <algorithm>
 
+#include "pipelines/scene/builtin_internal.h"
+
 namespace mb {
+namespace {
+
+using Builder = void (*)(GlbBuilder&);
+
+Builder builderFor(const std::string& name) {
+  if (name == "normal_torus") return &buildNormalTorus;
+  if (name == "textured_box") return &buildTexturedBox;
+  if (name == "skinned_tube") return &buildSkinnedTube;
+  if (name == "scaled_hierarchy") return &buildScaledHierarchy;
+  if (name == "crowd") return &buildCrowd;
+  return nullptr;
+}
+
+}  // namespace
 
 const std::vector<std::string>& builtinSceneNames() {
   static const std::vector<std::string> names = {"normal_torus", "textured_box", "skinned_tube",
@@ -10,13 +26,24 @@ const std::vector<std::string>& builtinSceneNames() {
   return names;
 }
 
-bool isBuiltinScene(const std::string& name) {
-  const auto& n = builtinSceneNames();
-  return std::find(n.begin(), n.end(), name) != n.end();
-}
+bool isBuiltinScene(const std::string& name) { return builderFor(name) != nullptr; }
 
 Result<std::vector<uint8_t>> builtinSceneGlb(const std::string& name) {
-  return Result<std::vector<uint8_t>>::fail(name + ": built-in scene generator not implemented yet");
+  Builder build = builderFor(name);
+  if (!build) return Result<std::vector<uint8_t>>::fail(name + ": not a built-in scene");
+  GlbBuilder b;
+  build(b);
+  auto bytes = b.writeGlb();
+  if (!bytes) return Result<std::vector<uint8_t>>::fail(name + ": " + bytes.error());
+  return bytes;
+}
+
+Result<BuiltinFacts> builtinSceneFacts(const std::string& name) {
+  Builder build = builderFor(name);
+  if (!build) return Result<BuiltinFacts>::fail(name + ": not a built-in scene");
+  GlbBuilder b;
+  build(b);
+  return b.facts();
 }
 
 }  // namespace mb

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pipelines/result.h"
+#include "pipelines/scene/gltf_writer.h"
 
 namespace mb {
 
@@ -14,5 +15,9 @@ const std::vector<std::string>& builtinSceneNames();
 bool isBuiltinScene(const std::string& name);
 // The .glb bytes of built-in scene `name` (deterministic: same bytes every call).
 Result<std::vector<uint8_t>> builtinSceneGlb(const std::string& name);
+
+// What the generator of `name` put into its file (meshes counted once, nodes, skins, joints,
+// animations, channels, ...), for round-trip checks against the loaded Scene.
+Result<BuiltinFacts> builtinSceneFacts(const std::string& name);
 
 }  // namespace mb

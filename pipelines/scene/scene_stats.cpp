@@ -1,0 +1,143 @@
+#include "pipelines/scene/scene_stats.h"
+
+#include <algorithm>
+
+namespace mb {
+
+FileStats computeFileStats(const Scene& s) {
+  FileStats f;
+  f.file = s.source;
+  f.loaded = true;
+  f.nodes = int(s.nodes.size());
+  f.meshes = int(s.meshes.size());
+  f.materials = int(s.materials.size());
+  f.textures = int(s.textures.size());
+  f.images = int(s.images.size());
+  f.cameras = int(s.cameras.size());
+  std::vector<int> meshVertices(s.meshes.size(), 0);
+  for (size_t m = 0; m < s.meshes.size(); ++m)
+    for (const Primitive& p : s.meshes[m].primitives) {
+      ++f.primitives;
+      meshVertices[m] += int(p.positions.size());
+      f.triangles += int(p.indices.size() / 3);
+      bool normalMapped = p.material >= 0 && s.materials[size_t(p.material)].normal.texture >= 0;
+      f.normalMappedPrimitives += normalMapped;
+      f.authoredTangentPrimitives += p.hadTangents;
+      f.skinnedPrimitives += !p.joints.empty();
+    }
+  for (int v : meshVertices) f.vertices += v;
+  for (const Node& n : s.nodes) {
+    f.matrixNodes += n.hasMatrix;
+    if (n.mesh >= 0) {
+      ++f.meshNodes;
+      f.drawnVertices += meshVertices[size_t(n.mesh)];
+    }
+  }
+  f.skins = int(s.skins.size());
+  for (const Skin& k : s.skins) {
+    f.joints += int(k.joints.size());
+    f.maxJointsPerSkin = std::max(f.maxJointsPerSkin, int(k.joints.size()));
+  }
+  f.animations = int(s.animations.size());
+  for (const Animation& a : s.animations)
+    for (const Channel& c : a.channels) {
+      ++f.channels;
+      f.translationChannels += c.path == AnimPath::Translation;
+      f.rotationChannels += c.path == AnimPath::Rotation;
+      f.scaleChannels += c.path == AnimPath::Scale;
+      f.linearChannels += c.interpolation == Interpolation::Linear;
+      f.stepChannels += c.interpolation == Interpolation::Step;
+      f.cubicChannels += c.interpolation == Interpolation::CubicSpline;
+    }
+  f.scale = analyzeScale(s);
+  f.unsupported = s.unsupported;
+  f.fallbacks = s.stats;
+  return f;
+}
+
+FileStats failedFileStats(const std::string& file, const std::string& error) {
+  FileStats f;
+  f.file = file;
+  f.error = error;
+  return f;
+}
+
+nlohmann::json toJson(const LoadStats& s) {
+  return {{"flatNormalsGenerated", s.flatNormalsGenerated}, {"tangentsGenerated", s.tangentsGenerated},
+          {"badNormalsReplaced", s.badNormalsReplaced}, {"badTangentsReplaced", s.badTangentsReplaced},
+          {"weightsRenormalised", s.weightsRenormalised}, {"weightsZeroSum", s.weightsZeroSum},
+          {"influencesTruncated", s.influencesTruncated}, {"nonFinitePositions", s.nonFinitePositions},
+          {"skippedPrimitives", s.skippedPrimitives}, {"normalsRenormalised", s.normalsRenormalised},
+          {"jointsOutOfRange", s.jointsOutOfRange}, {"stripsFansConverted", s.stripsFansConverted},
+          {"degenerateUvTriangles", s.degenerateUvTriangles}, {"tangentSplitVertices", s.tangentSplitVertices},
+          {"imagesNotDecoded", s.imagesNotDecoded}};
+}
+
+nlohmann::json toJson(const FileStats& f) {
+  nlohmann::json j = {{"file", f.file}, {"loaded", f.loaded}};
+  if (!f.loaded) {
+    j["error"] = f.error;
+    return j;
+  }
+  const ScaleReport& r = f.scale;
+  j["geometry"] = {{"nodes", f.nodes}, {"matrixNodes", f.matrixNodes}, {"meshes", f.meshes},
+                   {"primitives", f.primitives}, {"vertices", f.vertices}, {"triangles", f.triangles},
+                   {"meshNodes", f.meshNodes}, {"drawnVertices", f.drawnVertices}};
+  j["materials"] = {{"materials", f.materials}, {"textures", f.textures}, {"images", f.images},
+                    {"normalMappedPrimitives", f.normalMappedPrimitives},
+                    {"authoredTangentPrimitives", f.authoredTangentPrimitives}};
+  j["skinning"] = {{"skins", f.skins}, {"joints", f.joints}, {"maxJointsPerSkin", f.maxJointsPerSkin},
+                   {"skinnedPrimitives", f.skinnedPrimitives}};
+  j["animation"] = {{"animations", f.animations}, {"channels", f.channels},
+                    {"translation", f.translationChannels}, {"rotation", f.rotationChannels},
+                    {"scale", f.scaleChannels}, {"linear", f.linearChannels}, {"step", f.stepChannels},
+                    {"cubicspline", f.cubicChannels}};
+  j["scale"] = {{"uniformNodes", r.uniformNodes}, {"nonUniformNodes", r.nonUniformNodes},
+                {"negativeNodes", r.negativeNodes}, {"shearNodes", r.shearNodes},
+                {"animatedScaleNodes", r.animatedScaleNodes}, {"animatedNonUniformNodes", r.animatedNonUniformNodes},
+                {"nonUniform", r.nonUniformScale}, {"negative", r.negativeScale},
+                {"animated", r.animatedScale}, {"animatedNonUniform", r.animatedNonUniformScale},
+                {"nonUniformOnlyOnLeaves", r.nonUniformOnlyOnLeaves}};
+  j["cameras"] = f.cameras;
+  j["unsupported"] = f.unsupported;
+  j["fallbacks"] = toJson(f.fallbacks);
+  return j;
+}
+
+nlohmann::json aggregateJson(const std::vector<FileStats>& files) {
+  int loaded = 0, animated = 0, animatedNonUniform = 0, nonUniform = 0, negative = 0, leavesOnly = 0,
+      withUnsupported = 0, withFallbacks = 0, skinned = 0, normalMapped = 0;
+  long vertices = 0, triangles = 0, primitives = 0, joints = 0, channels = 0;
+  for (const FileStats& f : files) {
+    if (!f.loaded) continue;
+    ++loaded;
+    animated += f.scale.animatedScale;
+    animatedNonUniform += f.scale.animatedNonUniformScale;
+    nonUniform += f.scale.nonUniformScale;
+    negative += f.scale.negativeScale;
+    leavesOnly += f.scale.nonUniformScale && f.scale.nonUniformOnlyOnLeaves;
+    withUnsupported += !f.unsupported.empty();
+    withFallbacks += toJson(f.fallbacks) != toJson(LoadStats{});
+    skinned += f.skins > 0;
+    normalMapped += f.normalMappedPrimitives > 0;
+    vertices += f.vertices;
+    triangles += f.triangles;
+    primitives += f.primitives;
+    joints += f.joints;
+    channels += f.channels;
+  }
+  auto frac = [&](int n) { return loaded ? double(n) / loaded : 0.0; };
+  return {{"files", files.size()}, {"loaded", loaded}, {"failed", int(files.size()) - loaded},
+          {"vertices", vertices}, {"triangles", triangles}, {"primitives", primitives},
+          {"joints", joints}, {"channels", channels},
+          {"filesWithAnimatedScale", animated}, {"fractionAnimatedScale", frac(animated)},
+          {"filesWithAnimatedNonUniformScale", animatedNonUniform},
+          {"fractionAnimatedNonUniformScale", frac(animatedNonUniform)},
+          {"filesWithNonUniformScale", nonUniform}, {"fractionNonUniformScale", frac(nonUniform)},
+          {"filesWithNonUniformOnlyOnLeaves", leavesOnly},
+          {"filesWithNegativeScale", negative}, {"fractionNegativeScale", frac(negative)},
+          {"filesSkinned", skinned}, {"filesNormalMapped", normalMapped},
+          {"filesWithUnsupported", withUnsupported}, {"filesWithFallbacks", withFallbacks}};
+}
+
+}  // namespace mb

@@ -1,0 +1,39 @@
+// Per-file statistics of a loaded Scene and their aggregate over many files, as printed and
+// written by `motorbench inspect`.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "pipelines/scene/scale_analysis.h"
+#include "pipelines/scene/scene.h"
+
+namespace mb {
+
+struct FileStats {
+  std::string file;
+  bool loaded = false;
+  std::string error;  // when !loaded
+  // Geometry (meshes counted once) and what the nodes draw (instances).
+  int nodes = 0, matrixNodes = 0, meshes = 0, primitives = 0, vertices = 0, triangles = 0;
+  int meshNodes = 0, drawnVertices = 0;
+  int materials = 0, textures = 0, images = 0, cameras = 0;
+  int normalMappedPrimitives = 0, authoredTangentPrimitives = 0, skinnedPrimitives = 0;
+  int skins = 0, joints = 0, maxJointsPerSkin = 0;
+  int animations = 0, channels = 0, translationChannels = 0, rotationChannels = 0, scaleChannels = 0;
+  int linearChannels = 0, stepChannels = 0, cubicChannels = 0;
+  ScaleReport scale;
+  std::vector<std::string> unsupported;
+  LoadStats fallbacks;
+};
+
+FileStats computeFileStats(const Scene& scene);
+FileStats failedFileStats(const std::string& file, const std::string& error);
+
+nlohmann::json toJson(const FileStats& s);
+nlohmann::json toJson(const LoadStats& s);
+// Aggregate over files: counts, sums and fractions (e.g. of loaded files with animated scale).
+nlohmann::json aggregateJson(const std::vector<FileStats>& files);
+
+}  // namespace mb
