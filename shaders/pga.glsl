@@ -117,7 +117,7 @@ motor gp_vv(vec3 a, vec3 b) {
 
 // a b ~a for a point, evaluated as the two full products (trivector part of (a b) ~a), without
 // using a ~a = 1. For a normalised motor the e123 part is 1, so this is the transformed point.
-// measured: 36 mul, 30 add (paper: 33, 29)
+// measured: 36 mul, 33 add (paper: 33, 29)
 point sw_mp_naive(motor a, point b) {
   vec3 A = a[0].yzw, Ad = a[1].xyz;
   // a b = (e0: x0, e1..e3: -A) + (e032..e021: T, e123: a[0].x)
@@ -248,7 +248,7 @@ motor exp_t(float dist, line B) {
 // The reference's perspective projection of a view-space point (camera looks down +z, x is
 // mirrored): equals glm::perspective(minfov, aspect, n, f) * vec4(-p.x, p.y, -p.z, 1) when the
 // vertical fov is the minimal one. The first three lines are per-draw constants on a GPU.
-// measured: 7 mul, 4 add, 4 div, 1 sin, 1 cos (no claim)
+// measured: 9 mul, 4 add, 4 div, 1 sin, 1 cos (no claim)
 vec4 project(const float n, const float f, const float minfov, float aspect, vec3 inpos) {
   float cthf = cos(0.5 * minfov) / sin(0.5 * minfov);
   float fa = 2. * f * n / (n - f), fb = (n + f) / (n - f);
