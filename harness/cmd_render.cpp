@@ -31,11 +31,11 @@ int runRender(const std::vector<std::string>& argv) {
   if (!settings) return fail(settings.error());
   auto frame = renderFrame(*scene, pipeline, *settings);
   if (!frame) return fail(frame.error());
-  Status written = writePng(out, frame->rgba, frame->width, frame->height);
+  Status written = writeImage(out, frame->image);
   if (!written) return fail(written.error());
   const PipelineStats& s = frame->stats;
   std::printf("%s: %s %dx%d, %d draws, %.0f floats/vertex, %llu vertex bytes -> %s (%s)\n",
-              scene->source.c_str(), pipeline.c_str(), frame->width, frame->height, s.draws,
+              scene->source.c_str(), pipeline.c_str(), frame->image.width, frame->image.height, s.draws,
               s.floatsPerVertex, static_cast<unsigned long long>(s.vertexBytes), out.c_str(),
               frame->glRenderer.c_str());
   return 0;

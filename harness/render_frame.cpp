@@ -1,7 +1,6 @@
 #include "harness/render_frame.h"
 
-#include <OpenImageIO/imageio.h>
-
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -20,6 +19,7 @@ Result<int> resolveIndex(const std::string& option, const std::string& value, si
   long i = std::strtol(value.c_str(), &end, 10);
   if (!value.empty() && *end == '\0') {
     if (i >= 0 && size_t(i) < count) return int(i);
+    if (count == 0) return Result<int>::fail("--" + option + " " + value + ": " + source + " has none");
     return Result<int>::fail("--" + option + " " + value + ": " + source + " has " +
                              std::to_string(count) + " (indices 0.." +
                              std::to_string(long(count) - 1) + ")");
@@ -112,8 +112,8 @@ Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
   if (!fb) return R::fail(where + fb.error());
 
   Frame frame;
-  frame.width = settings.width;
-  frame.height = settings.height;
+  frame.image.width = settings.width;
+  frame.image.height = settings.height;
   frame.glRenderer = (*ctx)->info().renderer;
   frame.glVersion = (*ctx)->info().version;
   frame.glBackend = (*ctx)->info().backend;
@@ -124,25 +124,36 @@ Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
                           settings.camera);
   (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
   p->render(frame.view);
-  frame.rgba = (*fb)->readRgba();
+  frame.image.rgba = (*fb)->readRgba();
   GLenum err = glGetError();
   if (err != GL_NO_ERROR) return R::fail(where + "GL error after render: " + gl::errorName(err));
   frame.stats = p->stats();
   return frame;
 }
 
-Status writePng(const std::string& path, const std::vector<uint8_t>& rgba, int width, int height) {
-  if (rgba.size() != size_t(width) * size_t(height) * 4)
-    return Status::fail(path + ": image data does not match " + std::to_string(width) + "x" +
-                        std::to_string(height) + " RGBA8");
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) return Status::fail(path + ": cannot create PNG writer: " + OIIO::geterror());
-  OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
-  if (!out->open(path, spec)) return Status::fail(path + ": cannot open for writing: " + out->geterror());
-  bool ok = out->write_image(OIIO::TypeDesc::UINT8, rgba.data());
-  ok = out->close() && ok;
-  if (!ok) return Status::fail(path + ": write failed: " + out->geterror());
-  return {};
+nlohmann::json toJson(const PipelineStats& s) {
+  return {{"vertexBytes", s.vertexBytes}, {"skinVertexBytes", s.skinVertexBytes},
+          {"extraVertexBytes", s.extraVertexBytes}, {"indexBytes", s.indexBytes},
+          {"textureBytes", s.textureBytes}, {"uniformBytesPerFrame", s.uniformBytesPerFrame},
+          {"skinBytesPerFrame", s.skinBytesPerFrame}, {"vertices", s.vertices},
+          {"floatsPerVertex", s.floatsPerVertex}, {"floatsPerTransform", s.floatsPerTransform},
+          {"floatsPerJoint", s.floatsPerJoint}, {"draws", s.draws},
+          {"conversionMs", s.conversionMs}, {"updateMs", s.updateMs},
+          {"nonUniformScaleNodes", s.nonUniformScaleNodes},
+          {"negativeScaleNodes", s.negativeScaleNodes},
+          {"shearMatrixNodes", s.shearMatrixNodes}, {"zeroScalarFrames", s.zeroScalarFrames}};
+}
+
+nlohmann::json toJson(const FrameSettings& s) {
+  return {{"anim", s.anim.anim}, {"time", s.anim.time}, {"anim2", s.anim.anim2},
+          {"time2", s.anim.time2}, {"blend", s.anim.blend}, {"camera", s.camera},
+          {"width", s.width}, {"height", s.height}};
+}
+
+nlohmann::json toJson(const View& v) {
+  return {{"eye", {v.eye.x, v.eye.y, v.eye.z}},
+          {"orientation_wxyz", {v.orientation.w, v.orientation.x, v.orientation.y, v.orientation.z}},
+          {"yfov", v.yfov}, {"aspect", v.aspect}, {"znear", v.znear}, {"zfar", v.zfar}};
 }
 
 }  // namespace mb

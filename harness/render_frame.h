@@ -5,7 +5,10 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "harness/args.h"
+#include "harness/image_metrics.h"
 #include "pipelines/pipeline.h"
 #include "pipelines/result.h"
 
@@ -18,8 +21,7 @@ struct FrameSettings {
 };
 
 struct Frame {
-  int width = 0, height = 0;
-  std::vector<uint8_t> rgba;  // width * height * 4, top row first, alpha 1 (opaque)
+  RgbaImage image;  // top row first, alpha 1 (opaque)
   PipelineStats stats;
   View view;
   std::string glRenderer, glVersion, glBackend;
@@ -42,7 +44,9 @@ Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene
 // The option names frameSettingsFromArgs reads (for unknown-option checks).
 const std::vector<std::string>& frameOptionNames();
 
-// Writes RGBA8 top-down pixels as a PNG (OpenImageIO). Errors name the file.
-Status writePng(const std::string& path, const std::vector<uint8_t>& rgba, int width, int height);
+// JSON forms for the result files of the commands (every counter, by its field name).
+nlohmann::json toJson(const PipelineStats& stats);
+nlohmann::json toJson(const FrameSettings& settings);
+nlohmann::json toJson(const View& view);
 
 }  // namespace mb

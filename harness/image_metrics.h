@@ -1,0 +1,61 @@
+// Image I/O and image-difference metrics (OpenImageIO), with idiff's pass/fail semantics.
+// Pixel values are bytes / 255; a channel difference is |a - b| in those units.
+#pragma once
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "pipelines/result.h"
+
+namespace mb {
+
+struct RgbaImage {
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgba;  // width * height * 4, top row first
+};
+
+// PNG (or any OpenImageIO format) <-> RGBA8. Errors name the file and the reason. Reading
+// converts 1-3 channel images to RGBA (grey replicated, alpha 1).
+Status writeImage(const std::string& path, const RgbaImage& image);
+Result<RgbaImage> readImage(const std::string& path);
+
+struct ImageMetrics {
+  int width = 0, height = 0;
+  double meanError = 0;  // mean |a - b| over every channel of every pixel (RGBA)
+  double rmse = 0;       // sqrt(mean (a - b)^2) over every channel of every pixel
+  double psnr = std::numeric_limits<double>::infinity();  // 20 log10(1 / rmse); +inf if equal
+  double maxError = 0;   // largest channel difference...
+  int maxX = 0, maxY = 0, maxChannel = 0;  // ...and where (first such pixel, x right, y down)
+  // Fraction of pixels (0..1) with some channel differing by more than 1, 2, 4 byte steps
+  // (difference > 1/255, 2/255, 4/255).
+  double fractionOver1 = 0, fractionOver2 = 0, fractionOver4 = 0;
+};
+
+// idiff thresholds: a pixel fails when some channel differs by more than `fail`; the images
+// fail when more than `failPercent` % of the pixels fail, or any difference exceeds `hardFail`.
+struct Thresholds {
+  double fail = 1e-6;
+  double failPercent = 0.0;
+  double hardFail = std::numeric_limits<double>::infinity();
+};
+
+struct Verdict {
+  bool failed = false;
+  double failPercent = 0;  // % of pixels over Thresholds::fail
+  std::string reason;      // "" when passed, else which threshold and by how much
+};
+
+// Compares two images of the same size (error naming both sizes otherwise).
+Result<ImageMetrics> compareImages(const RgbaImage& a, const RgbaImage& b);
+
+// Applies idiff semantics to `a` vs `b` (same size, else failed with the reason).
+Verdict judge(const RgbaImage& a, const RgbaImage& b, const Thresholds& t);
+
+// A heat map of |a - b| for people: unchanged pixels show `a` as dim grey (for context);
+// changed pixels are coloured by their largest channel difference on a log scale: 1 byte
+// step blue, 4 steps red, 8 orange, 16 yellow, 64 and more white. An empty image when the
+// sizes differ.
+RgbaImage diffHeatmap(const RgbaImage& a, const RgbaImage& b);
+
+}  // namespace mb
