@@ -1,0 +1,1060 @@
+// The hostile-input catalogue (issue 7, item 4): malformed and extreme glTF/GLB files, built in
+// memory, each with what the loader must do with it:
+//   Error     load fails; the message names the file and contains one of `reasons`
+//   Fallback  load succeeds; LoadStats::*counter >= atLeast (the documented repair was counted)
+//   Loads     load succeeds (extreme but valid input)
+// and, whenever a scene loads, `check` (case specific) and checkSceneInvariants must pass.
+// Header-only: shared by tests/test_scene_hostile.cpp, tests/test_cli_hostile_corpus.cpp and
+// the fuzz seed generator.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pipelines/scene/scene.h"
+#include "tests/hostile/gltf_builder.h"
+#include "tests/hostile/scene_checks.h"
+
+namespace mb::hostile {
+
+enum class Outcome { Error, Fallback, Loads };
+
+struct Case {
+  std::string file;  // file name, extension included (.glb or .gltf)
+  Bytes bytes;
+  std::vector<std::pair<std::string, Bytes>> sidecars;  // files written next to it
+  Outcome outcome = Outcome::Error;
+  std::vector<std::string> reasons;  // Error: the message contains one (case-insensitive)
+  int LoadStats::*counter = nullptr;  // Fallback: this counter...
+  int atLeast = 1;                    // ...is at least this
+  std::function<std::string(const Scene&)> check;  // extra check on a loaded scene ("" = ok)
+  std::string why;  // what is hostile, one line
+  // Non-empty while the loader still fails this case (a finding awaiting its fix): the test is
+  // skipped with this note unless MB_HOSTILE_STRICT=1. Empty once fixed.
+  std::string pendingFix;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Base documents.
+
+struct QuadIds {
+  int pos = -1, nrm = -1, uv = -1, idx = -1;
+};
+
+inline std::vector<glm::vec3> quadPositions() {
+  return {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+}
+
+// A unit quad (4 vertices, 2 triangles) on node 0 of scene 0. Not finished: call finish().
+inline QuadIds quad(Doc& d, bool normals = true, bool uv = true, int material = -1) {
+  QuadIds q;
+  q.pos = d.positions(quadPositions());
+  if (normals) q.nrm = d.vec3(std::vector<glm::vec3>(4, {0, 0, 1}));
+  if (uv) q.uv = d.vec2(std::vector<glm::vec2>{{0, 1}, {1, 1}, {1, 0}, {0, 0}});
+  q.idx = d.indices16({0, 1, 2, 0, 2, 3});
+  Json prim = {{"attributes", {{"POSITION", q.pos}}}, {"indices", q.idx}};
+  if (normals) prim["attributes"]["NORMAL"] = q.nrm;
+  if (uv) prim["attributes"]["TEXCOORD_0"] = q.uv;
+  if (material >= 0) prim["material"] = material;
+  d.mesh(prim);
+  d.node({{"mesh", 0}, {"name", "quad"}});
+  d.scene({0});
+  return q;
+}
+
+// A normal-mapped material (base colour + normal texture from one embedded PNG).
+inline int normalMappedMaterial(Doc& d) {
+  int img = d.image(checkerPng());
+  int tex = d.texture(img);
+  return d.material({{"name", "normal-mapped"},
+                     {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", tex}}}}},
+                     {"normalTexture", {{"index", tex}}}});
+}
+
+// A skinned ribbon: node 0 carries the mesh and skin 0; nodes 1..J are the joints. `chain`:
+// each joint is the child of the previous one (else all are children of joint 1).
+// Vertex pair k is bound to joint min(k, J-1) and the next one, weights 0.5/0.5.
+inline void skinnedRibbon(Doc& d, int jointCount, bool chain = true, bool animate = true) {
+  const int J = jointCount;
+  std::vector<glm::vec3> pos, nrm;
+  std::vector<glm::u16vec4> jnt;
+  std::vector<glm::vec4> wgt;
+  std::vector<uint32_t> ix;
+  for (int k = 0; k <= J; ++k) {
+    for (int side = 0; side < 2; ++side) {
+      pos.push_back({side ? 0.1f : -0.1f, 0.1f * float(k), 0});
+      nrm.push_back({0, 0, 1});
+      uint16_t a = uint16_t(std::min(k, J - 1)), b = uint16_t(std::min(k + 1, J - 1));
+      jnt.push_back({a, b, 0, 0});
+      wgt.push_back({0.5f, 0.5f, 0, 0});
+    }
+    if (k < J) {
+      uint32_t v = uint32_t(2 * k);
+      ix.insert(ix.end(), {v, v + 1, v + 3, v, v + 3, v + 2});
+    }
+  }
+  Json prim = {{"attributes",
+                {{"POSITION", d.positions(pos)}, {"NORMAL", d.vec3(nrm)}, {"JOINTS_0", d.joints(jnt)},
+                 {"WEIGHTS_0", d.vec4(wgt)}}},
+               {"indices", d.indices32(ix)}};
+  int mesh = d.mesh(prim);
+  std::vector<glm::mat4> ibm;
+  std::vector<int> joints;
+  d.node({{"mesh", mesh}, {"skin", 0}, {"name", "skinned"}});
+  for (int k = 0; k < J; ++k) {
+    Json n = {{"name", "joint" + std::to_string(k)}};
+    const float y = chain ? (k ? 0.1f : 0.0f) : 0.1f * float(k);
+    if (y != 0) n["translation"] = {0, y, 0};
+    int id = d.node(n);
+    joints.push_back(id);
+    if (k > 0) {
+      int parent = chain ? id - 1 : joints[0];
+      d.j["nodes"][parent]["children"].push_back(id);
+    }
+    glm::mat4 inv(1.0f);
+    inv[3][1] = -0.1f * float(k);
+    ibm.push_back(inv);
+  }
+  d.arr("skins").push_back({{"joints", joints}, {"inverseBindMatrices", d.mat4(ibm)}, {"skeleton", joints[0]}});
+  d.scene({0, joints[0]});
+  if (animate) {
+    int in = d.scalars({0.0f, 1.0f});
+    int out = d.vec4(std::vector<glm::vec4>{{0, 0, 0, 1}, {0, 0, 0.3826834f, 0.9238795f}});
+    d.arr("animations").push_back({{"name", "bend"},
+                                   {"samplers", {{{"input", in}, {"output", out}}}},
+                                   {"channels", {{{"sampler", 0}, {"target", {{"node", joints[J > 1 ? 1 : 0]}, {"path", "rotation"}}}}}}});
+  }
+}
+
+// A document with a bit of everything the loader handles: embedded PNG textures, a normal-mapped
+// material without TANGENT, a skinned ribbon with LINEAR / STEP / CUBICSPLINE channels, a sparse
+// accessor, uint8 indices, a camera, a matrix-authored node. Used as the source for truncation
+// series and as a fuzz seed.
+inline Doc richDoc() {
+  Doc d;
+  skinnedRibbon(d, 3);
+  int mat = normalMappedMaterial(d);
+  d.j["meshes"][0]["primitives"][0]["material"] = mat;
+  d.j["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] =
+      d.vec2(std::vector<glm::vec2>{{0, 0}, {1, 0}, {0, 0.3f}, {1, 0.3f}, {0, 0.6f}, {1, 0.6f}, {0, 1}, {1, 1}});
+  d.arr("samplers").push_back({{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 33071}, {"wrapT", 33648}});
+  d.j["textures"][0]["sampler"] = 0;
+  // Second mesh: a triangle with uint8 indices and sparse-substituted positions.
+  std::vector<glm::vec3> tri = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  int pos = d.positions(tri);
+  std::vector<uint8_t> sparseIdx = {2, 0, 0, 0};
+  std::vector<glm::vec3> sparseVal = {{0, 2, 0}};
+  int siv = d.view(sparseIdx.data(), 1);
+  int svv = d.view(sparseVal.data(), 12);
+  d.j["accessors"][pos]["sparse"] = {{"count", 1},
+                                     {"indices", {{"bufferView", siv}, {"componentType", kUByte}}},
+                                     {"values", {{"bufferView", svv}}}};
+  d.j["accessors"][pos]["max"] = {1, 2, 0};
+  std::vector<uint8_t> ix8 = {0, 1, 2, 0};
+  int ibv = d.view(ix8.data(), 3);
+  int ia = d.accessor(ibv, kUByte, 3, "SCALAR");
+  int m2 = d.mesh({{"attributes", {{"POSITION", pos}}}, {"indices", ia}});
+  int n2 = d.node({{"mesh", m2}, {"name", "matrix-node"},
+                   {"matrix", {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 1, 0, 0, 1}}});
+  d.arr("cameras").push_back({{"type", "perspective"}, {"perspective", {{"yfov", 0.7}, {"znear", 0.1}, {"zfar", 50}}}});
+  int cn = d.node({{"camera", 0}, {"translation", {0, 0.2, 3}}});
+  d.j["scenes"][0]["nodes"].push_back(n2);
+  d.j["scenes"][0]["nodes"].push_back(cn);
+  // More channels: STEP scale on node n2, CUBICSPLINE translation on the camera node.
+  int in = d.scalars({0.0f, 0.5f, 1.0f});
+  int sc = d.vec3(std::vector<glm::vec3>{{1, 1, 1}, {1.5f, 1.5f, 1.5f}, {1, 1, 1}});
+  int cs = d.vec3(std::vector<glm::vec3>{{0, 0, 0}, {0, 0.2f, 3}, {0, 0, 0},
+                                         {0, 0, 0}, {0.5f, 0.2f, 3}, {0, 0, 0},
+                                         {0, 0, 0}, {0, 0.2f, 3}, {0, 0, 0}});
+  auto& anim = d.j["animations"][0];
+  anim["samplers"].push_back({{"input", in}, {"output", sc}, {"interpolation", "STEP"}});
+  anim["samplers"].push_back({{"input", in}, {"output", cs}, {"interpolation", "CUBICSPLINE"}});
+  anim["channels"].push_back({{"sampler", 1}, {"target", {{"node", n2}, {"path", "scale"}}}});
+  anim["channels"].push_back({{"sampler", 2}, {"target", {{"node", cn}, {"path", "translation"}}}});
+  d.finish();
+  return d;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Checks used by several cases.
+
+inline std::function<std::string(const Scene&)> nodeScaleIs(int node, glm::vec3 s) {
+  return [=](const Scene& sc) -> std::string {
+    if (node >= int(sc.nodes.size())) return "node missing";
+    glm::vec3 got = sc.nodes[size_t(node)].local.scale;
+    if (glm::length(got - s) > 1e-5f) return "scale not as authored";
+    return "";
+  };
+}
+
+// The local TRS of `node` recomposes the authored matrix (unless the loader flagged shear).
+inline std::function<std::string(const Scene&)> trsMatchesMatrix(int node) {
+  return [=](const Scene& sc) -> std::string {
+    const Node& n = sc.nodes.at(size_t(node));
+    if (!n.hasMatrix) return "hasMatrix not set";
+    if (n.matrixHasShear) return "";
+    glm::mat4 r = glm::mat4_cast(n.local.rotation);
+    glm::mat4 m(1.0f);
+    for (int c = 0; c < 3; ++c) m[c] = r[c] * n.local.scale[c];
+    m[3] = glm::vec4(n.local.translation, 1.0f);
+    for (int c = 0; c < 4; ++c)
+      for (int k = 0; k < 4; ++k)
+        if (std::abs(m[c][k] - n.matrix[c][k]) > 1e-4f) return "TRS decomposed from the matrix does not recompose it";
+    return "";
+  };
+}
+
+inline std::function<std::string(const Scene&)> positionsEqual(std::vector<glm::vec3> want) {
+  return [=](const Scene& sc) -> std::string {
+    if (sc.meshes.empty() || sc.meshes[0].primitives.empty()) return "no primitive";
+    const auto& got = sc.meshes[0].primitives[0].positions;
+    if (got.size() != want.size()) return "wrong vertex count";
+    for (size_t i = 0; i < got.size(); ++i)
+      if (glm::length(got[i] - want[i]) > 1e-6f) return "position " + std::to_string(i) + " differs from the file";
+    return "";
+  };
+}
+
+inline std::function<std::string(const Scene&)> hasTangents() {
+  return [](const Scene& sc) -> std::string {
+    for (const Mesh& m : sc.meshes)
+      for (const Primitive& p : m.primitives)
+        if (p.tangents.size() != p.positions.size()) return "normal-mapped primitive without tangents";
+    return "";
+  };
+}
+
+// ---------------------------------------------------------------------------------------------
+// The catalogue.
+
+namespace detail {
+
+inline Case error(std::string file, Bytes bytes, std::vector<std::string> reasons, std::string why) {
+  Case c;
+  c.file = std::move(file);
+  c.bytes = std::move(bytes);
+  c.outcome = Outcome::Error;
+  c.reasons = std::move(reasons);
+  c.why = std::move(why);
+  return c;
+}
+inline Case fallback(std::string file, Bytes bytes, int LoadStats::*counter, int atLeast, std::string why) {
+  Case c;
+  c.file = std::move(file);
+  c.bytes = std::move(bytes);
+  c.outcome = Outcome::Fallback;
+  c.counter = counter;
+  c.atLeast = atLeast;
+  c.why = std::move(why);
+  return c;
+}
+// An image that cannot be decoded (corrupt, oversized, missing file) does not fail the load: it
+// is replaced by 1x1 white, counted in LoadStats::imagesNotDecoded and listed in unsupported.
+// `reasons` must then appear in that unsupported line.
+inline Case imageFallback(std::string file, Bytes bytes, std::vector<std::string> reasons, std::string why) {
+  Case c = fallback(std::move(file), std::move(bytes), &LoadStats::imagesNotDecoded, 1, std::move(why) + ": replaced, counted");
+  c.check = [reasons](const Scene& s) -> std::string {
+    for (const auto& u : s.unsupported)
+      for (const auto& r : reasons)
+        if (u.find(r) != std::string::npos) return "";
+    return "undecoded image not listed in Scene::unsupported with its reason";
+  };
+  return c;
+}
+inline Case loads(std::string file, Bytes bytes, std::string why) {
+  Case c;
+  c.file = std::move(file);
+  c.bytes = std::move(bytes);
+  c.outcome = Outcome::Loads;
+  c.why = std::move(why);
+  return c;
+}
+
+// A finished quad document modified by `edit` (which may mutate JSON or bytes).
+inline Doc quadDoc(const std::function<void(Doc&, QuadIds&)>& edit = {}, bool normals = true, bool uv = true) {
+  Doc d;
+  QuadIds q = quad(d, normals, uv);
+  if (edit) edit(d, q);
+  d.finish();
+  return d;
+}
+
+template <class T>
+inline void pokeBin(Doc& d, int accessor, size_t element, int component, T value) {
+  const Json& a = d.j["accessors"][accessor];
+  const Json& v = d.j["bufferViews"][a["bufferView"].get<int>()];
+  size_t off = v["byteOffset"].get<size_t>() + a.value("byteOffset", size_t(0));
+  size_t comps = a["type"] == "SCALAR" ? 1 : a["type"] == "VEC2" ? 2 : a["type"] == "VEC3" ? 3 : 4;
+  off += (element * comps + size_t(component)) * sizeof(T);
+  std::memcpy(d.bin.data() + off, &value, sizeof(T));
+}
+
+}  // namespace detail
+
+// GLB container corruption.
+inline std::vector<Case> containerCases() {
+  using namespace detail;
+  std::vector<Case> cs;
+  const Bytes good = toGlb(quadDoc());
+  const GlbLayout L = glbLayout(good);
+  auto patched = [&](size_t at, uint32_t v) {
+    Bytes b = good;
+    put32(b, at, v);
+    return b;
+  };
+  cs.push_back(error("empty.glb", {}, {"empty", "short", "truncat", "size"}, "zero bytes"));
+  cs.push_back(error("header_only.glb", Bytes(good.begin(), good.begin() + 12), {"short", "truncat", "size", "invalid"},
+                     "12-byte GLB header and nothing else"));
+  {
+    Bytes b = good;
+    b[3] = 'X';
+    cs.push_back(error("bad_magic.glb", b, {"magic", "json", "parse"}, "magic 'glTX' instead of 'glTF'"));
+  }
+  cs.push_back(error("version_1.glb", patched(4, 1), {"version"}, "GLB container version 1"));
+  cs.push_back(error("version_3.glb", patched(4, 3), {"version"}, "GLB container version 3"));
+  cs.push_back(error("length_beyond_file.glb", patched(8, uint32_t(good.size() + 64)), {"length", "truncat", "size", "invalid"},
+                     "header length 64 bytes more than the file"));
+  cs.push_back(error("length_max.glb", patched(8, 0xFFFFFFFFu), {"length", "truncat", "size", "invalid"}, "header length 4 GiB"));
+  cs.push_back(error("length_drops_bin.glb", patched(8, uint32_t(L.jsonEnd)), {"buffer", "bin", "length", "size"},
+                     "header length ends after the JSON chunk: BIN chunk cut off, buffer 0 has no data"));
+  cs.push_back(error("json_chunk_length_beyond_file.glb", patched(12, uint32_t(good.size())), {"length", "chunk", "invalid", "json"},
+                     "JSON chunk length larger than the file"));
+  cs.push_back(error("json_chunk_length_huge.glb", patched(12, 0xFFFFFFF0u), {"length", "chunk", "invalid", "exceed"},
+                     "JSON chunk length 0xFFFFFFF0 (20 + length overflows 32 bits)"));
+  cs.push_back(error("json_chunk_length_zero.glb", patched(12, 0), {"length", "chunk", "invalid", "json"}, "JSON chunk length 0"));
+  cs.push_back(error("json_chunk_length_short.glb", patched(12, get32(good, 12) - 8), {"json", "parse", "chunk", "bin", "invalid"},
+                     "JSON chunk length 8 bytes short: JSON cut, BIN chunk header misplaced"));
+  cs.push_back(error("json_chunk_wrong_type.glb", patched(16, 0x12345678u), {"chunk", "json", "type", "invalid"},
+                     "first chunk type is not JSON"));
+  cs.push_back(error("bin_chunk_length_beyond_file.glb", patched(L.binHeader, uint32_t(good.size())), {"bin", "chunk", "length", "exceed"},
+                     "BIN chunk length larger than the file"));
+  cs.push_back(error("bin_chunk_length_huge.glb", patched(L.binHeader, 0xFFFFFFFCu), {"bin", "chunk", "length", "exceed"},
+                     "BIN chunk length 0xFFFFFFFC"));
+  cs.push_back(error("bin_chunk_length_short.glb", patched(L.binHeader, 8), {"buffer", "bin", "length", "size", "exceed"},
+                     "BIN chunk length 8: buffer 0 byteLength exceeds it"));
+  cs.push_back(error("bin_chunk_length_unaligned.glb", patched(L.binHeader, get32(good, L.binHeader) - 1), {"bin", "align", "chunk", "length"},
+                     "BIN chunk length not a multiple of 4"));
+  cs.push_back(error("bin_chunk_wrong_type.glb", patched(L.binHeader + 4, 0x41414141u), {"bin", "chunk", "type", "invalid"},
+                     "second chunk type is not BIN"));
+  {
+    Bytes b = good;
+    b.resize(b.size() + 100, 0xAB);
+    put32(b, 8, uint32_t(b.size()));
+    cs.push_back(loads("trailing_garbage_chunk.glb", b, "100 bytes of an unknown chunk after BIN (ignored, as the spec allows)"));
+  }
+  {
+    // GLB whose JSON references buffer 0 without uri, but there is no BIN chunk at all.
+    Doc d = quadDoc();
+    cs.push_back(error("glb_without_bin.glb", glbContainer(d.j.dump(), {}), {"buffer", "bin"}, "GLB buffer 0 has no uri and no BIN chunk"));
+  }
+  return cs;
+}
+
+// JSON-level corruption.
+inline std::vector<Case> jsonCases() {
+  using namespace detail;
+  std::vector<Case> cs;
+  const std::string good = quadDoc().j.dump();
+  cs.push_back(error("broken_json.gltf", toBytes(good.substr(0, good.size() / 2)), {"json", "parse"}, "JSON cut in the middle"));
+  cs.push_back(error("broken_json.glb", glbContainer(good.substr(0, good.size() - 7) + "@@@@@@@", quadDoc().bin), {"json", "parse"},
+                     "GLB whose JSON chunk ends in garbage"));
+  cs.push_back(error("json_not_object.gltf", toBytes("[1,2,3]"), {"json", "object", "asset", "parse"}, "top-level JSON is an array"));
+  cs.push_back(error("json_empty.gltf", toBytes(""), {"json", "empty", "parse", "short"}, "empty .gltf"));
+  cs.push_back(error("json_binary_junk.gltf", Bytes{0xFF, 0xFE, 0x00, 0x01, 0x7B, 0x22, 0x00}, {"json", "parse"}, "binary junk"));
+  cs.push_back(error("json_deep_nesting.gltf", toBytes("{\"asset\":{\"version\":\"2.0\"},\"extras\":" + std::string(100000, '[') + std::string(100000, ']') + "}"),
+                     {"json", "depth", "nest", "parse"}, "100,000 nested arrays (recursion depth)"));
+  cs.back().pendingFix = "F1: tinygltf recurses once per nesting level (stack overflow)";
+  {
+    Doc d = quadDoc();
+    d.j.erase("asset");
+    cs.push_back(error("missing_asset.gltf", toGltfEmbedded(d), {"asset", "version"}, "no asset object"));
+  }
+  {
+    // A glTF 1.0 file: objects are dictionaries keyed by id, not arrays. Loading it as 2.0
+    // would silently give an empty scene.
+    Json j = {{"asset", {{"version", "1.0"}}},
+              {"scene", "defaultScene"},
+              {"scenes", {{"defaultScene", {{"nodes", {"node_1"}}}}}},
+              {"nodes", {{"node_1", {{"meshes", {"mesh_1"}}}}}},
+              {"meshes", {{"mesh_1", {{"primitives", {{{"attributes", {{"POSITION", "acc_pos"}}}, {"mode", 4}}}}}}}},
+              {"accessors", {{"acc_pos", {{"bufferView", "bv"}, {"componentType", kFloat}, {"count", 3}, {"type", "VEC3"}}}}},
+              {"bufferViews", {{"bv", {{"buffer", "buf"}, {"byteLength", 36}}}}},
+              {"buffers", {{"buf", {{"byteLength", 36}, {"uri", "data:application/octet-stream;base64," + base64(Bytes(36, 0))}}}}}};
+    cs.push_back(error("gltf_1_0.gltf", toBytes(j.dump(1)), {"version", "1.0"}, "a glTF 1.0 file (dictionaries, asset.version 1.0)"));
+    cs.back().pendingFix = "F4: glTF 1.0 loads silently as an empty scene";
+  }
+  {
+    Doc d = quadDoc();
+    d.j["accessors"][0]["count"] = "four";
+    cs.push_back(error("wrong_json_type.gltf", toGltfEmbedded(d), {"count", "accessor", "type"}, "accessor.count is a string"));
+  }
+  {
+    Doc d = quadDoc();
+    d.j["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    d.j["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    d.j["meshes"][0]["primitives"][0]["extensions"] = {{"KHR_draco_mesh_compression", {{"bufferView", 0}, {"attributes", {{"POSITION", 0}}}}}};
+    Case c = fallback("required_extension_draco.glb", toGlb(d), &LoadStats::skippedPrimitives, 1,
+                      "Draco-compressed primitive (required extension not implemented): skipped, counted, listed");
+    c.check = [](const Scene& s) -> std::string {
+      for (const auto& u : s.unsupported)
+        if (u.find("KHR_draco_mesh_compression") != std::string::npos) return "";
+      return "required extension not listed in Scene::unsupported";
+    };
+    cs.push_back(c);
+  }
+  return cs;
+}
+
+// Accessors, buffer views, indices, strides, alignment, huge counts, data: URIs, sparse.
+inline std::vector<Case> accessorCases() {
+  using namespace detail;
+  std::vector<Case> cs;
+  auto glb = [](const std::function<void(Doc&, QuadIds&)>& e) { return toGlb(quadDoc(e)); };
+
+  cs.push_back(error("accessor_count_beyond_view.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.pos]["count"] = 100; }),
+                     {"range", "exceed", "bounds", "too small", "beyond", "outside", "past"}, "POSITION count 100 in a 48-byte bufferView"));
+  cs.push_back(error("accessor_offset_beyond_view.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.nrm]["byteOffset"] = 40; }),
+                     {"range", "exceed", "bounds", "too small", "beyond", "outside", "past"}, "NORMAL byteOffset 40 leaves 8 of 48 bytes"));
+  cs.push_back(error("accessor_index_missing.glb", glb([](Doc& d, QuadIds&) { d.j["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 42; }),
+                     {"accessor"}, "POSITION refers to accessor 42 (there are 4)"));
+  cs.push_back(error("accessor_index_negative.glb", glb([](Doc& d, QuadIds&) { d.j["meshes"][0]["primitives"][0]["indices"] = -5; }),
+                     {"accessor", "indices", "index"}, "indices accessor -5"));
+  cs.back().pendingFix = "F5: negative indices accessor treated as absent";
+  cs.push_back(error("bufferview_beyond_buffer.glb", glb([](Doc& d, QuadIds&) { d.j["bufferViews"][0]["byteLength"] = 4096; }),
+                     {"bufferview", "buffer view", "range", "exceed", "bounds"}, "bufferView 0 is 4096 bytes, the buffer far fewer"));
+  cs.push_back(error("bufferview_offset_beyond_buffer.glb", glb([](Doc& d, QuadIds&) { d.j["bufferViews"][1]["byteOffset"] = 1u << 30; }),
+                     {"bufferview", "buffer view", "range", "exceed", "bounds"}, "bufferView 1 starts at 1 GiB"));
+  cs.push_back(error("bufferview_bad_buffer.glb", glb([](Doc& d, QuadIds&) { d.j["bufferViews"][0]["buffer"] = 7; }),
+                     {"buffer"}, "bufferView refers to buffer 7"));
+  cs.push_back(error("accessor_bad_bufferview.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.pos]["bufferView"] = 99; }),
+                     {"bufferview", "buffer view"}, "accessor refers to bufferView 99"));
+  cs.push_back(error("index_out_of_range.glb", glb([](Doc& d, QuadIds& q) { pokeBin<uint16_t>(d, q.idx, 4, 0, 1000); }),
+                     {"index", "indices"}, "index 1000 with 4 vertices"));
+  cs.push_back(error("index_float_component.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.idx]["componentType"] = kFloat; }),
+                     {"index", "indices", "component"}, "indices stored as FLOAT"));
+  cs.push_back(error("index_vec3_type.glb", glb([](Doc& d, QuadIds& q) {
+                       d.j["accessors"][q.idx]["type"] = "VEC3";
+                       d.j["accessors"][q.idx]["count"] = 2;
+                     }),
+                     {"index", "indices", "type", "scalar"}, "indices accessor of type VEC3"));
+  cs.push_back(error("position_vec2.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.pos]["type"] = "VEC2"; }),
+                     {"position", "type", "vec3"}, "POSITION of type VEC2"));
+  cs.push_back(error("position_bad_component_type.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.pos]["componentType"] = 1234; }),
+                     {"component", "type"}, "componentType 1234"));
+  cs.push_back(error("normal_count_mismatch.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.nrm]["count"] = 3; }),
+                     {"count", "normal", "mismatch"}, "NORMAL has 3 elements, POSITION 4"));
+  cs.push_back(error("stride_smaller_than_element.glb", glb([](Doc& d, QuadIds& q) {
+                       d.j["bufferViews"][d.j["accessors"][q.pos]["bufferView"].get<int>()]["byteStride"] = 4;
+                     }),
+                     {"stride"}, "POSITION (12-byte VEC3) in a bufferView with byteStride 4"));
+  cs.push_back(error("stride_overruns_view.glb", glb([](Doc& d, QuadIds& q) {
+                       d.j["bufferViews"][d.j["accessors"][q.pos]["bufferView"].get<int>()]["byteStride"] = 252;
+                     }),
+                     {"range", "exceed", "bounds", "too small", "beyond", "outside", "past", "stride"},
+                     "byteStride 252 makes 4 elements need 768 bytes of a 48-byte view"));
+  {
+    // Misaligned: the spec requires component-size alignment; a loader may reject it or read it
+    // correctly (never through a misaligned float*: UBSan watches).
+    Doc d;
+    std::vector<uint8_t> raw(1 + 36);
+    std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    std::memcpy(raw.data() + 1, p.data(), 36);
+    int bv = d.view(raw.data(), raw.size());
+    int pos = d.accessor(bv, kFloat, 3, "VEC3", 1);
+    d.j["accessors"][pos]["min"] = {0, 0, 0};
+    d.j["accessors"][pos]["max"] = {1, 1, 0};
+    int nrm = d.vec3(std::vector<glm::vec3>(3, {0, 0, 1}));
+    d.mesh({{"attributes", {{"POSITION", pos}, {"NORMAL", nrm}}}});
+    d.node({{"mesh", 0}});
+    d.scene({0});
+    d.finish();
+    Case c = error("misaligned_accessor_offset.glb", toGlb(d), {"align"}, "float accessor at byteOffset 1");
+    c.check = positionsEqual(p);
+    cs.push_back(c);
+  }
+  cs.push_back(error("huge_accessor_count_2p31.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.pos]["count"] = uint64_t(1) << 31; }),
+                     {"range", "exceed", "bounds", "too small", "beyond", "outside", "past", "count", "large"},
+                     "POSITION count 2^31: must fail without allocating 24 GiB"));
+  cs.push_back(error("huge_accessor_count_wraps_32bit.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.pos]["count"] = (uint64_t(1) << 32) + 4; }),
+                     {"range", "exceed", "bounds", "too small", "beyond", "outside", "past", "count", "large"},
+                     "POSITION count 2^32+4 (4 if truncated to 32 bits)"));
+  cs.push_back(error("huge_accessor_count_wraps_64bit.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.pos]["count"] = uint64_t(1) << 62; }),
+                     {"range", "exceed", "bounds", "too small", "beyond", "outside", "past", "count", "large", "overflow"},
+                     "POSITION count 2^62: count*12 wraps to 0 in 64 bits"));
+  cs.push_back(error("huge_index_count.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.idx]["count"] = uint64_t(3) << 30; }),
+                     {"range", "exceed", "bounds", "too small", "beyond", "outside", "past", "count", "large"}, "3*2^30 indices"));
+  cs.push_back(error("huge_buffer_bytelength.glb", glb([](Doc& d, QuadIds&) { d.j["buffers"][0]["byteLength"] = uint64_t(1) << 40; }),
+                     {"buffer", "length", "size", "exceed"}, "buffer byteLength 2^40 in a GLB: must fail without allocating"));
+  {
+    Doc d = quadDoc();
+    d.j["buffers"][0]["byteLength"] = uint64_t(1) << 40;
+    cs.push_back(error("huge_buffer_bytelength_datauri.gltf", toGltfEmbedded(d), {"buffer", "length", "size", "uri", "decode", "data"},
+                       "buffer byteLength 2^40 with a small data: URI"));
+  }
+  cs.push_back(error("huge_bufferview_bytelength.glb", glb([](Doc& d, QuadIds&) { d.j["bufferViews"][0]["byteLength"] = uint64_t(1) << 40; }),
+                     {"bufferview", "buffer view", "range", "exceed", "bounds", "length"}, "bufferView byteLength 2^40"));
+  cs.push_back(error("huge_bufferview_offset_wraps.glb", glb([](Doc& d, QuadIds&) { d.j["bufferViews"][0]["byteOffset"] = ~uint64_t(0) - 7; }),
+                     {"bufferview", "buffer view", "range", "exceed", "bounds", "offset"}, "bufferView byteOffset 2^64-8 (offset+length wraps)"));
+  {
+    Case c = loads("accessor_without_bufferview.glb", glb([](Doc& d, QuadIds& q) {
+                     d.j["accessors"][q.nrm].erase("bufferView");
+                   }),
+                   "NORMAL accessor without bufferView: all zeros per spec, so zero normals are replaced");
+    c.outcome = Outcome::Fallback;
+    c.counter = &LoadStats::badNormalsReplaced;
+    c.atLeast = 4;
+    cs.push_back(c);
+  }
+  // data: URIs.
+  auto uriCase = [&](const std::string& file, const std::string& uri, const std::string& why) {
+    Doc d = quadDoc();
+    d.j["buffers"][0]["uri"] = uri;
+    cs.push_back(error(file, toBytes(d.j.dump()), {"uri", "data", "decode", "base64", "buffer"}, why));
+  };
+  uriCase("datauri_bad_base64.gltf", "data:application/octet-stream;base64,@@@@!!!!", "data: URI with non-base64 characters");
+  uriCase("datauri_unknown_mime.gltf", "data:text/html;base64,AAAAAAAA", "data: URI with mime text/html");
+  uriCase("datauri_not_base64.gltf", "data:application/octet-stream,hello", "data: URI without ;base64");
+  uriCase("datauri_truncated.gltf", "data:application/octet-stream;base64,AAAA", "data: URI decoding to 3 bytes for a larger byteLength");
+  uriCase("datauri_empty.gltf", "data:", "data: URI with nothing after the colon");
+  // Sparse accessors.
+  auto sparseDoc = [](uint8_t index, int count, const std::function<void(Doc&, int)>& more = {}) {
+    Doc d;
+    QuadIds q = quad(d);
+    std::vector<uint8_t> idx = {index, 0, 0, 0};
+    std::vector<glm::vec3> val(size_t(std::clamp(count, 1, 16)), {0, 0, 5});
+    int iv = d.view(idx.data(), 4);
+    int vv = d.view(val.data(), val.size() * 12);
+    d.j["accessors"][q.pos]["sparse"] = {{"count", count},
+                                         {"indices", {{"bufferView", iv}, {"componentType", kUByte}}},
+                                         {"values", {{"bufferView", vv}}}};
+    if (more) more(d, q.pos);
+    d.finish();
+    return toGlb(d);
+  };
+  cs.push_back(error("sparse_index_out_of_range.glb", sparseDoc(200, 1), {"sparse"}, "sparse index 200 for a 4-element accessor"));
+  cs.push_back(error("sparse_count_exceeds.glb", sparseDoc(1, 9), {"sparse"}, "sparse count 9 for a 4-element accessor"));
+  cs.push_back(error("sparse_count_huge.glb", sparseDoc(1, 1 << 30), {"sparse", "range", "exceed"}, "sparse count 2^30"));
+  cs.push_back(error("sparse_indices_view_missing.glb", sparseDoc(1, 1, [](Doc& d, int a) { d.j["accessors"][a]["sparse"]["indices"]["bufferView"] = 77; }),
+                     {"sparse", "bufferview", "buffer view"}, "sparse indices in bufferView 77"));
+  {
+    Case c = loads("sparse_valid.glb", sparseDoc(2, 1), "a valid sparse substitution of vertex 2");
+    auto p = quadPositions();
+    p[2] = {0, 0, 5};
+    c.check = positionsEqual(p);
+    cs.push_back(c);
+  }
+  return cs;
+}
+
+// Numbers: NaN/Inf, zero vectors, degenerate UVs, weights.
+inline std::vector<Case> numericCases() {
+  using namespace detail;
+  std::vector<Case> cs;
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  auto glb = [](const std::function<void(Doc&, QuadIds&)>& e) { return toGlb(quadDoc(e)); };
+
+  cs.push_back(fallback("nan_positions.glb", glb([&](Doc& d, QuadIds& q) {
+                          pokeBin(d, q.pos, 1, 0, nan);
+                          pokeBin(d, q.pos, 3, 2, nan);
+                        }),
+                        &LoadStats::nonFinitePositions, 2, "two vertices with a NaN coordinate (set to 0, counted)"));
+  cs.push_back(fallback("inf_positions.glb", glb([&](Doc& d, QuadIds& q) {
+                          pokeBin(d, q.pos, 0, 1, inf);
+                          pokeBin(d, q.pos, 2, 0, -inf);
+                        }),
+                        &LoadStats::nonFinitePositions, 2, "+Inf and -Inf coordinates"));
+  cs.push_back(fallback("zero_normals.glb", glb([&](Doc& d, QuadIds& q) {
+                          for (int v = 0; v < 4; ++v) pokeBin(d, q.nrm, size_t(v), 2, 0.0f);
+                        }),
+                        &LoadStats::badNormalsReplaced, 4, "all normals (0,0,0)"));
+  cs.push_back(fallback("nan_normals.glb", glb([&](Doc& d, QuadIds& q) { pokeBin(d, q.nrm, 1, 1, nan); }),
+                        &LoadStats::badNormalsReplaced, 1, "a NaN normal"));
+  cs.push_back(fallback("no_normals.glb", toGlb(quadDoc({}, false)), &LoadStats::flatNormalsGenerated, 1, "no NORMAL: flat normals"));
+  {
+    // Degenerate UVs on a normal-mapped primitive without TANGENT: tangent generation divides
+    // by the UV determinant, which is 0 for every triangle.
+    Doc d;
+    int mat = normalMappedMaterial(d);
+    QuadIds q = quad(d, true, true, mat);
+    for (int v = 0; v < 4; ++v) {
+      pokeBin(d, q.uv, size_t(v), 0, 0.5f);
+      pokeBin(d, q.uv, size_t(v), 1, 0.5f);
+    }
+    d.finish();
+    Case c = fallback("degenerate_uvs.glb", toGlb(d), &LoadStats::tangentsGenerated, 1,
+                      "normal-mapped, all UVs equal: generated tangents must be finite unit vectors");
+    c.check = hasTangents();
+    cs.push_back(c);
+  }
+  {
+    Doc d;
+    int mat = normalMappedMaterial(d);
+    quad(d, true, true, mat);
+    d.finish();
+    Case c = fallback("tangents_generated.glb", toGlb(d), &LoadStats::tangentsGenerated, 1, "normal-mapped without TANGENT");
+    c.check = hasTangents();
+    cs.push_back(c);
+  }
+  {
+    Doc d;
+    int mat = normalMappedMaterial(d);
+    QuadIds q = quad(d, true, true, mat);
+    int t = d.vec4(std::vector<glm::vec4>(4, {0, 0, 0, 0}));
+    d.j["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = t;
+    (void)q;
+    d.finish();
+    Case c = fallback("zero_tangents.glb", toGlb(d), &LoadStats::badTangentsReplaced, 4, "authored TANGENT all (0,0,0,0)");
+    c.check = hasTangents();
+    cs.push_back(c);
+  }
+  {
+    Doc d;
+    int mat = normalMappedMaterial(d);
+    quad(d, true, true, mat);
+    int t = d.vec4(std::vector<glm::vec4>(4, {0, 0, 1, 1}));  // parallel to the normal
+    d.j["meshes"][0]["primitives"][0]["attributes"]["TANGENT"] = t;
+    d.finish();
+    Case c = fallback("tangents_parallel_to_normal.glb", toGlb(d), &LoadStats::badTangentsReplaced, 4,
+                      "authored tangents equal to the normal");
+    c.check = hasTangents();
+    cs.push_back(c);
+  }
+  {
+    Doc d;
+    skinnedRibbon(d, 2, true, false);
+    d.finish();
+    for (int v = 0; v < 6; v += 2) pokeBin(d, 3, size_t(v), 0, 0.0f), pokeBin(d, 3, size_t(v), 1, 0.0f);
+    cs.push_back(fallback("weights_zero_sum.glb", toGlb(d), &LoadStats::weightsZeroSum, 3, "three vertices with all-zero weights"));
+  }
+  {
+    Doc d;
+    skinnedRibbon(d, 2, true, false);
+    d.finish();
+    pokeBin(d, 3, 1, 0, 2.0f);
+    cs.push_back(fallback("weights_not_normalised.glb", toGlb(d), &LoadStats::weightsRenormalised, 1, "weights summing to 2.5"));
+  }
+  {
+    Doc d;
+    skinnedRibbon(d, 2, true, false);
+    d.finish();
+    pokeBin(d, 3, 0, 0, nan);
+    pokeBin(d, 3, 1, 1, -1.0f);
+    Case c = fallback("weights_nan_negative.glb", toGlb(d), &LoadStats::weightsRenormalised, 0,
+                      "a NaN and a negative weight: repaired (invariants check finite, >= 0, sum 1)");
+    cs.push_back(c);
+  }
+  {
+    Doc d;
+    skinnedRibbon(d, 4, true, false);
+    auto& attr = d.j["meshes"][0]["primitives"][0]["attributes"];
+    std::vector<glm::u16vec4> j1(10, {3, 2, 1, 0});
+    std::vector<glm::vec4> w1(10, {0.1f, 0.1f, 0.1f, 0.1f});
+    attr["JOINTS_1"] = d.joints(j1);
+    attr["WEIGHTS_1"] = d.vec4(w1);
+    d.finish();
+    cs.push_back(fallback("influences_8.glb", toGlb(d), &LoadStats::influencesTruncated, 10, "JOINTS_1/WEIGHTS_1: 8 influences per vertex"));
+  }
+  {
+    // Huge but finite coordinates: loads; bounds arithmetic must not overflow to Inf/NaN later.
+    Doc d;
+    QuadIds q = quad(d);
+    for (int v = 0; v < 4; ++v) pokeBin(d, q.pos, size_t(v), 0, (v & 1 ? 3e38f : -3e38f));
+    d.finish();
+    cs.push_back(loads("huge_positions.glb", toGlb(d), "coordinates +-3e38"));
+  }
+  return cs;
+}
+
+// Transforms and the node graph.
+inline std::vector<Case> graphCases() {
+  using namespace detail;
+  std::vector<Case> cs;
+  auto glbWith = [](const std::function<void(Doc&)>& e) {
+    Doc d;
+    quad(d);
+    e(d);
+    d.finish();
+    return toGlb(d);
+  };
+  {
+    Case c = loads("nonuniform_scale.glb", glbWith([](Doc& d) { d.j["nodes"][0]["scale"] = {1, 2, 3}; }),
+                   "node scale (1,2,3): kept as authored (the motor pipeline falls back to a matrix)");
+    c.check = nodeScaleIs(0, {1, 2, 3});
+    cs.push_back(c);
+  }
+  {
+    Case c = loads("negative_scale.glb", glbWith([](Doc& d) { d.j["nodes"][0]["scale"] = {-1, 1, 1}; }), "node scale (-1,1,1): reflection");
+    c.check = nodeScaleIs(0, {-1, 1, 1});
+    cs.push_back(c);
+  }
+  {
+    Case c = loads("zero_scale.glb", glbWith([](Doc& d) { d.j["nodes"][0]["scale"] = {0, 0, 0}; }), "node scale 0");
+    c.check = nodeScaleIs(0, {0, 0, 0});
+    cs.push_back(c);
+  }
+  {
+    Case c = loads("matrix_reflection.glb", glbWith([](Doc& d) {
+                     d.j["nodes"][0]["matrix"] = {0, 1, 0, 0, 1, 0, 0, 0, 0, 0, 2, 0, 5, 6, 7, 1};  // swaps x/y: det < 0
+                   }),
+                   "node matrix with negative determinant");
+    c.check = trsMatchesMatrix(0);
+    cs.push_back(c);
+  }
+  {
+    Case c = loads("matrix_shear.glb", glbWith([](Doc& d) { d.j["nodes"][0]["matrix"] = {1, 0, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }),
+                   "node matrix with shear");
+    c.check = [](const Scene& s) -> std::string { return s.nodes[0].matrixHasShear ? "" : "shear not flagged"; };
+    cs.push_back(c);
+  }
+  {
+    Case c = loads("matrix_singular.glb", glbWith([](Doc& d) { d.j["nodes"][0]["matrix"] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 3, 1}; }),
+                   "all-zero 3x3 part: decomposition must not produce NaN");
+    c.check = [](const Scene& s) -> std::string { return finite(s.nodes[0].local) ? "" : "NaN TRS"; };
+    cs.push_back(c);
+  }
+  cs.push_back(loads("rotation_zero_quaternion.glb", glbWith([](Doc& d) { d.j["nodes"][0]["rotation"] = {0, 0, 0, 0}; }),
+                     "rotation (0,0,0,0): must not become NaN"));
+  cs.push_back(loads("rotation_unnormalised.glb", glbWith([](Doc& d) { d.j["nodes"][0]["rotation"] = {0, 0, 3, 4}; }),
+                     "rotation of length 5"));
+  cs.push_back(error("cycle_self.glb", glbWith([](Doc& d) { d.j["nodes"][0]["children"] = {0}; }), {"cycle", "parent", "own"},
+                     "node 0 is its own child"));
+  cs.push_back(error("cycle_two_nodes.glb", glbWith([](Doc& d) {
+                       d.node({{"children", {0}}});
+                       d.j["nodes"][0]["children"] = {1};
+                     }),
+                     {"cycle", "parent", "descendant"}, "node 0 -> 1 -> 0"));
+  cs.push_back(error("cycle_unreachable.glb", glbWith([](Doc& d) {
+                       d.node({{"children", {2}}});
+                       d.node({{"children", {1}}});
+                     }),
+                     {"cycle", "parent", "descendant"}, "nodes 1 <-> 2, not in any scene"));
+  cs.push_back(error("two_parents.glb", glbWith([](Doc& d) {
+                       d.node({{"children", {0}}});
+                       d.node({{"children", {0}}});
+                       d.j["scenes"][0]["nodes"] = {1, 2};
+                     }),
+                     {"parent"}, "node 0 is a child of nodes 1 and 2"));
+  cs.push_back(error("child_listed_twice.glb", glbWith([](Doc& d) {
+                       d.node({{"children", {0, 0}}});
+                       d.j["scenes"][0]["nodes"] = {1};
+                     }),
+                     {"parent", "child", "twice", "duplicate"}, "node 1 lists child 0 twice"));
+  cs.push_back(error("child_out_of_range.glb", glbWith([](Doc& d) { d.j["nodes"][0]["children"] = {99}; }), {"node", "child"},
+                     "child 99 of 1 node"));
+  cs.push_back(error("scene_root_out_of_range.glb", glbWith([](Doc& d) { d.j["scenes"][0]["nodes"] = {0, 5}; }), {"node", "scene", "root"},
+                     "scene lists node 5"));
+  cs.push_back(error("default_scene_out_of_range.glb", glbWith([](Doc& d) { d.j["scene"] = 3; }), {"scene"}, "scene 3 of 1"));
+  cs.push_back(error("node_mesh_out_of_range.glb", glbWith([](Doc& d) { d.j["nodes"][0]["mesh"] = 9; }), {"mesh"}, "node mesh 9"));
+  cs.push_back(error("node_skin_out_of_range.glb", glbWith([](Doc& d) { d.j["nodes"][0]["skin"] = 2; }), {"skin"}, "node skin 2, no skins"));
+  cs.push_back(error("node_camera_out_of_range.glb", glbWith([](Doc& d) { d.j["nodes"][0]["camera"] = 0; }), {"camera"},
+                     "node camera 0, no cameras"));
+  {
+    // A 10,000-deep chain: recursion in the loader or pose code would blow the stack.
+    Doc d;
+    quad(d);
+    const int depth = 10000;
+    for (int i = 1; i < depth; ++i) {
+      d.j["nodes"][i - 1]["children"] = {i};
+      d.node({{"translation", {0, 0.001, 0}}});
+    }
+    d.finish();
+    cs.push_back(loads("deep_hierarchy_10000.glb", toGlb(d), "a chain of 10,000 nodes"));
+  }
+  {
+    // 100,000 nodes in one chain (2 MB of JSON): anything quadratic in depth hangs.
+    Doc d;
+    quad(d);
+    const int depth = 100000;
+    Json& nodes = d.j["nodes"];
+    for (int i = 1; i < depth; ++i) {
+      nodes[size_t(i - 1)]["children"] = {i};
+      nodes.push_back(Json::object());
+    }
+    d.finish();
+    cs.push_back(loads("deep_hierarchy_100000.glb", toGlb(d), "a chain of 100,000 nodes: must stay linear"));
+    cs.back().pendingFix = "F2: node cycle check is quadratic in depth";
+  }
+  {
+    Doc d;
+    quad(d);
+    d.j["scenes"] = Json::array();
+    d.j.erase("scene");
+    d.finish();
+    cs.push_back(loads("no_scene.glb", toGlb(d), "no scenes: nodes without a scene (roots may be empty or all parentless nodes)"));
+  }
+  return cs;
+}
+
+// Skins, animation, materials, textures, images, external files, primitives.
+inline std::vector<Case> contentCases() {
+  using namespace detail;
+  std::vector<Case> cs;
+  {
+    Doc d;
+    skinnedRibbon(d, 1000);
+    d.finish();
+    Case c = loads("joints_1000.glb", toGlb(d), "one skin with 1,000 joints in a 1,000-deep chain, animated");
+    c.check = [](const Scene& s) -> std::string {
+      return s.skins.size() == 1 && s.skins[0].joints.size() == 1000 ? "" : "skin does not have 1000 joints";
+    };
+    cs.push_back(c);
+  }
+  {
+    Doc d;
+    skinnedRibbon(d, 1000, false);
+    d.finish();
+    cs.push_back(loads("joints_1000_flat.glb", toGlb(d), "one skin with 1,000 sibling joints"));
+  }
+  auto skinned = [](const std::function<void(Doc&)>& e, int joints = 3) {
+    Doc d;
+    skinnedRibbon(d, joints);
+    d.finish();
+    e(d);
+    return toGlb(d);
+  };
+  cs.push_back(fallback("joint_index_beyond_skin.glb", skinned([](Doc& d) { pokeBin<uint16_t>(d, 2, 3, 1, 40); }),
+                        &LoadStats::jointsOutOfRange, 1, "JOINTS_0 value 40 with a 3-joint skin: influence dropped, counted"));
+  cs.push_back(error("skin_joint_node_out_of_range.glb", skinned([](Doc& d) { d.j["skins"][0]["joints"][1] = 500; }), {"joint", "node", "skin"},
+                     "skin joint refers to node 500"));
+  cs.push_back(error("skin_no_joints.glb", skinned([](Doc& d) { d.j["skins"][0]["joints"] = Json::array(); }), {"joint", "skin"},
+                     "skin with an empty joints array"));
+  cs.back().pendingFix = "F3: skin without joints loads; vertices bound to joint 0 of an empty skin";
+  cs.push_back(error("inverse_bind_count_mismatch.glb", skinned([](Doc& d) { d.j["accessors"][5]["count"] = 1; }), {"inverse", "bind", "count"},
+                     "1 inverse bind matrix for 3 joints"));
+  cs.push_back(error("inverse_bind_not_mat4.glb", skinned([](Doc& d) { d.j["accessors"][5]["type"] = "VEC4"; }), {"inverse", "bind", "mat4", "type"},
+                     "inverse bind matrices of type VEC4"));
+  // Animation.
+  auto anim = [](const std::function<void(Doc&, Json&)>& e) {
+    Doc d;
+    skinnedRibbon(d, 3);
+    d.finish();
+    e(d, d.j["animations"][0]);
+    return toGlb(d);
+  };
+  cs.push_back(error("anim_count_mismatch.glb", anim([](Doc& d, Json& a) {
+                       int in = a["samplers"][0]["input"].get<int>();
+                       d.j["accessors"][in]["count"] = 1;
+                     }),
+                     {"sampler", "count", "animation", "input", "output"}, "2 output values for 1 input time"));
+  cs.push_back(error("anim_cubic_count_mismatch.glb", anim([](Doc&, Json& a) { a["samplers"][0]["interpolation"] = "CUBICSPLINE"; }),
+                     {"sampler", "count", "animation", "cubic", "output"}, "CUBICSPLINE with 2 outputs for 2 keys (needs 6)"));
+  cs.push_back(error("anim_bad_interpolation.glb", anim([](Doc&, Json& a) { a["samplers"][0]["interpolation"] = "QUADRATIC"; }),
+                     {"interpolation", "sampler"}, "interpolation QUADRATIC"));
+  cs.push_back(error("anim_target_node_out_of_range.glb", anim([](Doc&, Json& a) { a["channels"][0]["target"]["node"] = 77; }),
+                     {"node", "channel", "target"}, "channel targets node 77"));
+  cs.push_back(error("anim_sampler_out_of_range.glb", anim([](Doc&, Json& a) { a["channels"][0]["sampler"] = 4; }), {"sampler"},
+                     "channel uses sampler 4"));
+  cs.push_back(error("anim_output_wrong_type.glb", anim([](Doc& d, Json& a) {
+                       int out = a["samplers"][0]["output"].get<int>();
+                       d.j["accessors"][out]["type"] = "VEC3";
+                     }),
+                     {"rotation", "type", "output", "vec4"}, "rotation channel with VEC3 output"));
+  cs.push_back(error("anim_times_decreasing.glb", anim([](Doc& d, Json& a) {
+                       int in = a["samplers"][0]["input"].get<int>();
+                       pokeBin(d, in, 0, 0, 5.0f);
+                     }),
+                     {"time", "increas", "input", "order"}, "input times 5, 1"));
+  cs.push_back(error("anim_times_nan.glb", anim([](Doc& d, Json& a) {
+                       int in = a["samplers"][0]["input"].get<int>();
+                       pokeBin(d, in, 1, 0, std::numeric_limits<float>::quiet_NaN());
+                     }),
+                     {"time", "finite", "nan", "input"}, "input time NaN"));
+  {
+    Case c = loads("anim_zero_quaternions.glb", anim([](Doc& d, Json& a) {
+                     int out = a["samplers"][0]["output"].get<int>();
+                     for (int k = 0; k < 2; ++k) pokeBin(d, out, size_t(k), 3, 0.0f);
+                   }),
+                   "rotation keys (0,0,0,0): sampled poses must stay finite");
+    cs.push_back(c);
+  }
+  {
+    Case c = loads("anim_weights_path.glb", anim([](Doc&, Json& a) { a["channels"][0]["target"]["path"] = "weights"; }),
+                   "morph-weights channel: not rendered, listed in Scene::unsupported");
+    c.check = [](const Scene& s) -> std::string { return s.unsupported.empty() ? "weights channel not listed as unsupported" : ""; };
+    cs.push_back(c);
+  }
+  // Materials, textures, images.
+  auto textured = [](const std::function<void(Doc&)>& e) {
+    Doc d;
+    int mat = normalMappedMaterial(d);
+    quad(d, true, true, mat);
+    e(d);
+    d.finish();
+    return d;
+  };
+  cs.push_back(error("texture_missing_image.glb", toGlb(textured([](Doc& d) { d.j["textures"][0]["source"] = 9; })), {"image", "source", "texture"},
+                     "texture source 9, one image"));
+  cs.push_back(error("material_texture_out_of_range.glb",
+                     toGlb(textured([](Doc& d) { d.j["materials"][0]["normalTexture"]["index"] = 12; })), {"texture"},
+                     "normalTexture index 12, one texture"));
+  cs.push_back(error("texture_sampler_out_of_range.glb", toGlb(textured([](Doc& d) { d.j["textures"][0]["sampler"] = 3; })), {"sampler"},
+                     "texture sampler 3, no samplers"));
+  cs.push_back(error("primitive_material_out_of_range.glb", toGlb(textured([](Doc& d) { d.j["meshes"][0]["primitives"][0]["material"] = 5; })),
+                     {"material"}, "primitive material 5, one material"));
+  cs.push_back(imageFallback("image_corrupt.glb", toGlb(textured([](Doc& d) {
+                       int bv = d.j["images"][0]["bufferView"].get<int>();
+                       size_t off = d.j["bufferViews"][bv]["byteOffset"].get<size_t>();
+                       for (size_t i = 8; i < 40; ++i) d.bin[off + i] ^= 0x5A;
+                     })),
+                     {"image", "decode", "png"}, "PNG with a scrambled IHDR"));
+  {
+    // A PNG header claiming 60000 x 60000 (13.4 GB decoded) with one row of data: must fail
+    // (stb_image: "not enough pixels") without allocating gigabytes.
+    Bytes bomb = png(60000, 60000, Bytes(16, 200), 4, 1);
+    Doc d;
+    int img = d.image(bomb);
+    int tex = d.texture(img);
+    int mat = d.material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", tex}}}}}});
+    quad(d, true, true, mat);
+    d.finish();
+    cs.push_back(imageFallback("image_dimension_bomb.glb", toGlb(d), {"image", "decode", "png", "large", "size", "pixels"},
+                       "PNG claiming 60000x60000 pixels with 16 bytes of data"));
+  }
+  {
+    // 16000 x 16000 RGBA stays under stb_image's own 2^30-byte limit: without a size check of
+    // its own the loader lets stb reserve ~1 GB for a file of a few hundred bytes.
+    Bytes bomb = png(16000, 16000, Bytes(16, 200), 4, 1);
+    Doc d;
+    int img = d.image(bomb);
+    int tex = d.texture(img);
+    int mat = d.material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", tex}}}}}});
+    quad(d, true, true, mat);
+    d.finish();
+    cs.push_back(imageFallback("image_dimension_bomb_1gb.glb", toGlb(d), {"image", "decode", "png", "large", "size", "pixels"},
+                       "PNG claiming 16000x16000 pixels with 16 bytes of data"));
+  }
+  cs.push_back(error("image_bufferview_out_of_range.glb", toGlb(textured([](Doc& d) { d.j["images"][0]["bufferView"] = 40; })),
+                     {"image", "bufferview", "buffer view"}, "image bufferView 40"));
+  // External files (written next to the .gltf by the test).
+  {
+    Doc d = quadDoc();
+    cs.push_back(error("missing_external_buffer.gltf", toGltfExternal(d, "missing_buffer_file.bin"), {"missing_buffer_file.bin"},
+                       "buffer uri names a file that does not exist"));
+  }
+  {
+    Doc d = quadDoc();
+    Case c = error("external_buffer_too_short.gltf", toGltfExternal(d, "external_buffer_too_short.bin"),
+                   {"size", "length", "short", "bytelength", "exceed"}, "external .bin shorter than byteLength");
+    c.sidecars.push_back({"external_buffer_too_short.bin", Bytes(d.bin.begin(), d.bin.begin() + 10)});
+    cs.push_back(c);
+  }
+  {
+    Doc d = quadDoc();
+    Case c = loads("external_buffer_ok.gltf", toGltfExternal(d, "external_buffer_ok.bin"), "valid .gltf + .bin pair");
+    c.sidecars.push_back({"external_buffer_ok.bin", d.bin});
+    cs.push_back(c);
+  }
+  {
+    Doc d = quadDoc();
+    d.j["images"] = {{{"uri", "missing_image_file.png"}}};
+    d.j["textures"] = {{{"source", 0}}};
+    d.j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    d.j["meshes"][0]["primitives"][0]["material"] = 0;
+    cs.push_back(imageFallback("missing_external_image.gltf", toGltfExternal(d, "missing_image_buffer.bin"), {"missing_image_file.png"},
+                       "image uri names a file that does not exist"));
+    cs.back().sidecars.push_back({"missing_image_buffer.bin", d.bin});
+  }
+  {
+    Doc d = quadDoc();
+    d.j["images"] = {{{"uri", "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAA"}}};
+    d.j["textures"] = {{{"source", 0}}};
+    d.j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    d.j["meshes"][0]["primitives"][0]["material"] = 0;
+    cs.push_back(imageFallback("image_datauri_truncated.gltf", toGltfEmbedded(d), {"image", "decode", "png"}, "image data: URI of a cut PNG"));
+  }
+  // Primitives.
+  auto prim = [](const std::function<void(Json&)>& e) {
+    Doc d;
+    quad(d);
+    e(d.j["meshes"][0]["primitives"][0]);
+    d.finish();
+    return toGlb(d);
+  };
+  cs.push_back(fallback("mode_points.glb", prim([](Json& p) { p["mode"] = 0; }), &LoadStats::skippedPrimitives, 1,
+                        "POINTS primitive: skipped, counted, listed"));
+  cs.push_back(fallback("mode_lines.glb", prim([](Json& p) { p["mode"] = 1; }), &LoadStats::skippedPrimitives, 1, "LINES primitive"));
+  cs.push_back(fallback("mode_invalid.glb", prim([](Json& p) { p["mode"] = 42; }), &LoadStats::skippedPrimitives, 1, "mode 42: skipped"));
+  cs.push_back(fallback("no_position.glb", prim([](Json& p) { p["attributes"].erase("POSITION"); }), &LoadStats::skippedPrimitives, 1,
+                        "primitive without POSITION: skipped"));
+  cs.push_back(error("index_count_not_triangles.glb", prim([](Json& p) { p["indices"] = 99; }), {"accessor", "indices"},
+                     "indices accessor 99"));
+  {
+    Doc d;
+    QuadIds q = quad(d);
+    d.j["accessors"][q.idx]["count"] = 5;
+    d.finish();
+    // Documented fallback without a counter: the trailing indices are dropped and listed.
+    Case c = loads("index_count_not_multiple_of_3.glb", toGlb(d), "TRIANGLES with 5 indices: the partial triangle is dropped and listed");
+    c.check = [](const Scene& s) -> std::string {
+      for (const auto& u : s.unsupported)
+        if (u.find("trailing") != std::string::npos) return "";
+      return "dropped indices not listed in Scene::unsupported";
+    };
+    cs.push_back(c);
+  }
+  {
+    Doc d;
+    QuadIds q = quad(d);
+    d.j["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", q.nrm}}};
+    d.finish();
+    Case c = loads("morph_target.glb", toGlb(d), "morph target: not rendered, listed in Scene::unsupported");
+    c.check = [](const Scene& s) -> std::string { return s.unsupported.empty() ? "morph targets not listed as unsupported" : ""; };
+    cs.push_back(c);
+  }
+  return cs;
+}
+
+// Every hand-made case.
+inline std::vector<Case> allCases() {
+  std::vector<Case> all;
+  for (auto part : {containerCases, jsonCases, accessorCases, numericCases, graphCases, contentCases}) {
+    auto v = part();
+    for (auto& c : v) all.push_back(std::move(c));
+  }
+  return all;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Truncation series of a valid .glb: cut at every 1/64 of its size and at each header/chunk
+// boundary (+-1). `fixLengths`: also patch the GLB header and chunk lengths so the container
+// is consistent and the cut reaches the JSON parser / buffer checks.
+struct Truncation {
+  std::string file;
+  Bytes bytes;
+};
+
+inline std::vector<Truncation> truncations(const std::string& stem, const Bytes& glb) {
+  std::vector<size_t> cuts = {0, 1, 4, 8, 11, 12, 16, 19, 20, 21};
+  const GlbLayout L = glbLayout(glb);
+  for (size_t c : {L.jsonEnd - 1, L.jsonEnd, L.jsonEnd + 4, L.jsonEnd + 8, L.jsonEnd + 9, glb.size() - 1}) cuts.push_back(c);
+  for (size_t k = 1; k < 64; ++k) cuts.push_back(glb.size() * k / 64);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  std::vector<Truncation> out;
+  for (size_t c : cuts) {
+    if (c >= glb.size()) continue;
+    Bytes b(glb.begin(), glb.begin() + long(c));
+    out.push_back({stem + "_cut" + std::to_string(c) + ".glb", b});
+    // Same cut, lengths patched to match (only where a consistent header is possible).
+    if (c >= 24) {
+      Bytes f = b;
+      f.resize(c & ~size_t(3));
+      put32(f, 8, uint32_t(f.size()));
+      if (f.size() <= L.jsonEnd) {
+        put32(f, 12, uint32_t(f.size() - 20));
+      } else if (L.hasBin && f.size() >= L.binStart + 4) {
+        put32(f, L.binHeader, uint32_t(f.size() - L.binStart));
+      } else {
+        f.resize(L.jsonEnd);
+        put32(f, 8, uint32_t(f.size()));
+      }
+      out.push_back({stem + "_cut" + std::to_string(c) + "_fixed.glb", f});
+    }
+  }
+  return out;
+}
+
+}  // namespace mb::hostile
