@@ -1,0 +1,69 @@
+// CPU side of the motor pipeline: the scene's transforms as motors + signed uniform scales
+// (pipelines/motor/scaled_motor.h), the hierarchy composed with the geometric product,
+// animation poses converted and blended as motors, and per-skin joint motor palettes.
+// No matrices here, except the load-time conversion of authored matrices (nodes, inverse
+// binds) through the companion's scale check.
+#pragma once
+#include <vector>
+
+#include "pipelines/motor/scaled_motor.h"
+#include "pipelines/scene/animation.h"
+#include "pipelines/scene/scene.h"
+
+namespace mb::motor {
+
+// Fallbacks the conversion took, counted per node (PipelineStats names).
+struct RigCounts {
+  int nonUniformScaleNodes = 0;  // residual on a leaf, or approximated on an inner node/joint
+  int nonUniformInnerNodes = 0;  // of those, approximated (not exact)
+  int negativeScaleNodes = 0;    // a scale component < 0 (matrix: det < 0)
+  int shearMatrixNodes = 0;      // sheared authored matrix: TRS approximation
+  int nonUniformSkins = 0;       // skins whose joints' world scales differ (joint 0's is used)
+};
+
+// Load-time conversion of a Scene.
+struct Rig {
+  std::vector<ScaledMotor> rest;    // local transform per node, rest pose
+  std::vector<char> matrixNode;     // authored as a matrix (glTF: never animated)
+  std::vector<char> leaf;           // no children and not a joint: a residual is exact
+  std::vector<ConversionFlags> restFlags;  // what converting each rest transform took
+  std::vector<std::vector<ScaledMotor>> inverseBind;  // [skin][joint]
+  RigCounts bindCounts;             // fallbacks taken by the inverse binds
+};
+
+// Converts every node transform and every inverse-bind matrix. Pure CPU.
+Rig buildRig(const Scene& scene);
+
+// Local transforms for a sampled pose (one TRS per node, from sampleAnimation). Matrix nodes
+// keep their load-time conversion. `counts` (optional) receives the fallbacks of every node.
+std::vector<ScaledMotor> localPose(const Rig& rig, const std::vector<TRS>& pose,
+                                   RigCounts* counts = nullptr);
+
+// Animation blending by blending motors: per node shortest-arc blend + normalize_m, scales
+// lerped (scaled_motor.h blend). w = weight of b.
+std::vector<ScaledMotor> blendLocal(const std::vector<ScaledMotor>& a,
+                                    const std::vector<ScaledMotor>& b, float w);
+
+// The local transforms for `state`: sampleAnimation of anim (and anim2, blended by motors).
+// `counts` receives the node fallbacks of the first animation's pose.
+std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const AnimState& state,
+                                       RigCounts* counts = nullptr);
+
+// World transform of every node: parent world composed with local (compose()). Nodes not
+// reachable from a root get the chain up to their topmost ancestor.
+std::vector<ScaledMotor> worldPose(const Scene& scene, const std::vector<ScaledMotor>& local);
+
+// A skin's joint palette for one skinned mesh node.
+struct JointPalette {
+  int node = -1;               // the skinned mesh node
+  int skin = -1;
+  std::vector<float> motors;   // 8 floats per joint: joint world motor * inverse-bind motor
+  float scale = 1.0f;          // the skin's uniform scale (joint world scale * bind scale)
+  bool uniform = true;         // false: the joints' scales differ (joint 0's is used)
+};
+
+// Palettes for every node that has both a mesh and a skin.
+std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
+                                        const std::vector<ScaledMotor>& world);
+
+}  // namespace mb::motor

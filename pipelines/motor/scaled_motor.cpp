@@ -1,0 +1,102 @@
+#include "pipelines/motor/scaled_motor.h"
+
+#include <cmath>
+
+#include "pipelines/motor/companion.h"
+#include "pipelines/scene/scale_analysis.h"
+
+namespace mb::motor {
+namespace {
+
+// Half turn about axis `i` (0 = x, 1 = y, 2 = z): quaternion (axis, w = 0) -> rotor.
+Motor halfTurn(int i) {
+  glm::quat q(0.0f, 0.0f, 0.0f, 0.0f);
+  q[i] = 1.0f;  // glm::quat indexes x, y, z, w
+  return companion::rotorFromQuat(q);
+}
+
+float sgn(float x) { return x < 0.0f ? -1.0f : 1.0f; }
+
+}  // namespace
+
+ScaledMotor identityScaledMotor() { return ScaledMotor{}; }
+
+ScaledMotor fromTRS(const TRS& trs, bool leaf, ConversionFlags* flags) {
+  ConversionFlags f;
+  const glm::vec3 s = trs.scale;
+  Motor rotor = mk().normalize_m(companion::rotorFromQuat(trs.rotation));
+  ScaledMotor out;
+  f.negative = s.x < 0.0f || s.y < 0.0f || s.z < 0.0f;
+  const float det = sgn(s.x) * sgn(s.y) * sgn(s.z);
+  if (!isNonUniform(s)) {
+    // diag(s) = sigma * F with sigma = det * |s| and F = diag(sign(s_i) * det): F has det +1,
+    // so it is the identity or a half turn about the one axis whose entry is +1.
+    out.scale = det * (std::fabs(s.x) + std::fabs(s.y) + std::fabs(s.z)) / 3.0f;
+    const float F[3] = {sgn(s.x) * det, sgn(s.y) * det, sgn(s.z) * det};
+    if (F[0] < 0.0f || F[1] < 0.0f || F[2] < 0.0f)
+      for (int i = 0; i < 3; ++i)
+        if (F[i] > 0.0f) rotor = mk().gp_rr(rotor, halfTurn(i));  // F first, then R
+  } else if (leaf) {
+    out.residual = s;  // exact: applied to the vertices before the motor
+    f.nonUniform = true;
+  } else {
+    // Not representable below this node; keep the volume and the orientation sign.
+    out.scale = det * std::cbrt(std::fabs(s.x * s.y * s.z));
+    f.nonUniform = f.nonUniformInner = true;
+  }
+  out.motor = mk().gp_tr(companion::translator(trs.translation), rotor);
+  if (flags) *flags = f;
+  return out;
+}
+
+ScaledMotor fromMatrix(const glm::mat4& m, const TRS& approx, bool leaf, ConversionFlags* flags) {
+  const companion::MatrixMotor mm = companion::motorFromMatrix(m);
+  if (mm.sheared || mm.degenerate) {
+    ScaledMotor out = fromTRS(approx, leaf, flags);
+    if (flags) flags->shear = true;
+    return out;
+  }
+  ConversionFlags f;
+  f.negative = mm.negative;
+  ScaledMotor out;
+  out.motor = mm.motor;
+  if (mm.kind != companion::ScaleKind::NonUniform) {
+    out.scale = mm.uniformScale();  // negative for a reflection: a point reflection
+  } else if (leaf) {
+    out.residual = mm.scale;        // matrix = motor * diag(scale), exact on a leaf
+    f.nonUniform = true;
+  } else {
+    const glm::vec3 s = mm.scale;
+    out.scale = (mm.negative ? -1.0f : 1.0f) * std::cbrt(std::fabs(s.x * s.y * s.z));
+    f.nonUniform = f.nonUniformInner = true;
+  }
+  if (flags) *flags = f;
+  return out;
+}
+
+Motor scaleDual(const Motor& m, float s) { return Motor(m[0], m[1] * s); }
+
+ScaledMotor compose(const ScaledMotor& parent, const ScaledMotor& child) {
+  ScaledMotor out;
+  out.motor = mk().gp_mm(parent.motor, scaleDual(child.motor, parent.scale));
+  out.scale = parent.scale * child.scale;
+  out.residual = child.residual;
+  return out;
+}
+
+ScaledMotor blend(const ScaledMotor& a, const ScaledMotor& b, float w) {
+  const float wb = mk().dot(a.motor[0], b.motor[0]) < 0.0f ? -w : w;
+  ScaledMotor out;
+  out.motor = mk().normalize_m(a.motor * (1.0f - w) + b.motor * wb);
+  out.scale = a.scale + (b.scale - a.scale) * w;
+  out.residual = glm::mix(a.residual, b.residual, w);
+  return out;
+}
+
+glm::vec3 applyToPoint(const ScaledMotor& x, const glm::vec3& p) {
+  const glm::vec3 q = p * x.residual * x.scale;
+  MK::vec3 r = mk().sw_mp(x.motor, MK::vec3(q.x, q.y, q.z));
+  return {r.x, r.y, r.z};
+}
+
+}  // namespace mb::motor

@@ -1,0 +1,66 @@
+#version 450 core
+// motor.vs: the vertex stage of the PGA motor pipeline (pipelines/motor/). No matrices: the
+// world transform is a motor plus a uniform scale, the tangent frame a rotor, the camera a
+// motor followed by pga.glsl's project(). The transform itself lives in motor_transform.glsl
+// (shared with the CPU tests and the op counter).
+//
+// Variants (#define):
+//   MB_SKINNED        motor skinning: 4 joints per vertex, one motor (8 floats) per joint
+//   MB_SCALE_FALLBACK the draw's scale is non-uniform or negative (motorScaledVertex)
+#include "pga.glsl"
+#include "motor_transform.glsl"
+
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec4 a_tangentRotor;  // handedness in the sign of .x (signed zero)
+layout(location = 2) in vec2 a_uv0;
+layout(location = 4) in vec2 a_uv1;    // locations 4..7: pipelines/gl/scene_textures.h
+layout(location = 5) in vec4 a_color;
+
+// Per draw: object -> world motor (two vec4: [s,e23,e31,e12], [e01,e02,e03,e0123]) and the
+// scale applied to positions before it: one float, or per axis for MB_SCALE_FALLBACK.
+uniform vec4 u_World[2];
+#ifdef MB_SCALE_FALLBACK
+uniform vec3 u_Scale;
+#else
+uniform float u_Scale;
+#endif
+// Per frame: world -> view motor and the projection (near, far, vertical fov, aspect).
+uniform vec4 u_Camera[2];
+uniform vec4 u_Projection;
+
+#ifdef MB_SKINNED
+layout(location = 6) in uvec4 a_joints;
+layout(location = 7) in vec4 a_weights;
+// The joint palette: one motor per joint (joint world motor * inverse-bind motor).
+layout(std430, binding = 0) readonly buffer MotorJoints { vec4 u_Joints[]; };
+motor jointMotor(uint j) { return motor(u_Joints[2u * j], u_Joints[2u * j + 1u]); }
+#endif
+
+out vec3 v_worldPosition;
+out vec3 v_worldNormal;
+out vec4 v_worldTangent;
+out vec2 v_uv0;
+out vec2 v_uv1;
+out vec4 v_color;
+
+void main() {
+  motor toWorld = motor(u_World[0], u_World[1]);
+#ifdef MB_SKINNED
+  // glTF: skinned meshes ignore their node's transform; the skin motors reach world space.
+  toWorld = motorBlendJoints(jointMotor(a_joints.x), jointMotor(a_joints.y),
+                             jointMotor(a_joints.z), jointMotor(a_joints.w), a_weights);
+#endif
+#ifdef MB_SCALE_FALLBACK
+  mat3x4 v = motorScaledVertex(toWorld, u_Scale, a_position, a_tangentRotor);
+#else
+  mat3x4 v = motorRigidVertex(toWorld, u_Scale, a_position, a_tangentRotor);
+#endif
+  v_worldPosition = v[0].xyz;
+  v_worldNormal = v[1].xyz;
+  v_worldTangent = v[2];
+  v_uv0 = a_uv0;
+  v_uv1 = a_uv1;
+  v_color = a_color;
+  gl_Position = motorWorldToClip(motor(u_Camera[0], u_Camera[1]), v[0].xyz, u_Projection.x,
+                                 u_Projection.y, u_Projection.z, u_Projection.w);
+}

@@ -1,0 +1,72 @@
+// motor_transform.glsl: the per-vertex transform of the motor pipeline, written once in the
+// GLSL subset that also compiles as C++ through shaders/shim/glsl.h, so the same source runs
+// on the GPU (shaders/motor.vs), in CPU tests, and with the op-counting scalar (the kernels
+// "rigid vertex with frame", "skinned vertex with 4 joints" and "world to clip").
+// Needs pga.glsl (motor = mat2x4 [[s,e23,e31,e12],[e01,e02,e03,e0123]]) included before it.
+
+#ifndef MB_MOTOR_TRANSFORM_GLSL
+#define MB_MOTOR_TRANSFORM_GLSL
+
+// A transformed vertex is returned as a mat3x4 (the shim's subset has no structs and no out
+// parameters): [0].xyz world position, [1].xyz world normal (any length; forward.fs
+// normalises), [2] = world tangent xyz and handedness w (+1 / -1). [0].w and [1].w are 0.
+
+// Handedness encoded in the sign of the tangent rotor's scalar part. 1/x keeps the sign of an
+// IEEE signed zero (1/-0 = -inf), so frames whose scalar part is exactly 0 decode correctly.
+float motorHandedness(vec4 tangentRotor) { return sign(1.0 / tangentRotor.x); }
+
+// Rigid vertex with frame (the paper's path). Contract: `toWorld` is a unit motor,
+// `scale` > 0 is the draw's uniform scale, applied to the position before the motor (the
+// scale was factored out of the hierarchy to the right of every motor); `tangentRotor` is the
+// unit rotor taking the basis frame (x = tangent, z = normal) to the vertex frame.
+mat3x4 motorRigidVertex(motor toWorld, float scale, vec3 position, vec4 tangentRotor) {
+  vec3 worldPosition = sw_mp(toWorld, position * scale);
+  // The frame is invariant to translation: only the rotor half of the world motor matters.
+  mat2x3 nt = extractNormalTangent(gp_rr(toWorld, motor(tangentRotor, vec4(0.0))));
+  return mat3x4(worldPosition, 0.0, nt[0], 0.0, nt[1], motorHandedness(tangentRotor));
+}
+
+// The documented fallback for draws whose scale is not a positive uniform scale: a
+// non-uniformly scaled leaf, or a mirrored (negative-scale) node. `scale` is applied to the
+// object-space position first; the frame is decoded in object space, the normal divided and
+// the tangent multiplied by the scale (the inverse-transpose rule of a normal matrix), then
+// both are moved by the motor and normalised (their lengths now differ per vertex, and the
+// matrix pipeline interpolates unit vectors). A mirroring scale (odd number of negative
+// components) flips the handedness, as the matrix pipeline's sign(det(model)) does.
+// Contract: no component of `scale` is 0.
+mat3x4 motorScaledVertex(motor toWorld, vec3 scale, vec3 position, vec4 tangentRotor) {
+  vec3 worldPosition = sw_mp(toWorld, position * scale);
+  mat2x3 nt = extractNormalTangent(motor(tangentRotor, vec4(0.0)));
+  float mirror = sign(scale.x * scale.y * scale.z);
+  return mat3x4(worldPosition, 0.0, normalize(sw_md(toWorld, nt[0] / scale)), 0.0,
+                normalize(sw_md(toWorld, nt[1] * scale)), mirror * motorHandedness(tangentRotor));
+}
+
+// Motor skinning: the weighted blend of four joint motors along the shortest arc (a joint
+// motor whose rotor half points away from the first joint's is negated, here by negating its
+// weight), renormalised. Contract: weights sum to 1 and joint motors are unit.
+motor motorBlendJoints(motor j0, motor j1, motor j2, motor j3, vec4 weights) {
+  float w1 = dot(j0[0], j1[0]) < 0.0 ? -weights.y : weights.y;
+  float w2 = dot(j0[0], j2[0]) < 0.0 ? -weights.z : weights.z;
+  float w3 = dot(j0[0], j3[0]) < 0.0 ? -weights.w : weights.w;
+  return normalize_m(j0 * weights.x + j1 * w1 + j2 * w2 + j3 * w3);
+}
+
+// Skinned vertex with four joints. glTF: a skinned mesh ignores its node's transform, so the
+// blended joint motor alone takes the vertex to world space. `scale` > 0 is the skin's uniform
+// scale (the joints' common world scale times the inverse-bind scale).
+mat3x4 motorSkinnedVertex(motor j0, motor j1, motor j2, motor j3, vec4 weights,
+                               float scale, vec3 position, vec4 tangentRotor) {
+  return motorRigidVertex(motorBlendJoints(j0, j1, j2, j3, weights), scale, position,
+                          tangentRotor);
+}
+
+// World to clip: the camera motor (world -> view, camera looking down +z with x mirrored, the
+// convention of pga.glsl's project()) and the perspective projection. With the same near,
+// far, vertical fov and aspect this equals glm::perspective * view (GL depth range -1..1).
+vec4 motorWorldToClip(motor camera, vec3 worldPosition, float znear, float zfar, float yfov,
+                      float aspect) {
+  return project(znear, zfar, yfov, aspect, sw_mp(camera, worldPosition));
+}
+
+#endif  // MB_MOTOR_TRANSFORM_GLSL
