@@ -128,6 +128,7 @@ Result<Mesh> convertMesh(const tinygltf::Model& m, int index, uint32_t jointCoun
       skip("no POSITION");
       continue;
     }
+    if (prim.indices < -1) return R::fail(where + ": indices accessor " + std::to_string(prim.indices) + " does not exist");
     if (prim.material >= int(scene.materials.size()) || prim.material < -1)
       return R::fail(where + ": material " + std::to_string(prim.material) + " does not exist");
 

@@ -59,10 +59,21 @@ Status convertNodes(const tinygltf::Model& m, Scene& scene) {
       scene.nodes[i].children.push_back(c);
     }
   }
-  for (size_t i = 0; i < n; ++i) {  // cycle check: every chain of parents ends within n steps
+  // Cycle check, linear in the node count: walk up from each node until a node already known
+  // to reach a root (2) or one on the current walk (1: a cycle).
+  std::vector<uint8_t> state(n, 0);
+  std::vector<int> walk;
+  for (size_t i = 0; i < n; ++i) {
+    walk.clear();
     int p = int(i);
-    for (size_t steps = 0; p != -1; ++steps, p = scene.nodes[size_t(p)].parent)
-      if (steps > n) return Status::fail("node hierarchy has a cycle through node " + std::to_string(i));
+    while (p != -1 && state[size_t(p)] == 0) {
+      state[size_t(p)] = 1;
+      walk.push_back(p);
+      p = scene.nodes[size_t(p)].parent;
+    }
+    if (p != -1 && state[size_t(p)] == 1)
+      return Status::fail("node hierarchy has a cycle through node " + std::to_string(p));
+    for (int w : walk) state[size_t(w)] = 2;
   }
 
   for (size_t s = 0; s < m.skins.size(); ++s) {
@@ -72,6 +83,7 @@ Status convertNodes(const tinygltf::Model& m, Scene& scene) {
     skin.name = src.name;
     skin.skeleton = src.skeleton;
     if (src.skeleton != -1 && !inRange(src.skeleton, n)) return Status::fail(where + ": skeleton node does not exist");
+    if (src.joints.empty()) return Status::fail(where + ": skin has no joints");
     for (int j : src.joints) {
       if (!inRange(j, n)) return Status::fail(where + ": joint node " + std::to_string(j) + " does not exist");
       skin.joints.push_back(j);

@@ -1,5 +1,6 @@
 #include "pipelines/scene/preflight.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include <nlohmann/json.hpp>
@@ -50,6 +51,28 @@ uint64_t field(const nlohmann::json& o, const char* key, uint64_t fallback, bool
   return it->is_number_unsigned() ? it->get<uint64_t>() : 0;
 }
 
+// Deepest [ / { nesting outside strings. Parsers recurse per level, so depth is bounded first.
+size_t nestingDepth(const uint8_t* p, size_t n) {
+  size_t depth = 0, worst = 0;
+  bool inString = false;
+  for (size_t i = 0; i < n; ++i) {
+    uint8_t c = p[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      worst = std::max(worst, ++depth);
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return worst;
+}
+
+constexpr size_t kMaxJsonDepth = 256;
+
 }  // namespace
 
 Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb) {
@@ -60,6 +83,8 @@ Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameH
   } else if (endsWith(nameHint, ".glb")) {
     return Status::fail("bad GLB magic (expected 'glTF')");
   }
+  if (nestingDepth(bytes.data() + begin, length) > kMaxJsonDepth)
+    return Status::fail("invalid JSON: nesting depth exceeds " + std::to_string(kMaxJsonDepth));
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(bytes.begin() + long(begin), bytes.begin() + long(begin + length));
@@ -67,6 +92,15 @@ Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameH
     return Status::fail(std::string("invalid JSON: ") + e.what());
   }
   if (!doc.is_object()) return Status::fail("invalid glTF: top-level JSON is not an object");
+  // glTF 1.0 (dictionaries instead of arrays) would otherwise parse as an empty 2.0 scene.
+  auto asset = doc.find("asset");
+  if (asset != doc.end() && asset->is_object()) {
+    auto v = asset->find("version"), mv = asset->find("minVersion");
+    if (v != asset->end() && v->is_string() && v->get<std::string>().rfind("2.", 0) != 0)
+      return Status::fail("unsupported glTF version " + v->get<std::string>() + " (2.0 required)");
+    if (mv != asset->end() && mv->is_string() && mv->get<std::string>() != "2.0")
+      return Status::fail("unsupported glTF minVersion " + mv->get<std::string>());
+  }
   auto arr = [&](const char* key) {
     auto it = doc.find(key);
     return it != doc.end() && it->is_array() ? *it : nlohmann::json::array();
