@@ -158,7 +158,7 @@ direction sw_my(motor a) {
 direction sw_mz(motor a) {
   return direction(a[0].y * a[0].w - a[0].x * a[0].z,
                    a[0].x * a[0].y + a[0].z * a[0].w,
-                   0.5 - a[0].y * a[0].y - a[0].z * a[0].z);
+                   0.5 - a[0].z * a[0].z - a[0].y * a[0].y);
 }
 
 // Image of the origin e123 (the translation column of the motor's matrix).
