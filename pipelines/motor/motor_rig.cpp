@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "pipelines/scene/transform.h"
+
 namespace mb::motor {
 namespace {
 
@@ -43,7 +45,9 @@ Rig buildRig(const Scene& scene) {
     for (size_t j = 0; j < s.joints.size(); ++j) {
       ConversionFlags f;
       // An inverse bind has no vertices of its own: never a residual (leaf = false).
-      binds.push_back(j < s.inverseBind.size() ? fromMatrix(s.inverseBind[j], TRS{}, false, &f)
+      TRS approx;
+      if (j < s.inverseBind.size()) decomposeMatrix(s.inverseBind[j], &approx);
+      binds.push_back(j < s.inverseBind.size() ? fromMatrix(s.inverseBind[j], approx, false, &f)
                                                : identityScaledMotor());
       count(f, &rig.bindCounts);
     }

@@ -51,24 +51,27 @@ ScaledMotor fromTRS(const TRS& trs, bool leaf, ConversionFlags* flags) {
 
 ScaledMotor fromMatrix(const glm::mat4& m, const TRS& approx, bool leaf, ConversionFlags* flags) {
   const companion::MatrixMotor mm = companion::motorFromMatrix(m);
-  if (mm.sheared || mm.degenerate) {
+  if (mm.degenerate) {
     ScaledMotor out = fromTRS(approx, leaf, flags);
     if (flags) flags->shear = true;
     return out;
   }
   ConversionFlags f;
   f.negative = mm.negative;
+  f.shear = mm.sheared;
   ScaledMotor out;
-  out.motor = mm.motor;
-  if (mm.kind != companion::ScaleKind::NonUniform) {
+  out.motor = mm.motor;  // sheared: the nearest rotation of the normalised columns
+  if (mm.kind != companion::ScaleKind::NonUniform && !mm.sheared) {
     out.scale = mm.uniformScale();  // negative for a reflection: a point reflection
-  } else if (leaf) {
+  } else if (leaf && !mm.sheared) {
     out.residual = mm.scale;        // matrix = motor * diag(scale), exact on a leaf
     f.nonUniform = true;
   } else {
+    // Not representable: keep the volume and the orientation sign.
     const glm::vec3 s = mm.scale;
     out.scale = (mm.negative ? -1.0f : 1.0f) * std::cbrt(std::fabs(s.x * s.y * s.z));
-    f.nonUniform = f.nonUniformInner = true;
+    f.nonUniform = mm.kind == companion::ScaleKind::NonUniform;
+    f.nonUniformInner = f.nonUniform;
   }
   if (flags) *flags = f;
   return out;

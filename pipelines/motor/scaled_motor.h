@@ -43,8 +43,9 @@ ScaledMotor identityScaledMotor();
 ScaledMotor fromTRS(const TRS& trs, bool leaf, ConversionFlags* flags = nullptr);
 
 // Node authored as a matrix -> ScaledMotor through the companion's scale check (a reflection
-// becomes a negative uniform scale). Sheared or degenerate matrices fall back to the loader's
-// TRS approximation `approx` (flags->shear).
+// becomes a negative uniform scale; a non-uniform scale a residual on a leaf). A sheared
+// matrix (flags->shear) keeps the nearest rotation and the signed geometric-mean scale; a
+// degenerate one (zero axis) falls back to the TRS approximation `approx`.
 ScaledMotor fromMatrix(const glm::mat4& m, const TRS& approx, bool leaf,
                        ConversionFlags* flags = nullptr);
 
