@@ -12,8 +12,7 @@
 // uniformBytesPerFrame.
 #include "pipelines/motor/motor_pipeline.h"
 
-#include <chrono>
-
+#include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
@@ -23,23 +22,6 @@
 
 namespace mb {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-struct GpuPrimitive {
-  GLuint vao = 0, vertices = 0, indices = 0;
-  GLsizei indexCount = 0;
-  bool skinned = false;
-  gl::ExtraStreams extra;
-};
-
-// Program variants: [skinned][scale fallback].
-struct Programs {
-  std::unique_ptr<gl::Program> p[2][2];
-};
 
 // The scale a draw applies to its positions, and whether the paper's path can take it.
 struct DrawScale {
@@ -66,46 +48,20 @@ public:
   PipelineStats stats() const override { return stats_; }
 
 private:
-  GpuPrimitive upload(const Primitive& p, bool skinned);
   void uploadPalettes();
   void release();
 
   const Scene* scene_ = nullptr;
-  Programs programs_;
+  std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][scale fallback]
   gl::SceneTextures textures_;
-  std::vector<std::vector<GpuPrimitive>> meshes_;  // [mesh][primitive]
+  gl::SceneGeometry geometry_;
+  gl::PaletteBuffers paletteBuffers_;             // one per palettes_ entry
   std::vector<gl::DrawItem> draws_;
   motor::Rig rig_;
-  std::vector<motor::ScaledMotor> world_;          // per node, last update()
+  std::vector<motor::ScaledMotor> world_;         // per node, last update()
   std::vector<motor::JointPalette> palettes_;
-  std::vector<GLuint> paletteBuffers_;             // per palettes_ entry
   PipelineStats stats_;
 };
-
-GpuPrimitive MotorPipeline::upload(const Primitive& p, bool skinned) {
-  GpuPrimitive g;
-  glGenVertexArrays(1, &g.vao);
-  glBindVertexArray(g.vao);
-  motor::VertexStream stream = motor::interleaveVertices(p);
-  stats_.zeroScalarFrames += stream.zeroScalarFrames;
-  g.vertices = gl::createBuffer(GL_ARRAY_BUFFER, stream.data, stats_.vertexBytes);
-  const GLsizei stride = motor::kFloatsPerVertex * sizeof(float);
-  const GLint sizes[3] = {3, 4, 2};  // position, tangent rotor, uv0 (locations 0, 1, 2)
-  size_t offset = 0;
-  for (GLuint loc = 0; loc < 3; ++loc) {
-    glEnableVertexAttribArray(loc);
-    glVertexAttribPointer(loc, sizes[loc], GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<const void*>(offset * sizeof(float)));
-    offset += size_t(sizes[loc]);
-  }
-  g.extra.upload(p, stats_.extraVertexBytes, stats_.skinVertexBytes);
-  g.skinned = skinned && g.extra.joints != 0;
-  g.indices = gl::createBuffer(GL_ELEMENT_ARRAY_BUFFER, p.indices, stats_.indexBytes);
-  g.indexCount = GLsizei(p.indices.size());
-  glBindVertexArray(0);
-  stats_.vertices += p.positions.size();
-  return g;
-}
 
 Status MotorPipeline::prepare(const Scene& scene) {
   release();
@@ -118,35 +74,23 @@ Status MotorPipeline::prepare(const Scene& scene) {
       if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
       auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
       if (!program) return Status::fail(program.error());
-      programs_.p[skinned][fallback] = program.take();
-      if (skinned) programs_.p[skinned][fallback]->bindStorageBlock("MotorJoints", 0);
+      programs_[skinned][fallback] = program.take();
+      if (skinned) programs_[skinned][fallback]->bindStorageBlock("MotorJoints", 0);
     }
-  GLint maxBlock = 0;
-  glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
-  for (const Skin& s : scene.skins)
-    if (s.joints.size() * 8 * sizeof(float) > size_t(maxBlock))
-      return Status::fail(scene.source + ": skin '" + s.name + "' has " +
-                          std::to_string(s.joints.size()) + " joints; the joint palette exceeds "
-                          "GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(maxBlock) + ")");
+  if (Status fits = gl::checkPaletteSize(scene, 8 * sizeof(float)); !fits) return fits;
+  if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
 
-  Status tex = textures_.upload(scene, stats_.textureBytes);
-  if (!tex) return tex;
   // Load-time conversion: transforms and inverse binds to motors, frames to rotors.
-  auto t0 = Clock::now();
+  auto t0 = gl::Clock::now();
   rig_ = motor::buildRig(scene);
-  std::vector<bool> skinnedMesh(scene.meshes.size(), false);
-  for (const Node& n : scene.nodes)
-    if (n.mesh >= 0 && size_t(n.mesh) < scene.meshes.size() && n.skin >= 0)
-      skinnedMesh[size_t(n.mesh)] = true;
-  for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    meshes_.emplace_back();
-    for (const Primitive& p : scene.meshes[m].primitives)
-      meshes_.back().push_back(upload(p, skinnedMesh[m]));
-  }
-  stats_.conversionMs = msSince(t0);
+  auto interleave = [this](const Primitive& p) {
+    motor::VertexStream stream = motor::interleaveVertices(p);
+    stats_.zeroScalarFrames += stream.zeroScalarFrames;
+    return std::move(stream.data);
+  };
+  geometry_.upload(scene, interleave, {3, 4, 2}, stats_);  // position, tangent rotor, uv0
+  stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
-  if (stats_.vertices)
-    stats_.floatsPerVertex = double(stats_.vertexBytes) / sizeof(float) / double(stats_.vertices);
   update(AnimState{});
   GLenum err = glGetError();
   if (err != GL_NO_ERROR) return Status::fail(scene.source + ": motor prepare: " + gl::errorName(err));
@@ -155,12 +99,11 @@ Status MotorPipeline::prepare(const Scene& scene) {
 
 void MotorPipeline::update(const AnimState& state) {
   if (!scene_) return;
-  auto t0 = Clock::now();
+  auto t0 = gl::Clock::now();
   motor::RigCounts counts = rig_.bindCounts;
   world_ = motor::worldPose(*scene_, motor::localForState(*scene_, rig_, state, &counts));
   palettes_ = motor::jointPalettes(*scene_, rig_, world_);
-  stats_.updateMs = msSince(t0);
-  for (const motor::JointPalette& p : palettes_) counts.nonUniformSkins += !p.uniform;
+  stats_.updateMs = gl::msSince(t0);
   stats_.nonUniformScaleNodes = counts.nonUniformScaleNodes;
   stats_.negativeScaleNodes = counts.negativeScaleNodes;
   stats_.shearMatrixNodes = counts.shearMatrixNodes;
@@ -169,20 +112,12 @@ void MotorPipeline::update(const AnimState& state) {
 void MotorPipeline::uploadPalettes() {
   stats_.skinBytesPerFrame = 0;
   uint64_t joints = 0;
-  while (paletteBuffers_.size() < palettes_.size()) {
-    GLuint b = 0;
-    glGenBuffers(1, &b);
-    paletteBuffers_.push_back(b);
-  }
   for (size_t i = 0; i < palettes_.size(); ++i) {
     const std::vector<float>& m = palettes_[i].motors;
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, paletteBuffers_[i]);
-    gl::bufferData(GL_SHADER_STORAGE_BUFFER, m.size() * sizeof(float),
-                   m.empty() ? nullptr : m.data(), GL_STREAM_DRAW, stats_.skinBytesPerFrame);
+    paletteBuffers_.upload(i, m.data(), m.size() * sizeof(float), stats_.skinBytesPerFrame);
     joints += scene_->skins[size_t(palettes_[i].skin)].joints.size();
   }
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  stats_.floatsPerJoint = joints ? double(stats_.skinBytesPerFrame) / sizeof(float) / double(joints) : 0.0;
+  stats_.floatsPerJoint = gl::floatsPer(stats_.skinBytesPerFrame, joints);
 }
 
 void MotorPipeline::render(const View& view) {
@@ -192,19 +127,17 @@ void MotorPipeline::render(const View& view) {
   uploadPalettes();
   const motor::CameraMotor camera = motor::cameraFromView(view);
   const float projection[4] = {camera.znear, camera.zfar, camera.yfov, camera.aspect};
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  for (auto& row : programs_.p)
+  gl::beginDraws();
+  for (auto& row : programs_)
     for (auto& p : row) {
       p->use();
       gl::uniform4fv(p->uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
       gl::uniform4f(p->uniform("u_Projection"), projection, stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(*p, view, stats_.uniformBytesPerFrame);
     }
-  uint64_t transformBytes = 0;
-  int transforms = 0;
+  uint64_t transformBytes = 0, transforms = 0;
   for (const gl::DrawItem& d : draws_) {
-    const GpuPrimitive& g = meshes_[size_t(d.mesh)][size_t(d.primitive)];
+    const gl::GpuPrimitive& g = geometry_.at(d);
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
     if (!g.indexCount) continue;
     // A mesh shared by a skinned and an unskinned node is drawn rigidly on the latter.
@@ -215,7 +148,7 @@ void MotorPipeline::render(const View& view) {
     const motor::ScaledMotor& world = world_[size_t(d.node)];
     const DrawScale scale = palette ? drawScale(palette->scale, glm::vec3(1.0f))
                                     : drawScale(world.scale, world.residual);
-    const gl::Program& program = *programs_.p[palette ? 1 : 0][scale.fallback ? 1 : 0];
+    const gl::Program& program = *programs_[palette ? 1 : 0][scale.fallback ? 1 : 0];
     program.use();
     if (palette) {
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
@@ -230,33 +163,19 @@ void MotorPipeline::render(const View& view) {
       gl::uniform1f(program.uniform("u_Scale"), scale.value.x, stats_.uniformBytesPerFrame);
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(scale.mirrored);
-    glBindVertexArray(g.vao);
-    g.extra.setDefaults();
-    glDrawElements(GL_TRIANGLES, g.indexCount, GL_UNSIGNED_INT, nullptr);
+    g.draw();
     ++stats_.draws;
   }
-  glBindVertexArray(0);
-  gl::setWinding(false);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_BLEND);
+  gl::endDraws();
   stats_.uniformBytesPerFrame += transformBytes;
-  stats_.floatsPerTransform = transforms ? double(transformBytes) / sizeof(float) / transforms : 0.0;
+  stats_.floatsPerTransform = gl::floatsPer(transformBytes, transforms);
 }
 
 void MotorPipeline::release() {
-  for (auto& mesh : meshes_)
-    for (GpuPrimitive& g : mesh) {
-      g.extra.release();
-      glDeleteBuffers(1, &g.vertices);
-      glDeleteBuffers(1, &g.indices);
-      glDeleteVertexArrays(1, &g.vao);
-    }
-  meshes_.clear();
-  if (!paletteBuffers_.empty())
-    glDeleteBuffers(GLsizei(paletteBuffers_.size()), paletteBuffers_.data());
-  paletteBuffers_.clear();
+  geometry_.release();
+  paletteBuffers_.release();
   textures_.release();
-  for (auto& row : programs_.p)
+  for (auto& row : programs_)
     for (auto& p : row) p.reset();
   scene_ = nullptr;
 }
