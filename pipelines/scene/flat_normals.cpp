@@ -19,17 +19,23 @@ void append(std::vector<T>& stream, uint32_t src) {
   if (!stream.empty()) stream.push_back(T(stream[src]));
 }
 
+// Applies f to every per-vertex stream of p.
+template <class F>
+void forEachStream(Primitive& p, F&& f) {
+  f(p.positions);
+  f(p.normals);
+  f(p.tangents);
+  f(p.uv0);
+  f(p.uv1);
+  f(p.colors);
+  f(p.joints);
+  f(p.weights);
+}
+
 }  // namespace
 
 void generateFlatNormals(Primitive& p) {
-  const auto& idx = p.indices;
-  expand(p.positions, idx);
-  expand(p.tangents, idx);
-  expand(p.uv0, idx);
-  expand(p.uv1, idx);
-  expand(p.colors, idx);
-  expand(p.joints, idx);
-  expand(p.weights, idx);
+  forEachStream(p, [&](auto& stream) { expand(stream, p.indices); });
   size_t n = p.indices.size();  // the loader keeps triangle lists a multiple of 3
   p.normals.assign(n, glm::vec3(0, 0, 1));
   for (size_t t = 0; t < n; t += 3) {
@@ -42,14 +48,7 @@ void generateFlatNormals(Primitive& p) {
 }
 
 uint32_t duplicateVertex(Primitive& p, uint32_t src) {
-  append(p.positions, src);
-  append(p.normals, src);
-  append(p.tangents, src);
-  append(p.uv0, src);
-  append(p.uv1, src);
-  append(p.colors, src);
-  append(p.joints, src);
-  append(p.weights, src);
+  forEachStream(p, [&](auto& stream) { append(stream, src); });
   return uint32_t(p.positions.size() - 1);
 }
 
