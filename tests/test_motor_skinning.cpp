@@ -13,6 +13,7 @@
 #include "pipelines/motor/motor_kernels.h"
 #include "pipelines/motor/motor_rig.h"
 #include "pipelines/scene/camera_rule.h"
+#include "tests/pga_test_support.h"
 
 using namespace mb;
 using V3 = MK::vec3;
@@ -20,12 +21,9 @@ using V4 = MK::vec4;
 
 namespace {
 
-float uni(std::mt19937& g, float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(g); }
-
-glm::quat randomQuat(std::mt19937& g) {
-  std::normal_distribution<float> n;
-  return glm::normalize(glm::quat(n(g), n(g), n(g), n(g)));
-}
+// Seeded draws from tests/pga_test_support.h, in float.
+float uni(std::mt19937& g, float lo, float hi) { return float(mbtest::uniform(g, lo, hi)); }
+glm::quat randomQuat(std::mt19937& g) { return glm::quat(mbtest::randomQuat(g)); }
 
 struct Joint {
   glm::mat4 matrix;

@@ -17,8 +17,7 @@ struct RigCounts {
   int nonUniformScaleNodes = 0;  // residual on a leaf, or approximated on an inner node/joint
   int nonUniformInnerNodes = 0;  // of those, approximated (not exact)
   int negativeScaleNodes = 0;    // a scale component < 0 (matrix: det < 0)
-  int shearMatrixNodes = 0;      // sheared authored matrix: TRS approximation
-  int nonUniformSkins = 0;       // skins whose joints' world scales differ (joint 0's is used)
+  int shearMatrixNodes = 0;      // sheared authored matrix: nearest rotation + mean scale
 };
 
 // Load-time conversion of a Scene.
