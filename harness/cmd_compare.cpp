@@ -5,14 +5,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <set>
 #include <sstream>
 
 #include "harness/args.h"
 #include "harness/command.h"
 #include "harness/image_metrics.h"
 #include "harness/render_frame.h"
-#include "pipelines/scene/loader.h"
 
 namespace mb {
 namespace {
@@ -52,33 +50,27 @@ std::string summaryLine(const std::string& scene, const std::string& a, const st
 }
 
 int runCompare(const std::vector<std::string>& argv) {
+  auto fail = [](const std::string& message) { return commandError("compare", message); };
   Args args(argv);
-  std::set<std::string> known = {"pipelines", "o", "output", "fail", "failpercent", "hardfail"};
-  for (const std::string& n : frameOptionNames()) known.insert(n);
-  auto fail = [](const std::string& message) {
-    std::fprintf(stderr, "motorbench compare: error: %s\n", message.c_str());
-    return 2;
-  };
-  if (!args.error().empty()) return fail(args.error());
-  if (auto unknown = args.unknown(known); !unknown.empty()) return fail("unknown option " + unknown[0]);
-  if (args.positional().size() != 1) return fail("expected one SCENE (a file or a built-in scene name)");
-  std::string dir = args.get("o", args.get("output", ""));
-  if (dir.empty()) return fail("missing -o DIR");
+  auto cmd = parseSceneCommand(args, {"pipelines", "fail", "failpercent", "hardfail"}, "DIR");
+  if (!cmd) return fail(cmd.error());
+  const std::string& dir = cmd->output;
+  const Scene& scene = cmd->scene;
+  const FrameSettings& settings = cmd->settings;
   std::vector<std::string> names = splitList(args.get("pipelines", "matrix,motor"));
   if (names.size() != 2) return fail("--pipelines needs exactly two names, e.g. matrix,motor");
   bool thresholdsGiven = args.has("fail") || args.has("failpercent") || args.has("hardfail");
   Thresholds t;
-  t.fail = args.number("fail", t.fail);
-  t.failPercent = args.number("failpercent", t.failPercent);
-  t.hardFail = args.number("hardfail", t.hardFail);
+  for (auto [key, value] : {std::pair{"fail", &t.fail}, {"failpercent", &t.failPercent},
+                            {"hardfail", &t.hardFail}}) {
+    auto v = numberOption(args, key, *value);
+    if (!v) return fail(v.error());
+    *value = *v;
+  }
 
-  auto scene = loadScene(args.positional()[0]);
-  if (!scene) return fail(scene.error());
-  auto settings = frameSettingsFromArgs(args, *scene);
-  if (!settings) return fail(settings.error());
   std::vector<Frame> frames;
   for (const std::string& name : names) {
-    auto frame = renderFrame(*scene, name, *settings);
+    auto frame = renderFrame(scene, name, settings);
     if (!frame) return fail(frame.error());
     frames.push_back(frame.take());
   }
@@ -99,11 +91,11 @@ int runCompare(const std::vector<std::string>& argv) {
   if (!d) return fail(d.error());
 
   nlohmann::json j = {
-      {"scene", scene->source},
+      {"scene", scene.source},
       {"pipelines", names},
       {"images", {names[0] + ".png", names[1] + ".png"}},
       {"diff", "diff.png"},
-      {"settings", toJson(*settings)},
+      {"settings", toJson(settings)},
       {"view", toJson(frames[0].view)},
       {"gl", {{"renderer", frames[0].glRenderer}, {"version", frames[0].glVersion},
               {"backend", frames[0].glBackend}}},
@@ -119,7 +111,7 @@ int runCompare(const std::vector<std::string>& argv) {
   std::ofstream out(jsonPath);
   out << j.dump(2) << "\n";
   if (!out.good()) return fail(jsonPath + ": write failed");
-  std::printf("%s\n", summaryLine(scene->source, names[0], names[1], *metrics,
+  std::printf("%s\n", summaryLine(scene.source, names[0], names[1], *metrics,
                                   thresholdsGiven ? &verdict : nullptr).c_str());
   return thresholdsGiven && verdict.failed ? 1 : 0;
 }

@@ -1,12 +1,13 @@
 #include "harness/render_frame.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <stdexcept>
 
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
 #include "pipelines/scene/camera_rule.h"
+#include "pipelines/scene/loader.h"
 
 namespace mb {
 namespace {
@@ -49,6 +50,42 @@ const std::vector<std::string>& frameOptionNames() {
   return names;
 }
 
+Result<SceneCommand> parseSceneCommand(const Args& args, const std::set<std::string>& options,
+                                       const std::string& outputWhat) {
+  using R = Result<SceneCommand>;
+  std::set<std::string> known = options;
+  known.insert({"o", "output"});
+  known.insert(frameOptionNames().begin(), frameOptionNames().end());
+  if (!args.error().empty()) return R::fail(args.error());
+  if (auto unknown = args.unknown(known); !unknown.empty()) return R::fail("unknown option " + unknown[0]);
+  if (args.positional().size() != 1) return R::fail("expected one SCENE (a file or a built-in scene name)");
+  SceneCommand c;
+  c.output = args.get("o", args.get("output", ""));
+  if (c.output.empty()) return R::fail("missing -o " + outputWhat);
+  auto scene = loadScene(args.positional()[0]);
+  if (!scene) return R::fail(scene.error());
+  c.scene = scene.take();
+  auto settings = frameSettingsFromArgs(args, c.scene);
+  if (!settings) return R::fail(settings.error());
+  c.settings = *settings;
+  return c;
+}
+
+Result<double> numberOption(const Args& args, const std::string& key, double fallback) {
+  auto v = args.get(key);
+  if (!v) return fallback;
+  char* end = nullptr;
+  double d = std::strtod(v->c_str(), &end);
+  if (v->empty() || *end != '\0' || std::isnan(d))
+    return Result<double>::fail("--" + key + " " + *v + ": not a number");
+  return d;
+}
+
+int commandError(const char* command, const std::string& message) {
+  std::fprintf(stderr, "motorbench %s: error: %s\n", command, message.c_str());
+  return 2;
+}
+
 Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene) {
   using R = Result<FrameSettings>;
   FrameSettings s;
@@ -70,13 +107,15 @@ Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene
     if (!i) return R::fail(i.error());
     s.camera = *i;
   }
-  try {
-    s.anim.time = float(args.number("time", 0.0));
-    s.anim.time2 = float(args.number("time2", s.anim.time));
-    s.anim.blend = float(args.number("blend", s.anim.anim2 >= 0 ? 0.5 : 0.0));
-  } catch (const std::exception& e) {
-    return R::fail(e.what());
-  }
+  auto time = numberOption(args, "time", 0.0);
+  if (!time) return R::fail(time.error());
+  auto time2 = numberOption(args, "time2", *time);
+  if (!time2) return R::fail(time2.error());
+  auto blend = numberOption(args, "blend", s.anim.anim2 >= 0 ? 0.5 : 0.0);
+  if (!blend) return R::fail(blend.error());
+  s.anim.time = float(*time);
+  s.anim.time2 = float(*time2);
+  s.anim.blend = float(*blend);
   if (s.anim.blend < 0.0f || s.anim.blend > 1.0f)
     return R::fail("--blend " + args.get("blend", "") + ": expected a weight in [0, 1]");
   if (args.has("blend") && s.anim.anim2 < 0)

@@ -2,6 +2,7 @@
 // image: used by `render` and `compare`, and by any later command that needs frames.
 #pragma once
 #include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,24 @@ Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
 Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene);
 // The option names frameSettingsFromArgs reads (for unknown-option checks).
 const std::vector<std::string>& frameOptionNames();
+
+// The start of every command that renders one SCENE to an output (-o / --output): rejects
+// parse errors, options other than `options` + -o/--output + the frame options, anything but
+// one SCENE, a missing output (`outputWhat` names it in the message, e.g. "out.png"); then
+// loads the scene and reads the frame options. Errors are messages for the user.
+struct SceneCommand {
+  std::string output;
+  Scene scene;
+  FrameSettings settings;
+};
+Result<SceneCommand> parseSceneCommand(const Args& args, const std::set<std::string>& options,
+                                       const std::string& outputWhat);
+
+// Option --`key` as a number (`fallback` when absent); the error names the option and value.
+Result<double> numberOption(const Args& args, const std::string& key, double fallback);
+
+// Prints "motorbench <command>: error: <message>" on stderr; returns 2, the error exit code.
+int commandError(const char* command, const std::string& message);
 
 // JSON forms for the result files of the commands (every counter, by its field name).
 nlohmann::json toJson(const PipelineStats& stats);

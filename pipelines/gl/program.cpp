@@ -3,19 +3,13 @@
 namespace mb::gl {
 namespace {
 
-std::string shaderLog(GLuint shader) {
+// The info log of a shader or program (`getiv` / `getLog` pick which).
+template <class GetIv, class GetLog>
+std::string infoLog(GLuint id, GetIv getiv, GetLog getLog) {
   GLint len = 0;
-  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &len);
+  getiv(id, GL_INFO_LOG_LENGTH, &len);
   std::string log(size_t(len > 0 ? len : 1), '\0');
-  glGetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
-  return log.c_str();
-}
-
-std::string programLog(GLuint program) {
-  GLint len = 0;
-  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &len);
-  std::string log(size_t(len > 0 ? len : 1), '\0');
-  glGetProgramInfoLog(program, GLsizei(log.size()), nullptr, log.data());
+  getLog(id, GLsizei(log.size()), nullptr, log.data());
   return log.c_str();
 }
 
@@ -33,7 +27,7 @@ GLuint compile(GLenum stage, const std::string& path, const Defines& defines, st
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    error = src->files[0] + ": compile failed:\n" + mapLog(shaderLog(shader), src->files);
+    error = src->files[0] + ": compile failed:\n" + mapLog(infoLog(shader, glGetShaderiv, glGetShaderInfoLog), src->files);
     glDeleteShader(shader);
     return 0;
   }
@@ -65,7 +59,7 @@ Result<std::unique_ptr<Program>> Program::fromFiles(const std::string& vsPath,
   glDeleteShader(fs);
   GLint ok = 0;
   glGetProgramiv(p->id_, GL_LINK_STATUS, &ok);
-  if (!ok) return R::fail(vsPath + " + " + fsPath + ": link failed:\n" + programLog(p->id_));
+  if (!ok) return R::fail(vsPath + " + " + fsPath + ": link failed:\n" + infoLog(p->id_, glGetProgramiv, glGetProgramInfoLog));
   return p;
 }
 

@@ -165,24 +165,16 @@ void setWinding(bool mirrored) { glFrontFace(mirrored ? GL_CW : GL_CCW); }
 
 std::vector<DrawItem> buildDrawList(const Scene& scene) {
   std::vector<DrawItem> opaque, blend;
-  std::vector<int> stack(scene.roots.rbegin(), scene.roots.rend());
-  std::vector<bool> visited(scene.nodes.size(), false);
-  while (!stack.empty()) {
-    int n = stack.back();
-    stack.pop_back();
-    if (n < 0 || size_t(n) >= scene.nodes.size() || visited[size_t(n)]) continue;
-    visited[size_t(n)] = true;  // guards against malformed graphs with cycles
+  for (int n : nodesInDrawOrder(scene)) {
     const Node& node = scene.nodes[size_t(n)];
-    if (node.mesh >= 0 && size_t(node.mesh) < scene.meshes.size()) {
-      const Mesh& mesh = scene.meshes[size_t(node.mesh)];
-      for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-        int mat = mesh.primitives[p].material;
-        bool isBlend = mat >= 0 && size_t(mat) < scene.materials.size() &&
-                       scene.materials[size_t(mat)].alphaMode == AlphaMode::Blend;
-        (isBlend ? blend : opaque).push_back({n, node.mesh, int(p)});
-      }
+    if (node.mesh < 0 || size_t(node.mesh) >= scene.meshes.size()) continue;
+    const Mesh& mesh = scene.meshes[size_t(node.mesh)];
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+      int mat = mesh.primitives[p].material;
+      bool isBlend = mat >= 0 && size_t(mat) < scene.materials.size() &&
+                     scene.materials[size_t(mat)].alphaMode == AlphaMode::Blend;
+      (isBlend ? blend : opaque).push_back({n, node.mesh, int(p)});
     }
-    for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.push_back(*c);
   }
   opaque.insert(opaque.end(), blend.begin(), blend.end());
   return opaque;

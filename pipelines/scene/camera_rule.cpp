@@ -65,16 +65,7 @@ void addMesh(const Scene& scene, const std::vector<glm::mat4>& world, int n, Bou
 
 Bounds sceneBounds(const Scene& scene, const std::vector<glm::mat4>& world) {
   Bounds b;
-  std::vector<int> stack(scene.roots.begin(), scene.roots.end());
-  std::vector<bool> seen(scene.nodes.size(), false);
-  while (!stack.empty()) {
-    int n = stack.back();
-    stack.pop_back();
-    if (n < 0 || size_t(n) >= scene.nodes.size() || seen[size_t(n)]) continue;
-    seen[size_t(n)] = true;
-    addMesh(scene, world, n, b);
-    for (int c : scene.nodes[size_t(n)].children) stack.push_back(c);
-  }
+  for (int n : nodesInDrawOrder(scene)) addMesh(scene, world, n, b);
   return b;
 }
 
@@ -86,6 +77,22 @@ glm::quat rotationOf(const glm::mat4& m) {
 }
 
 }  // namespace
+
+std::vector<int> nodesInDrawOrder(const Scene& scene) {
+  std::vector<int> order;
+  std::vector<int> stack(scene.roots.rbegin(), scene.roots.rend());
+  std::vector<bool> seen(scene.nodes.size(), false);
+  while (!stack.empty()) {
+    int n = stack.back();
+    stack.pop_back();
+    if (n < 0 || size_t(n) >= scene.nodes.size() || seen[size_t(n)]) continue;
+    seen[size_t(n)] = true;
+    order.push_back(n);
+    const std::vector<int>& children = scene.nodes[size_t(n)].children;
+    stack.insert(stack.end(), children.rbegin(), children.rend());
+  }
+  return order;
+}
 
 std::vector<glm::mat4> worldMatrices(const Scene& scene, const std::vector<TRS>& pose) {
   const size_t count = scene.nodes.size();

@@ -27,6 +27,10 @@ struct View {
 // fully inside the frustum, near/far hugging the sphere. An empty scene gives View{}.
 View frameScene(const Scene& scene, const AnimState& state, float aspect, int cameraIndex = -1);
 
+// Nodes reachable from Scene::roots, depth first in child order, each once (malformed graphs
+// with shared children or cycles cannot repeat a node). The draw order of every pipeline.
+std::vector<int> nodesInDrawOrder(const Scene& scene);
+
 // World matrix of every node for `pose` (one local TRS per node, e.g. from samplePose):
 // parent world * local, where local is the authored matrix for nodes authored as one (glTF
 // forbids animating those) and T*R*S otherwise. Nodes unreachable from a root get their
