@@ -148,8 +148,9 @@ inline std::string checkSceneInvariants(const Scene& s) {
   return "";
 }
 
-// True when every authored number a pose is made from is modest, so a non-finite pose can only
-// come from the sampling code and not from overflowing arithmetic on absurd values.
+// True when every authored number a pose or a framing is made from is modest (|x| < 1e6), so a
+// non-finite result can only come from the code and not from overflowing arithmetic on absurd
+// values.
 inline bool poseInputsTame(const Scene& s) {
   auto tame = [](float x) { return std::isfinite(x) && std::abs(x) < 1e6f; };
   for (const Node& n : s.nodes) {
@@ -157,6 +158,15 @@ inline bool poseInputsTame(const Scene& s) {
     for (int i = 0; i < 3; ++i)
       if (!tame(f[i]) || !tame((&n.local.scale.x)[i])) return false;
   }
+  for (const Mesh& m : s.meshes)
+    for (const Primitive& p : m.primitives)
+      for (const glm::vec3& v : p.positions)
+        if (!tame(v.x) || !tame(v.y) || !tame(v.z)) return false;
+  for (const Skin& sk : s.skins)
+    for (const glm::mat4& m : sk.inverseBind)
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+          if (!tame(m[c][r])) return false;
   for (const Animation& a : s.animations) {
     if (!tame(a.duration)) return false;
     for (const Channel& c : a.channels) {

@@ -1,0 +1,36 @@
+// Replays every input in tests/fuzz/regressions/ (crashes and violations the fuzzer found, see
+// the README there) through exactly what the fuzzer does with it (tests/fuzz/fuzz_exercise.h),
+// in the normal build -- and under ASan/UBSan in `scripts/test.sh --sanitize`.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "tests/fuzz/fuzz_exercise.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> regressionInputs() {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(fs::path(MB_SOURCE_DIR) / "tests" / "fuzz" / "regressions", ec))
+    if (e.is_regular_file() && e.path().filename() != "README.md") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(FuzzRegressions, EveryFindingStaysFixed) {
+  const auto files = regressionInputs();
+  for (const auto& f : files) {
+    std::ifstream in(f, std::ios::binary);
+    std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(mb::fuzz::exercise(bytes.data(), bytes.size()), "") << f.filename().string();
+  }
+  std::printf("[ replay   ] %zu regression inputs\n", files.size());
+}
+
+}  // namespace
