@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "harness/args.h"
 #include "harness/command.h"
@@ -14,23 +13,6 @@
 
 namespace mb {
 namespace {
-
-std::vector<std::string> splitList(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
-nlohmann::json metricsJson(const ImageMetrics& m) {
-  bool identical = m.rmse == 0.0;
-  return {{"rmse", m.rmse}, {"psnr", identical ? nlohmann::json(nullptr) : nlohmann::json(m.psnr)},
-          {"identical", identical}, {"meanError", m.meanError}, {"maxError", m.maxError},
-          {"maxErrorPixel", {{"x", m.maxX}, {"y", m.maxY}, {"channel", m.maxChannel}}},
-          {"fractionOver1", m.fractionOver1}, {"fractionOver2", m.fractionOver2},
-          {"fractionOver4", m.fractionOver4}};
-}
 
 std::string summaryLine(const std::string& scene, const std::string& a, const std::string& b,
                         const ImageMetrics& m, const Verdict* v) {
@@ -99,7 +81,7 @@ int runCompare(const std::vector<std::string>& argv) {
       {"view", toJson(frames[0].view)},
       {"gl", {{"renderer", frames[0].glRenderer}, {"version", frames[0].glVersion},
               {"backend", frames[0].glBackend}}},
-      {"metrics", metricsJson(*metrics)},
+      {"metrics", toJson(*metrics)},
       {"thresholds", {{"applied", thresholdsGiven}, {"fail", t.fail},
                       {"failpercent", t.failPercent},
                       {"hardfail", std::isinf(t.hardFail) ? nlohmann::json(nullptr)

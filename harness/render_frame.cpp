@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
@@ -193,6 +194,23 @@ nlohmann::json toJson(const View& v) {
   return {{"eye", {v.eye.x, v.eye.y, v.eye.z}},
           {"orientation_wxyz", {v.orientation.w, v.orientation.x, v.orientation.y, v.orientation.z}},
           {"yfov", v.yfov}, {"aspect", v.aspect}, {"znear", v.znear}, {"zfar", v.zfar}};
+}
+
+nlohmann::json toJson(const ImageMetrics& m) {
+  bool identical = m.rmse == 0.0;
+  return {{"rmse", m.rmse}, {"psnr", identical ? nlohmann::json(nullptr) : nlohmann::json(m.psnr)},
+          {"identical", identical}, {"meanError", m.meanError}, {"maxError", m.maxError},
+          {"maxErrorPixel", {{"x", m.maxX}, {"y", m.maxY}, {"channel", m.maxChannel}}},
+          {"fractionOver1", m.fractionOver1}, {"fractionOver2", m.fractionOver2},
+          {"fractionOver4", m.fractionOver4}};
+}
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
 }
 
 }  // namespace mb

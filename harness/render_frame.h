@@ -67,5 +67,10 @@ int commandError(const char* command, const std::string& message);
 nlohmann::json toJson(const PipelineStats& stats);
 nlohmann::json toJson(const FrameSettings& settings);
 nlohmann::json toJson(const View& view);
+// psnr is null (and "identical" true) for identical images: JSON has no infinity.
+nlohmann::json toJson(const ImageMetrics& metrics);
+
+// The items of a comma-separated option value ("matrix,motor"), empty items dropped.
+std::vector<std::string> splitList(const std::string& s);
 
 }  // namespace mb
