@@ -1,0 +1,169 @@
+// `motorbench time [SCENE...] [--frames N] [--warmup W] [--size WxH] [--tiny WxH]
+//  [--lp-threads N] [--json FILE]`: frame time of every registered pipeline on each scene
+// (harness/frame_timing.h), printed as medians with quartiles and as motor/matrix ratios
+// measured in the same run. No SCENE: every built-in scene. The crowd scene also runs in a
+// vertex-bound configuration: the same scene at a tiny viewport (--tiny, default 64x64).
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+
+#include "harness/args.h"
+#include "harness/command.h"
+#include "harness/frame_timing.h"
+#include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/scene/loader.h"
+
+namespace mb {
+namespace {
+
+bool parseSize(const std::string& s, int& w, int& h) {
+  char x = 0, extra = 0;
+  const int n = std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra);
+  if (n == 1) h = w;
+  else if (n != 3 || (x != 'x' && x != 'X')) return false;
+  return w >= 1 && h >= 1 && w <= 16384 && h <= 16384;
+}
+
+std::string cell(const timing::Spread& s) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.3f [%.3f-%.3f]", s.median, s.q1, s.q3);
+  return b;
+}
+
+std::string ratio(double r) {
+  if (r <= 0) return "-";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3f", r);
+  return b;
+}
+
+void printRow(const timing::ConfigTiming& c) {
+  const timing::PipelineTiming* side[2] = {nullptr, nullptr};
+  for (const auto& t : c.pipelines) {
+    if (t.pipeline == "matrix") side[0] = &t;
+    if (t.pipeline == "motor") side[1] = &t;
+  }
+  auto frame = [](const timing::PipelineTiming* t) {
+    return !t ? std::string("-") : !t->error.empty() ? "error" : cell(t->frame);
+  };
+  auto update = [](const timing::PipelineTiming* t) {
+    return !t || !t->error.empty() ? std::string("-") : cell(t->update);
+  };
+  const std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
+  std::printf("%-17s %-13s %-9s %-24s %-24s %7s %7s  %-24s %-24s %7s\n", c.scene.c_str(),
+              c.config.c_str(), size.c_str(), frame(side[0]).c_str(), frame(side[1]).c_str(),
+              ratio(c.frameRatio).c_str(), ratio(c.pairedFrameRatio).c_str(),
+              update(side[0]).c_str(), update(side[1]).c_str(), ratio(c.updateRatio).c_str());
+  for (const auto& t : c.pipelines)
+    if (!t.error.empty()) std::printf("    %s: %s\n", t.pipeline.c_str(), t.error.c_str());
+  std::fflush(stdout);
+}
+
+int runTime(const std::vector<std::string>& argv) {
+  auto fail = [](const std::string& m) {
+    std::fprintf(stderr, "motorbench time: error: %s\n", m.c_str());
+    return 2;
+  };
+  const Args args(argv);
+  if (!args.error().empty()) return fail(args.error());
+  if (auto u = args.unknown({"frames", "warmup", "size", "tiny", "lp-threads", "json"}); !u.empty())
+    return fail("unknown option " + u[0]);
+
+  timing::Settings normal, tiny;
+  try {
+    const double frames = args.number("frames", 30), warmup = args.number("warmup", 5);
+    if (frames < 1 || frames > 100000 || frames != int(frames))
+      return fail("--frames " + args.get("frames", "") + ": expected a whole number >= 1");
+    if (warmup < 0 || warmup > 100000 || warmup != int(warmup))
+      return fail("--warmup " + args.get("warmup", "") + ": expected a whole number >= 0");
+    normal.frames = int(frames), normal.warmup = int(warmup);
+  } catch (const std::exception& e) {
+    return fail(e.what());
+  }
+  if (!parseSize(args.get("size", "512x512"), normal.width, normal.height))
+    return fail("--size " + args.get("size", "") + ": expected WxH in 1..16384, e.g. 512x512");
+  tiny = normal;
+  tiny.config = "vertex-bound";
+  if (!parseSize(args.get("tiny", "64x64"), tiny.width, tiny.height))
+    return fail("--tiny " + args.get("tiny", "") + ": expected WxH in 1..16384, e.g. 64x64");
+  // llvmpipe reads LP_NUM_THREADS when the context is created, which has not happened yet.
+  if (auto lp = args.get("lp-threads")) {
+    if (lp->empty() || lp->find_first_not_of("0123456789") != std::string::npos)
+      return fail("--lp-threads " + *lp + ": expected a whole number");
+    setenv("LP_NUM_THREADS", lp->c_str(), 1);
+  }
+
+  std::vector<std::string> names = args.positional();
+  if (names.empty()) names = builtinSceneNames();
+  std::vector<Scene> scenes;
+  for (const std::string& n : names) {
+    auto s = loadScene(n);
+    if (!s) return fail(s.error());
+    scenes.push_back(s.take());
+  }
+
+  auto machine = timing::machineInfo();
+  if (!machine) return fail(machine.error());
+  std::printf("motorbench time: %d frames per pipeline after %d warm-up, pipelines interleaved "
+              "frame by frame (alternating order); frame = clear + render + glFinish (wall "
+              "clock), update = Pipeline::update (hierarchy, animation, skin palette) timed "
+              "apart; median [first-third quartile] in ms\n",
+              normal.frames, normal.warmup);
+  std::printf("machine: %s, %u cores; GL_RENDERER %s; GL_VERSION %s; LP_NUM_THREADS %s; "
+              "GL timer queries: %s\n\n",
+              machine->cpuModel.c_str(), machine->cores, machine->glRenderer.c_str(),
+              machine->glVersion.c_str(), machine->lpNumThreads.c_str(),
+              machine->realGpu ? "yes (real GPU)" : "no (software renderer: wall clock only)");
+  std::printf("%-17s %-13s %-9s %-24s %-24s %7s %7s  %-24s %-24s %7s\n", "scene", "config", "size",
+              "matrix frame ms", "motor frame ms", "motor/", "paired", "matrix update ms",
+              "motor update ms", "motor/");
+  std::printf("%-17s %-13s %-9s %-24s %-24s %7s %7s  %-24s %-24s %7s\n", "", "", "", "", "",
+              "matrix", "ratio", "", "", "matrix");
+
+  nlohmann::json results = nlohmann::json::array();
+  int status = 0;
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    std::vector<timing::Settings> configs = {normal};
+    if (names[i] == "crowd") configs.push_back(tiny);
+    for (const timing::Settings& cfg : configs) {
+      auto r = timing::timeScene(scenes[i], names[i], cfg);
+      if (!r) {
+        std::fprintf(stderr, "motorbench time: error: %s\n", r.error().c_str());
+        results.push_back({{"scene", names[i]}, {"config", cfg.config}, {"error", r.error()}});
+        status = 2;
+        continue;
+      }
+      printRow(*r);
+      for (const auto& t : r->pipelines) status = t.error.empty() ? status : 2;
+      results.push_back(timing::toJson(*r));
+    }
+  }
+  std::printf("\nmotor/matrix: ratio of the frame-time medians; paired: median of the per-frame "
+              "ratios (same frame, same animation time). < 1: motor faster.\n");
+
+  if (auto path = args.get("json")) {
+    const nlohmann::json j = {
+        {"tool", "motorbench time"},
+        {"machine", timing::toJson(*machine)},
+        {"settings",
+         {{"frames", normal.frames}, {"warmup", normal.warmup}, {"size", {normal.width, normal.height}},
+          {"vertex_bound_size", {tiny.width, tiny.height}},
+          {"method", "pipelines interleaved frame by frame in alternating order; frame = clear + "
+                     "render + glFinish (steady_clock); update = Pipeline::update"}}},
+        {"results", results}};
+    std::ofstream out(*path);
+    if (!out || !(out << j.dump(2) << "\n")) return fail("cannot write " + *path);
+  }
+  return status;
+}
+
+}  // namespace
+}  // namespace mb
+
+MB_COMMAND(time, "time",
+           "[SCENE...] [--frames N] [--warmup W] [--size WxH] [--tiny WxH] [--lp-threads N] "
+           "[--json FILE]",
+           "frame time (glFinish wall clock) and CPU update time of every pipeline; motor/matrix "
+           "ratios from one interleaved run; crowd also at a tiny viewport (vertex-bound)",
+           mb::runTime);

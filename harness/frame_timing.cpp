@@ -1,0 +1,218 @@
+#include "harness/frame_timing.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <thread>
+
+#include "harness/render_frame.h"
+#include "pipelines/gl/context.h"
+#include "pipelines/gl/framebuffer.h"
+#include "pipelines/scene/camera_rule.h"
+
+namespace mb::timing {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+// Linear-interpolated quantile of sorted samples.
+double quantile(const std::vector<double>& s, double q) {
+  if (s.empty()) return 0;
+  const double pos = q * double(s.size() - 1);
+  const size_t i = size_t(pos);
+  const double f = pos - double(i);
+  return i + 1 < s.size() ? s[i] * (1 - f) + s[i + 1] * f : s[i];
+}
+
+std::string cpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) {
+      const size_t colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  return "unknown";
+}
+
+bool softwareRenderer(const std::string& renderer) {
+  for (const char* sw : {"llvmpipe", "softpipe", "swrast", "lavapipe", "SwiftShader", "Software"})
+    if (renderer.find(sw) != std::string::npos) return true;
+  return false;
+}
+
+// The animation state of frame `i`: animation 0 playing at 60 Hz (wrapped), blended halfway
+// with animation 1 when the scene has two, so the update samples and blends as it would.
+AnimState stateForFrame(const Scene& scene, int i) {
+  AnimState st;
+  if (scene.animations.empty()) return st;
+  auto at = [&](int a) {
+    const float d = scene.animations[size_t(a)].duration;
+    return d > 0 ? std::fmod(float(i) / 60.0f, d) : 0.0f;
+  };
+  st.anim = 0, st.time = at(0);
+  if (scene.animations.size() > 1) st.anim2 = 1, st.time2 = at(1), st.blend = 0.5f;
+  return st;
+}
+
+double ratioOf(double motor, double matrix) { return motor > 0 && matrix > 0 ? motor / matrix : -1; }
+
+}  // namespace
+
+Spread spreadOf(std::vector<double> s) {
+  Spread r;
+  r.n = int(s.size());
+  if (s.empty()) return r;
+  std::sort(s.begin(), s.end());
+  r.median = quantile(s, 0.5), r.q1 = quantile(s, 0.25), r.q3 = quantile(s, 0.75);
+  r.min = s.front(), r.max = s.back();
+  std::vector<double> dev;
+  for (double x : s) dev.push_back(std::abs(x - r.median));
+  std::sort(dev.begin(), dev.end());
+  r.mad = quantile(dev, 0.5);
+  return r;
+}
+
+Result<MachineInfo> machineInfo() {
+  auto ctx = gl::sharedContext();
+  if (!ctx) return Result<MachineInfo>::fail(ctx.error());
+  MachineInfo m;
+  m.cpuModel = cpuModel();
+  m.cores = std::thread::hardware_concurrency();
+  m.glRenderer = (*ctx)->info().renderer;
+  m.glVersion = (*ctx)->info().version;
+  m.glBackend = (*ctx)->info().backend;
+  const char* lp = std::getenv("LP_NUM_THREADS");
+  m.lpNumThreads = lp ? lp : "unset";
+  m.realGpu = !softwareRenderer(m.glRenderer);
+  return m;
+}
+
+Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
+                               const Settings& settings) {
+  using R = Result<ConfigTiming>;
+  auto machine = machineInfo();
+  if (!machine) return R::fail(machine.error());
+  auto fb = gl::Framebuffer::create(settings.width, settings.height);
+  if (!fb) return R::fail(sceneName + ": " + fb.error());
+
+  ConfigTiming out;
+  out.scene = sceneName, out.config = settings.config;
+  out.width = settings.width, out.height = settings.height;
+  std::vector<std::unique_ptr<Pipeline>> live;  // parallel to `slots`
+  std::vector<size_t> slots;                    // index into out.pipelines
+  for (const std::string& name : pipelineNames()) {
+    PipelineTiming t;
+    t.pipeline = name;
+    auto p = createPipeline(name);
+    if (!p) t.error = "registered but not implemented (placeholder factory)";
+    else if (Status s = p->prepare(scene); !s) t.error = s.error();
+    if (t.error.empty()) {
+      live.push_back(std::move(p));
+      slots.push_back(out.pipelines.size());
+    }
+    out.pipelines.push_back(std::move(t));
+  }
+
+  // A fixed camera (the rest pose's framing): the same view for every frame and pipeline.
+  const View view = frameScene(scene, stateForFrame(scene, 0),
+                               float(settings.width) / float(settings.height));
+  GLuint query = 0;
+  if (machine->realGpu) glGenQueries(1, &query);
+  const int total = settings.warmup + settings.frames;
+  for (int i = 0; i < total; ++i) {
+    const AnimState st = stateForFrame(scene, i);
+    for (size_t k = 0; k < live.size(); ++k) {
+      // Alternate the order every frame: A B, B A, A B ...
+      const size_t idx = i % 2 ? live.size() - 1 - k : k;
+      Pipeline& p = *live[idx];
+      PipelineTiming& t = out.pipelines[slots[idx]];
+      glFinish();  // nothing of the previous pipeline is left in flight
+      const auto t0 = Clock::now();
+      p.update(st);
+      const auto t1 = Clock::now();
+      if (query) glBeginQuery(GL_TIME_ELAPSED, query);
+      (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
+      p.render(view);
+      if (query) glEndQuery(GL_TIME_ELAPSED);
+      glFinish();
+      const auto t2 = Clock::now();
+      GLuint64 ns = 0;
+      if (query) glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+      if (i < settings.warmup) continue;
+      t.updateMs.push_back(ms(t0, t1));
+      t.frameMs.push_back(ms(t1, t2));
+      if (query && i > 0) t.gpuMs.push_back(double(ns) * 1e-6);  // frame 0's query dropped
+    }
+  }
+  if (query) glDeleteQueries(1, &query);
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    return R::fail(sceneName + ": GL error while timing: " + gl::errorName(err));
+
+  for (size_t k = 0; k < live.size(); ++k) {
+    PipelineTiming& t = out.pipelines[slots[k]];
+    t.frame = spreadOf(t.frameMs), t.update = spreadOf(t.updateMs), t.gpu = spreadOf(t.gpuMs);
+    t.stats = live[k]->stats();
+  }
+  const PipelineTiming* matrix = nullptr;
+  const PipelineTiming* motor = nullptr;
+  for (const PipelineTiming& t : out.pipelines) {
+    if (!t.error.empty()) continue;
+    if (t.pipeline == "matrix") matrix = &t;
+    if (t.pipeline == "motor") motor = &t;
+  }
+  if (matrix && motor) {
+    out.frameRatio = ratioOf(motor->frame.median, matrix->frame.median);
+    out.updateRatio = ratioOf(motor->update.median, matrix->update.median);
+    std::vector<double> paired;
+    for (size_t i = 0; i < matrix->frameMs.size() && i < motor->frameMs.size(); ++i)
+      paired.push_back(motor->frameMs[i] / matrix->frameMs[i]);
+    out.pairedFrameRatio = paired.empty() ? -1 : spreadOf(paired).median;
+  }
+  return out;
+}
+
+nlohmann::json toJson(const Spread& s) {
+  return {{"median", s.median}, {"q1", s.q1}, {"q3", s.q3}, {"iqr", s.iqr()}, {"mad", s.mad},
+          {"min", s.min}, {"max", s.max}, {"n", s.n}};
+}
+
+nlohmann::json toJson(const MachineInfo& m) {
+  return {{"cpu_model", m.cpuModel}, {"cores", m.cores}, {"GL_RENDERER", m.glRenderer},
+          {"GL_VERSION", m.glVersion}, {"gl_backend", m.glBackend},
+          {"LP_NUM_THREADS", m.lpNumThreads}, {"gpu_timer_queries", m.realGpu}};
+}
+
+nlohmann::json toJson(const ConfigTiming& c) {
+  nlohmann::json pipelines = nlohmann::json::object();
+  for (const PipelineTiming& t : c.pipelines) {
+    nlohmann::json j = {{"error", t.error.empty() ? nlohmann::json() : nlohmann::json(t.error)}};
+    if (t.error.empty()) {
+      j["frame_ms"] = toJson(t.frame);
+      j["update_ms"] = toJson(t.update);
+      j["frame_samples_ms"] = t.frameMs;
+      j["update_samples_ms"] = t.updateMs;
+      j["gpu_ms"] = t.gpuMs.empty() ? nlohmann::json() : toJson(t.gpu);
+      j["vertices"] = t.stats.vertices;
+      j["draws"] = t.stats.draws;
+    }
+    pipelines[t.pipeline] = j;
+  }
+  auto num = [](double r) { return r > 0 ? nlohmann::json(r) : nlohmann::json(); };
+  return {{"scene", c.scene},
+          {"config", c.config},
+          {"width", c.width},
+          {"height", c.height},
+          {"pipelines", pipelines},
+          {"ratio_motor_over_matrix", num(c.frameRatio)},
+          {"paired_ratio_motor_over_matrix", num(c.pairedFrameRatio)},
+          {"update_ratio_motor_over_matrix", num(c.updateRatio)}};
+}
+
+}  // namespace mb::timing

@@ -1,0 +1,115 @@
+// `motorbench bench`, `motorbench time` and the per-vertex section of `motorbench ops`, end to
+// end (issue 5). Never asserts timings: only that the commands run, write what they promise
+// (JSON with items_per_second, a printed ratio) and reject bad input.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+int run(const std::string& cmd, std::string* output) {
+  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+  if (!p) return -1;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) output->append(buf, n);
+  const int status = pclose(p);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string exe() { return "'" + std::string(MB_MOTORBENCH_EXE) + "'"; }
+
+fs::path scratchFile(const std::string& name) {
+  return fs::temp_directory_path() / ("motorbench_cli_bench_" + std::to_string(::getpid()) + "_" + name);
+}
+
+TEST(CliBench, OneCheapKernelWritesJsonWithItemsPerSecond) {
+  const fs::path out = scratchFile("bench.json");
+  std::string log;
+  const int rc = run(exe() + " bench --benchmark_filter='^compose/' --benchmark_min_time=0.01 "
+                             "--out '" + out.string() + "'", &log);
+  ASSERT_EQ(rc, 0) << log;
+  std::ifstream in(out);
+  ASSERT_TRUE(in) << "no JSON written: " << log;
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_TRUE(j.contains("benchmarks"));
+  std::set<std::string> names;
+  for (const auto& b : j["benchmarks"]) {
+    names.insert(b["name"].get<std::string>());
+    EXPECT_TRUE(b.contains("items_per_second")) << b.dump();
+    EXPECT_GT(b["items_per_second"].get<double>(), 0.0);
+  }
+  // The pair side by side under one name, plus the GLM baseline.
+  EXPECT_TRUE(names.count("compose/matrix"));
+  EXPECT_TRUE(names.count("compose/motor"));
+  EXPECT_TRUE(names.count("compose/glm"));
+  EXPECT_NE(log.find("motor/matrix"), std::string::npos) << log;
+  fs::remove(out);
+}
+
+TEST(CliBench, OutOfCacheKernelReportsBandwidthFraction) {
+  const fs::path out = scratchFile("bw.json");
+  std::string log;
+  const int rc = run(exe() + " bench --benchmark_filter='^direction/out_of_cache/motor$' "
+                             "--benchmark_min_time=0.01 --out '" + out.string() + "'", &log);
+  ASSERT_EQ(rc, 0) << log;
+  std::ifstream in(out);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_EQ(j["benchmarks"].size(), 1u) << j.dump();
+  const auto& b = j["benchmarks"][0];
+  EXPECT_TRUE(b.contains("bytes_per_second"));
+  ASSERT_TRUE(b.contains("bw_fraction"));
+  EXPECT_GT(b["bw_fraction"].get<double>(), 0.0);
+  EXPECT_GE(b["working_set_bytes"].get<double>(), 256.0 * 1024 * 1024);
+  fs::remove(out);
+}
+
+TEST(CliBench, RejectsUnknownArgumentsAndEmptyFilters) {
+  std::string log;
+  EXPECT_EQ(run(exe() + " bench --frobnicate", &log), 2) << log;
+  log.clear();
+  EXPECT_EQ(run(exe() + " bench --out", &log), 2) << log;
+  log.clear();
+  EXPECT_EQ(run(exe() + " bench --benchmark_filter=no_such_kernel", &log), 2) << log;
+}
+
+TEST(CliTime, TexturedBoxPrintsARatio) {
+  const fs::path json = scratchFile("time.json");
+  std::string log;
+  const int rc = run(exe() + " time textured_box --frames 3 --warmup 1 --json '" + json.string() + "'", &log);
+  ASSERT_EQ(rc, 0) << log;
+  EXPECT_NE(log.find("motor/matrix"), std::string::npos) << log;
+  EXPECT_NE(log.find("GL_RENDERER"), std::string::npos) << log;
+  std::ifstream in(json);
+  ASSERT_TRUE(in) << log;
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_TRUE(j.contains("machine"));
+  ASSERT_TRUE(j.contains("results"));
+  bool ratio = false;
+  for (const auto& r : j["results"])
+    if (r.contains("ratio_motor_over_matrix") && r["ratio_motor_over_matrix"].is_number()) ratio = true;
+  EXPECT_TRUE(ratio) << j.dump(2);
+  fs::remove(json);
+}
+
+TEST(CliTime, RejectsBadInput) {
+  std::string log;
+  EXPECT_EQ(run(exe() + " time no_such_scene_or_file.glb --frames 2", &log), 2) << log;
+  log.clear();
+  EXPECT_EQ(run(exe() + " time textured_box --frames 0", &log), 2) << log;
+  log.clear();
+  EXPECT_EQ(run(exe() + " time textured_box --size 0x5", &log), 2) << log;
+}
+
+}  // namespace
