@@ -1,0 +1,52 @@
+// One quantitative claim of "Look, Ma, No Matrices!" (or a baseline a reviewer would ask for)
+// with the paper's value, the value measured in this run, how it was measured and a verdict.
+// Every measured value is filled in by code that ran the measurement (claims_*.cpp); nothing
+// here holds a measured number.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "shaders/shim/counted.h"
+
+namespace mb::claims {
+
+enum class Verdict { Reproduced, Differs, NotMeasurable, Baseline };
+
+struct Claim {
+  std::string id;         // stable key, e.g. "gp_mm", "floats_per_vertex"
+  std::string section;    // "Composition", "Sandwich products", "Memory", ...
+  std::string statement;  // the claim in a few words
+  std::string paper;      // the paper's value as text ("48 mul, 40 add")
+  nlohmann::json paperValue;     // and as data
+  std::string measured;   // the measured value as text
+  nlohmann::json measuredValue;  // and as data (null when not measurable)
+  std::string method;     // how it was measured
+  Verdict verdict = Verdict::NotMeasurable;
+  std::string verdictText;  // "reproduced", "differs: +2 mul, +5 add (+10 %)", ...
+};
+
+std::string verdictName(Verdict v);  // "reproduced", "differs", "not measurable here", "baseline"
+
+// Op counts as data and text: {"mul", "add", "div", "sqrt", "other", "calls"}; "48 mul, 40 add
+// + 1 div + 1 sqrt (acos)".
+nlohmann::json opsJson(const OpCounts& c);
+std::string opsText(const OpCounts& c);
+
+// Verdict of measured op counts against the paper's mul/add (and, when the paper states them,
+// div/sqrt/other): Reproduced when all stated columns agree, else Differs with the signed
+// differences, e.g. "differs: +2 mul, +5 add (paper 21/5, measured 23/10)". Unstated columns
+// that are non-zero are mentioned ("not stated by the paper: 1 sqrt, 1 div").
+struct PaperOps {
+  int mul = 0, add = 0;
+  int div = -1, sqrt = -1, other = -1;  // -1: not stated
+  std::string otherText;                // e.g. "1 acos" (for the text only)
+};
+void judgeOps(Claim& c, const PaperOps& paper, const OpCounts& measured);
+nlohmann::json paperOpsJson(const PaperOps& p);
+std::string paperOpsText(const PaperOps& p);
+
+nlohmann::json toJson(const Claim& c);
+
+}  // namespace mb::claims

@@ -1,0 +1,33 @@
+// Number and text formatting shared by the report's Markdown and HTML writers (and claims.md),
+// so both documents print the same figures the same way.
+#pragma once
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace mb::report {
+
+// `v` with `digits` significant digits ("-" when v is not a number).
+std::string fmt(const nlohmann::json& v, int digits = 3);
+std::string fmt(double v, int digits = 3);
+// Fixed decimals ("-" when not a number).
+std::string fixed(const nlohmann::json& v, int decimals);
+// "0.97x" style ratio ("-" when not a number).
+std::string ratio(const nlohmann::json& v);
+// PSNR in dB; "identical" when the images are equal (psnr null and identical true).
+std::string psnrText(const nlohmann::json& metrics);
+// Percentage of a 0..1 fraction, e.g. "0.31 %".
+std::string percent(const nlohmann::json& fraction, int decimals = 2);
+// min / median / max of report_document's spread(): "36" when all equal, else "36 (32..40)".
+std::string spreadText(const nlohmann::json& spread, int digits = 3);
+// mul/add of an ops object ({"mul", "add", ...}), plus "+N div/sqrt/other" when present.
+std::string opsText(const nlohmann::json& ops, int decimals = 0);
+// A value at a path of object keys, or null.
+const nlohmann::json& at(const nlohmann::json& j, std::initializer_list<const char*> path);
+
+// HTML text escaping (&, <, >, ").
+std::string html(const std::string& s);
+// Markdown table cell: "|" escaped and newlines folded.
+std::string cell(const std::string& s);
+
+}  // namespace mb::report

@@ -1,0 +1,31 @@
+// The phases of `motorbench report`: scenes measured by worker processes (in parallel with
+// --jobs), frame timing scene by scene, ops per vertex, kernel throughput (bench), then
+// report.json, the plots (scripts/plot.py) and report.md / report.html.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace mb::report {
+
+struct Options {
+  std::vector<std::string> scenes;  // SCENE|FILE|DIR arguments; empty: the built-in scenes
+  std::string outDir;
+  std::vector<std::string> pipelines;  // first = baseline of the diffs
+  int jobs = 1;
+  int width = 256, height = 192;
+  int frames = 30;                   // timed frames per pipeline and scene; 0: no timing
+  int timeWidth = 512, timeHeight = 512;  // viewport of the normal timing configuration (as `time`)
+  bool bench = true;                 // false: --no-bench
+  std::string benchJson;             // read this instead of running `motorbench bench`
+  double benchMinTime = 0.05;        // --benchmark_min_time when the report runs the bench
+  bool plots = true;
+  std::string python;                // "" = defaultPython() (report_plots.h)
+  std::string plotScript;            // "" = scripts/plot.py of this source tree
+  double timeoutS = 900;             // per worker process
+};
+
+// Runs every phase; a failing scene is recorded and the run goes on. Returns 0 when the run
+// completed (whatever the scenes did), 2 when the output could not be written.
+int runReport(const Options& options);
+
+}  // namespace mb::report
