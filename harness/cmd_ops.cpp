@@ -10,6 +10,7 @@
 #include "harness/command.h"
 #include "harness/op_count.h"
 #include "harness/op_kernels.h"
+#include "harness/ops_vertex.h"
 
 namespace {
 
@@ -38,6 +39,11 @@ int runOps(const std::vector<std::string>& argv) {
   for (const auto& r : rows) disagree += r.agree() == "NO";
   std::printf("\n%d kernel(s) disagree with their claim.\n", disagree);
 
+  // Per-vertex transforms of each pipeline, counted and from SPIR-V (harness/ops_vertex.h).
+  const mb::opsv::VertexOps perVertex = mb::opsv::measureVertexOps();
+  std::printf("\n");
+  std::fputs(mb::opsv::formatVertexOps(perVertex).c_str(), stdout);
+
   if (const auto path = args.get("json")) {
     nlohmann::json j = {
         {"tool", "motorbench ops"},
@@ -45,6 +51,7 @@ int runOps(const std::vector<std::string>& argv) {
                      "negation and comparisons free"},
         {"source", "shaders/pga.glsl"},
         {"kernels", mb::ops::toJson(rows)},
+        {"per_vertex", mb::opsv::toJson(perVertex)},
     };
     std::ofstream out(*path);
     if (!out || !(out << j.dump(2) << "\n")) {
@@ -58,4 +65,5 @@ int runOps(const std::vector<std::string>& argv) {
 }  // namespace
 
 MB_COMMAND(ops, "ops", "[--json FILE]",
-           "count mul/add/div/sqrt per PGA kernel and matrix op, next to the paper's claims", runOps);
+           "count mul/add/div/sqrt per PGA kernel and matrix op, next to the paper's claims; ops per "
+           "vertex of each pipeline, counted and from SPIR-V", runOps);

@@ -201,6 +201,7 @@ std::string formatVertexOps(const VertexOps& ops) {
          v.shader ? spirv::shortText(*v.shader).c_str() : "-",
          v.shader ? std::to_string(v.shader->intOps).c_str() : "-",
          !v.error.empty() ? v.error.c_str() : v.why.empty() ? "none" : v.why.c_str());
+    if (!v.variant.note.empty()) line("%-10s   note: %s\n", "", v.variant.note.c_str());
   }
   return out;
 }
@@ -228,7 +229,7 @@ nlohmann::json toJson(const VertexOps& ops) {
                         {"defines", describeDefines(v.variant)}, {"variant", v.variant.label},
                         {"kernels", v.variant.kernels}, {"counted", counted(v.counted)},
                         {"spirv", sp(v.shader)}, {"spirv_kernel_probes", sp(v.probes)},
-                        {"difference", v.why}, {"error", v.error}});
+                        {"difference", v.why}, {"note", v.variant.note}, {"error", v.error}});
   return {{"method",
            {{"counted", "per-vertex GLSL function executed on mb::Counted (shaders/shim)"},
             {"spirv", "glslangValidator -G --aml, spirv-opt -O, spirv-dis; vector/matrix "

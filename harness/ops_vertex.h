@@ -197,12 +197,17 @@ struct ShaderVariant {
   std::vector<std::pair<std::string, std::string>> defines;
   std::string label;     // "rigid", "skinned", ...
   std::vector<std::string> kernels;  // VertexKernel::function names the variant's main() calls
+  std::string note = "";             // what main() does besides those kernels, "" when nothing
 };
 
 inline std::vector<ShaderVariant> shaderVariants() {
+  const std::string matrixMain =
+      "main() divides the position by w and normalises normal and tangent for the varyings "
+      "(motor.vs leaves normalisation to forward.fs, which normalises both anyway)";
   return {
-      {"matrix", "matrix.vs", {}, "rigid", {"matrixRigidVertex", "matrixWorldToClip"}},
-      {"matrix", "matrix.vs", {{"SKINNED", ""}}, "skinned", {"matrixSkinnedVertex", "matrixWorldToClip"}},
+      {"matrix", "matrix.vs", {}, "rigid", {"matrixRigidVertex", "matrixWorldToClip"}, matrixMain},
+      {"matrix", "matrix.vs", {{"SKINNED", ""}}, "skinned", {"matrixSkinnedVertex", "matrixWorldToClip"},
+       matrixMain},
       {"motor", "motor.vs", {}, "rigid", {"motorRigidVertex", "motorWorldToClip"}},
       {"motor", "motor.vs", {{"MB_SKINNED", ""}}, "skinned", {"motorSkinnedVertex", "motorWorldToClip"}},
       {"motor", "motor.vs", {{"MB_SCALE_FALLBACK", ""}}, "scaled fallback",

@@ -10,6 +10,8 @@
 // [3][3] entry carries sign(det(model)); a mirrored node flips the tangent handedness, which
 // keeps bitangent = w * cross(n, t) equal to the transformed bitangent.
 
+#include "matrix_transform.glsl"
+
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec4 a_tangent;
@@ -42,28 +44,23 @@ out vec2 v_uv1;
 out vec4 v_color;
 
 void main() {
-  vec4 position = vec4(a_position, 1.0);
-  vec4 normal = vec4(a_normal, 0.0);
-  vec4 tangent = vec4(a_tangent.xyz, 0.0);
+  // The transform itself is matrix_transform.glsl's (the source `motorbench ops` counts and
+  // `motorbench bench` times); main() adds the varyings' perspective divide and normalisation.
 #ifdef SKINNED
-  mat4 skin = a_weights.x * u_joints[a_joints.x].matrix +
-              a_weights.y * u_joints[a_joints.y].matrix +
-              a_weights.z * u_joints[a_joints.z].matrix +
-              a_weights.w * u_joints[a_joints.w].matrix;
-  mat4 skinNormal = a_weights.x * u_joints[a_joints.x].normalMatrix +
-                    a_weights.y * u_joints[a_joints.y].normalMatrix +
-                    a_weights.z * u_joints[a_joints.z].normalMatrix +
-                    a_weights.w * u_joints[a_joints.w].normalMatrix;
-  position = skin * position;
-  normal = skinNormal * normal;
-  tangent = skin * tangent;
+  mat3x4 v = matrixSkinnedVertex(
+      u_joints[a_joints.x].matrix, u_joints[a_joints.y].matrix, u_joints[a_joints.z].matrix,
+      u_joints[a_joints.w].matrix, u_joints[a_joints.x].normalMatrix,
+      u_joints[a_joints.y].normalMatrix, u_joints[a_joints.z].normalMatrix,
+      u_joints[a_joints.w].normalMatrix, a_weights, u_ModelMatrix, u_NormalMatrix, a_position,
+      a_normal, a_tangent);
+#else
+  mat3x4 v = matrixRigidVertex(u_ModelMatrix, u_NormalMatrix, a_position, a_normal, a_tangent);
 #endif
-  vec4 world = u_ModelMatrix * position;
-  v_worldPosition = world.xyz / world.w;
-  v_worldNormal = normalize((u_NormalMatrix * normal).xyz);
-  v_worldTangent = vec4(normalize((u_ModelMatrix * tangent).xyz), a_tangent.w * u_NormalMatrix[3][3]);
+  v_worldPosition = v[0].xyz / v[0].w;
+  v_worldNormal = normalize(v[1].xyz);
+  v_worldTangent = vec4(normalize(v[2].xyz), v[2].w);
   v_uv0 = a_uv0;
   v_uv1 = a_uv1;
   v_color = a_color;
-  gl_Position = u_ViewProjectionMatrix * world;
+  gl_Position = matrixWorldToClip(u_ViewProjectionMatrix, v[0]);
 }
