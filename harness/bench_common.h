@@ -48,6 +48,17 @@ inline size_t vertexCount(Size s, size_t smallBytesPerItem, size_t largeBytesPer
   return (n + 63) / 64 * 64;
 }
 
+// The arrays of type T for size class `s`, built with `n` elements on first use and kept for
+// the process (the big ones are allocated once, whatever the repetitions).
+template <class T> T& perSize(Size s, size_t n) {
+  if (s == Size::InCache) {
+    static T small(n);
+    return small;
+  }
+  static T big(n);
+  return big;
+}
+
 // Registers `fn` as benchmark "name" (time in ns, items/s and bytes/s set by the kernel).
 void registerKernel(const std::string& name, std::function<void(benchmark::State&)> fn);
 

@@ -13,7 +13,7 @@ struct Vec3f {
   float x, y, z;
 };
 
-// Every kernel is [[gnu::flatten]]: the shader functions are inlined into the loops on every
+// Every pass is [[gnu::flatten]]: the shader functions are inlined into the loops on every
 // side alike (see bench_vertex.cpp).
 
 // ---- compose: N pairs in cache -------------------------------------------------------------
@@ -44,36 +44,33 @@ ComposeData& composeData() {
   return d;
 }
 
-[[gnu::flatten]] void composeMatrix(benchmark::State& state) {
+// One pass composing every pair a[i] b[i] into out[i] with `op`.
+template <class T, class Op>
+[[gnu::flatten]] void composePass(benchmark::State& state, const std::vector<T>& a,
+                                  const std::vector<T>& b, std::vector<T>& out, Op op) {
+  for (auto _ : state) {
+    for (size_t i = 0; i < kComposePairs; ++i) out[i] = op(a[i], b[i]);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  setThroughput(state, kComposePairs, kComposePairs * 3 * sizeof(T), Size::InCache);
+}
+
+void composeMatrix(benchmark::State& state) {
   ComposeData& d = composeData();
   MS S;
-  for (auto _ : state) {
-    for (size_t i = 0; i < kComposePairs; ++i) d.mo[i] = S.matrixCompose(d.ma[i], d.mb[i]);
-    benchmark::DoNotOptimize(d.mo.data());
-    benchmark::ClobberMemory();
-  }
-  setThroughput(state, kComposePairs, kComposePairs * 3 * sizeof(MS::mat4), Size::InCache);
+  composePass(state, d.ma, d.mb, d.mo, [&S](const MS::mat4& a, const MS::mat4& b) { return S.matrixCompose(a, b); });
 }
 
-[[gnu::flatten]] void composeMotor(benchmark::State& state) {
+void composeMotor(benchmark::State& state) {
   ComposeData& d = composeData();
   PS P;
-  for (auto _ : state) {
-    for (size_t i = 0; i < kComposePairs; ++i) d.po[i] = P.gp_mm(d.pa[i], d.pb[i]);
-    benchmark::DoNotOptimize(d.po.data());
-    benchmark::ClobberMemory();
-  }
-  setThroughput(state, kComposePairs, kComposePairs * 3 * sizeof(PS::motor), Size::InCache);
+  composePass(state, d.pa, d.pb, d.po, [&P](const PS::motor& a, const PS::motor& b) { return P.gp_mm(a, b); });
 }
 
-[[gnu::flatten]] void composeGlm(benchmark::State& state) {
+void composeGlm(benchmark::State& state) {
   ComposeData& d = composeData();
-  for (auto _ : state) {
-    for (size_t i = 0; i < kComposePairs; ++i) d.go[i] = d.ga[i] * d.gb[i];
-    benchmark::DoNotOptimize(d.go.data());
-    benchmark::ClobberMemory();
-  }
-  setThroughput(state, kComposePairs, kComposePairs * 3 * sizeof(glm::mat4), Size::InCache);
+  composePass(state, d.ga, d.gb, d.go, [](const glm::mat4& a, const glm::mat4& b) { return a * b; });
 }
 
 // ---- point / direction: one per-draw transform, N vec3 in, N vec3 out ----------------------
@@ -88,16 +85,8 @@ struct Vec3Arrays {
   }
 };
 
-// Allocated once per size, on first use (both kinds and all sides share them).
-Vec3Arrays& vec3Arrays(Size s) {
-  const size_t n = vertexCount(s, kVec3Bytes, kVec3Bytes);
-  if (s == Size::InCache) {
-    static Vec3Arrays small(n);
-    return small;
-  }
-  static Vec3Arrays big(n);
-  return big;
-}
+// Both kinds and all sides share them.
+Vec3Arrays& vec3Arrays(Size s) { return perSize<Vec3Arrays>(s, vertexCount(s, kVec3Bytes, kVec3Bytes)); }
 
 struct PerDraw {
   MS::mat4 m;
@@ -114,56 +103,48 @@ struct PerDraw {
 
 enum class Kind { Point, Direction };
 
-// One function per side; `kind` selects point (w = 1) or direction (w = 0).
-template <Kind K> [[gnu::flatten]] void vec3Matrix(benchmark::State& state, Size s) {
+// One pass over the vec3 arrays of size `s`: out[i] = op(in[i]), `op` taking and returning
+// float x, y, z through the side's own types.
+template <class Op> [[gnu::flatten]] void vec3Pass(benchmark::State& state, Size s, Op op) {
   Vec3Arrays& a = vec3Arrays(s);
-  const PerDraw draw;
+  const size_t n = a.in.size();
+  for (auto _ : state) {
+    for (size_t i = 0; i < n; ++i) a.out[i] = op(a.in[i]);
+    benchmark::DoNotOptimize(a.out.data());
+    benchmark::ClobberMemory();
+  }
+  setThroughput(state, n, n * kVec3Bytes, s);
+}
+
+// `K` selects point (w = 1) or direction (w = 0). The per-draw transform is a local of each
+// function (kept in registers, as a uniform on a GPU).
+template <Kind K> void vec3Matrix(benchmark::State& state, Size s) {
+  const MS::mat4 m = PerDraw().m;
   MS S;
-  const size_t n = a.in.size();
-  for (auto _ : state) {
-    for (size_t i = 0; i < n; ++i) {
-      const MS::vec3 v(a.in[i].x, a.in[i].y, a.in[i].z);
-      const MS::vec4 r = K == Kind::Point ? S.matrixTransformPoint(draw.m, v)
-                                          : S.matrixTransformDirection(draw.m, v);
-      a.out[i] = {r.x, r.y, r.z};
-    }
-    benchmark::DoNotOptimize(a.out.data());
-    benchmark::ClobberMemory();
-  }
-  setThroughput(state, n, n * kVec3Bytes, s);
+  vec3Pass(state, s, [&](const Vec3f& p) {
+    const MS::vec3 v(p.x, p.y, p.z);
+    const MS::vec4 r = K == Kind::Point ? S.matrixTransformPoint(m, v) : S.matrixTransformDirection(m, v);
+    return Vec3f{r.x, r.y, r.z};
+  });
 }
 
-template <Kind K> [[gnu::flatten]] void vec3Motor(benchmark::State& state, Size s) {
-  Vec3Arrays& a = vec3Arrays(s);
-  const PerDraw draw;
+template <Kind K> void vec3Motor(benchmark::State& state, Size s) {
+  const PS::motor m = PerDraw().motor;
   PS P;
-  const size_t n = a.in.size();
-  for (auto _ : state) {
-    for (size_t i = 0; i < n; ++i) {
-      const PS::vec3 v(a.in[i].x, a.in[i].y, a.in[i].z);
-      const PS::vec3 r = K == Kind::Point ? P.sw_mp(draw.motor, v) : P.sw_md(draw.motor, v);
-      a.out[i] = {r.x, r.y, r.z};
-    }
-    benchmark::DoNotOptimize(a.out.data());
-    benchmark::ClobberMemory();
-  }
-  setThroughput(state, n, n * kVec3Bytes, s);
+  vec3Pass(state, s, [&](const Vec3f& p) {
+    const PS::vec3 v(p.x, p.y, p.z);
+    const PS::vec3 r = K == Kind::Point ? P.sw_mp(m, v) : P.sw_md(m, v);
+    return Vec3f{r.x, r.y, r.z};
+  });
 }
 
-template <Kind K> [[gnu::flatten]] void vec3Glm(benchmark::State& state, Size s) {
-  Vec3Arrays& a = vec3Arrays(s);
-  const PerDraw draw;
-  const size_t n = a.in.size();
+template <Kind K> void vec3Glm(benchmark::State& state, Size s) {
+  const glm::mat4 m = PerDraw().g;
   const float w = K == Kind::Point ? 1.0f : 0.0f;
-  for (auto _ : state) {
-    for (size_t i = 0; i < n; ++i) {
-      const glm::vec4 r = draw.g * glm::vec4(a.in[i].x, a.in[i].y, a.in[i].z, w);
-      a.out[i] = {r.x, r.y, r.z};
-    }
-    benchmark::DoNotOptimize(a.out.data());
-    benchmark::ClobberMemory();
-  }
-  setThroughput(state, n, n * kVec3Bytes, s);
+  vec3Pass(state, s, [&](const Vec3f& p) {
+    const glm::vec4 r = m * glm::vec4(p.x, p.y, p.z, w);
+    return Vec3f{r.x, r.y, r.z};
+  });
 }
 
 }  // namespace
@@ -173,16 +154,16 @@ void registerTransformBenchmarks() {
   registerKernel("compose/motor", composeMotor);
   registerKernel("compose/glm", composeGlm);
   for (Size s : {Size::InCache, Size::OutOfCache}) {
-    const std::string sz = sizeName(s);
-    registerKernel("point/" + sz + "/matrix", [s](benchmark::State& st) { vec3Matrix<Kind::Point>(st, s); });
-    registerKernel("point/" + sz + "/motor", [s](benchmark::State& st) { vec3Motor<Kind::Point>(st, s); });
-    registerKernel("point/" + sz + "/glm", [s](benchmark::State& st) { vec3Glm<Kind::Point>(st, s); });
+    const std::string p = std::string("point/") + sizeName(s) + "/";
+    registerKernel(p + kMatrix, [s](benchmark::State& st) { vec3Matrix<Kind::Point>(st, s); });
+    registerKernel(p + kMotor, [s](benchmark::State& st) { vec3Motor<Kind::Point>(st, s); });
+    registerKernel(p + kGlm, [s](benchmark::State& st) { vec3Glm<Kind::Point>(st, s); });
   }
   for (Size s : {Size::InCache, Size::OutOfCache}) {
-    const std::string sz = sizeName(s);
-    registerKernel("direction/" + sz + "/matrix", [s](benchmark::State& st) { vec3Matrix<Kind::Direction>(st, s); });
-    registerKernel("direction/" + sz + "/motor", [s](benchmark::State& st) { vec3Motor<Kind::Direction>(st, s); });
-    registerKernel("direction/" + sz + "/glm", [s](benchmark::State& st) { vec3Glm<Kind::Direction>(st, s); });
+    const std::string p = std::string("direction/") + sizeName(s) + "/";
+    registerKernel(p + kMatrix, [s](benchmark::State& st) { vec3Matrix<Kind::Direction>(st, s); });
+    registerKernel(p + kMotor, [s](benchmark::State& st) { vec3Motor<Kind::Direction>(st, s); });
+    registerKernel(p + kGlm, [s](benchmark::State& st) { vec3Glm<Kind::Direction>(st, s); });
   }
 }
 

@@ -57,22 +57,18 @@ struct Arrays {
       if ((rot.x < 0.0f) != (w < 0.0f)) rot = -rot;
       matrix[i] = {{p[0], p[1], p[2]}, {c2[0], c2[1], c2[2]}, {c0[0], c0[1], c0[2], w}};
       motor[i] = {{p[0], p[1], p[2]}, {rot.x, rot.y, rot.z, rot.w}};
+      // Skins are spatially coherent: runs of vertices share a joint set (a limb region);
+      // weights vary per vertex.
+      const int base = int(i / 32) * 3 % kJoints;
       float ws[4], sum = 0;
       for (float& x : ws) sum += x = r.uniform(0.05f, 1.0f);
-      for (int k = 0; k < 4; ++k) skin[i].j[k] = uint16_t(r.index(kJoints)), skin[i].w[k] = ws[k] / sum;
+      for (int k = 0; k < 4; ++k)
+        skin[i].j[k] = uint16_t((base + k) % kJoints), skin[i].w[k] = ws[k] / sum;
     }
   }
 };
 
-Arrays& arrays(Size s) {
-  const size_t n = vertexCount(s, kFrameMotorBytes, kSkinMatrixBytes);
-  if (s == Size::InCache) {
-    static Arrays small(n);
-    return small;
-  }
-  static Arrays big(n);
-  return big;
-}
+Arrays& arrays(Size s) { return perSize<Arrays>(s, vertexCount(s, kFrameMotorBytes, kSkinMatrixBytes)); }
 
 // Per-draw uniforms and the joint palettes, both ways.
 struct Draw {
