@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/render_frame.h"
+
 namespace mb {
 namespace {
 
@@ -117,13 +119,7 @@ Status writeCheckReport(const std::string& dir, const CheckRun& run) {
                         {"pose", it.pose}, {"outcome", outcomeName(it.outcome)},
                         {"level", it.level}, {"reason", it.reason}, {"expected", it.expected},
                         {"actual", it.actual}, {"diff", it.diff}};
-    if (it.compared) {
-      const ImageMetrics& m = it.metrics;
-      e["metrics"] = {{"identical", m.rmse == 0.0}, {"rmse", m.rmse},
-                      {"psnr", m.rmse == 0.0 ? nlohmann::json(nullptr) : nlohmann::json(m.psnr)},
-                      {"maxError", m.maxError}, {"maxErrorPixel", {m.maxX, m.maxY}},
-                      {"fractionOver1", m.fractionOver1}, {"fractionOver4", m.fractionOver4}};
-    }
+    if (it.compared) e["metrics"] = toJson(it.metrics);
     j["images"].push_back(e);
   }
   const std::string jsonPath = (fs::path(dir) / "check.json").string();

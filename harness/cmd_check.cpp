@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <limits>
 #include <set>
-#include <sstream>
 
 #include "harness/args.h"
 #include "harness/check_report.h"
@@ -28,14 +27,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Outcome = CheckItem::Outcome;
-
-std::vector<std::string> splitList(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 std::string joined(const std::vector<std::string>& v) {
   std::string s;
@@ -106,17 +97,10 @@ void checkOne(const Scene& scene, const golden::Manifest& manifest,
 int check(const Selection& sel) {
   const std::string manifestPath = (fs::path(sel.goldenDir) / golden::kManifest).string();
   auto manifest = golden::readManifest(manifestPath);
-  if (!manifest) {
-    std::fprintf(stderr, "motorbench check: error: %s\n", manifest.error().c_str());
-    return 2;
-  }
+  if (!manifest) return commandError("check", manifest.error());
   std::error_code ec;
   fs::create_directories(sel.outDir, ec);
-  if (ec) {
-    std::fprintf(stderr, "motorbench check: error: %s: cannot create folder: %s\n",
-                 sel.outDir.c_str(), ec.message().c_str());
-    return 2;
-  }
+  if (ec) return commandError("check", sel.outDir + ": cannot create folder: " + ec.message());
   CheckRun run;
   run.goldenDir = sel.goldenDir;
   run.shaderDir = gl::shaderDir();
@@ -158,20 +142,14 @@ int check(const Selection& sel) {
   for (const std::string& n : run.notes) std::printf("warning: %s\n", n.c_str());
   std::printf("check: %zu images: %d passed, %d warned, %d failed, %d errors\n", run.items.size(),
               counts[0], counts[1], counts[2], counts[3]);
-  if (!written) {
-    std::fprintf(stderr, "motorbench check: error: %s\n", written.error().c_str());
-    return 2;
-  }
+  if (!written) return commandError("check", written.error());
   std::printf("report: %s\n", (fs::path(sel.outDir) / "summary.html").string().c_str());
   if (counts[3] > 0) return 2;
   return counts[2] > 0 ? 1 : 0;
 }
 
 int update(const Selection& sel) {
-  auto fail = [](const std::string& message) {
-    std::fprintf(stderr, "motorbench check --update: error: %s\n", message.c_str());
-    return 2;
-  };
+  auto fail = [](const std::string& message) { return commandError("check --update", message); };
   const std::string manifestPath = (fs::path(sel.goldenDir) / golden::kManifest).string();
   golden::Manifest old;
   if (fs::exists(manifestPath)) {  // keep its thresholds and the images outside the selection
@@ -237,10 +215,7 @@ int update(const Selection& sel) {
 
 int runCheck(const std::vector<std::string>& argv) {
   Args args(argv, {"update"});
-  auto fail = [](const std::string& message) {
-    std::fprintf(stderr, "motorbench check: error: %s\n", message.c_str());
-    return 2;
-  };
+  auto fail = [](const std::string& message) { return commandError("check", message); };
   if (!args.error().empty()) return fail(args.error());
   if (auto unknown = args.unknown({"golden", "scenes", "pipelines", "out", "o", "shader-dir", "update"});
       !unknown.empty())

@@ -4,10 +4,6 @@
 // file; --update writes goldens that then pass and keeps hand-tuned thresholds.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/image_metrics.h"
+#include "tests/cli_test_support.h"
 
 namespace {
 
@@ -22,29 +19,11 @@ namespace fs = std::filesystem;
 
 const fs::path kGolden = fs::path(MB_SOURCE_DIR) / "tests" / "golden";
 
-// Runs a shell command; returns its exit status (-1 when it did not exit normally) and output.
-int run(const std::string& cmd, std::string* output) {
-  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-  if (!p) return -1;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) output->append(buf, n);
-  int status = pclose(p);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
-
-std::string check(const std::string& options) { return q(MB_MOTORBENCH_EXE) + " check " + options; }
-
-// A fresh folder per test process (ctest runs tests in parallel).
-fs::path scratch(const std::string& name) {
-  fs::path p = fs::temp_directory_path() /
-               ("motorbench_check_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
-}
+using mb::cli_test::runCommand;
+std::string q(const fs::path& p) { return mb::cli_test::quoted(p); }
+int run(const std::string& cmd, std::string* output) { return runCommand(cmd, output); }
+std::string check(const std::string& options) { return mb::cli_test::motorbench() + "check " + options; }
+fs::path scratch(const std::string& name) { return mb::cli_test::scratchDir("check_" + name); }
 
 std::string readText(const fs::path& p) {
   std::ifstream in(p);
@@ -70,21 +49,26 @@ TEST(CliCheck, CommittedGoldensPass) {
   fs::remove_all(root);
 }
 
-TEST(CliCheck, FlippedTangentHandednessFailsWithReport) {
-  fs::path root = scratch("handedness");
+// A copy of shaders/ whose shared fragment shader builds the bitangent as
+// -handedness * cross(n, t): the deliberate regression of the acceptance criterion.
+fs::path flippedHandednessShaders(const fs::path& root) {
   fs::copy(fs::path(MB_SOURCE_DIR) / "shaders", root / "shaders", fs::copy_options::recursive);
-  // The shared fragment shader builds the bitangent as handedness * cross(n, t); negate it.
   const fs::path fsPath = root / "shaders" / "forward.fs";
   std::string text = readText(fsPath);
   const std::string from = "handedness * cross(", to = "-handedness * cross(";
   size_t at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << fsPath << " no longer contains '" << from << "'; update this test";
-  text.replace(at, from.size(), to);
+  EXPECT_NE(at, std::string::npos) << fsPath << " no longer contains '" << from << "'; update this test";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
   std::ofstream(fsPath) << text;
+  return root / "shaders";
+}
 
+TEST(CliCheck, FlippedTangentHandednessFailsWithReport) {
+  fs::path root = scratch("handedness");
+  fs::path shaders = flippedHandednessShaders(root);
   std::string out;
   int rc = run(check("--golden " + q(kGolden) + " --scenes normal_torus,skinned_tube --shader-dir " +
-                     q(root / "shaders") + " --out " + q(root / "out")), &out);
+                     q(shaders) + " --out " + q(root / "out")), &out);
   EXPECT_EQ(rc, 1) << out;
   EXPECT_NE(out.find("FAIL  normal_torus.rest.matrix.png"), std::string::npos) << out;
   EXPECT_NE(out.find("FAIL  normal_torus.rest.motor.png"), std::string::npos) << out;
@@ -93,6 +77,27 @@ TEST(CliCheck, FlippedTangentHandednessFailsWithReport) {
   EXPECT_NE(html.find("normal_torus.rest.matrix.diff.png"), std::string::npos);
   for (const char* f : {"expected", "actual", "diff"})
     EXPECT_TRUE(fs::exists(root / "out" / (std::string("normal_torus.rest.matrix.") + f + ".png"))) << f;
+  fs::remove_all(root);
+}
+
+// Goldens recorded on another GL: the portable thresholds apply, with a warning naming both;
+// the same images still pass, and the flipped handedness still fails.
+TEST(CliCheck, OtherRendererUsesPortableThresholdsAndWarns) {
+  fs::path root = scratch("portable");
+  fs::path golden = copyGoldens(root);
+  auto manifest = nlohmann::json::parse(readText(golden / "golden.json"));
+  for (auto& e : manifest["images"]) e["gl"]["version"] = "4.5 (Core Profile) Mesa 0.0-elsewhere";
+  std::ofstream(golden / "golden.json") << manifest.dump(2);
+  std::string out;
+  int rc = run(check("--golden " + q(golden) + " --scenes normal_torus --out " + q(root / "out")), &out);
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("[portable]"), std::string::npos) << out;
+  EXPECT_NE(out.find("warning: GL differs from the goldens' (recorded"), std::string::npos) << out;
+  EXPECT_NE(out.find("Mesa 0.0-elsewhere"), std::string::npos) << out;
+  out.clear();
+  rc = run(check("--golden " + q(golden) + " --scenes normal_torus --shader-dir " +
+                 q(flippedHandednessShaders(root)) + " --out " + q(root / "out2")), &out);
+  EXPECT_EQ(rc, 1) << out;
   fs::remove_all(root);
 }
 

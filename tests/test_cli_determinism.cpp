@@ -4,9 +4,6 @@
 // animation time. Goldens rely on this.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -15,8 +12,8 @@
 
 #include "harness/image_metrics.h"
 #include "harness/render_frame.h"
-#include "pipelines/scene/builtin_scenes.h"
-#include "pipelines/scene/loader.h"
+#include "tests/cli_test_support.h"
+#include "tests/pipeline_scene_cases.h"
 
 namespace {
 
@@ -24,16 +21,6 @@ namespace fs = std::filesystem;
 using namespace mb;
 
 constexpr int kW = 160, kH = 120;
-
-int run(const std::string& cmd, std::string* output) {
-  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-  if (!p) return -1;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) output->append(buf, n);
-  int status = pclose(p);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
 
 std::vector<char> bytesOf(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -53,25 +40,8 @@ std::string firstDifference(const RgbaImage& a, const RgbaImage& b) {
   return "";
 }
 
-struct Case {
-  std::string scene, pipeline;
-};
-
-std::vector<Case> cases() {
-  std::vector<Case> out;
-  for (const std::string& s : builtinSceneNames())
-    for (const std::string& p : pipelineNames()) out.push_back({s, p});
-  return out;
-}
-
-class Determinism : public ::testing::TestWithParam<Case> {
+class Determinism : public PipelineSceneTest {
 protected:
-  void SetUp() override {
-    if (!createPipeline(GetParam().pipeline)) GTEST_SKIP() << "placeholder pipeline";
-    auto s = loadScene(GetParam().scene);
-    ASSERT_TRUE(s) << s.error();
-    scene_ = s.take();
-  }
   // Rest pose, and animation 0 at a time exactly representable in the decimal form passed
   // to the command line (a multiple of 1/64), so both paths pose the same state.
   std::vector<AnimState> states() const {
@@ -93,7 +63,6 @@ protected:
     EXPECT_TRUE(f) << f.error();
     return f ? f->image : RgbaImage{};
   }
-  Scene scene_;
 };
 
 TEST_P(Determinism, SameFrameTwiceInOneProcess) {
@@ -115,9 +84,7 @@ TEST_P(Determinism, SameFrameTwiceInOneProcess) {
 }
 
 TEST_P(Determinism, SeparateProcessesMatchEachOtherAndThisProcess) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("motorbench_determinism_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = mb::cli_test::scratchDir("determinism");
   for (const AnimState& anim : states()) {
     char animArgs[96] = "";
     if (anim.anim >= 0) std::snprintf(animArgs, sizeof animArgs, " --anim %d --time %.6f", anim.anim, double(anim.time));
@@ -128,9 +95,9 @@ TEST_P(Determinism, SeparateProcessesMatchEachOtherAndThisProcess) {
     for (int k = 0; k < 2; ++k) {
       const fs::path& f = files[k];
       std::string out;
-      int rc = run(std::string(env[k]) + "'" + std::string(MB_MOTORBENCH_EXE) + "' render " + GetParam().scene + " --pipeline " +
+      int rc = mb::cli_test::runCommand(env[k] + mb::cli_test::motorbench() + "render " + GetParam().scene + " --pipeline " +
                    GetParam().pipeline + " --size " + std::to_string(kW) + "x" + std::to_string(kH) +
-                   animArgs + " -o '" + f.string() + "'", &out);
+                   animArgs + " -o " + mb::cli_test::quoted(f), &out);
       ASSERT_EQ(rc, 0) << out;
     }
     EXPECT_EQ(bytesOf(files[0]), bytesOf(files[1])) << "PNG files differ (default vs LP_NUM_THREADS=1)" << animArgs;
@@ -143,7 +110,6 @@ TEST_P(Determinism, SeparateProcessesMatchEachOtherAndThisProcess) {
   fs::remove_all(dir);
 }
 
-INSTANTIATE_TEST_SUITE_P(BuiltinScenes, Determinism, ::testing::ValuesIn(cases()),
-                         [](const auto& info) { return info.param.scene + "_" + info.param.pipeline; });
+INSTANTIATE_TEST_SUITE_P(BuiltinScenes, Determinism, ::testing::ValuesIn(pipelineSceneCases()), caseName);
 
 }  // namespace

@@ -1,0 +1,39 @@
+// Helpers for tests that run the motorbench executable (test_cli_*): run a command and
+// capture its output, quote paths, and a fresh scratch folder per test process (ctest runs
+// tests in parallel, each in its own process).
+#pragma once
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace mb::cli_test {
+
+// Runs a shell command (stderr folded into stdout); its exit status, -1 when it did not exit.
+inline int runCommand(const std::string& cmd, std::string* output) {
+  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+  if (!p) return -1;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) output->append(buf, n);
+  const int status = pclose(p);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+inline std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+// "'<motorbench>' " ready for arguments.
+inline std::string motorbench() { return quoted(MB_MOTORBENCH_EXE) + " "; }
+
+// An empty folder <tmp>/motorbench_<name>_<pid>.
+inline std::filesystem::path scratchDir(const std::string& name) {
+  namespace fs = std::filesystem;
+  fs::path p = fs::temp_directory_path() / ("motorbench_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+}  // namespace mb::cli_test
