@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "harness/claims_sources.h"
+#include "harness/report_inputs.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scene_stats.h"
@@ -17,17 +18,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The .gltf/.glb files below `dir` (none when it is not a folder), as report finds them.
 std::vector<std::string> corpusFiles(const std::string& dir) {
   std::vector<std::string> out;
   std::error_code ec;
   if (dir.empty() || !fs::is_directory(dir, ec)) return out;
-  for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied, ec);
-       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-    std::string ext = it->path().extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
-    if (it->is_regular_file(ec) && (ext == ".gltf" || ext == ".glb")) out.push_back(it->path().string());
-  }
-  std::sort(out.begin(), out.end());
+  for (const report::Input& in : report::expandInputs({dir})) out.push_back(in.spec);
   return out;
 }
 

@@ -16,6 +16,7 @@
 #include "harness/command.h"
 #include "harness/report_bench.h"
 #include "harness/report_machine.h"
+#include "harness/render_frame.h"
 #include "harness/report_timing.h"
 #include "pipelines/scene/loader.h"
 
@@ -25,10 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-int fail(const std::string& message) {
-  std::fprintf(stderr, "motorbench claims: error: %s\n", message.c_str());
-  return 2;
-}
+int fail(const std::string& message) { return commandError("claims", message); }
 
 void say(const std::string& line) {
   std::fprintf(stderr, "claims: %s\n", line.c_str());
@@ -86,7 +84,8 @@ claims::SpeedInputs speedInputs(const Args& args, json& sources) {
   }
   if ((in.frameTimes.is_null() || in.frameTimes.empty()) && run) {
     in.frameTimes = json::array();
-    const int frames = int(args.number("frames", 20));
+    const auto framesOpt = numberOption(args, "frames", 20);
+    const int frames = framesOpt ? int(*framesOpt) : 20;  // validated in runClaims
     for (const char* name : {"normal_torus", "skinned_tube"}) {
       say(std::string("timing ") + name + " (" + std::to_string(frames) + " frames per pipeline)");
       auto scene = loadScene(name);
@@ -118,6 +117,7 @@ int runClaims(const std::vector<std::string>& argv) {
   if (auto u = args.unknown({"o", "output", "json", "report", "bench-json", "corpus", "frames", "no-run"}); !u.empty())
     return fail("unknown option " + u[0]);
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
+  if (auto f = numberOption(args, "frames", 20); !f || *f < 1) return fail(f ? "--frames: expected 1 or more" : f.error());
   const std::string corpus = args.get("corpus", "../shared/corpus");
   json sources = {{"opCounts", "shaders/pga.glsl, shaders/matrix_transform.glsl, shaders/motor_transform.glsl "
                                 "executed on mb::Counted; SPIR-V via glslangValidator + spirv-opt"},

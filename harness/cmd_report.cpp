@@ -4,11 +4,12 @@
 // pipeline -> DIR/report.json, report.md, report.html, images/, plots/ (harness/report_*.h).
 // The same command with --worker measures one scene for the parent run (report_workers.h).
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
-#include <sstream>
 
 #include "harness/args.h"
 #include "harness/command.h"
+#include "harness/render_frame.h"
 #include "harness/report_run.h"
 #include "harness/report_scene.h"
 #include "harness/report_timing.h"
@@ -20,14 +21,6 @@ namespace {
 
 using json = nlohmann::json;
 
-std::vector<std::string> splitList(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
 bool parseSize(const std::string& s, int* w, int* h) {
   char x = 0, extra = 0;
   const int n = std::sscanf(s.c_str(), "%d%c%d%c", w, &x, h, &extra);
@@ -36,10 +29,7 @@ bool parseSize(const std::string& s, int* w, int* h) {
   return *w >= 1 && *h >= 1 && *w <= 8192 && *h <= 8192;
 }
 
-int fail(const std::string& message) {
-  std::fprintf(stderr, "motorbench report: error: %s\n", message.c_str());
-  return 2;
-}
+int fail(const std::string& message) { return commandError("report", message); }
 
 // Worker: one scene, one phase ("render" or "time"); writes --worker-out with "complete": true
 // last so the parent can tell a finished result from a crash.
@@ -47,8 +37,8 @@ int runWorker(const Args& args, const report::Options& o) {
   if (args.positional().size() != 1) return fail("--worker needs exactly one scene");
   report::SceneJob job;
   job.input = {args.positional()[0], args.get("worker-id", "scene")};
-  job.index = int(args.number("worker-index", 1));
-  job.total = int(args.number("worker-total", 1));
+  job.index = std::atoi(args.get("worker-index", "1").c_str());
+  job.total = std::atoi(args.get("worker-total", "1").c_str());
   job.outDir = o.outDir;
   job.width = o.width, job.height = o.height;
   job.pipelines = o.pipelines;
@@ -93,10 +83,11 @@ int runReportCommand(const std::vector<std::string>& argv) {
     return fail("--size " + args.get("size", "") + ": expected WxH, e.g. 256x192");
   if (args.has("time-size") && !parseSize(args.get("time-size", ""), &o.timeWidth, &o.timeHeight))
     return fail("--time-size " + args.get("time-size", "") + ": expected WxH, e.g. 512x512");
-  o.jobs = int(args.number("jobs", 1));
-  o.frames = int(args.number("frames", o.frames));
-  o.timeoutS = args.number("timeout", o.timeoutS);
-  o.benchMinTime = args.number("bench-min-time", o.benchMinTime);
+  auto jobs = numberOption(args, "jobs", 1), frames = numberOption(args, "frames", o.frames),
+       timeout = numberOption(args, "timeout", o.timeoutS), minTime = numberOption(args, "bench-min-time", o.benchMinTime);
+  for (const auto* r : {&jobs, &frames, &timeout, &minTime})
+    if (!*r) return fail(r->error());
+  o.jobs = int(*jobs), o.frames = int(*frames), o.timeoutS = *timeout, o.benchMinTime = *minTime;
   if (o.jobs < 1 || o.jobs > 256) return fail("--jobs: expected 1..256");
   if (o.frames < 0) return fail("--frames: expected 0 or more");
   o.bench = !args.has("no-bench");

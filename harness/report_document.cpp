@@ -72,7 +72,7 @@ json spread(std::vector<double> v) {
 json assembleReport(json machine, json settings, std::vector<json> scenes, json ops, json kernels) {
   const std::vector<std::string> pipelines = settings["pipelines"].get<std::vector<std::string>>();
   for (const json& s : scenes)
-    if (s.contains("gl") && !machine.contains("gl")) machine["gl"] = s["gl"];
+    if (s.contains("gl") && (!machine.contains("gl") || machine["gl"].contains("error"))) machine["gl"] = s["gl"];
   json summary = {{"scenes", scenes.size()}, {"ok", 0}, {"partial", 0}, {"failed", 0}};
   for (const json& s : scenes) summary[s.value("status", "failed")] = summary.value(s.value("status", "failed"), 0) + 1;
   for (const std::string& p : pipelines) summary["pipelines"][p] = pipelineSummary(scenes, p);

@@ -3,24 +3,13 @@
 #include <sys/utsname.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <ctime>
-#include <fstream>
 #include <string>
-#include <thread>
+
+#include "harness/frame_timing.h"
 
 namespace mb::report {
 namespace {
-
-std::string cpuModel() {
-  std::ifstream in("/proc/cpuinfo");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("model name", 0) == 0) {
-      const size_t colon = line.find(':');
-      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
-    }
-  return "unknown";
-}
 
 std::string utcNow() {
   const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
@@ -36,19 +25,28 @@ std::string utcNow() {
 nlohmann::json machineJson() {
   utsname u{};
   uname(&u);
-  const char* lp = std::getenv("LP_NUM_THREADS");
 #ifdef NDEBUG
   const char* build = "optimised (NDEBUG)";
 #else
   const char* build = "debug (assertions on)";
 #endif
-  return {{"cpu", cpuModel()},
-          {"logicalCores", std::thread::hardware_concurrency()},
-          {"os", std::string(u.sysname) + " " + u.release + " " + u.machine},
-          {"compiler", std::string("gcc-compatible ") + __VERSION__},
-          {"build", build},
-          {"lpNumThreads", lp ? nlohmann::json(lp) : nlohmann::json(nullptr)},
-          {"date", utcNow()}};
+  nlohmann::json j = {{"os", std::string(u.sysname) + " " + u.release + " " + u.machine},
+                      {"compiler", std::string("gcc-compatible ") + __VERSION__},
+                      {"build", build},
+                      {"date", utcNow()}};
+  // CPU, cores, GL and LP_NUM_THREADS as `motorbench time` records them (frame_timing.h).
+  auto m = timing::machineInfo();
+  if (!m) {
+    j["cpu"] = "unknown";
+    j["gl"] = {{"error", m.error()}};
+    return j;
+  }
+  j["cpu"] = m->cpuModel;
+  j["logicalCores"] = m->cores;
+  j["lpNumThreads"] = m->lpNumThreads == "unset" ? nlohmann::json(nullptr) : nlohmann::json(m->lpNumThreads);
+  j["gl"] = {{"renderer", m->glRenderer}, {"version", m->glVersion}, {"backend", m->glBackend},
+             {"realGpu", m->realGpu}};
+  return j;
 }
 
 }  // namespace mb::report

@@ -5,8 +5,9 @@
 
 namespace mb::report {
 
-// CPU model (/proc/cpuinfo), logical cores, kernel (uname), compiler, build type, UTC time,
-// LP_NUM_THREADS (null when unset). GL fields are added by the caller from a rendered frame.
+// CPU model, logical cores, LP_NUM_THREADS (null when unset) and "gl" {renderer, version,
+// backend, realGpu} from frame_timing.h's machineInfo() (creates the shared GL context; "gl"
+// holds {"error"} when that fails), plus kernel (uname), compiler, build type and UTC time.
 nlohmann::json machineJson();
 
 }  // namespace mb::report

@@ -19,16 +19,6 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-// The compare command's metrics, by the same field names (psnr null when identical).
-json metricsJson(const ImageMetrics& m) {
-  const bool identical = m.rmse == 0.0;
-  return {{"rmse", m.rmse}, {"psnr", identical ? json(nullptr) : json(m.psnr)},
-          {"identical", identical}, {"meanError", m.meanError}, {"maxError", m.maxError},
-          {"maxErrorPixel", {{"x", m.maxX}, {"y", m.maxY}, {"channel", m.maxChannel}}},
-          {"fractionOver1", m.fractionOver1}, {"fractionOver2", m.fractionOver2},
-          {"fractionOver4", m.fractionOver4}};
-}
-
 // Bytes and floats as uploaded. bytesPerVertex counts the shading attributes only (the
 // paper's 12 vs 9 floats); bytesPerVertexAll adds skin and optional streams.
 json memoryJson(const PipelineStats& s) {
@@ -192,7 +182,7 @@ json measureScene(const SceneJob& job) {
                                   diffHeatmap(images[base], images[p]));
       if (written) frame["diffs"][p] = file;
       else frame["errors"]["diff_" + p] = written.error();
-      frame["metrics"][p] = metricsJson(*m);
+      frame["metrics"][p] = toJson(*m);  // the compare command's metrics
     }
     out["frames"].push_back(frame);
   }

@@ -33,8 +33,9 @@ def save(fig, outdir, name):
     fig.savefig(os.path.join(outdir, name + ".png"), dpi=90, metadata={"Software": None})
 
 
-def grouped_bars(ax, labels, series, ylabel):
-    """series: [(name, [values or None])]; None values are left out."""
+def grouped_bars(ax, labels, series, ylabel, colours=None, digits=3, reference=None):
+    """series: [(name, [values or None])]; None values are left out. colours: one per series
+    (default: the pipeline colours by name); reference: a horizontal line (e.g. ratio 1)."""
     n = max(1, len(series))
     width = 0.8 / n
     for i, (name, values) in enumerate(series):
@@ -42,10 +43,13 @@ def grouped_bars(ax, labels, series, ylabel):
         pts = [(x, v) for x, v in zip(xs, values) if v is not None]
         if not pts:
             continue
-        bars = ax.bar([p[0] for p in pts], [p[1] for p in pts], width, label=name, color=colour(name, i))
+        col = colours[i] if colours else colour(name, i)
+        bars = ax.bar([p[0] for p in pts], [p[1] for p in pts], width, label=name, color=col)
         for b, (_, v) in zip(bars, pts):
-            ax.annotate(f"{v:.3g}", (b.get_x() + b.get_width() / 2, b.get_height()),
+            ax.annotate(f"{v:.{digits}g}", (b.get_x() + b.get_width() / 2, b.get_height()),
                         ha="center", va="bottom", fontsize=7)
+    if reference is not None:
+        ax.axhline(reference, color="black", lw=0.8)
     ax.set_xticks(range(len(labels)))
     ax.set_xticklabels(labels, rotation=30, ha="right", fontsize=8)
     ax.set_ylabel(ylabel)
@@ -101,18 +105,17 @@ def plot_kernel_ratios(plt, report, outdir):
     for p in pairs:
         if p["kernel"] not in kernels:
             kernels.append(p["kernel"])
-    sizes = [("in_cache", "in cache", "#4c72b0"), ("out_of_cache", "out of cache (>= 256 MiB)", "#c44e52"),
-             (None, "unsized", "#8c8c8c")]
+    # Bars per kernel: in cache above, out of cache below; unsized kernels centred.
+    sizes = [("in_cache", "in cache", "#4c72b0", -0.2), ("out_of_cache", "out of cache (>= 256 MiB)", "#c44e52", 0.2),
+             (None, "one working set", "#8c8c8c", 0.0)]
     fig, ax = plt.subplots(figsize=(8, 0.45 * len(kernels) + 1.4))
-    height = 0.8 / 2
-    for i, (size, label, col) in enumerate(sizes):
+    for size, label, col, offset in sizes:
         pts = [(k, p["ratio_motor_matrix"]) for k, name in enumerate(kernels) for p in pairs
                if p["kernel"] == name and p.get("size") == size]
         if not pts:
             continue
-        offset = (i if size else 0) - 0.5 if size else 0
-        ys = [k + offset * height for k, _ in pts]
-        ax.barh(ys, [v for _, v in pts], height, label=label, color=col)
+        ys = [k + offset for k, _ in pts]
+        ax.barh(ys, [v for _, v in pts], 0.4, label=label, color=col)
         for y, (_, v) in zip(ys, pts):
             ax.annotate(f"{v:.2f}", (v, y), va="center", fontsize=7)
     ax.axvline(1.0, color="black", lw=0.8)
@@ -137,29 +140,18 @@ def plot_frame_time_ratio(plt, report, outdir):
     series = [("frame", [s["timing"]["ratio_motor_matrix"] for s in scenes])]
     vb = [num((s["timing"].get("vertexBound") or {}).get("ratio_motor_matrix")) for s in scenes]
     if any(v is not None for v in vb):
-        series.append(("vertex-bound", vb))
+        series.append(("64x64 viewport (vertex-bound)", vb))
     cpu = [num((s["timing"].get("update") or {}).get("ratio_motor_matrix")) for s in scenes]
     if any(v is not None for v in cpu):
         series.append(("CPU update", cpu))
-    n = len(series)
-    width = 0.8 / n
-    cols = ["#4c72b0", "#c44e52", "#55a868"]
-    for i, (name, vals) in enumerate(series):
-        pts = [(k + (i - (n - 1) / 2) * width, v) for k, v in enumerate(vals) if v is not None]
-        bars = ax.bar([p[0] for p in pts], [p[1] for p in pts], width, label=name, color=cols[i])
-        for b, (_, v) in zip(bars, pts):
-            ax.annotate(f"{v:.2f}", (b.get_x() + b.get_width() / 2, b.get_height()), ha="center",
-                        va="bottom", fontsize=7)
-    ax.axhline(1.0, color="black", lw=0.8)
-    ax.set_xticks(range(len(labels)))
-    ax.set_xticklabels(labels, rotation=30, ha="right", fontsize=8)
-    ax.set_ylabel("motor / matrix time (< 1: motor faster)")
+    grouped_bars(ax, labels, series, "motor / matrix time (< 1: motor faster)",
+                 colours=["#4c72b0", "#c44e52", "#55a868"], digits=2, reference=1.0)
     ax.set_title("Frame-time ratios (median wall clock around glFinish)", fontsize=9)
-    ax.legend(fontsize=8)
     save(fig, outdir, "frame_time_ratio")
     return ("frame_time_ratio", "Frame-time ratios",
-            "Median frame time of the motor pipeline over the matrix pipeline's, measured in the "
-            "same process one after the other.")
+            "Median frame time of the motor pipeline over the matrix pipeline's, both measured in "
+            "one process with frames interleaved; the CPU update (hierarchy, animation, skin palette) "
+            "timed apart.")
 
 
 def plot_image_error(plt, report, outdir):

@@ -1,9 +1,37 @@
 #!/usr/bin/env bash
-# The main job: installs packages, builds, and measures on the built-in scenes.
+# The main job: installs packages, builds motorbench and measures the built-in scenes into
+# results/ (committed): ops.json/.txt (op counts), bench.json/.txt (Google Benchmark kernel
+# pairs), report.json/.md/.html + images/ + plots/ (motorbench report), claims.md/.json
+# (motorbench claims). Progress on stderr. Budget: under 15 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo
-cmake --build build -j "$(nproc)"
-mkdir -p results
-build/harness/motorbench ops --json results/ops.json | tee results/ops.txt
+
+start=$(date +%s)
+step() { echo "[reproduce $(($(date +%s) - start)) s] $*" >&2; }
+
+step "setup (Debian packages)"
+scripts/setup.sh >&2
+step "configure and build motorbench"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >&2
+cmake --build build --target motorbench -j "$(nproc)" >&2
+
+MB=build/harness/motorbench
+OUT=results
+mkdir -p "$OUT"
+rm -rf "$OUT/images" "$OUT/plots"  # generated; other files are overwritten
+
+step "ops: counted arithmetic of every kernel -> $OUT/ops.json"
+"$MB" ops --json "$OUT/ops.json" > "$OUT/ops.txt"
+
+step "bench: kernel pairs in and out of cache, 3 repetitions -> $OUT/bench.json"
+"$MB" bench --out "$OUT/bench.json" --benchmark_min_time=0.1 --benchmark_repetitions=3 \
+  --benchmark_color=false > "$OUT/bench.txt"
+
+step "report: built-in scenes -> $OUT/report.html"
+"$MB" report -o "$OUT" --bench-json "$OUT/bench.json" --jobs "$(nproc)"
+
+step "claims -> $OUT/claims.md"
+"$MB" claims --report "$OUT/report.json" --bench-json "$OUT/bench.json" --corpus ../shared/corpus \
+  -o "$OUT/claims.md" --json "$OUT/claims.json"
+
+step "done: $OUT/report.html, $OUT/claims.md"
