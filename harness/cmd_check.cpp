@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <set>
@@ -101,6 +102,12 @@ int check(const Selection& sel) {
   std::error_code ec;
   fs::create_directories(sel.outDir, ec);
   if (ec) return commandError("check", sel.outDir + ": cannot create folder: " + ec.message());
+  // Images of an earlier run would pass for this run's failures: remove them (only ours).
+  for (const auto& f : fs::directory_iterator(sel.outDir, ec)) {
+    const std::string n = f.path().filename().string();
+    for (const char* suffix : {".actual.png", ".expected.png", ".diff.png"})
+      if (n.size() > std::strlen(suffix) && n.ends_with(suffix)) fs::remove(f.path(), ec);
+  }
   CheckRun run;
   run.goldenDir = sel.goldenDir;
   run.shaderDir = gl::shaderDir();
@@ -223,7 +230,7 @@ int runCheck(const std::vector<std::string>& argv) {
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
   Selection sel;
   sel.goldenDir = args.get("golden", "tests/golden");
-  sel.outDir = args.get("out", args.get("o", "motorbench-check"));
+  sel.outDir = args.get("out", args.get("o", "out/check"));
   if (auto dir = args.get("shader-dir")) {
     if (!fs::is_directory(*dir)) return fail("--shader-dir " + *dir + ": not a folder");
     // shaderDir() reads MB_SHADER_DIR on every load, so this redirects every pipeline.

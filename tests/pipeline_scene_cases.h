@@ -4,6 +4,7 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,8 @@ namespace mb {
 struct PipelineScene {
   std::string pipeline, scene;
 };
+// How gtest shows a case (instead of its bytes).
+inline void PrintTo(const PipelineScene& c, std::ostream* os) { *os << c.pipeline << " on " << c.scene; }
 
 // Every registered pipeline (but `except`) x every built-in scene.
 inline std::vector<PipelineScene> pipelineSceneCases(const std::string& except = "") {
