@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <memory>
 #include <thread>
@@ -20,6 +21,21 @@ using Clock = std::chrono::steady_clock;
 
 double ms(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+// CPU time of the whole process (all threads, llvmpipe's rasterisers included), in ms.
+double processCpuMs() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
+}
+
+// Per-frame ratios b[i] / a[i] of two sample series.
+std::vector<double> pairedRatios(const std::vector<double>& a, const std::vector<double>& b) {
+  std::vector<double> r;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+    if (a[i] > 0) r.push_back(b[i] / a[i]);
+  return r;
 }
 
 // Linear-interpolated quantile of sorted samples.
@@ -135,20 +151,35 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
       PipelineTiming& t = out.pipelines[slots[idx]];
       glFinish();  // nothing of the previous pipeline is left in flight
       const auto t0 = Clock::now();
-      p.update(st);
+      for (int r = 0; r < t.updateRepeats; ++r) p.update(st);
       const auto t1 = Clock::now();
-      if (query) glBeginQuery(GL_TIME_ELAPSED, query);
-      (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
-      p.render(view);
-      if (query) glEndQuery(GL_TIME_ELAPSED);
-      glFinish();
-      const auto t2 = Clock::now();
-      GLuint64 ns = 0;
-      if (query) glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
-      if (i < settings.warmup) continue;
-      t.updateMs.push_back(ms(t0, t1));
-      t.frameMs.push_back(ms(t1, t2));
-      if (query && i > 0) t.gpuMs.push_back(double(ns) * 1e-6);  // frame 0's query dropped
+      double frameMs = 0, cpuMs = 0, gpuMs = 0;
+      for (int rep = 0; rep < std::max(1, settings.bestOf); ++rep) {
+        const auto r0 = Clock::now();
+        const double c0 = processCpuMs();
+        if (query) glBeginQuery(GL_TIME_ELAPSED, query);
+        (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
+        p.render(view);
+        if (query) glEndQuery(GL_TIME_ELAPSED);
+        glFinish();
+        const double wall = ms(r0, Clock::now()), cpu = processCpuMs() - c0;
+        GLuint64 ns = 0;
+        if (query) glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+        frameMs = rep ? std::min(frameMs, wall) : wall;
+        cpuMs = rep ? std::min(cpuMs, cpu) : cpu;
+        gpuMs = rep ? std::min(gpuMs, double(ns) * 1e-6) : double(ns) * 1e-6;
+      }
+      const double updateMs = ms(t0, t1) / t.updateRepeats;
+      if (i < settings.warmup) {
+        // Calibrate R on the warm-up: enough calls for a block of kMinUpdateBlockMs.
+        if (updateMs > 0)
+          t.updateRepeats = std::clamp(int(std::ceil(kMinUpdateBlockMs / updateMs)), 1, 1000);
+        continue;
+      }
+      t.updateMs.push_back(updateMs);
+      t.frameMs.push_back(frameMs);
+      t.cpuMs.push_back(cpuMs);
+      if (query && i > 0) t.gpuMs.push_back(gpuMs);  // frame 0's queries dropped
     }
   }
   if (query) glDeleteQueries(1, &query);
@@ -158,6 +189,7 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   for (size_t k = 0; k < live.size(); ++k) {
     PipelineTiming& t = out.pipelines[slots[k]];
     t.frame = spreadOf(t.frameMs), t.update = spreadOf(t.updateMs), t.gpu = spreadOf(t.gpuMs);
+    t.cpu = spreadOf(t.cpuMs);
     t.stats = live[k]->stats();
   }
   const PipelineTiming* matrix = nullptr;
@@ -169,11 +201,12 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   }
   if (matrix && motor) {
     out.frameRatio = ratioOf(motor->frame.median, matrix->frame.median);
-    out.updateRatio = ratioOf(motor->update.median, matrix->update.median);
-    std::vector<double> paired;
-    for (size_t i = 0; i < matrix->frameMs.size() && i < motor->frameMs.size(); ++i)
-      paired.push_back(motor->frameMs[i] / matrix->frameMs[i]);
-    out.pairedFrameRatio = paired.empty() ? -1 : spreadOf(paired).median;
+    auto pairedMedian = [](const std::vector<double>& r) { return r.empty() ? -1 : spreadOf(r).median; };
+    const std::vector<double> frames = pairedRatios(matrix->frameMs, motor->frameMs);
+    out.pairedFrame = spreadOf(frames);
+    out.pairedFrameRatio = pairedMedian(frames);
+    out.pairedCpuRatio = pairedMedian(pairedRatios(matrix->cpuMs, motor->cpuMs));
+    out.updateRatio = pairedMedian(pairedRatios(matrix->updateMs, motor->updateMs));
   }
   return out;
 }
@@ -195,8 +228,11 @@ nlohmann::json toJson(const ConfigTiming& c) {
     nlohmann::json j = {{"error", t.error.empty() ? nlohmann::json() : nlohmann::json(t.error)}};
     if (t.error.empty()) {
       j["frame_ms"] = toJson(t.frame);
+      j["frame_cpu_ms"] = toJson(t.cpu);
       j["update_ms"] = toJson(t.update);
+      j["update_calls_per_block"] = t.updateRepeats;
       j["frame_samples_ms"] = t.frameMs;
+      j["frame_cpu_samples_ms"] = t.cpuMs;
       j["update_samples_ms"] = t.updateMs;
       j["gpu_ms"] = t.gpuMs.empty() ? nlohmann::json() : toJson(t.gpu);
       j["vertices"] = t.stats.vertices;
@@ -212,6 +248,8 @@ nlohmann::json toJson(const ConfigTiming& c) {
           {"pipelines", pipelines},
           {"ratio_motor_over_matrix", num(c.frameRatio)},
           {"paired_ratio_motor_over_matrix", num(c.pairedFrameRatio)},
+          {"paired_ratio_spread", toJson(c.pairedFrame)},
+          {"paired_cpu_ratio_motor_over_matrix", num(c.pairedCpuRatio)},
           {"update_ratio_motor_over_matrix", num(c.updateRatio)}};
 }
 

@@ -1,10 +1,17 @@
 // Frame timing of every registered pipeline on a scene (issue 5, item 4), measured in one run
 // so that motor/matrix ratios cancel what the machine does meanwhile:
 //  - each frame: the CPU update (hierarchy, animation, skin palette: Pipeline::update) timed
-//    on its own, then clear + render + glFinish timed by the wall clock;
+//    on its own (R back-to-back calls, R chosen in the warm-up so that a block lasts at least
+//    kMinUpdateBlockMs: tiny scenes update in microseconds, below the clock's noise), then
+//    clear + render + glFinish timed by the wall clock and, beside it, by the process's CPU
+//    time (llvmpipe's worker threads included: what the frame cost the machine, insensitive to
+//    other processes taking the cores meanwhile); each frame rendered Settings::bestOf times,
+//    the fastest kept;
 //  - pipelines are interleaved frame by frame, in alternating order (A B, B A, ...), so drift
 //    and order effects fall on both alike;
 //  - W warm-up frames are dropped, then N frames give median, quartiles and MAD;
+//  - ratios: of the medians, and the median of the per-frame ratios (both pipelines render the
+//    same frame back to back, so a slow spell of the machine hits both samples of a pair);
 //  - GL timer queries (GL_TIME_ELAPSED) are used as an extra column only when GL_RENDERER is a
 //    real GPU (llvmpipe's are not trustworthy), the first query discarded.
 #pragma once
@@ -39,14 +46,21 @@ Result<MachineInfo> machineInfo();
 
 struct Settings {
   int frames = 30, warmup = 5;
+  // Each frame is rendered this many times back to back and the fastest counts: other
+  // processes can only ever add time to a render, so the minimum is the least disturbed one.
+  int bestOf = 3;
   int width = 512, height = 512;
   std::string config = "normal";  // label: "normal", "vertex-bound"
 };
 
+inline constexpr double kMinUpdateBlockMs = 0.25;
+
 struct PipelineTiming {
   std::string pipeline;
-  std::vector<double> frameMs, updateMs, gpuMs;  // per measured frame
-  Spread frame, update, gpu;
+  // Per measured frame: wall clock, process CPU time, CPU update (per call), GPU timer query.
+  std::vector<double> frameMs, cpuMs, updateMs, gpuMs;
+  Spread frame, cpu, update, gpu;
+  int updateRepeats = 1;  // R: update calls per timed block
   PipelineStats stats;
   std::string error;  // non-empty: this pipeline could not run (no samples)
 };
@@ -55,9 +69,12 @@ struct ConfigTiming {
   std::string scene, config;
   int width = 0, height = 0;
   std::vector<PipelineTiming> pipelines;  // registry order, matrix first
-  // motor / matrix: of the medians, and the median of the per-frame ratios (paired samples);
-  // negative when either side is missing.
-  double frameRatio = -1, pairedFrameRatio = -1, updateRatio = -1;
+  // motor / matrix, negative when either side is missing. frameRatio: of the frame-time
+  // medians; pairedFrameRatio (spread: pairedFrame): the median of the per-frame ratios;
+  // pairedCpuRatio: the same for CPU time; updateRatio: the median of the per-frame update
+  // ratios.
+  double frameRatio = -1, pairedFrameRatio = -1, pairedCpuRatio = -1, updateRatio = -1;
+  Spread pairedFrame;
 };
 
 // Times every registered pipeline on `scene` under `settings`.
