@@ -114,7 +114,9 @@ inline std::vector<VertexKernel> vertexKernels() {
       {"matrix", "rigid vertex with frame", "matrixRigidVertex",
        [&] { M.matrixRigidVertex(in.model, in.normal, in.position, in.normalV, in.tangent); },
        "mat3x4 v = matrixRigidVertex(u_model, u_normal, a_position, a_normal, a_tangent);" + store,
-       matrixIncl + kMatrixAttribs + "uniform mat4 u_model; uniform mat4 u_normal;\n", ""},
+       matrixIncl + kMatrixAttribs + "uniform mat4 u_model; uniform mat4 u_normal;\n",
+       "paper 48/36: the three mat4 * vec4 (matrixTransformFrame); +1 mul: handedness of "
+       "mirrored nodes (w * sign(det))"},
       {"matrix", "skinned vertex (4 joints)", "matrixSkinnedVertex",
        [&] {
          M.matrixSkinnedVertex(in.j[0], in.j[1], in.j[2], in.j[3], in.n[0], in.n[1], in.n[2],
@@ -149,7 +151,10 @@ inline std::vector<VertexKernel> vertexKernels() {
        [&] { P.motorRigidVertex(in.toWorld, 1.25, in.position, in.rotor); },
        "mat3x4 v = motorRigidVertex(motor(u_world[0], u_world[1]), u_scale, a_position, "
        "a_tangentRotor);" + store,
-       motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform float u_scale;\n", ""},
+       motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform float u_scale;\n",
+       "paper 47/38 = sw_mp 21/18 + gp_rr 16/12 + extractNormalTangent 9/8 + 1 mul handedness; "
+       "here +3 mul: the uniform scale of the position, and the handedness is sign(1/x) "
+       "(1 div, 1 other: IEEE signed zero) instead of 1 mul"},
       {"motor", "skinned vertex (4 joints)", "motorSkinnedVertex",
        [&] {
          P.motorSkinnedVertex(in.joints[0], in.joints[1], in.joints[2], in.joints[3],
