@@ -3,10 +3,8 @@
 // (JSON with items_per_second, a printed ratio) and reject bad input.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -14,21 +12,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "tests/cli_test_support.h"
+
 namespace {
 
 namespace fs = std::filesystem;
+using mb::cli_test::runCommand;
 
-int run(const std::string& cmd, std::string* output) {
-  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-  if (!p) return -1;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) output->append(buf, n);
-  const int status = pclose(p);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string exe() { return "'" + std::string(MB_MOTORBENCH_EXE) + "'"; }
+std::string exe() { return mb::cli_test::motorbench(); }
 
 fs::path scratchFile(const std::string& name) {
   return fs::temp_directory_path() / ("motorbench_cli_bench_" + std::to_string(::getpid()) + "_" + name);
@@ -37,7 +28,7 @@ fs::path scratchFile(const std::string& name) {
 TEST(CliBench, OneCheapKernelWritesJsonWithItemsPerSecond) {
   const fs::path out = scratchFile("bench.json");
   std::string log;
-  const int rc = run(exe() + " bench --benchmark_filter='^compose/' --benchmark_min_time=0.01 "
+  const int rc = runCommand(exe() + "bench --benchmark_filter='^compose/' --benchmark_min_time=0.01 "
                              "--out '" + out.string() + "'", &log);
   ASSERT_EQ(rc, 0) << log;
   std::ifstream in(out);
@@ -61,7 +52,7 @@ TEST(CliBench, OneCheapKernelWritesJsonWithItemsPerSecond) {
 TEST(CliBench, OutOfCacheKernelReportsBandwidthFraction) {
   const fs::path out = scratchFile("bw.json");
   std::string log;
-  const int rc = run(exe() + " bench --benchmark_filter='^direction/out_of_cache/motor$' "
+  const int rc = runCommand(exe() + "bench --benchmark_filter='^direction/out_of_cache/motor$' "
                              "--benchmark_min_time=0.01 --out '" + out.string() + "'", &log);
   ASSERT_EQ(rc, 0) << log;
   std::ifstream in(out);
@@ -77,17 +68,18 @@ TEST(CliBench, OutOfCacheKernelReportsBandwidthFraction) {
 
 TEST(CliBench, RejectsUnknownArgumentsAndEmptyFilters) {
   std::string log;
-  EXPECT_EQ(run(exe() + " bench --frobnicate", &log), 2) << log;
+  EXPECT_EQ(runCommand(exe() + "bench --frobnicate", &log), 2) << log;
   log.clear();
-  EXPECT_EQ(run(exe() + " bench --out", &log), 2) << log;
+  EXPECT_EQ(runCommand(exe() + "bench --out", &log), 2) << log;
   log.clear();
-  EXPECT_EQ(run(exe() + " bench --benchmark_filter=no_such_kernel", &log), 2) << log;
+  EXPECT_EQ(runCommand(exe() + "bench --benchmark_filter=no_such_kernel", &log), 2) << log;
 }
 
 TEST(CliTime, TexturedBoxPrintsARatio) {
   const fs::path json = scratchFile("time.json");
   std::string log;
-  const int rc = run(exe() + " time textured_box --frames 3 --warmup 1 --json '" + json.string() + "'", &log);
+  const int rc = runCommand(
+      exe() + "time textured_box --frames 3 --warmup 1 --json '" + json.string() + "'", &log);
   ASSERT_EQ(rc, 0) << log;
   EXPECT_NE(log.find("motor/matrix"), std::string::npos) << log;
   EXPECT_NE(log.find("GL_RENDERER"), std::string::npos) << log;
@@ -105,11 +97,43 @@ TEST(CliTime, TexturedBoxPrintsARatio) {
 
 TEST(CliTime, RejectsBadInput) {
   std::string log;
-  EXPECT_EQ(run(exe() + " time no_such_scene_or_file.glb --frames 2", &log), 2) << log;
+  EXPECT_EQ(runCommand(exe() + "time no_such_scene_or_file.glb --frames 2", &log), 2) << log;
   log.clear();
-  EXPECT_EQ(run(exe() + " time textured_box --frames 0", &log), 2) << log;
+  EXPECT_EQ(runCommand(exe() + "time textured_box --frames 0", &log), 2) << log;
   log.clear();
-  EXPECT_EQ(run(exe() + " time textured_box --size 0x5", &log), 2) << log;
+  EXPECT_EQ(runCommand(exe() + "time textured_box --size 0x5", &log), 2) << log;
+}
+
+TEST(CliOps, PerVertexSectionHasBothWaysForEveryPipeline) {
+  const fs::path json = scratchFile("ops.json");
+  std::string log;
+  ASSERT_EQ(runCommand(exe() + "ops --json '" + json.string() + "'", &log), 0) << log;
+  EXPECT_NE(log.find("Ops per vertex"), std::string::npos) << log;
+  std::ifstream in(json);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_TRUE(j.contains("per_vertex")) << j.dump();
+  const auto& pv = j["per_vertex"];
+  const bool tools = pv["tools_problem"].get<std::string>().empty();
+  std::set<std::string> seen;
+  for (const auto& k : pv["kernels"]) {
+    seen.insert(k["pipeline"].get<std::string>() + "/" + k["kernel"].get<std::string>());
+    EXPECT_GT(k["counted"]["mul"].get<int>(), 0) << k.dump();
+    if (tools) {
+      EXPECT_TRUE(k["spirv"].is_object()) << k.dump();
+      // Counted and SPIR-V agree, or the difference is explained.
+      EXPECT_TRUE(k["agree"].get<bool>() || !k["why"].get<std::string>().empty()) << k.dump();
+    }
+  }
+  for (const char* p : {"matrix", "motor"})
+    for (const char* k : {"rigid vertex with frame", "skinned vertex (4 joints)", "world to clip"})
+      EXPECT_TRUE(seen.count(std::string(p) + "/" + k)) << p << " " << k;
+  EXPECT_TRUE(seen.count("matrix-affine/rigid vertex with frame"));
+  for (const auto& v : pv["variants"]) {
+    if (tools) {
+      EXPECT_TRUE(v["spirv"].is_object()) << v.dump();
+    }
+  }
+  fs::remove(json);
 }
 
 }  // namespace
