@@ -61,64 +61,52 @@ MS::mat4 trsMatrix(const Quat& q, const PS::vec3& t, float s) {
                   MS::vec4(t, 1.0f));
 }
 
-[[gnu::flatten]] void hierarchyMatrix(benchmark::State& state) {
+// One update of the whole hierarchy per iteration: node(k, parent) sets node k's world
+// transform (parent < 0: a root), parents always first.
+template <class Node> [[gnu::flatten]] void hierarchyPass(benchmark::State& state, Node node) {
+  Hierarchy& h = hierarchy();
+  for (auto _ : state) {
+    for (size_t k = 0; k < size_t(kNodes); ++k) node(k, h.parent[k]);
+    benchmark::ClobberMemory();
+  }
+  setThroughput(state, kNodes, 0, Size::InCache);
+  state.counters["depth"] = h.depth;
+}
+
+void hierarchyMatrix(benchmark::State& state) {
   Hierarchy& h = hierarchy();
   MS S;
-  for (auto _ : state) {
-    for (int i = 0; i < kNodes; ++i) {
-      const MS::mat4 local = trsMatrix(h.q[size_t(i)], h.t[size_t(i)], h.s[size_t(i)]);
-      const int p = h.parent[size_t(i)];
-      h.matrixWorld[size_t(i)] = p < 0 ? local : S.matrixCompose(h.matrixWorld[size_t(p)], local);
-    }
-    benchmark::DoNotOptimize(h.matrixWorld.data());
-    benchmark::ClobberMemory();
-  }
-  setThroughput(state, kNodes, 0, Size::InCache);
-  state.counters["depth"] = h.depth;
+  hierarchyPass(state, [&](size_t k, int p) {
+    const MS::mat4 local = trsMatrix(h.q[k], h.t[k], h.s[k]);
+    h.matrixWorld[k] = p < 0 ? local : S.matrixCompose(h.matrixWorld[size_t(p)], local);
+  });
 }
 
-[[gnu::flatten]] void hierarchyMotor(benchmark::State& state) {
+void hierarchyMotor(benchmark::State& state) {
   Hierarchy& h = hierarchy();
   PS P;
-  for (auto _ : state) {
-    for (int i = 0; i < kNodes; ++i) {
-      const size_t k = size_t(i);
-      const PS::motor T(PS::vec4(1.0f, 0.0f, 0.0f, 0.0f), PS::vec4(h.t[k] * -0.5f, 0.0f));
-      const PS::motor local = P.gp_tr(T, PS::motor(rotorOf(h.q[k]), PS::vec4(0.0f)));
-      const int p = h.parent[k];
-      if (p < 0) {
-        h.motorWorld[k] = local, h.motorScale[k] = h.s[k];
-        continue;
-      }
-      // The parent's scale applies to the local translation (the motor's e0 half).
-      const float ps = h.motorScale[size_t(p)];
-      h.motorWorld[k] = P.gp_mm(h.motorWorld[size_t(p)], PS::motor(local[0], local[1] * ps));
-      h.motorScale[k] = ps * h.s[k];
+  hierarchyPass(state, [&](size_t k, int p) {
+    const PS::motor T(PS::vec4(1.0f, 0.0f, 0.0f, 0.0f), PS::vec4(h.t[k] * -0.5f, 0.0f));
+    const PS::motor local = P.gp_tr(T, PS::motor(rotorOf(h.q[k]), PS::vec4(0.0f)));
+    if (p < 0) {
+      h.motorWorld[k] = local, h.motorScale[k] = h.s[k];
+      return;
     }
-    benchmark::DoNotOptimize(h.motorWorld.data());
-    benchmark::DoNotOptimize(h.motorScale.data());
-    benchmark::ClobberMemory();
-  }
-  setThroughput(state, kNodes, 0, Size::InCache);
-  state.counters["depth"] = h.depth;
+    // The parent's scale applies to the local translation (the motor's e0 half).
+    const float ps = h.motorScale[size_t(p)];
+    h.motorWorld[k] = P.gp_mm(h.motorWorld[size_t(p)], PS::motor(local[0], local[1] * ps));
+    h.motorScale[k] = ps * h.s[k];
+  });
 }
 
-[[gnu::flatten]] void hierarchyGlm(benchmark::State& state) {
+void hierarchyGlm(benchmark::State& state) {
   Hierarchy& h = hierarchy();
-  for (auto _ : state) {
-    for (int i = 0; i < kNodes; ++i) {
-      const size_t k = size_t(i);
-      glm::mat4 local = glm::mat4_cast(glm::quat(h.q[k].w, h.q[k].x, h.q[k].y, h.q[k].z));
-      local[0] *= h.s[k], local[1] *= h.s[k], local[2] *= h.s[k];
-      local[3] = glm::vec4(h.t[k].x, h.t[k].y, h.t[k].z, 1.0f);
-      const int p = h.parent[k];
-      h.glmWorld[k] = p < 0 ? local : h.glmWorld[size_t(p)] * local;
-    }
-    benchmark::DoNotOptimize(h.glmWorld.data());
-    benchmark::ClobberMemory();
-  }
-  setThroughput(state, kNodes, 0, Size::InCache);
-  state.counters["depth"] = h.depth;
+  hierarchyPass(state, [&](size_t k, int p) {
+    glm::mat4 local = glm::mat4_cast(glm::quat(h.q[k].w, h.q[k].x, h.q[k].y, h.q[k].z));
+    local[0] *= h.s[k], local[1] *= h.s[k], local[2] *= h.s[k];
+    local[3] = glm::vec4(h.t[k].x, h.t[k].y, h.t[k].z, 1.0f);
+    h.glmWorld[k] = p < 0 ? local : h.glmWorld[size_t(p)] * local;
+  });
 }
 
 }  // namespace
