@@ -85,6 +85,11 @@ void printSummary(const SummaryReporter& rep, bool withProbe) {
                 m > 0 && g > 0 ? num(g / m).c_str() : "-", frac("matrix").c_str(),
                 frac("motor").c_str());
   }
+  std::printf("matrix and motor: the shader source (matrix_transform.glsl, pga.glsl, "
+              "motor_transform.glsl) compiled through the shim with float, same flags; glm: "
+              "GLM's own mat4 operators. load_frames: matrix converts nothing at load (a copy of "
+              "normal + tangent), motor encodes tangent rotors, glm does the same with "
+              "glm::quat_cast.\n");
   if (!withProbe) return;
   const bench::Bandwidth& bw = bench::referenceBandwidth();
   std::printf("bandwidth probe (one core, %zu MiB arrays): copy %.2f GB/s, triad %.2f GB/s; "
