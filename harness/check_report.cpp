@@ -8,23 +8,12 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/render_frame.h"
+#include "harness/report_format.h"
 
 namespace mb {
 namespace {
 
-std::string html(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+using report::html;
 
 std::string metricsText(const ImageMetrics& m) {
   if (m.rmse == 0.0) return "identical";
