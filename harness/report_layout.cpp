@@ -87,7 +87,9 @@ void summary(Document& d, const json& r) {
                     fmt(at(im, {"maxError", "max"}).is_number() ? json(255.0 * im["maxError"]["max"].get<double>()) : json(), 3) +
                     "/255.");
   }
-  lines.push_back("Frame time motor / matrix (median frame, per scene): " + spreadText(sum["frameTimeRatio"], 3) +
+  const json& ft = sum["frameTimeRatio"];
+  lines.push_back("Frame time motor / matrix (median frame, per scene): " +
+                  (ft.value("n", 0) ? ratio(ft["median"]) + " (" + ratio(ft["min"]) + ".." + ratio(ft["max"]) + ")" : "-") +
                   " (< 1: motor faster).");
   std::string kr;
   for (const auto& [k, v] : members(sum, "kernelRatios").items())

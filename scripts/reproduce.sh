@@ -34,4 +34,20 @@ step "claims -> $OUT/claims.md"
 "$MB" claims --report "$OUT/report.json" --bench-json "$OUT/bench.json" --corpus ../shared/corpus \
   -o "$OUT/claims.md" --json "$OUT/claims.json"
 
+# An index for the repository page (GitHub shows a folder's README.md).
+cat > "$OUT/README.md" <<INDEX
+# results
+
+Written by \`scripts/reproduce.sh\` in $(($(date +%s) - start)) s on $(nproc) cores
+($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'), $(date -u +%Y-%m-%d)).
+
+- [report.md](report.md) / [report.html](report.html): every built-in scene with both pipelines:
+  thumbnails matrix | motor | diff, memory, ops per vertex, frame timing, kernel ratios, plots
+  ([plots/](plots)); all figures in [report.json](report.json) (schema in the top README).
+- [claims.md](claims.md) ([claims.json](claims.json)): each quantitative claim of the paper,
+  measured, with a verdict; reviewer baselines beside them.
+- [bench.txt](bench.txt) ([bench.json](bench.json)): \`motorbench bench\` (Google Benchmark).
+- [ops.txt](ops.txt) ([ops.json](ops.json)): \`motorbench ops\`, counted arithmetic per kernel.
+INDEX
+
 step "done: $OUT/report.html, $OUT/claims.md"
