@@ -138,7 +138,7 @@ std::pair<std::string, std::string> worstImage(const json& s, const std::string&
 void sceneTable(Document& d, const json& r) {
   const std::vector<std::string> pipes = pipelinesOf(r);
   d.heading(2, "Scenes", "scenes");
-  std::vector<std::string> head = {"scene", "status", "vertices", "triangles", "skins / joints", "animations"};
+  std::vector<std::string> head = {"scene", "status", "vertices (mesh / drawn)", "triangles", "skins / joints", "animations"};
   for (const std::string& p : pipes) head.push_back(p + " B/vertex");
   for (const std::string& p : pipes) head.push_back(p + " ops/vertex");
   for (const std::string& p : pipes) head.push_back(p + " frame ms");
@@ -149,7 +149,8 @@ void sceneTable(Document& d, const json& r) {
   for (const json& s : r["scenes"]) {
     const json& st = s.value("stats", json::object());
     std::vector<Cell> row = {{str(s["id"]), "", "#scene-" + str(s["id"])}, {str(s["status"])},
-                             {str(at(st, {"geometry", "vertices"}))}, {str(at(st, {"geometry", "triangles"}))},
+                             {str(at(st, {"geometry", "vertices"})) + " / " + str(at(st, {"geometry", "drawnVertices"}))},
+                             {str(at(st, {"geometry", "triangles"}))},
                              {str(at(st, {"skinning", "skins"})) + " / " + str(at(st, {"skinning", "joints"}))},
                              {str(at(st, {"animation", "animations"}))}};
     for (const std::string& p : pipes) row.push_back({fmt(at(s, {"pipelines"}).is_object() && s["pipelines"].contains(p) ? at(s["pipelines"][p], {"memory", "bytesPerVertex"}) : json())});
@@ -255,7 +256,7 @@ void sceneSection(Document& d, const json& r, const json& s) {
                     {fallbacksText(pj)}, {o.is_object() ? opsText(o["counted"], 1) : "-"},
                     {t.is_object() ? fixed(t.value("medianMs", json()), 2) + " (" + fixed(t.value("minMs", json()), 2) + ".." +
                                          fixed(t.value("maxMs", json()), 2) + ")" : "-"},
-                    {t.is_object() ? fixed(t.value("updateMedianMs", json()), 3) : "-"},
+                    {t.is_object() ? fmt(t.value("updateMedianMs", json()), 3) : "-"},
                     {pj["error"].is_string() ? pj["error"].get<std::string>() : ""}});
   }
   if (!prow.empty())
