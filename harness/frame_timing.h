@@ -2,7 +2,8 @@
 // so that motor/matrix ratios cancel what the machine does meanwhile:
 //  - each frame: the CPU update (hierarchy, animation, skin palette: Pipeline::update) timed
 //    on its own (R back-to-back calls, R chosen in the warm-up so that a block lasts at least
-//    kMinUpdateBlockMs: tiny scenes update in microseconds, below the clock's noise), then
+//    kMinUpdateBlockMs: tiny scenes update in microseconds, below the clock's noise; the
+//    fastest of Settings::bestOf blocks), then
 //    clear + render + glFinish timed by the wall clock and, beside it, by the process's CPU
 //    time (llvmpipe's worker threads included: what the frame cost the machine, insensitive to
 //    other processes taking the cores meanwhile); each frame rendered Settings::bestOf times,
