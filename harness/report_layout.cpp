@@ -268,7 +268,16 @@ void sceneSection(Document& d, const json& r, const json& s) {
   const json& timing = s.value("timing", json());
   if (timing.is_object()) {
     if (timing["error"].is_string()) d.paragraph("Frame timing: " + timing["error"].get<std::string>());
-    else if (timing.contains("summary")) d.paragraph("Frame timing: " + str(timing["summary"]));
+    else if (timing.contains("summary")) {
+      auto ratios = [](const json& c) {
+        return "frame " + ratio(at(c, {"ratio_motor_matrix"})) + ", paired per frame " +
+               ratio(at(c, {"paired_ratio_motor_matrix"})) + ", process CPU time " +
+               ratio(at(c, {"paired_cpu_ratio_motor_matrix"})) + ", CPU update " +
+               ratio(at(c, {"update", "ratio_motor_matrix"}));
+      };
+      d.paragraph("Frame timing: " + str(timing["summary"]) + " Motor / matrix: " + ratios(timing) +
+                  "; vertex-bound: " + ratios(timing.value("vertexBound", json())) + ".");
+    }
   }
 }
 
