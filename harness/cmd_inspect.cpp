@@ -118,7 +118,10 @@ int runInspect(const std::vector<std::string>& argv) {
   if (stats.size() > 1) printAggregate(aggregate);
   if (auto path = args.get("json")) {
     std::ofstream out(*path);
-    out << nlohmann::json{{"files", files}, {"aggregate", aggregate}}.dump(2) << "\n";
+    // replace: error messages may quote file bytes or paths that are not UTF-8.
+    out << nlohmann::json{{"files", files}, {"aggregate", aggregate}}.dump(2, ' ', false,
+                                                                        nlohmann::json::error_handler_t::replace)
+        << "\n";
     if (!out.flush()) {
       std::fprintf(stderr, "motorbench inspect: %s: cannot write\n", path->c_str());
       return 2;

@@ -8,7 +8,6 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -93,17 +92,6 @@ TEST(CliHostileCorpus, InspectReportsEveryFileAndFinishes) {
     want["hostile/" + c.file] = c.outcome == Outcome::Error ? Want::Fails : Want::Loads;
     if (c.outcome == Outcome::Fallback && c.counter && c.atLeast > 0) counters["hostile/" + c.file] = {counterName(c.counter), c.atLeast};
   }
-  // Findings awaiting a fix in `inspect` itself: left out of the run until fixed (set
-  // MB_HOSTILE_STRICT=1 to include them).
-  const std::map<std::string, std::string> pendingInspect = {
-      {"json_binary_junk.gltf", "F6: inspect --json throws (nlohmann type_error 316) on an error message that is not UTF-8"}};
-  const char* strict = std::getenv("MB_HOSTILE_STRICT");
-  if (!(strict && *strict == '1'))
-    for (const auto& [file, note] : pendingInspect) {
-      fs::remove(dir / "hostile" / file);
-      want.erase("hostile/" + file);
-      std::printf("[ pending  ] %s: %s\n", file.c_str(), note.c_str());
-    }
   // Misaligned accessors may load (read correctly) or fail: not asserted either way.
   want.erase("hostile/misaligned_accessor_offset.glb");
   // A truncation series (every 4th cut), in a nested folder.

@@ -89,21 +89,11 @@ Result<AccessorData<T>> decode(const tinygltf::Model& m, int index, const std::s
   if (acc.count > kMaxAccessorCount)
     return R::fail(who + ": count " + std::to_string(acc.count) + " is implausibly large");
 
-  AccessorData<T> out;
-  out.count = acc.count;
-  out.components = comps;
-  out.values.assign(acc.count * size_t(comps), T(0));  // no bufferView: zeros (glTF spec)
   size_t elem = elementSize(acc.type, cs, comps);
-
-  auto fill = [&](const uint8_t* base, size_t stride, size_t n, auto dstIndex) {
-    for (size_t i = 0; i < n; ++i)
-      for (int c = 0; c < comps; ++c)
-        out.values[dstIndex(i) * comps + size_t(c)] = T(readComponent(
-            base + i * stride + componentOffset(acc.type, cs, c), acc.componentType, acc.normalized));
-  };
-
-  if (acc.bufferView >= 0) {
-    size_t len = 0, stride = 0;
+  const uint8_t* data = nullptr;
+  size_t stride = 0;
+  if (acc.bufferView >= 0) {  // range checks before anything is allocated
+    size_t len = 0;
     auto base = viewBytes(m, acc.bufferView, who, &len, &stride);
     if (!base) return R::fail(base.error());
     if (stride == 0) stride = elem;
@@ -113,8 +103,22 @@ Result<AccessorData<T>> decode(const tinygltf::Model& m, int index, const std::s
                      std::to_string(elem) + " bytes)");
     if (!fits(acc.byteOffset, acc.count, stride, elem, len))
       return R::fail(who + " reads past bufferView " + std::to_string(acc.bufferView));
-    fill(*base + acc.byteOffset, stride, acc.count, [](size_t i) { return i; });
+    data = *base + acc.byteOffset;
   }
+
+  AccessorData<T> out;
+  out.count = acc.count;
+  out.components = comps;
+  out.values.assign(acc.count * size_t(comps), T(0));  // no bufferView: zeros (glTF spec)
+
+  auto fill = [&](const uint8_t* base, size_t stride, size_t n, auto dstIndex) {
+    for (size_t i = 0; i < n; ++i)
+      for (int c = 0; c < comps; ++c)
+        out.values[dstIndex(i) * comps + size_t(c)] = T(readComponent(
+            base + i * stride + componentOffset(acc.type, cs, c), acc.componentType, acc.normalized));
+  };
+
+  if (data) fill(data, stride, acc.count, [](size_t i) { return i; });
 
   if (acc.sparse.isSparse) {
     const auto& sp = acc.sparse;

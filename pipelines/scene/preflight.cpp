@@ -73,6 +73,27 @@ size_t nestingDepth(const uint8_t* p, size_t n) {
 
 constexpr size_t kMaxJsonDepth = 256;
 
+// Accessors without bufferView are zeros (glTF 2.0 3.6.2.3): nothing in the file bounds their
+// count, so their decoded size is capped: 2^24 values (64 MB as floats) over the whole file.
+constexpr uint64_t kMaxZeroFilledValues = uint64_t(1) << 24;
+
+uint64_t typeComponents(const std::string& t) {
+  return t == "SCALAR" ? 1 : t == "VEC2" ? 2 : t == "VEC3" ? 3 : t == "VEC4" || t == "MAT2" ? 4
+       : t == "MAT3" ? 9 : t == "MAT4" ? 16 : 1;
+}
+
+// Parser messages quote the offending bytes: keep them printable ASCII (and so valid UTF-8 for
+// the JSON reports that carry error messages).
+std::string printable(const std::string& s) {
+  static const char* hex = "0123456789ABCDEF";
+  std::string out;
+  for (unsigned char c : s) {
+    if (c >= 0x20 && c < 0x7F) out += char(c);
+    else out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+  }
+  return out;
+}
+
 }  // namespace
 
 Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb) {
@@ -89,7 +110,7 @@ Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameH
   try {
     doc = nlohmann::json::parse(bytes.begin() + long(begin), bytes.begin() + long(begin + length));
   } catch (const nlohmann::json::exception& e) {
-    return Status::fail(std::string("invalid JSON: ") + e.what());
+    return Status::fail("invalid JSON: " + printable(e.what()));
   }
   if (!doc.is_object()) return Status::fail("invalid glTF: top-level JSON is not an object");
   // glTF 1.0 (dictionaries instead of arrays) would otherwise parse as an empty 2.0 scene.
@@ -105,7 +126,19 @@ Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameH
     auto it = doc.find(key);
     return it != doc.end() && it->is_array() ? *it : nlohmann::json::array();
   };
-  nlohmann::json buffers = arr("buffers"), views = arr("bufferViews");
+  nlohmann::json buffers = arr("buffers"), views = arr("bufferViews"), accessors = arr("accessors");
+  uint64_t zeroFilled = 0;
+  for (const auto& a : accessors) {
+    if (!a.is_object() || a.contains("bufferView")) continue;
+    bool ok = true;
+    uint64_t count = field(a, "count", 0, &ok);
+    auto type = a.find("type");
+    uint64_t comps = type != a.end() && type->is_string() ? typeComponents(type->get<std::string>()) : 1;
+    zeroFilled += ok ? std::min(count, kMaxZeroFilledValues + 1) * comps : 0;
+    if (zeroFilled > kMaxZeroFilledValues)
+      return Status::fail("accessors without bufferView declare more than " + std::to_string(kMaxZeroFilledValues) +
+                          " zero values: count too large (limit)");
+  }
   for (size_t i = 0; i < views.size(); ++i) {
     std::string who = "bufferView " + std::to_string(i);
     const auto& v = views[i];
