@@ -106,9 +106,11 @@ std::vector<Claim> opClaims() {
   add("vertex_frame_motor", vertex,
       "motor vertex with full tangent frame to world space: 16 + 9 + 21 + 1 = 47 mul, 12 + 8 + 18 = 38 add",
       {47, 38}, pieces,
-      "sum of the counted pieces the paper names: sw_mp " + opsText(get("sw_mp")) + " + gp_rr " +
+      "the pieces the paper names, executed once each and counted together: sw_mp " + opsText(get("sw_mp")) + " + gp_rr " +
           opsText(get("gp_rr")) + " + extractNormalTangent " + opsText(get("extractNormalTangent")) +
           " + handedness sign(1/x) " + opsText(hand) +
+          " (the paper counts the handedness as 1 multiplication; sign(1/x), which keeps the sign of "
+          "a zero scalar part, is a division)" +
           ". The pipeline's whole function motorRigidVertex (shaders/motor_transform.glsl, incl. the "
           "uniform scale applied in the shader) counts " + opsText(motorVertex));
   const OpCounts matrixFrame = vertexFunction("matrixRigidVertex");
