@@ -2,12 +2,14 @@
 
 #include <map>
 
+#include "harness/report_format.h"
+
 namespace mb::claims {
 namespace {
 
 using json = nlohmann::json;
 
-std::string s(const json& v) { return v.is_string() ? v.get<std::string>() : v.is_null() ? "-" : v.dump(); }
+std::string s(const json& v) { return v.is_string() ? v.get<std::string>() : v.is_null() ? "-" : report::dumpJson(v); }
 
 }  // namespace
 

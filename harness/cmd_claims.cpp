@@ -15,6 +15,7 @@
 #include "harness/claims_sources.h"
 #include "harness/command.h"
 #include "harness/report_bench.h"
+#include "harness/report_format.h"
 #include "harness/report_machine.h"
 #include "harness/render_frame.h"
 #include "harness/report_timing.h"
@@ -139,7 +140,7 @@ int runClaims(const std::vector<std::string>& argv) {
   const std::string md = report::toMarkdown(claims::claimsDocument(j));
   if (auto path = args.get("json")) {
     std::ofstream out(*path);
-    out << j.dump(2) << "\n";
+    out << report::dumpJson(j, 2) << "\n";
     if (!out.flush()) return fail(*path + ": write failed");
   }
   const std::string mdPath = args.get("o", args.get("output", ""));

@@ -10,6 +10,7 @@
 #include "harness/args.h"
 #include "harness/command.h"
 #include "harness/render_frame.h"
+#include "harness/report_format.h"
 #include "harness/report_run.h"
 #include "harness/report_scene.h"
 #include "harness/report_timing.h"
@@ -56,7 +57,7 @@ int runWorker(const Args& args, const report::Options& o) {
   }
   result["complete"] = true;
   std::ofstream out(args.get("worker-out", ""));
-  out << result.dump() << "\n";
+  out << report::dumpJson(result) << "\n";
   return out.flush() ? 0 : fail(args.get("worker-out", "") + ": write failed");
 }
 

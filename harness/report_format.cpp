@@ -65,6 +65,10 @@ const json& at(const json& j, std::initializer_list<const char*> path) {
   return *p;
 }
 
+std::string dumpJson(const json& j, int indent) {
+  return j.dump(indent, ' ', false, json::error_handler_t::replace);
+}
+
 std::string html(const std::string& s) {
   std::string out;
   out.reserve(s.size());

@@ -25,6 +25,10 @@ std::string opsText(const nlohmann::json& ops, int decimals = 0);
 // A value at a path of object keys, or null.
 const nlohmann::json& at(const nlohmann::json& j, std::initializer_list<const char*> path);
 
+// json::dump that never throws on strings that are not UTF-8 (file names, loader messages):
+// invalid bytes become U+FFFD. indent < 0: one line.
+std::string dumpJson(const nlohmann::json& j, int indent = -1);
+
 // HTML text escaping (&, <, >, ").
 std::string html(const std::string& s);
 // Markdown table cell: "|" escaped and newlines folded.

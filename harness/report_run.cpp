@@ -9,6 +9,7 @@
 
 #include "harness/report_bench.h"
 #include "harness/report_document.h"
+#include "harness/report_format.h"
 #include "harness/report_inputs.h"
 #include "harness/report_machine.h"
 #include "harness/report_layout.h"
@@ -149,7 +150,7 @@ int runReport(const Options& o) {
   json report = assembleReport(machineJson(), settings, std::move(scenes), std::move(ops),
                                std::move(kernelJson));
   const fs::path jsonPath = fs::path(o.outDir) / "report.json";
-  if (Status s = writeText(jsonPath, report.dump(2) + "\n"); !s) {
+  if (Status s = writeText(jsonPath, dumpJson(report, 2) + "\n"); !s) {
     std::fprintf(stderr, "motorbench report: error: %s\n", s.error().c_str());
     return 2;
   }
@@ -160,7 +161,7 @@ int runReport(const Options& o) {
   } else {
     report["plots"] = {{"available", false}, {"error", "not made (--no-plots)"}, {"files", json::array()}};
   }
-  for (const auto& [path, text] : {std::pair{jsonPath, report.dump(2) + "\n"},
+  for (const auto& [path, text] : {std::pair{jsonPath, dumpJson(report, 2) + "\n"},
                                    std::pair{fs::path(o.outDir) / "report.md", toMarkdown(reportDocument(report))},
                                    std::pair{fs::path(o.outDir) / "report.html", toHtml(reportDocument(report))}}) {
     if (Status s = writeText(path, text); !s) {
