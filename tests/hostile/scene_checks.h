@@ -49,11 +49,20 @@ inline std::string checkSceneInvariants(const Scene& s) {
     }
     if (!finite(n.local)) return (err << "node " << i << ": non-finite TRS", err.str());
   }
-  // Acyclic: walking up from any node reaches a root within nNodes steps.
+  // Acyclic: walking up from any node reaches a root. Linear: each node is walked once
+  // (0 = not yet seen, 1 = on the current walk, 2 = known to reach a root).
+  std::vector<char> state(size_t(nNodes), 0);
+  std::vector<int> walk;
   for (int i = 0; i < nNodes; ++i) {
-    int p = i, steps = 0;
-    while (p >= 0 && steps <= nNodes) p = s.nodes[size_t(p)].parent, ++steps;
-    if (p >= 0) return (err << "node " << i << ": parent chain has a cycle", err.str());
+    walk.clear();
+    int p = i;
+    while (p >= 0 && state[size_t(p)] == 0) {
+      state[size_t(p)] = 1;
+      walk.push_back(p);
+      p = s.nodes[size_t(p)].parent;
+    }
+    if (p >= 0 && state[size_t(p)] == 1) return (err << "node " << i << ": parent chain has a cycle", err.str());
+    for (int q : walk) state[size_t(q)] = 2;
   }
   for (int r : s.roots) {
     if (r < 0 || r >= nNodes) return (err << "root " << r << " out of range", err.str());
