@@ -2,6 +2,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "pipelines/scene/accessors.h"
 #include "pipelines/scene/flat_normals.h"
@@ -145,6 +146,11 @@ Result<Mesh> convertMesh(const tinygltf::Model& m, int index, uint32_t jointCoun
     auto col = attribute(m, prim, "COLOR_0", {3, 4}, nv);
     for (auto* a : {&nrm, &tan, &uv0, &uv1, &col})
       if (!*a) return R::fail(a->error());
+    // No repair is defined for these (normals, tangents and weights have theirs): a NaN or Inf
+    // would sample textures / shade with undefined values.
+    for (auto [a, name] : {std::pair{&uv0, "TEXCOORD_0"}, std::pair{&uv1, "TEXCOORD_1"}, std::pair{&col, "COLOR_0"}})
+      for (float v : (*a)->values)
+        if (!std::isfinite(v)) return R::fail(where + ": " + name + " has a non-finite value");
     p.normals = unpack<glm::vec3>(*nrm, 0.0f);
     p.tangents = unpack<glm::vec4>(*tan, 0.0f);
     p.uv0 = unpack<glm::vec2>(*uv0, 0.0f);

@@ -1,6 +1,9 @@
 // Nodes (validated hierarchy), skins, cameras and the default scene's roots.
 #include <tiny_gltf.h>
 
+#include <cmath>
+#include <limits>
+
 #include "pipelines/scene/accessors.h"
 #include "pipelines/scene/gltf_convert.h"
 #include "pipelines/scene/transform.h"
@@ -9,6 +12,14 @@ namespace mb {
 namespace {
 
 bool inRange(int i, size_t n) { return i >= 0 && size_t(i) < n; }
+
+// Authored doubles must be finite as floats: 1e300 would become Inf (converting it is also
+// undefined behaviour), and a NaN/Inf transform or camera silently breaks the image.
+bool floatRange(const std::vector<double>& v) {
+  for (double d : v)
+    if (!(std::fabs(d) <= double(std::numeric_limits<float>::max()))) return false;
+  return true;
+}
 
 Status convertNode(const tinygltf::Model& m, size_t i, Node* out) {
   const auto& src = m.nodes[i];
@@ -21,6 +32,8 @@ Status convertNode(const tinygltf::Model& m, size_t i, Node* out) {
       (src.skin != -1 && !inRange(src.skin, m.skins.size())) ||
       (src.camera != -1 && !inRange(src.camera, m.cameras.size())))
     return Status::fail(where + ": mesh, skin or camera index out of range");
+  if (!floatRange(src.matrix) || !floatRange(src.translation) || !floatRange(src.rotation) || !floatRange(src.scale))
+    return Status::fail(where + ": matrix/translation/rotation/scale value is not finite (or out of float range)");
   if (src.matrix.size() == 16) {
     out->hasMatrix = true;
     for (int k = 0; k < 16; ++k) out->matrix[k / 4][k % 4] = float(src.matrix[size_t(k)]);
@@ -95,12 +108,21 @@ Status convertNodes(const tinygltf::Model& m, Scene& scene) {
       if (ibm->components != 16 || ibm->count < skin.joints.size())
         return Status::fail(where + ": inverseBindMatrices must be MAT4 with one per joint");
       for (size_t j = 0; j < skin.joints.size(); ++j)
-        for (int k = 0; k < 16; ++k) skin.inverseBind[j][k / 4][k % 4] = ibm->values[16 * j + size_t(k)];
+        for (int k = 0; k < 16; ++k) {
+          float v = ibm->values[16 * j + size_t(k)];
+          if (!std::isfinite(v)) return Status::fail(where + ": inverseBindMatrices has a non-finite value");
+          skin.inverseBind[j][k / 4][k % 4] = v;
+        }
     }
     scene.skins.push_back(std::move(skin));
   }
 
-  for (const auto& c : m.cameras) {
+  for (size_t ci = 0; ci < m.cameras.size(); ++ci) {
+    const auto& c = m.cameras[ci];
+    const auto& pc = c.perspective;
+    const auto& oc = c.orthographic;
+    if (!floatRange({pc.yfov, pc.aspectRatio, pc.znear, pc.zfar, oc.xmag, oc.ymag, oc.znear, oc.zfar}))
+      return Status::fail("camera " + std::to_string(ci) + ": parameter is not finite (or out of float range)");
     Camera cam;
     cam.name = c.name;
     cam.perspective = c.type != "orthographic";

@@ -690,6 +690,50 @@ inline std::vector<Case> numericCases() {
     d.finish();
     cs.push_back(loads("huge_positions.glb", toGlb(d), "coordinates +-3e38"));
   }
+  // Non-finite values where no repair is defined: the texture lookup (UVs), vertex colour,
+  // skinning matrix or node transform would be NaN on the GPU -- a silently wrong image.
+  cs.push_back(error("nan_uvs.glb", glb([&](Doc& d, QuadIds& q) { pokeBin(d, q.uv, 2, 1, nan); }), {"finite", "nan", "TEXCOORD"},
+                     "a NaN texture coordinate"));
+  {
+    Doc d;
+    QuadIds q = quad(d);
+    int col = d.vec4(std::vector<glm::vec4>(4, {1, 1, 1, 1}));
+    d.j["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = col;
+    d.finish();
+    pokeBin(d, col, 3, 0, inf);
+    (void)q;
+    cs.push_back(error("inf_colors.glb", toGlb(d), {"finite", "inf", "COLOR"}, "an infinite vertex colour"));
+  }
+  {
+    Doc d;
+    skinnedRibbon(d, 3, true, false);
+    d.finish();
+    pokeBin(d, 5, 1, 13, nan);  // joint 1's inverse bind translation.y
+    cs.push_back(error("nan_inverse_bind.glb", toGlb(d), {"finite", "nan", "inverse"}, "a NaN in an inverse bind matrix"));
+  }
+  {
+    Doc d;
+    quad(d);
+    d.finish();
+    d.j["nodes"][0]["translation"] = {1e300, 0, 0};
+    cs.push_back(error("node_translation_1e300.glb", toGlb(d), {"finite", "node", "translation", "range"},
+                       "translation 1e300 (infinite as float)"));
+  }
+  {
+    Doc d;
+    quad(d);
+    d.finish();
+    d.j["nodes"][0]["matrix"] = {1e300, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    cs.push_back(error("node_matrix_1e300.glb", toGlb(d), {"finite", "node", "matrix", "range"}, "matrix entry 1e300"));
+  }
+  {
+    Doc d;
+    quad(d);
+    d.arr("cameras").push_back({{"type", "perspective"}, {"perspective", {{"yfov", 1e300}, {"znear", 0.1}}}});
+    d.j["nodes"][0]["camera"] = 0;
+    d.finish();
+    cs.push_back(error("camera_yfov_1e300.glb", toGlb(d), {"finite", "camera", "range"}, "camera yfov 1e300"));
+  }
   return cs;
 }
 

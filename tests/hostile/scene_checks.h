@@ -121,6 +121,14 @@ inline std::string checkSceneInvariants(const Scene& s) {
     for (int j : sk.joints)
       if (j < 0 || j >= nNodes) return (err << "skin " << k << ": joint node " << j << " out of range", err.str());
     if (!inRange(sk.skeleton, s.nodes.size())) return (err << "skin " << k << ": skeleton out of range", err.str());
+    for (const glm::mat4& m : sk.inverseBind)
+      for (int c = 0; c < 4; ++c)
+        if (!finite(m[c])) return (err << "skin " << k << ": non-finite inverse bind matrix", err.str());
+  }
+  for (size_t k = 0; k < s.cameras.size(); ++k) {
+    const Camera& c = s.cameras[k];
+    for (float v : {c.yfov, c.aspect, c.znear, c.zfar, c.xmag, c.ymag})
+      if (!std::isfinite(v)) return (err << "camera " << k << ": non-finite parameter", err.str());
   }
   for (size_t m = 0; m < s.materials.size(); ++m) {
     const Material& mat = s.materials[m];
