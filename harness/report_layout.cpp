@@ -341,8 +341,10 @@ void method(Document& d) {
       "Ops per vertex: counted by executing the pipelines' GLSL transform functions on an op-counting scalar, "
       "and cross-checked in the optimised SPIR-V of the real vertex shaders; per scene, the mean over drawn "
       "vertices, weighted by the variant (rigid, skinned, scaled fallback) each vertex goes through.",
-      "Frame timing: per scene, in a worker process that runs alone (never alongside other scenes), wall clock "
-      "around glFinish over the timed frames after warm-up; ratios are motor / matrix from the same process.",
+      "Frame timing (harness/frame_timing.h, as `motorbench time`): per scene, in a worker process that runs "
+      "alone (never alongside other scenes); wall clock around update + render + glFinish after warm-up, each "
+      "frame the fastest of a few renders, pipelines interleaved; process CPU time and the CPU update beside "
+      "it; ratios are motor / matrix from the same process.",
       "Kernel throughput: Google Benchmark via `motorbench bench` (JSON kept next to the report).",
       "Load-time conversion: PipelineStats.conversionMs of each prepare() (median of the image renders).",
       "Statistics: `motorbench inspect`'s per-file statistics (pipelines/scene/scene_stats.h)."});
