@@ -32,12 +32,12 @@ rm -rf "$SEEDS"
 mkdir -p "$CORPUS" "$ARTIFACTS"
 ASAN_OPTIONS=detect_leaks=0 "$BUILD/tests/fuzz/fuzz_seeds" "$SEEDS"
 
-# -rss_limit_mb / -malloc_limit_mb: a single allocation above 1 GiB, or 2 GiB resident, is a
+# -rss_limit_mb / -malloc_limit_mb: a single allocation above 512 MiB, or 2 GiB resident, is a
 # finding (hostile counts must not allocate). -timeout: one input may take at most 10 s.
 # Inputs are capped at 1 MiB (the largest built-in scene is below that).
 echo "fuzz.sh: fuzzing for ${BUDGET}s (corpus $CORPUS, findings in $ARTIFACTS/)"
 set +e
-"$BUILD/tests/fuzz/fuzz_loader" -max_total_time="$BUDGET" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=1024 \
+"$BUILD/tests/fuzz/fuzz_loader" -max_total_time="$BUDGET" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=512 \
   -max_len=1048576 -dict=tests/fuzz/gltf.dict -artifact_prefix="$ARTIFACTS/" -print_final_stats=1 ${MB_FUZZ_ARGS:-} \
   "$CORPUS" "$SEEDS" tests/fuzz/regressions 2>&1 | tee "$BUILD/fuzz.log" | grep -v "^#[0-9]*.*\(NEW\|REDUCE\|pulse\)"
 rc=${PIPESTATUS[0]}

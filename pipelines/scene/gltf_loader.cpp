@@ -1,6 +1,7 @@
 // loadGltfFile / loadGltfMemory / loadScene: preflight, tinygltf parse, conversion to Scene.
 #include "pipelines/scene/loader.h"
 
+#include <stb_image.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -40,9 +41,22 @@ bool fsWrite(std::string* err, const std::string&, const std::vector<unsigned ch
   return false;
 }
 
+// Images above this many pixels (8192 x 8192, 256 MiB as RGBA8) are not decoded: the header
+// alone decides, so a few-hundred-byte PNG claiming 16000 x 16000 does not make stb_image
+// reserve a gigabyte.
+constexpr long long kMaxImagePixels = 1LL << 26;
+
 // Undecodable images do not fail the file: the image stays empty and is replaced later.
 bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
                int reqWidth, int reqHeight, const unsigned char* bytes, int size, void* user) {
+  int w = 0, h = 0, comps = 0;
+  if (stbi_info_from_memory(bytes, size, &w, &h, &comps) && (long long)w * h > kMaxImagePixels) {
+    static_cast<LoadContext*>(user)->imageNotes.push_back("image " + std::to_string(index) + ": " + std::to_string(w) +
+                                                          "x" + std::to_string(h) + " pixels is too large (limit " +
+                                                          std::to_string(kMaxImagePixels) + ")");
+    image->image.clear();
+    return true;
+  }
   std::string myErr;
   if (tinygltf::LoadImageData(image, index, &myErr, warn, reqWidth, reqHeight, bytes, size, nullptr))
     return true;
