@@ -5,6 +5,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -46,6 +47,19 @@ bool fsWrite(std::string* err, const std::string&, const std::vector<unsigned ch
 // reserve a gigabyte.
 constexpr long long kMaxImagePixels = 1LL << 26;
 
+// stb_image reserves a PNG chunk's declared length before reading it, so a 4 kB file whose IDAT
+// claims 1 GB made it allocate 1 GB. Every chunk must fit in the bytes there are.
+bool pngChunksFit(const unsigned char* bytes, int size) {
+  static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (size < 8 || std::memcmp(bytes, sig, 8) != 0) return true;  // not PNG: nothing to check
+  for (size_t at = 8; at + 8 <= size_t(size);) {
+    uint64_t len = (uint64_t(bytes[at]) << 24) | (uint64_t(bytes[at + 1]) << 16) | (uint64_t(bytes[at + 2]) << 8) | bytes[at + 3];
+    if (len + 12 > size_t(size) - at) return false;
+    at += size_t(len) + 12;
+  }
+  return true;
+}
+
 // Undecodable images do not fail the file: the image stays empty and is replaced later.
 bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
                int reqWidth, int reqHeight, const unsigned char* bytes, int size, void* user) {
@@ -54,6 +68,12 @@ bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::s
     static_cast<LoadContext*>(user)->imageNotes.push_back("image " + std::to_string(index) + ": " + std::to_string(w) +
                                                           "x" + std::to_string(h) + " pixels is too large (limit " +
                                                           std::to_string(kMaxImagePixels) + ")");
+    image->image.clear();
+    return true;
+  }
+  if (!pngChunksFit(bytes, size)) {
+    static_cast<LoadContext*>(user)->imageNotes.push_back("image " + std::to_string(index) +
+                                                          ": corrupt PNG (a chunk is longer than the image data)");
     image->image.clear();
     return true;
   }

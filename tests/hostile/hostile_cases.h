@@ -984,6 +984,15 @@ inline std::vector<Case> contentCases() {
   // its own the loader lets stb reserve ~1 GB for a file of a few hundred bytes.
   cs.push_back(imageFallback("image_dimension_bomb_1gb.glb", withPng(png(16000, 16000, Bytes(16, 200), 4, 1)),
                              {"image", "decode", "png", "large", "size", "pixels"}, "PNG claiming 16000x16000 pixels with 16 bytes of data"));
+  {
+    // A PNG whose IDAT chunk declares 1.1 GB in a 4 kB file (stb_image reserved it before reading).
+    Bytes p = checkerPng();
+    const size_t idat = 8 + 25;  // signature + IHDR chunk
+    p[idat] = 0x45;
+    p[idat + 1] = 0x4E;
+    cs.push_back(imageFallback("image_chunk_length_1gb.glb", withPng(p), {"image", "corrupt", "png", "chunk"},
+                               "PNG IDAT chunk claiming 1.1 GB"));
+  }
   cs.push_back(error("image_bufferview_out_of_range.glb", toGlb(textured([](Doc& d) { d.j["images"][0]["bufferView"] = 40; })),
                      {"image", "bufferview", "buffer view"}, "image bufferView 40"));
   // External files (written next to the .gltf by the test).
