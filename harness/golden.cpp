@@ -56,7 +56,7 @@ FrameSettings settingsFrom(const json& j) {
 
 std::vector<Pose> posesFor(const Scene& scene) {
   std::vector<Pose> poses = {{"rest", AnimState{}}};
-  for (int a = 0; a < int(scene.animations.size()) && a < 2; ++a) {
+  for (int a = 0; a < int(scene.animations.size()) && a < kMaxAnimations; ++a) {
     const Animation& anim = scene.animations[size_t(a)];
     for (double fraction : {0.35, 0.7}) {
       float t = float(std::round(fraction * anim.duration * 1000.0) / 1000.0);

@@ -30,8 +30,10 @@ struct Pose {
   AnimState anim;
 };
 
-// The plan: rest pose, plus animations 0 and 1 (when present) at 35 % and 70 % of their
-// duration, times rounded to milliseconds so the manifest holds them exactly.
+// The plan: rest pose, plus each animation (the first kMaxAnimations) at 35 % and 70 % of its
+// duration, times rounded to milliseconds so the manifest holds them exactly. Every animation,
+// because built-in scenes add one per case they exist to show (e.g. the tube's candy wrapper).
+constexpr int kMaxAnimations = 4;
 std::vector<Pose> posesFor(const Scene& scene);
 
 // "<scene>.<pose>.<pipeline>.png"
