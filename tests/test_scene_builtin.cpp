@@ -98,9 +98,10 @@ TEST(SceneBuiltin, BoxFramesAreAxisAlignedWithTwoHalfTurns) {
 
 TEST(SceneBuiltin, TubeAnimationsBendAndTwist) {
   mb::Scene s = writeAndLoad("skinned_tube");
-  ASSERT_EQ(s.animations.size(), 2u);
+  ASSERT_EQ(s.animations.size(), 3u);
   EXPECT_EQ(s.animations[0].name, "bend");
   EXPECT_EQ(s.animations[1].name, "twist");
+  EXPECT_EQ(s.animations[2].name, "candy_wrapper");
   ASSERT_EQ(s.skins.size(), 1u);
   const auto& joints = s.skins[0].joints;
   ASSERT_GE(joints.size(), 4u);
@@ -113,6 +114,18 @@ TEST(SceneBuiltin, TubeAnimationsBendAndTwist) {
   EXPECT_NEAR(axis.y, 1.0f, 1e-5f);
   const auto& w = s.meshes[0].primitives[0].weights;
   for (const auto& v : w) EXPECT_NEAR(v.x + v.y + v.z + v.w, 1.0f, 1e-6f);
+
+  // candy_wrapper: only the middle joint turns, by 180 degrees about Y relative to its parent.
+  auto wrap = mb::sampleAnimation(s, 2, s.animations[2].duration);
+  size_t mid = joints.size() / 2;
+  glm::mat3 rel = glm::mat3(glm::inverse(world(s, wrap, joints[mid - 1])) * world(s, wrap, joints[mid]));
+  EXPECT_NEAR((rel * glm::vec3(1, 0, 0)).x, -1.0f, 1e-5f);
+  EXPECT_NEAR((rel * glm::vec3(0, 1, 0)).y, 1.0f, 1e-5f);
+  for (size_t j = 1; j < joints.size(); ++j) {
+    if (j == mid) continue;
+    glm::mat3 r = glm::mat3(glm::inverse(world(s, wrap, joints[j - 1])) * world(s, wrap, joints[j]));
+    EXPECT_NEAR((r * glm::vec3(1, 0, 0)).x, 1.0f, 1e-5f) << "joint " << j << " should not turn";
+  }
 }
 
 TEST(SceneBuiltin, ScaledHierarchyScaleClasses) {

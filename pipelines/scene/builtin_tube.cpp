@@ -1,5 +1,7 @@
 // "skinned_tube": a normal-mapped tube skinned to a 5-joint chain, with the animations
-// "bend" (index 0) and "twist" (index 1, 180 degrees from base to tip).
+// "bend" (index 0), "twist" (index 1, 180 degrees from base to tip, 45 degrees per joint) and
+// "candy_wrapper" (index 2: the middle joint alone turns 180 degrees about the tube's axis, the
+// classic case where linear blend skinning collapses the half-weighted ring to the axis).
 #include <cmath>
 
 #include "pipelines/scene/builtin_internal.h"
@@ -73,6 +75,9 @@ void buildSkinnedTube(GlbBuilder& b) {
   for (int j = 1; j < kJoints; ++j)
     b.addChannel(twist, joints[size_t(j)], "rotation", {0.0f, 2.0f},
                  rotations({0.0f, kPi / float(kJoints - 1)}, {0, 1, 0}));
+  int wrap = b.addAnimation("candy_wrapper");
+  b.addChannel(wrap, joints[size_t(kJoints / 2)], "rotation", {0.0f, 1.0f, 2.0f},
+               rotations({0.0f, 0.5f * kPi, kPi}, {0, 1, 0}));
 }
 
 }  // namespace mb
