@@ -13,7 +13,7 @@ Args::Args(const std::vector<std::string>& args, std::set<std::string> flags) {
       if (eq != std::string::npos) {
         options_[key.substr(0, eq)] = key.substr(eq + 1);
       } else if (flags.count(key)) {
-        options_[key] = "1";
+        options_[key] = std::string("1");  // not operator=(const char*): GCC 12 -Wrestrict false positive (PR 105329)
       } else if (i + 1 < args.size()) {
         options_[key] = args[++i];
       } else {

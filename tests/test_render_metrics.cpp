@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+
+#include <unistd.h>
 
 #include "harness/image_metrics.h"
 
@@ -101,7 +104,7 @@ TEST(ImageMetrics, DiffHeatmapColours) {
 
 TEST(ImageIo, PngRoundTripAndErrors) {
   Pair p;
-  auto path = std::filesystem::temp_directory_path() / "mb_test_render_metrics.png";
+  auto path = std::filesystem::temp_directory_path() / ("mb_test_render_metrics_" + std::to_string(::getpid()) + ".png");
   Status w = writeImage(path.string(), p.b);
   ASSERT_TRUE(w) << w.error();
   auto back = readImage(path.string());

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 
 #include "pipelines/scene/animation.h"
 #include "pipelines/scene/builtin_scenes.h"
@@ -19,7 +22,8 @@ namespace {
 mb::Scene writeAndLoad(const std::string& name) {
   auto glb = mb::builtinSceneGlb(name);
   EXPECT_TRUE(glb.ok()) << glb.error();
-  fs::path dir = fs::temp_directory_path() / "mb_scene_builtin";
+  // One folder per process: ctest runs these tests in parallel processes.
+  fs::path dir = fs::temp_directory_path() / ("mb_scene_builtin_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   fs::path file = dir / (name + ".glb");
   std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(glb->data()), std::streamsize(glb->size()));

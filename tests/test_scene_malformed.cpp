@@ -5,6 +5,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
@@ -100,7 +103,7 @@ TEST(SceneMalformed, AccessorAndIndexOutOfRange) {
 }
 
 TEST(SceneMalformed, MissingExternalBuffer) {
-  fs::path dir = fs::temp_directory_path() / "mb_scene_malformed";
+  fs::path dir = fs::temp_directory_path() / ("mb_scene_malformed_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   auto g = triangle();
   nlohmann::json d = g.doc;
