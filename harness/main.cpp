@@ -32,6 +32,11 @@ int main(int argc, char** argv) {
   for (const auto& c : mb::commands()) {
     if (std::strcmp(argv[1], c.name) != 0) continue;
     std::vector<std::string> args(argv + 2, argv + argc);
+    // No command takes --help as a value, so it always asks for this command's usage.
+    if (std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; })) {
+      std::printf("usage: motorbench %s %s\n  %s\n", c.name, c.usage, c.summary);
+      return 0;
+    }
     try {
       return c.run(args);
     } catch (const std::exception& e) {
