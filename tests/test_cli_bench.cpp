@@ -95,6 +95,30 @@ TEST(CliTime, TexturedBoxPrintsARatio) {
   fs::remove(json);
 }
 
+TEST(CliTime, EachSceneInItsOwnWorkerAndABadSceneDoesNotStopTheOthers) {
+  const fs::path json = scratchFile("time_two.json");
+  std::string log;
+  const int rc = runCommand(exe() + "time no_such_scene_or_file.glb textured_box normal_torus --frames 2 "
+                             "--warmup 0 --size 32x32 --json '" + json.string() + "'", &log);
+  EXPECT_EQ(rc, 2) << log;
+  EXPECT_NE(log.find("no_such_scene_or_file.glb"), std::string::npos) << log;
+  EXPECT_NE(log.find("\ntextured_box "), std::string::npos) << log;
+  EXPECT_NE(log.find("\nnormal_torus "), std::string::npos) << log;
+  std::ifstream in(json);
+  ASSERT_TRUE(in) << log;
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_EQ(j["results"].size(), 3u) << j.dump(2);
+  EXPECT_EQ(j["results"][0]["scene"], "no_such_scene_or_file.glb");
+  EXPECT_TRUE(j["results"][0].contains("error"));
+  EXPECT_EQ(j["results"][1]["scene"], "textured_box");
+  EXPECT_EQ(j["results"][2]["scene"], "normal_torus");
+  for (size_t i : {1u, 2u}) {
+    EXPECT_FALSE(j["results"][i].contains("error")) << j["results"][i].dump(2);
+    EXPECT_EQ(j["results"][i]["width"], 32) << j["results"][i].dump(2);
+  }
+  fs::remove(json);
+}
+
 TEST(CliTime, RejectsBadInput) {
   std::string log;
   EXPECT_EQ(runCommand(exe() + "time no_such_scene_or_file.glb --frames 2", &log), 2) << log;
