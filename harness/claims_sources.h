@@ -23,7 +23,10 @@ std::vector<Claim> memoryClaims();
 struct SpeedInputs {
   nlohmann::json kernelPairs;  // report_bench.h kernelPairs()["pairs"], or null
   std::string kernelSource;    // where they came from (file or "short run")
-  nlohmann::json frameTimes;   // [{"scene", "ratio_motor_matrix", "vertexBound"}...] or null
+  // [{"scene", "ratio", "vertexBound"}...] or null: motor / matrix frame time, the median of the
+  // per-frame ratios (both pipelines render each frame back to back; report.json's
+  // paired_ratio_motor_matrix), the ratio of the medians where no paired ratio was recorded.
+  nlohmann::json frameTimes;
   std::string frameSource;
   std::string missing;         // why some input is absent
 };

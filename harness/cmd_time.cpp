@@ -1,8 +1,9 @@
 // `motorbench time [SCENE...] [--frames N] [--warmup W] [--size WxH] [--tiny WxH]
 //  [--best-of K] [--lp-threads N] [--json FILE]`: frame time of every registered pipeline on each scene
 // (harness/frame_timing.h), printed as medians with quartiles and as motor/matrix ratios
-// measured in the same run. No SCENE: every built-in scene. The crowd scene also runs in a
-// vertex-bound configuration: the same scene at a tiny viewport (--tiny, default 64x64).
+// measured in the same run. No SCENE: every built-in scene. A scene that draws at least
+// timing::kVertexBoundVerticesPerPixel vertices per pixel of a tiny viewport (--tiny, default
+// 64x64; of the built-in scenes the crowd) also runs there: the vertex-bound configuration.
 // Each scene is timed in a child process of its own (`time SCENE --worker FILE`), one after
 // the other: in one long-lived process a scene timed after another one inherited its heap
 // layout, and textured_box's ratio then swung between 0.64 and 1.00 from run to run (alone:
@@ -75,7 +76,8 @@ void printRow(const timing::ConfigTiming& c) {
   std::fflush(stdout);
 }
 
-// Child side: loads and times one scene (both configurations for the crowd), prints its rows
+// Child side: loads and times one scene (also at the tiny viewport when the scene draws enough
+// vertices to be vertex-bound there: timing::drawsVertexBoundAt), prints its rows
 // and writes them as a JSON array to `resultPath`. Exit 0, or 2 when anything failed.
 int timeOneScene(const std::string& name, const timing::Settings& normal, const timing::Settings& tiny,
                  const std::string& resultPath) {
@@ -88,7 +90,7 @@ int timeOneScene(const std::string& name, const timing::Settings& normal, const 
     status = 2;
   } else {
     std::vector<timing::Settings> configs = {normal};
-    if (name == "crowd") configs.push_back(tiny);
+    if (timing::drawsVertexBoundAt(*scene, tiny.width, tiny.height)) configs.push_back(tiny);
     for (const timing::Settings& cfg : configs) {
       auto r = timing::timeScene(*scene, name, cfg);
       if (!r) {
@@ -226,5 +228,6 @@ MB_COMMAND(time, "time",
            "[SCENE...] [--frames N] [--warmup W] [--best-of K] [--size WxH] [--tiny WxH] "
            "[--lp-threads N] [--json FILE]",
            "frame time (glFinish wall clock) and CPU update time of every pipeline; motor/matrix "
-           "ratios from one interleaved run; crowd also at a tiny viewport (vertex-bound)",
+           "ratios from one interleaved run; scenes with >= 10 drawn vertices per tiny-viewport pixel "
+           "(the crowd) also at that viewport (vertex-bound)",
            mb::runTime);

@@ -13,6 +13,7 @@
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
 #include "pipelines/scene/camera_rule.h"
+#include "pipelines/scene/scene_stats.h"
 
 namespace mb::timing {
 namespace {
@@ -108,6 +109,11 @@ Result<MachineInfo> machineInfo() {
   m.lpNumThreads = lp ? lp : "unset";
   m.realGpu = !softwareRenderer(m.glRenderer);
   return m;
+}
+
+bool drawsVertexBoundAt(const Scene& scene, int width, int height) {
+  const double pixels = double(width) * double(height);
+  return pixels > 0 && computeFileStats(scene).drawnVertices >= kVertexBoundVerticesPerPixel * pixels;
 }
 
 Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,

@@ -78,6 +78,16 @@ struct ConfigTiming {
   Spread pairedFrame;
 };
 
+// The vertex-bound configuration (a tiny viewport) measures the vertex stage only when the
+// scene draws many vertices per pixel of it; with fewer, a frame is mostly fixed per-frame cost
+// (clear, draw calls, uniform uploads, glFinish) and its ratio says nothing about transforming
+// vertices. 24 box vertices at 64x64 gave motor/matrix 1.35..1.45 run to run; the crowd (108,800
+// drawn vertices, 27 per pixel) 0.78..0.80.
+inline constexpr int kVertexBoundVerticesPerPixel = 10;
+// Vertices the scene's mesh nodes draw per frame (instances counted), and whether that is at
+// least kVertexBoundVerticesPerPixel per pixel of a width x height viewport.
+bool drawsVertexBoundAt(const Scene& scene, int width, int height);
+
 // Times every registered pipeline on `scene` under `settings`.
 Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
                                const Settings& settings);

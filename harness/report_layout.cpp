@@ -275,8 +275,9 @@ void sceneSection(Document& d, const json& r, const json& s) {
                ratio(at(c, {"paired_cpu_ratio_motor_matrix"})) + ", CPU update " +
                ratio(at(c, {"update", "ratio_motor_matrix"}));
       };
+      const json& vb = timing.value("vertexBound", json());
       d.paragraph("Frame timing: " + str(timing["summary"]) + " Motor / matrix: " + ratios(timing) +
-                  "; vertex-bound: " + ratios(timing.value("vertexBound", json())) + ".");
+                  "; vertex-bound: " + (vb.contains("skipped") ? str(vb["skipped"]) : ratios(vb)) + ".");
     }
   }
 }

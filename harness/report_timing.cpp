@@ -49,8 +49,14 @@ json timeScene(const Scene& scene, const std::vector<std::string>& pipelines, in
   timing::Settings tiny = normal;
   tiny.width = tiny.height = kTiny;
   tiny.config = "vertex-bound";
-  auto v = timing::timeScene(scene, scene.source, tiny);
-  out["vertexBound"] = v ? configJson(*v, pipelines) : json{{"error", v.error()}};
+  if (timing::drawsVertexBoundAt(scene, kTiny, kTiny)) {
+    auto v = timing::timeScene(scene, scene.source, tiny);
+    out["vertexBound"] = v ? configJson(*v, pipelines) : json{{"error", v.error()}};
+  } else {
+    out["vertexBound"] = {{"skipped", "not vertex-bound at " + std::to_string(kTiny) + "x" + std::to_string(kTiny) +
+                                          ": fewer than " + std::to_string(timing::kVertexBoundVerticesPerPixel) +
+                                          " drawn vertices per pixel"}};
+  }
   out["frames"] = normal.frames;
   out["warmup"] = normal.warmup;
   out["bestOf"] = normal.bestOf;
@@ -58,7 +64,8 @@ json timeScene(const Scene& scene, const std::vector<std::string>& pipelines, in
   char summary[256];
   std::snprintf(summary, sizeof summary,
                 "%d frames per pipeline after %d warm-up at %dx%d, each the fastest of %d renders, pipelines "
-                "interleaved in alternating order (harness/frame_timing.h); vertex-bound: the same at %dx%d.",
+                "interleaved in alternating order (harness/frame_timing.h); vertex-bound: the same at %dx%d "
+                "where the scene draws enough vertices.",
                 normal.frames, normal.warmup, width, height, normal.bestOf, kTiny, kTiny);
   out["summary"] = summary;
   return out;

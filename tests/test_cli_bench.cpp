@@ -9,6 +9,7 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -116,6 +117,26 @@ TEST(CliTime, EachSceneInItsOwnWorkerAndABadSceneDoesNotStopTheOthers) {
     EXPECT_FALSE(j["results"][i].contains("error")) << j["results"][i].dump(2);
     EXPECT_EQ(j["results"][i]["width"], 32) << j["results"][i].dump(2);
   }
+  fs::remove(json);
+}
+
+// The tiny-viewport configuration runs only where it is vertex-bound (>= 10 drawn vertices per
+// pixel): at 8x8 (640 vertices needed) the crowd draws 108,800 (256 instances x 425) and the
+// torus 2,178, the textured box 24.
+TEST(CliTime, VertexBoundConfigurationOnlyForScenesDrawingManyVerticesPerPixel) {
+  const fs::path json = scratchFile("time_vbound.json");
+  std::string log;
+  const int rc = runCommand(exe() + "time textured_box normal_torus crowd --frames 2 --warmup 0 --size 32x32 --tiny 8x8 "
+                             "--json '" + json.string() + "'", &log);
+  ASSERT_EQ(rc, 0) << log;
+  std::ifstream in(json);
+  ASSERT_TRUE(in) << log;
+  const nlohmann::json j = nlohmann::json::parse(in);
+  std::vector<std::string> rows;
+  for (const auto& r : j["results"]) rows.push_back(r.value("scene", "?") + "/" + r.value("config", "?"));
+  EXPECT_EQ(rows, (std::vector<std::string>{"textured_box/normal", "normal_torus/normal", "normal_torus/vertex-bound",
+                                      "crowd/normal", "crowd/vertex-bound"}))
+      << j.dump(2);
   fs::remove(json);
 }
 

@@ -174,4 +174,40 @@ TEST(CliClaims, JsonHoldsEveryClaimWithMeasuredValueAndVerdict) {
   fs::remove_all(dir);
 }
 
+// The speed claim's frame ratios from a report.json: the paired ratio where the report has one
+// (a: 0.90, not its ratio of medians 1.50), else the ratio of the medians (b: 0.95); the
+// vertex-bound figure only from scenes that were timed vertex-bound (b: paired 0.80).
+TEST(CliClaims, FrameRatiosArePairedAndVertexBoundOnlyWhereMeasured) {
+  const fs::path dir = mb::cli_test::scratchDir("claims_frames");
+  const json report = {
+      {"scenes",
+       {{{"id", "a"},
+         {"timing",
+          {{"ratio_motor_matrix", 1.5},
+           {"paired_ratio_motor_matrix", 0.9},
+           {"vertexBound", {{"skipped", "not vertex-bound at 64x64"}}}}}},
+        {{"id", "b"},
+         {"timing",
+          {{"ratio_motor_matrix", 0.95},
+           {"vertexBound", {{"ratio_motor_matrix", 1.3}, {"paired_ratio_motor_matrix", 0.8}}}}}}}}};
+  std::ofstream(dir / "report.json") << report.dump();
+  std::string log;
+  ASSERT_EQ(runCommand(motorbench() + "claims --no-run --report " + quoted(dir / "report.json") + " -o " +
+                           quoted(dir / "claims.md") + " --json " + quoted(dir / "claims.json"),
+                       &log),
+            0)
+      << log;
+  const json j = readJson(dir / "claims.json");
+  json speed;
+  for (const json& c : j["claims"])
+    if (c["id"] == "as_fast_as_matrices") speed = c;
+  ASSERT_TRUE(speed.is_object()) << j.dump(2);
+  const json& v = speed["measuredValue"];
+  ASSERT_TRUE(v["frame time ratio (median over 2 scenes)"].is_number()) << v.dump(2);
+  EXPECT_NEAR(v["frame time ratio (median over 2 scenes)"].get<double>(), 0.925, 1e-12);
+  ASSERT_TRUE(v["vertex-bound frame time ratio (median)"].is_number()) << v.dump(2);
+  EXPECT_DOUBLE_EQ(v["vertex-bound frame time ratio (median)"].get<double>(), 0.8);
+  fs::remove_all(dir);
+}
+
 }  // namespace
