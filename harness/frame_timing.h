@@ -81,8 +81,9 @@ struct ConfigTiming {
 // The vertex-bound configuration (a tiny viewport) measures the vertex stage only when the
 // scene draws many vertices per pixel of it; with fewer, a frame is mostly fixed per-frame cost
 // (clear, draw calls, uniform uploads, glFinish) and its ratio says nothing about transforming
-// vertices. 24 box vertices at 64x64 gave motor/matrix 1.35..1.45 run to run; the crowd (108,800
-// drawn vertices, 27 per pixel) 0.78..0.80.
+// vertices: the 24-vertex textured_box at 64x64 gave motor/matrix 1.00 timed alone and 1.35..1.45
+// timed after its 512x512 run in one report worker; the crowd (108,800 drawn vertices, 27 per
+// pixel) gives 0.78..0.80 either way.
 inline constexpr int kVertexBoundVerticesPerPixel = 10;
 // Vertices the scene's mesh nodes draw per frame (instances counted), and whether that is at
 // least kVertexBoundVerticesPerPixel per pixel of a width x height viewport.
