@@ -7,7 +7,11 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 namespace mb::cli_test {
 
@@ -23,6 +27,18 @@ inline int runCommand(const std::string& cmd, std::string* output) {
 }
 
 inline std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+// The JSON in file `p`; discarded (is_discarded()) when the file is missing or not JSON.
+inline nlohmann::json readJson(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in, nullptr, false);
+}
+
+// The bytes of file `p` as text; empty when it cannot be read.
+inline std::string readText(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
 
 // "'<motorbench>' " ready for arguments.
 inline std::string motorbench() { return quoted(MB_MOTORBENCH_EXE) + " "; }

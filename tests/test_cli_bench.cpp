@@ -6,7 +6,6 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <string>
 #include <vector>
@@ -18,6 +17,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using mb::cli_test::readJson;
 using mb::cli_test::runCommand;
 
 std::string exe() { return mb::cli_test::motorbench(); }
@@ -32,9 +32,8 @@ TEST(CliBench, OneCheapKernelWritesJsonWithItemsPerSecond) {
   const int rc = runCommand(exe() + "bench --benchmark_filter='^compose/' --benchmark_min_time=0.01 "
                              "--out '" + out.string() + "'", &log);
   ASSERT_EQ(rc, 0) << log;
-  std::ifstream in(out);
-  ASSERT_TRUE(in) << "no JSON written: " << log;
-  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json j = readJson(out);
+  ASSERT_FALSE(j.is_discarded()) << "no JSON written: " << log;
   ASSERT_TRUE(j.contains("benchmarks"));
   std::set<std::string> names;
   for (const auto& b : j["benchmarks"]) {
@@ -56,8 +55,8 @@ TEST(CliBench, OutOfCacheKernelReportsBandwidthFraction) {
   const int rc = runCommand(exe() + "bench --benchmark_filter='^direction/out_of_cache/motor$' "
                              "--benchmark_min_time=0.01 --out '" + out.string() + "'", &log);
   ASSERT_EQ(rc, 0) << log;
-  std::ifstream in(out);
-  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json j = readJson(out);
+  ASSERT_FALSE(j.is_discarded()) << log;
   ASSERT_EQ(j["benchmarks"].size(), 1u) << j.dump();
   const auto& b = j["benchmarks"][0];
   EXPECT_TRUE(b.contains("bytes_per_second"));
@@ -84,9 +83,8 @@ TEST(CliTime, TexturedBoxPrintsARatio) {
   ASSERT_EQ(rc, 0) << log;
   EXPECT_NE(log.find("motor/matrix"), std::string::npos) << log;
   EXPECT_NE(log.find("GL_RENDERER"), std::string::npos) << log;
-  std::ifstream in(json);
-  ASSERT_TRUE(in) << log;
-  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json j = readJson(json);
+  ASSERT_FALSE(j.is_discarded()) << log;
   ASSERT_TRUE(j.contains("machine"));
   ASSERT_TRUE(j.contains("results"));
   bool ratio = false;
@@ -105,9 +103,8 @@ TEST(CliTime, EachSceneInItsOwnWorkerAndABadSceneDoesNotStopTheOthers) {
   EXPECT_NE(log.find("no_such_scene_or_file.glb"), std::string::npos) << log;
   EXPECT_NE(log.find("\ntextured_box "), std::string::npos) << log;
   EXPECT_NE(log.find("\nnormal_torus "), std::string::npos) << log;
-  std::ifstream in(json);
-  ASSERT_TRUE(in) << log;
-  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json j = readJson(json);
+  ASSERT_FALSE(j.is_discarded()) << log;
   ASSERT_EQ(j["results"].size(), 3u) << j.dump(2);
   EXPECT_EQ(j["results"][0]["scene"], "no_such_scene_or_file.glb");
   EXPECT_TRUE(j["results"][0].contains("error"));
@@ -129,9 +126,8 @@ TEST(CliTime, VertexBoundConfigurationOnlyForScenesDrawingManyVerticesPerPixel) 
   const int rc = runCommand(exe() + "time textured_box normal_torus crowd --frames 2 --warmup 0 --size 32x32 --tiny 8x8 "
                              "--json '" + json.string() + "'", &log);
   ASSERT_EQ(rc, 0) << log;
-  std::ifstream in(json);
-  ASSERT_TRUE(in) << log;
-  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json j = readJson(json);
+  ASSERT_FALSE(j.is_discarded()) << log;
   std::vector<std::string> rows;
   for (const auto& r : j["results"]) rows.push_back(r.value("scene", "?") + "/" + r.value("config", "?"));
   EXPECT_EQ(rows, (std::vector<std::string>{"textured_box/normal", "normal_torus/normal", "normal_torus/vertex-bound",
@@ -154,8 +150,8 @@ TEST(CliOps, PerVertexSectionHasBothWaysForEveryPipeline) {
   std::string log;
   ASSERT_EQ(runCommand(exe() + "ops --json '" + json.string() + "'", &log), 0) << log;
   EXPECT_NE(log.find("Ops per vertex"), std::string::npos) << log;
-  std::ifstream in(json);
-  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json j = readJson(json);
+  ASSERT_FALSE(j.is_discarded()) << log;
   ASSERT_TRUE(j.contains("per_vertex")) << j.dump();
   const auto& pv = j["per_vertex"];
   const bool tools = pv["tools_problem"].get<std::string>().empty();

@@ -6,7 +6,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -19,18 +18,12 @@ namespace fs = std::filesystem;
 
 const fs::path kGolden = fs::path(MB_SOURCE_DIR) / "tests" / "golden";
 
+using mb::cli_test::readText;
 using mb::cli_test::runCommand;
 std::string q(const fs::path& p) { return mb::cli_test::quoted(p); }
 int run(const std::string& cmd, std::string* output) { return runCommand(cmd, output); }
 std::string check(const std::string& options) { return mb::cli_test::motorbench() + "check " + options; }
 fs::path scratch(const std::string& name) { return mb::cli_test::scratchDir("check_" + name); }
-
-std::string readText(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Copies the committed goldens so a test can damage them.
 fs::path copyGoldens(const fs::path& root) {

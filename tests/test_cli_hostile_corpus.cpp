@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pipelines/scene/builtin_scenes.h"
+#include "tests/cli_test_support.h"
 #include "tests/hostile/hostile_cases.h"
 
 namespace {
@@ -115,9 +116,8 @@ TEST(CliHostileCorpus, InspectReportsEveryFileAndFinishes) {
     FAIL() << "motorbench inspect exited " << rc << "; its messages:\n" << errors;
   }
 
-  std::ifstream in(json);
-  ASSERT_TRUE(in.good()) << "no --json report";
-  nlohmann::json report = nlohmann::json::parse(in);
+  const nlohmann::json report = mb::cli_test::readJson(json);
+  ASSERT_FALSE(report.is_discarded()) << "no --json report";
   std::map<std::string, int> seen;
   int good = 0, bad = 0;
   for (const auto& f : report["files"]) {

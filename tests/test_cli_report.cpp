@@ -21,17 +21,9 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 using mb::cli_test::motorbench;
 using mb::cli_test::quoted;
+using mb::cli_test::readJson;
+using mb::cli_test::readText;
 using mb::cli_test::runCommand;
-
-json readJson(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in, nullptr, false);
-}
-
-std::string readText(const fs::path& p) {
-  std::ifstream in(p);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
   const fs::path dir = mb::cli_test::scratchDir("report");
