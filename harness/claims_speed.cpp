@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "harness/claims_sources.h"
+#include "harness/frame_timing.h"
 
 namespace mb::claims {
 namespace {
@@ -47,7 +48,9 @@ std::vector<Claim> speedClaims(const SpeedInputs& in) {
              (in.kernelSource.empty() ? std::string("none") : in.kernelSource) +
              ". GPU (llvmpipe): frame time motor / matrix per scene (the median of the per-frame ratios, both "
              "pipelines rendering each frame back to back), and in a vertex-bound "
-             "configuration (64x64 viewport, scenes drawing >= 10 vertices per pixel there); source: " + (in.frameSource.empty() ? std::string("none") : in.frameSource) +
+             "configuration (64x64 viewport, scenes drawing >= " +
+             std::to_string(timing::kVertexBoundVerticesPerPixel) + " vertices per pixel there); source: " +
+             (in.frameSource.empty() ? std::string("none") : in.frameSource) +
              ". Verdict: reproduced when the motor side is at most " + std::to_string(int(kTolerance * 100)) +
              " % slower in every measurement.";
   json value = json::object();
