@@ -13,7 +13,7 @@
 // gp_ab(a, b) is the geometric product a b: as transformations, b is applied first (like the
 // matrix product A B). A normalised motor has M ~M = 1.
 //
-// glTF conventions (checked against GLM in tests/test_pga_products.cpp):
+// glTF conventions (checked against GLM in tests/pga/test_pga_products.cpp):
 //   rotation quaternion (x, y, z, w)  -> rotor      [w, -x, -y, -z | 0, 0, 0, 0]
 //   translation t                     -> translator [1, 0, 0, 0 | -t.x/2, -t.y/2, -t.z/2, 0]
 //   node TRS (uniform scale aside)    -> gp_tr(translator, rotor) = T R

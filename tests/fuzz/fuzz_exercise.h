@@ -1,6 +1,6 @@
 // What the fuzzer does with one input, shared by the libFuzzer target (tests/fuzz/fuzz_loader.cpp,
 // which aborts on a non-empty result) and the regression replay
-// (tests/test_scene_fuzz_regressions.cpp, which fails the test with it).
+// (tests/scene/test_scene_fuzz_regressions.cpp, which fails the test with it).
 //
 // The input is loaded from memory with no base directory (external URIs are refused, so nothing
 // touches the filesystem): as .glb when it starts with the GLB magic, as .gltf JSON otherwise,

@@ -2,7 +2,7 @@
 // hostile tests can produce files tinygltf's own writer would refuse to write (lying lengths,
 // out-of-range indices, cycles...). Serialises as .glb, as .gltf with a data: URI, or as
 // .gltf + external .bin. Also a minimal PNG encoder (stored deflate) for embedded textures.
-// Header-only: used by tests/test_scene_hostile.cpp, tests/test_cli_hostile_corpus.cpp and
+// Header-only: used by tests/scene/test_scene_hostile.cpp, tests/cli/test_cli_hostile_corpus.cpp and
 // the fuzz seed generator.
 #pragma once
 #include <array>

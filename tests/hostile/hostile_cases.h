@@ -4,7 +4,7 @@
 //   Fallback  load succeeds; LoadStats::*counter >= atLeast (the documented repair was counted)
 //   Loads     load succeeds (extreme but valid input)
 // and, whenever a scene loads, `check` (case specific) and checkSceneInvariants must pass.
-// Header-only: shared by tests/test_scene_hostile.cpp, tests/test_cli_hostile_corpus.cpp and
+// Header-only: shared by tests/scene/test_scene_hostile.cpp, tests/cli/test_cli_hostile_corpus.cpp and
 // the fuzz seed generator.
 #pragma once
 #include <cstdint>

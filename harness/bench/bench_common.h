@@ -1,0 +1,102 @@
+// Shared pieces of the `motorbench bench` kernels (harness/bench/bench_*.cpp): naming, sizes, data
+// generation, counters. Every kernel family registers its matrix, motor and glm variants
+// under one name with the side last ("point/in_cache/matrix", "point/in_cache/motor",
+// "point/in_cache/glm"), so that pairs sort and read side by side.
+//
+// Fairness rules the kernels follow:
+//  - matrix and motor both execute the shader source compiled through the shim with float
+//    (harness/bench/bench_shaders.h), built with the same flags: SIMD on both or neither;
+//  - "glm" is GLM's own operators on the matrix side, an extra labelled baseline;
+//  - per-vertex kernels process the same number of vertices on each side (items/s compare
+//    directly) and count the bytes each side actually reads and writes (bytes/s).
+#pragma once
+#include <benchmark/benchmark.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "harness/bench/bench_shaders.h"
+
+namespace mb::bench {
+
+using MS = MatrixShader<float>;
+using PS = MotorShader<float>;
+
+// The sides of every kernel pair, in registration order.
+inline const char* const kMatrix = "matrix";
+inline const char* const kMotor = "motor";
+inline const char* const kGlm = "glm";
+
+// Working-set classes of the per-vertex kernels.
+enum class Size { InCache, OutOfCache };
+inline const char* sizeName(Size s) { return s == Size::InCache ? "in_cache" : "out_of_cache"; }
+
+// In cache: about 16 KiB for the larger side. Out of cache: at least 256 MiB for the smaller
+// side (far beyond this machine's last-level cache), so both sides stream from memory.
+inline constexpr size_t kInCacheBytes = 16u << 10;
+inline constexpr size_t kOutOfCacheBytes = 256u << 20;
+
+// Vertices per pass: the same count for both sides of a pair, from the bytes per vertex each
+// side moves (largest for in-cache, smallest for out-of-cache), rounded up to 64.
+inline size_t vertexCount(Size s, size_t smallBytesPerItem, size_t largeBytesPerItem) {
+  const size_t n = s == Size::InCache ? kInCacheBytes / largeBytesPerItem
+                                      : (kOutOfCacheBytes + smallBytesPerItem - 1) / smallBytesPerItem;
+  return (n + 63) / 64 * 64;
+}
+
+// The arrays of type T for size class `s`, built with `n` elements on first use and kept for
+// the process (the big ones are allocated once, whatever the repetitions).
+template <class T> T& perSize(Size s, size_t n) {
+  if (s == Size::InCache) {
+    static T small(n);
+    return small;
+  }
+  static T big(n);
+  return big;
+}
+
+// Registers `fn` as benchmark "name" (time in ns, items/s and bytes/s set by the kernel).
+void registerKernel(const std::string& name, std::function<void(benchmark::State&)> fn);
+
+// Sets items/s and bytes/s for `items` items and `bytes` bytes per iteration; for out-of-cache
+// kernels also "bw_fraction" (bytes/s over the bandwidth probe's best) and "probe_GBps".
+void setThroughput(benchmark::State& state, size_t items, size_t bytes, Size size);
+
+// Deterministic data.
+struct Rng {
+  std::mt19937 gen{12345};
+  float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(gen); }
+  int index(int n) { return std::uniform_int_distribution<int>(0, n - 1)(gen); }
+};
+
+// A unit quaternion as a glTF (x, y, z, w) and its rotor [w, -x, -y, -z].
+struct Quat {
+  float x, y, z, w;
+};
+Quat randomQuat(Rng& r);
+inline PS::vec4 rotorOf(const Quat& q) { return PS::vec4(q.w, -q.x, -q.y, -q.z); }
+// Rotation matrix columns of a unit quaternion (used to build consistent matrix/motor inputs).
+void quatColumns(const Quat& q, float c0[3], float c1[3], float c2[3]);
+
+// A rigid transform both ways: the motor T R and the column-major 4x4 matrix of the same
+// motion (with uniform scale `s` applied before it); normal matrix = rotation / s, with
+// [3][3] = 1 (no mirror).
+struct Transform {
+  PS::motor motor;
+  float scale = 1.0f;
+  float matrix[16], normal[16];
+};
+Transform randomTransform(Rng& r, float scale = 1.0f);
+
+inline MS::mat4 toShim(const float* m16) {
+  MS::mat4 m;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) m[c][r] = m16[c * 4 + r];
+  return m;
+}
+
+}  // namespace mb::bench

@@ -1,0 +1,42 @@
+// The families of claims `motorbench claims` checks, each measured where it is implemented:
+//   claims_ops.cpp       arithmetic of the PGA kernels and the matrix operators (counted)
+//   claims_memory.cpp    floats per vertex / transform / joint (PipelineStats of real uploads)
+//   claims_speed.cpp     "as fast as matrices" (bench kernel ratios + frame timing)
+//   claims_corpus.cpp    animated / non-uniform scale over the built-in scenes + a corpus
+//   claims_baselines.cpp affine matrix path, full world-to-clip, skinning per vertex
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/claims/claims_model.h"
+
+namespace mb::claims {
+
+std::vector<Claim> opClaims();
+
+// Renders built-in scenes with each pipeline (needs GL); a failure makes the claims
+// "not measurable here" with the reason.
+std::vector<Claim> memoryClaims();
+
+struct SpeedInputs {
+  nlohmann::json kernelPairs;  // report_bench.h kernelPairs()["pairs"], or null
+  std::string kernelSource;    // where they came from (file or "short run")
+  // [{"scene", "ratio", "vertexBound"}...] or null: motor / matrix frame time, the median of the
+  // per-frame ratios (both pipelines render each frame back to back; report.json's
+  // paired_ratio_motor_matrix), the ratio of the medians where no paired ratio was recorded.
+  nlohmann::json frameTimes;
+  std::string frameSource;
+  std::string missing;         // why some input is absent
+};
+std::vector<Claim> speedClaims(const SpeedInputs& in);
+
+// `corpusDir`: "" or a folder of .gltf/.glb files (recursively), measured with the built-in
+// scenes.
+std::vector<Claim> corpusClaims(const std::string& corpusDir);
+
+// Reviewer baselines (Verdict::Baseline): counted and SPIR-V.
+std::vector<Claim> baselineClaims();
+
+}  // namespace mb::claims

@@ -1,0 +1,177 @@
+// `motorbench claims [-o FILE] [--json FILE] [--report report.json] [--bench-json FILE]
+//   [--corpus DIR] [--frames N] [--no-run]`: every quantitative claim of the paper with the
+// paper's value, the value measured now, how, and a verdict; plus the reviewer baselines.
+// Op counts, uploads and scene statistics are always measured here. Speed comes from a report
+// (its kernel pairs and frame timings) or a bench JSON when given, else from a short bench run
+// (vertex kernels only) and frame timing of two built-in scenes in this process.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "harness/options/args.h"
+#include "harness/claims/claims_layout.h"
+#include "harness/claims/claims_sources.h"
+#include "harness/cli/command.h"
+#include "harness/report/report_bench.h"
+#include "harness/document/report_format.h"
+#include "harness/report/report_machine.h"
+#include "harness/render/render_frame.h"
+#include "harness/report/report_timing.h"
+#include "pipelines/scene/loader.h"
+
+namespace mb {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+int fail(const std::string& message) { return commandError("claims", message); }
+
+void say(const std::string& line) {
+  std::fprintf(stderr, "claims: %s\n", line.c_str());
+  std::fflush(stderr);
+}
+
+// Motor / matrix frame time of one timing configuration (report_timing.h's JSON): the paired
+// ratio, which a slow spell of the machine cannot skew (it hits both frames of a pair), else
+// the ratio of the medians; null when neither was measured.
+json frameRatioOf(const json& config) {
+  if (!config.is_object()) return nullptr;
+  for (const char* key : {"paired_ratio_motor_matrix", "ratio_motor_matrix"})
+    if (config.contains(key) && config[key].is_number()) return config[key];
+  return nullptr;
+}
+
+// {"scene", "ratio", "vertexBound"} of one scene's timing, or null without a frame ratio.
+json frameRow(const std::string& scene, const json& timing) {
+  const json ratio = frameRatioOf(timing);
+  if (ratio.is_null()) return nullptr;
+  json row = {{"scene", scene}, {"ratio", ratio}};
+  if (json vb = frameRatioOf(timing.value("vertexBound", json())); !vb.is_null()) row["vertexBound"] = vb;
+  return row;
+}
+
+// Frame-time ratios of report.json's scenes.
+json frameTimesOf(const json& report) {
+  json out = json::array();
+  for (const json& s : report.value("scenes", json::array()))
+    if (json row = frameRow(s.value("id", ""), s.value("timing", json())); !row.is_null()) out.push_back(row);
+  return out;
+}
+
+// Speed inputs: from --report / --bench-json, else measured now (unless --no-run).
+claims::SpeedInputs speedInputs(const Args& args, json& sources) {
+  claims::SpeedInputs in;
+  std::string missing;
+  if (auto r = args.get("report")) {
+    std::ifstream f(*r);
+    json report = json::parse(f, nullptr, false);
+    if (report.is_discarded()) {
+      missing += *r + ": cannot read report.json; ";
+    } else {
+      if (report["kernels"].is_object() && report["kernels"]["pairs"].is_array() && !report["kernels"]["pairs"].empty()) {
+        in.kernelPairs = report["kernels"]["pairs"];
+        const json& file = report["kernels"]["file"];
+        in.kernelSource = *r + " (kernels from " + (file.is_string() ? file.get<std::string>() : "its bench run") + ")";
+      }
+      in.frameTimes = frameTimesOf(report);
+      in.frameSource = *r + " (" + std::to_string(in.frameTimes.size()) + " scenes)";
+    }
+  }
+  if (auto b = args.get("bench-json"); b && in.kernelPairs.is_null()) {
+    auto j = report::readBenchJson(*b);
+    if (j) in.kernelPairs = report::kernelPairs(*j)["pairs"], in.kernelSource = *b;
+    else missing += j.error() + "; ";
+  }
+  const bool run = !args.has("no-run");
+  if (in.kernelPairs.is_null() && run) {
+    const std::string tmp = (fs::temp_directory_path() / ("motorbench-claims-bench-" + std::to_string(getpid()) + ".json")).string();
+    say("running motorbench bench (vertex_frame kernels, short)");
+    Status s = report::runBench(tmp, tmp + ".txt", 0.1, "^vertex_frame/");
+    auto j = s ? report::readBenchJson(tmp) : Result<json>::fail(s.error());
+    if (j) in.kernelPairs = report::kernelPairs(*j)["pairs"], in.kernelSource = "motorbench bench run by claims (min time 0.1 s)";
+    else missing += j.error() + "; ";
+    std::error_code ec;
+    fs::remove(tmp, ec), fs::remove(tmp + ".txt", ec);
+  }
+  if ((in.frameTimes.is_null() || in.frameTimes.empty()) && run) {
+    in.frameTimes = json::array();
+    const auto framesOpt = numberOption(args, "frames", 20);
+    const int frames = framesOpt ? int(*framesOpt) : 20;  // validated in runClaims
+    for (const char* name : {"normal_torus", "skinned_tube", "crowd"}) {
+      say(std::string("timing ") + name + " (" + std::to_string(frames) + " frames per pipeline)");
+      auto scene = loadScene(name);
+      if (!scene) continue;
+      const json t = report::timeScene(*scene, {"matrix", "motor"}, frames, 512, 512);
+      json row = frameRow(name, t);
+      if (row.is_null()) {
+        missing += std::string(name) + " timing: " + (t["error"].is_string() ? t["error"].get<std::string>() : "no ratio") + "; ";
+        continue;
+      }
+      in.frameTimes.push_back(row);
+    }
+    in.frameSource = "frame timing run by claims on normal_torus, skinned_tube and crowd at 512x512, crowd also at 64x64";
+  }
+  if (in.kernelPairs.is_null()) missing += "no kernel throughput (give --report or --bench-json, or drop --no-run); ";
+  if (in.frameTimes.is_null() || in.frameTimes.empty()) missing += "no frame timing; ";
+  if (!missing.empty()) missing.resize(missing.size() - 2);
+  in.missing = missing;
+  sources["kernels"] = in.kernelSource.empty() ? "none" : in.kernelSource;
+  sources["frameTiming"] = in.frameSource.empty() ? "none" : in.frameSource;
+  return in;
+}
+
+int runClaims(const std::vector<std::string>& argv) {
+  const Args args(argv, {"no-run"});
+  if (!args.error().empty()) return fail(args.error());
+  if (auto u = args.unknown({"o", "output", "json", "report", "bench-json", "corpus", "frames", "no-run"}); !u.empty())
+    return fail("unknown option " + u[0]);
+  if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
+  if (auto f = numberOption(args, "frames", 20); !f || *f < 1) return fail(f ? "--frames: expected 1 or more" : f.error());
+  const std::string corpus = args.get("corpus", "../shared/corpus");
+  json sources = {{"opCounts", "shaders/pga.glsl, shaders/matrix_transform.glsl, shaders/motor_transform.glsl "
+                                "executed on mb::Counted; SPIR-V via glslangValidator + spirv-opt"},
+                  {"memory", "PipelineStats of renders of the built-in normal_torus and skinned_tube"},
+                  {"corpus", "built-in scenes + " + corpus}};
+  std::vector<claims::Claim> all;
+  say("counting ops");
+  for (auto& c : claims::opClaims()) all.push_back(c);
+  say("measuring uploads");
+  for (auto& c : claims::memoryClaims()) all.push_back(c);
+  claims::SpeedInputs speed = speedInputs(args, sources);
+  for (auto& c : claims::speedClaims(speed)) all.push_back(c);
+  say("scene statistics");
+  for (auto& c : claims::corpusClaims(corpus)) all.push_back(c);
+  say("baselines (counted and SPIR-V)");
+  for (auto& c : claims::baselineClaims()) all.push_back(c);
+
+  const json j = claims::claimsJson(all, report::machineJson(), sources);
+  const std::string md = report::toMarkdown(claims::claimsDocument(j));
+  if (auto path = args.get("json")) {
+    std::ofstream out(*path);
+    out << report::dumpJson(j, 2) << "\n";
+    if (!out.flush()) return fail(*path + ": write failed");
+  }
+  const std::string mdPath = args.get("o", args.get("output", ""));
+  if (mdPath.empty()) {
+    std::fputs(md.c_str(), stdout);
+  } else {
+    std::ofstream out(mdPath);
+    out << md;
+    if (!out.flush()) return fail(mdPath + ": write failed");
+  }
+  const json& c = j["counts"];
+  say(std::to_string(all.size()) + " rows: " + c["reproduced"].dump() + " reproduced, " + c["differs"].dump() +
+      " differ, " + c["not measurable here"].dump() + " not measurable, " + c["baseline"].dump() + " baselines");
+  return 0;
+}
+
+}  // namespace
+}  // namespace mb
+
+MB_COMMAND(claims, "claims",
+           "[-o FILE] [--json FILE] [--report report.json] [--bench-json FILE] [--corpus DIR] [--frames N] [--no-run]",
+           "every quantitative claim of the paper: paper value, measured value, method, verdict (Markdown/JSON)",
+           mb::runClaims);

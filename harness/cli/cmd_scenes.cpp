@@ -1,0 +1,52 @@
+// `motorbench scenes -o DIR [NAME...]`: writes the built-in scenes as DIR/<name>.glb.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "harness/options/args.h"
+#include "harness/cli/command.h"
+#include "pipelines/scene/builtin_scenes.h"
+
+namespace {
+
+int runScenes(const std::vector<std::string>& argv) {
+  mb::Args args(argv);
+  auto unknown = args.unknown({"o", "out"});
+  std::string dir = args.get("o", args.get("out", ""));
+  if (!args.error().empty() || !unknown.empty() || dir.empty()) {
+    std::fprintf(stderr, "usage: motorbench scenes -o DIR [NAME...]%s%s\n",
+                 args.error().empty() ? "" : ("\n  " + args.error()).c_str(),
+                 unknown.empty() ? "" : ("\n  unknown option " + unknown[0]).c_str());
+    return 2;
+  }
+  std::vector<std::string> names = args.positional();
+  if (names.empty()) names = mb::builtinSceneNames();
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) {
+    std::fprintf(stderr, "motorbench scenes: %s: %s\n", dir.c_str(), ec.message().c_str());
+    return 2;
+  }
+  for (const auto& name : names) {
+    auto glb = mb::builtinSceneGlb(name);
+    if (!glb) {
+      std::fprintf(stderr, "motorbench scenes: %s (known: normal_torus textured_box skinned_tube scaled_hierarchy crowd)\n",
+                   glb.error().c_str());
+      return 2;
+    }
+    std::string path = (std::filesystem::path(dir) / (name + ".glb")).string();
+    std::ofstream out(path, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(glb->data()), std::streamsize(glb->size()));
+    if (!out.flush()) {
+      std::fprintf(stderr, "motorbench scenes: %s: write failed\n", path.c_str());
+      return 2;
+    }
+    std::printf("%s (%zu bytes)\n", path.c_str(), glb->size());
+  }
+  return 0;
+}
+
+}  // namespace
+
+MB_COMMAND(scenes, "scenes", "-o DIR [NAME...]",
+           "write the built-in procedural scenes as DIR/<name>.glb", runScenes);

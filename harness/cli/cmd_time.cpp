@@ -1,0 +1,233 @@
+// `motorbench time [SCENE...] [--frames N] [--warmup W] [--size WxH] [--tiny WxH]
+//  [--best-of K] [--lp-threads N] [--json FILE]`: frame time of every registered pipeline on each scene
+// (harness/timing/frame_timing.h), printed as medians with quartiles and as motor/matrix ratios
+// measured in the same run. No SCENE: every built-in scene. A scene that draws at least
+// timing::kVertexBoundVerticesPerPixel vertices per pixel of a tiny viewport (--tiny, default
+// 64x64; of the built-in scenes the crowd) also runs there: the vertex-bound configuration.
+// Each scene is timed in a child process of its own (`time SCENE --worker FILE`), one after
+// the other: in one long-lived process a scene timed after another one inherited its heap
+// layout, and textured_box's ratio then swung between 0.64 and 1.00 from run to run (alone:
+// 0.98..1.01); a scene that crashes the driver is also reported while the others go on.
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "harness/options/args.h"
+#include "harness/cli/command.h"
+#include "harness/timing/frame_timing.h"
+#include "harness/process/report_workers.h"
+#include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/scene/loader.h"
+
+namespace mb {
+namespace {
+
+bool parseSize(const std::string& s, int& w, int& h) {
+  char x = 0, extra = 0;
+  const int n = std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra);
+  if (n == 1) h = w;
+  else if (n != 3 || (x != 'x' && x != 'X')) return false;
+  return w >= 1 && h >= 1 && w <= 16384 && h <= 16384;
+}
+
+// "median [q1-q3]" of a spread in ms, shown scaled by `scale` (1: ms, 1000: us).
+std::string cell(const timing::Spread& s, double scale = 1.0) {
+  char b[64];
+  std::snprintf(b, sizeof b, scale > 1 ? "%.2f [%.2f-%.2f]" : "%.3f [%.3f-%.3f]", s.median * scale,
+                s.q1 * scale, s.q3 * scale);
+  return b;
+}
+
+std::string ratio(double r) {
+  if (r <= 0) return "-";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3f", r);
+  return b;
+}
+
+// A worker (one scene) that runs longer than this is killed and reported as an error.
+constexpr double kWorkerTimeoutS = 3600;
+
+const char* const kRowFormat = "%-17s %-13s %-8s %-25s %-25s %7s %7s %7s  %-22s %-22s %7s\n";
+
+void printRow(const timing::ConfigTiming& c) {
+  const timing::PipelineTiming* side[2] = {nullptr, nullptr};
+  for (const auto& t : c.pipelines) {
+    if (t.pipeline == "matrix") side[0] = &t;
+    if (t.pipeline == "motor") side[1] = &t;
+  }
+  auto frame = [](const timing::PipelineTiming* t) {
+    return !t ? std::string("-") : !t->error.empty() ? "error" : cell(t->frame);
+  };
+  auto update = [](const timing::PipelineTiming* t) {
+    return !t || !t->error.empty() ? std::string("-") : cell(t->update, 1000.0);
+  };
+  const std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
+  std::printf(kRowFormat, c.scene.c_str(), c.config.c_str(), size.c_str(), frame(side[0]).c_str(),
+              frame(side[1]).c_str(), ratio(c.pairedFrameRatio).c_str(), ratio(c.frameRatio).c_str(),
+              ratio(c.pairedCpuRatio).c_str(), update(side[0]).c_str(), update(side[1]).c_str(),
+              ratio(c.updateRatio).c_str());
+  for (const auto& t : c.pipelines)
+    if (!t.error.empty()) std::printf("    %s: %s\n", t.pipeline.c_str(), t.error.c_str());
+  std::fflush(stdout);
+}
+
+// Child side: loads and times one scene (also at the tiny viewport when the scene draws enough
+// vertices to be vertex-bound there: timing::drawsVertexBoundAt), prints its rows
+// and writes them as a JSON array to `resultPath`. Exit 0, or 2 when anything failed.
+int timeOneScene(const std::string& name, const timing::Settings& normal, const timing::Settings& tiny,
+                 const std::string& resultPath) {
+  nlohmann::json rows = nlohmann::json::array();
+  int status = 0;
+  auto scene = loadScene(name);
+  if (!scene) {
+    std::fprintf(stderr, "motorbench time: error: %s\n", scene.error().c_str());
+    rows.push_back({{"scene", name}, {"error", scene.error()}});
+    status = 2;
+  } else {
+    std::vector<timing::Settings> configs = {normal};
+    if (timing::drawsVertexBoundAt(*scene, tiny.width, tiny.height)) configs.push_back(tiny);
+    for (const timing::Settings& cfg : configs) {
+      auto r = timing::timeScene(*scene, name, cfg);
+      if (!r) {
+        std::fprintf(stderr, "motorbench time: error: %s\n", r.error().c_str());
+        rows.push_back({{"scene", name}, {"config", cfg.config}, {"error", r.error()}});
+        status = 2;
+        continue;
+      }
+      printRow(*r);
+      for (const auto& t : r->pipelines) status = t.error.empty() ? status : 2;
+      rows.push_back(timing::toJson(*r));
+    }
+  }
+  std::ofstream out(resultPath);
+  if (!out || !(out << rows.dump() << "\n")) {
+    std::fprintf(stderr, "motorbench time: error: cannot write %s\n", resultPath.c_str());
+    return 2;
+  }
+  return status;
+}
+
+int runTime(const std::vector<std::string>& argv) {
+  auto fail = [](const std::string& m) {
+    std::fprintf(stderr, "motorbench time: error: %s\n", m.c_str());
+    return 2;
+  };
+  const Args args(argv);
+  if (!args.error().empty()) return fail(args.error());
+  if (auto u = args.unknown({"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker"});
+      !u.empty())
+    return fail("unknown option " + u[0]);
+
+  timing::Settings normal, tiny;
+  try {
+    const double frames = args.number("frames", 30), warmup = args.number("warmup", 5);
+    if (frames < 1 || frames > 100000 || frames != int(frames))
+      return fail("--frames " + args.get("frames", "") + ": expected a whole number >= 1");
+    if (warmup < 0 || warmup > 100000 || warmup != int(warmup))
+      return fail("--warmup " + args.get("warmup", "") + ": expected a whole number >= 0");
+    const double best = args.number("best-of", normal.bestOf);
+    if (best < 1 || best > 100 || best != int(best))
+      return fail("--best-of " + args.get("best-of", "") + ": expected a whole number in 1..100");
+    normal.frames = int(frames), normal.warmup = int(warmup), normal.bestOf = int(best);
+  } catch (const std::exception& e) {
+    return fail(e.what());
+  }
+  if (!parseSize(args.get("size", "512x512"), normal.width, normal.height))
+    return fail("--size " + args.get("size", "") + ": expected WxH in 1..16384, e.g. 512x512");
+  tiny = normal;
+  tiny.config = "vertex-bound";
+  if (!parseSize(args.get("tiny", "64x64"), tiny.width, tiny.height))
+    return fail("--tiny " + args.get("tiny", "") + ": expected WxH in 1..16384, e.g. 64x64");
+  // llvmpipe reads LP_NUM_THREADS when the context is created, which has not happened yet.
+  if (auto lp = args.get("lp-threads")) {
+    if (lp->empty() || lp->find_first_not_of("0123456789") != std::string::npos)
+      return fail("--lp-threads " + *lp + ": expected a whole number");
+    setenv("LP_NUM_THREADS", lp->c_str(), 1);
+  }
+
+  std::vector<std::string> names = args.positional();
+  if (names.empty()) names = builtinSceneNames();
+  if (auto file = args.get("worker")) {
+    if (names.size() != 1) return fail("--worker times exactly one scene");
+    return timeOneScene(names[0], normal, tiny, *file);
+  }
+
+  auto machine = timing::machineInfo();
+  if (!machine) return fail(machine.error());
+  std::printf("motorbench time: %d frames per pipeline after %d warm-up, pipelines interleaved "
+              "frame by frame (alternating order); frame = clear + render + glFinish (wall "
+              "clock, fastest of %d back-to-back renders); update = Pipeline::update (hierarchy, "
+              "animation, skin palette) timed apart, per call (fastest block, same count); median "
+              "[first-third quartile]\n",
+              normal.frames, normal.warmup, normal.bestOf);
+  std::printf("machine: %s, %u cores; GL_RENDERER %s; GL_VERSION %s; LP_NUM_THREADS %s; "
+              "GL timer queries: %s\n\n",
+              machine->cpuModel.c_str(), machine->cores, machine->glRenderer.c_str(),
+              machine->glVersion.c_str(), machine->lpNumThreads.c_str(),
+              machine->realGpu ? "yes (real GPU)" : "no (software renderer: wall clock only)");
+  std::printf(kRowFormat, "scene", "config", "size", "matrix frame ms", "motor frame ms",
+              "motor/", "of", "CPU", "matrix update us", "motor update us", "update");
+  std::printf(kRowFormat, "", "", "", "", "", "matrix", "medians", "time", "", "", "ratio");
+
+  nlohmann::json results = nlohmann::json::array();
+  int status = 0;
+  const std::string scratch = (std::filesystem::temp_directory_path() /
+                               ("motorbench-time-" + std::to_string(::getpid()) + ".json")).string();
+  for (const std::string& name : names) {
+    std::vector<std::string> child = {"time", name, "--worker", scratch};
+    for (const char* key : {"frames", "warmup", "best-of", "size", "tiny"})
+      if (auto v = args.get(key)) child.insert(child.end(), {std::string("--") + key, *v});
+    std::filesystem::remove(scratch);
+    std::fflush(stdout);  // the child prints its rows to the same stdout
+    const std::string how = report::runSelf(child, "", kWorkerTimeoutS);
+    std::ifstream in(scratch);
+    nlohmann::json rows = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    if (!rows.is_array()) {
+      const std::string why = how.empty() ? "the worker wrote no result" : "the worker ended: " + how;
+      std::fprintf(stderr, "motorbench time: error: %s: %s\n", name.c_str(), why.c_str());
+      results.push_back({{"scene", name}, {"error", why}});
+      status = 2;
+      continue;
+    }
+    if (!how.empty()) status = 2;
+    for (auto& r : rows) results.push_back(std::move(r));
+  }
+  std::filesystem::remove(scratch);
+  std::printf("\nmotor/matrix: median of the per-frame ratios (both pipelines render the same "
+              "frame back to back); of medians: ratio of the two medians; CPU time: the paired "
+              "ratio of process CPU time per frame (llvmpipe threads included); update ratio: "
+              "paired, per update call. < 1: motor faster.\n");
+
+  if (auto path = args.get("json")) {
+    const nlohmann::json j = {
+        {"tool", "motorbench time"},
+        {"machine", timing::toJson(*machine)},
+        {"settings",
+         {{"frames", normal.frames}, {"warmup", normal.warmup}, {"best_of", normal.bestOf},
+          {"size", {normal.width, normal.height}},
+          {"vertex_bound_size", {tiny.width, tiny.height}},
+          {"method", "pipelines interleaved frame by frame in alternating order; frame = clear + "
+                     "render + glFinish (steady_clock), fastest of best_of renders; also process "
+                     "CPU time; update = Pipeline::update per call"}}},
+        {"results", results}};
+    std::ofstream out(*path);
+    if (!out || !(out << j.dump(2) << "\n")) return fail("cannot write " + *path);
+  }
+  return status;
+}
+
+}  // namespace
+}  // namespace mb
+
+MB_COMMAND(time, "time",
+           "[SCENE...] [--frames N] [--warmup W] [--best-of K] [--size WxH] [--tiny WxH] "
+           "[--lp-threads N] [--json FILE]",
+           "frame time (glFinish wall clock) and CPU update time of every pipeline; motor/matrix "
+           "ratios from one interleaved run; scenes with >= 10 drawn vertices per tiny-viewport pixel "
+           "(the crowd) also at that viewport (vertex-bound)",
+           mb::runTime);

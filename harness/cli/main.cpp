@@ -1,0 +1,49 @@
+// motorbench: renders glTF scenes through interchangeable pipelines and measures them.
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "harness/cli/command.h"
+
+namespace mb {
+std::vector<Command>& commands() {
+  static std::vector<Command> list;
+  return list;
+}
+}  // namespace mb
+
+static void usage() {
+  std::printf("usage: motorbench <command> [options]\n\ncommands:\n");
+  auto cmds = mb::commands();
+  std::sort(cmds.begin(), cmds.end(),
+            [](const mb::Command& a, const mb::Command& b) { return std::strcmp(a.name, b.name) < 0; });
+  for (const auto& c : cmds) std::printf("  %-9s %s\n            %s\n", c.name, c.usage, c.summary);
+}
+
+int main(int argc, char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
+      !std::strcmp(argv[1], "help")) {
+    usage();
+    return argc < 2 ? 2 : 0;
+  }
+  for (const auto& c : mb::commands()) {
+    if (std::strcmp(argv[1], c.name) != 0) continue;
+    std::vector<std::string> args(argv + 2, argv + argc);
+    // No command takes --help as a value, so it always asks for this command's usage.
+    if (std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; })) {
+      std::printf("usage: motorbench %s %s\n  %s\n", c.name, c.usage, c.summary);
+      return 0;
+    }
+    try {
+      return c.run(args);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "motorbench %s: error: %s\n", c.name, e.what());
+      return 2;
+    }
+  }
+  std::fprintf(stderr, "motorbench: unknown command '%s' (try --help)\n", argv[1]);
+  return 2;
+}

@@ -1,0 +1,100 @@
+#include "harness/document/report_document.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace mb::report {
+namespace {
+
+using json = nlohmann::json;
+
+// A number at `path` inside `j` (a sequence of keys), or NaN.
+double number(const json& j, std::initializer_list<const char*> path) {
+  const json* at = &j;
+  for (const char* k : path) {
+    if (!at->is_object() || !at->contains(k)) return std::numeric_limits<double>::quiet_NaN();
+    at = &(*at)[k];
+  }
+  return at->is_number() ? at->get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
+
+void push(std::vector<double>& v, double x) {
+  if (x == x) v.push_back(x);
+}
+
+json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
+  std::vector<double> bpv, bpvAll, fpv, fpt, fpj, conv;
+  for (const json& s : scenes) {
+    if (!s.contains("pipelines") || !s["pipelines"].contains(p)) continue;
+    const json& pj = s["pipelines"][p];
+    push(bpv, number(pj, {"memory", "bytesPerVertex"}));
+    push(bpvAll, number(pj, {"memory", "bytesPerVertexAll"}));
+    push(fpv, number(pj, {"memory", "floatsPerVertex"}));
+    const double t = number(pj, {"memory", "floatsPerTransform"});
+    if (t > 0) fpt.push_back(t);
+    const double jn = number(pj, {"memory", "floatsPerJoint"});
+    if (jn > 0) fpj.push_back(jn);
+    push(conv, number(pj, {"conversionMs", "median"}));
+  }
+  return {{"bytesPerVertex", spread(bpv)}, {"bytesPerVertexAll", spread(bpvAll)},
+          {"floatsPerVertex", spread(fpv)}, {"floatsPerTransform", spread(fpt)},
+          {"floatsPerJoint", spread(fpj)}, {"conversionMs", spread(conv)}};
+}
+
+// Image agreement of `p` with the baseline over every scene and time.
+json imageSummary(const std::vector<json>& scenes, const std::string& p) {
+  std::vector<double> psnr, over1, maxErr;
+  int identical = 0, compared = 0;
+  for (const json& s : scenes)
+    for (const json& f : s.value("frames", json::array())) {
+      if (!f.contains("metrics") || !f["metrics"].contains(p)) continue;
+      const json& m = f["metrics"][p];
+      ++compared;
+      if (m.value("identical", false)) ++identical;
+      else push(psnr, number(m, {"psnr"}));
+      push(over1, number(m, {"fractionOver1"}));
+      push(maxErr, number(m, {"maxError"}));
+    }
+  return {{"comparedFrames", compared}, {"identicalFrames", identical}, {"psnr", spread(psnr)},
+          {"fractionOver1", spread(over1)}, {"maxError", spread(maxErr)}};
+}
+
+}  // namespace
+
+json spread(std::vector<double> v) {
+  if (v.empty()) return {{"n", 0}};
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  const double median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  return {{"n", n}, {"min", v.front()}, {"median", median}, {"max", v.back()}};
+}
+
+json assembleReport(json machine, json settings, std::vector<json> scenes, json ops, json kernels) {
+  const std::vector<std::string> pipelines = settings["pipelines"].get<std::vector<std::string>>();
+  for (const json& s : scenes)
+    if (s.contains("gl") && (!machine.contains("gl") || machine["gl"].contains("error"))) machine["gl"] = s["gl"];
+  json summary = {{"scenes", scenes.size()}, {"ok", 0}, {"partial", 0}, {"failed", 0}};
+  for (const json& s : scenes) summary[s.value("status", "failed")] = summary.value(s.value("status", "failed"), 0) + 1;
+  for (const std::string& p : pipelines) summary["pipelines"][p] = pipelineSummary(scenes, p);
+  for (size_t i = 1; i < pipelines.size(); ++i) summary["images"][pipelines[i]] = imageSummary(scenes, pipelines[i]);
+  std::vector<double> frameRatio;
+  for (const json& s : scenes) push(frameRatio, number(s, {"timing", "ratio_motor_matrix"}));
+  summary["frameTimeRatio"] = spread(frameRatio);
+  json kr = json::object();
+  for (const json& p : kernels.value("pairs", json::array()))
+    if (p["ratio_motor_matrix"].is_number()) kr[p.value("pair", "")] = p["ratio_motor_matrix"];
+  summary["kernelRatios"] = kr;
+  return {{"schema", kReportSchema},
+          {"tool", "motorbench report"},
+          {"machine", machine},
+          {"settings", settings},
+          {"summary", summary},
+          {"scenes", scenes},
+          {"opsPerVertex", ops},
+          {"kernels", kernels},
+          {"plots", {{"available", false}, {"error", "not made yet"}, {"files", json::array()}}},
+          {"files", {{"json", "report.json"}, {"markdown", "report.md"}, {"html", "report.html"},
+                     {"bench", kernels.value("file", json())}}}};
+}
+
+}  // namespace mb::report

@@ -1,0 +1,97 @@
+#include "harness/document/report_format.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace mb::report {
+namespace {
+using json = nlohmann::json;
+const json kNull = nullptr;
+}  // namespace
+
+std::string fmt(double v, int digits) {
+  if (!std::isfinite(v)) return "-";
+  char buf[64];
+  // %g switches to exponents for large values; keep plain integers plain.
+  if (std::fabs(v) >= 1e5 && std::fabs(v) < 1e15 && v == std::floor(v)) std::snprintf(buf, sizeof buf, "%.0f", v);
+  else std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+std::string fmt(const json& v, int digits) { return v.is_number() ? fmt(v.get<double>(), digits) : "-"; }
+
+std::string fixed(const json& v, int decimals) {
+  if (!v.is_number() || !std::isfinite(v.get<double>())) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v.get<double>());
+  return buf;
+}
+
+std::string ratio(const json& v) { return v.is_number() ? fixed(v, 2) + "x" : "-"; }
+
+std::string psnrText(const json& m) {
+  if (!m.is_object()) return "-";
+  if (m.value("identical", false)) return "identical";
+  return fixed(m.value("psnr", json()), 1) + " dB";
+}
+
+std::string percent(const json& f, int decimals) {
+  if (!f.is_number()) return "-";
+  return fixed(100.0 * f.get<double>(), decimals) + " %";
+}
+
+std::string spreadText(const json& s, int digits) {
+  if (!s.is_object() || s.value("n", 0) == 0) return "-";
+  const std::string med = fmt(s["median"], digits), lo = fmt(s["min"], digits), hi = fmt(s["max"], digits);
+  return lo == hi ? med : med + " (" + lo + ".." + hi + ")";
+}
+
+std::string opsText(const json& o, int decimals) {
+  if (!o.is_object()) return "-";
+  std::string s = fixed(o.value("mul", json()), decimals) + " mul / " + fixed(o.value("add", json()), decimals) + " add";
+  for (const char* k : {"div", "sqrt", "other"}) {
+    const double v = o.value(k, 0.0);
+    if (v > 0) s += " + " + fixed(json(v), decimals) + " " + k;
+  }
+  return s;
+}
+
+const json& at(const json& j, std::initializer_list<const char*> path) {
+  const json* p = &j;
+  for (const char* k : path) {
+    if (!p->is_object() || !p->contains(k)) return kNull;
+    p = &(*p)[k];
+  }
+  return *p;
+}
+
+std::string dumpJson(const json& j, int indent) {
+  return j.dump(indent, ' ', false, json::error_handler_t::replace);
+}
+
+std::string html(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string cell(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '|') out += "\\|";
+    else if (c == '\n') out += ' ';
+    else out += c;
+  }
+  return out;
+}
+
+}  // namespace mb::report

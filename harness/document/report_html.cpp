@@ -1,0 +1,79 @@
+// HTML renderer of the report document model: one self-contained page (inline CSS, no
+// scripts), images by relative path so the folder can be opened from disk or a repository.
+#include <algorithm>
+
+#include "harness/document/report_format.h"
+#include "harness/document/report_model.h"
+
+namespace mb::report {
+namespace {
+
+const char* kStyle = R"(
+body { font: 14px/1.45 system-ui, sans-serif; margin: 1.5em auto; max-width: 1300px; color: #222; padding: 0 1em; }
+h1 { font-size: 1.7em; } h2 { border-bottom: 1px solid #ccc; margin-top: 1.6em; } h3 { margin-top: 1.3em; }
+table { border-collapse: collapse; margin: 0.6em 0 1.2em; font-size: 13px; }
+th, td { border: 1px solid #ccc; padding: 3px 7px; text-align: left; vertical-align: top; }
+th { background: #f0f0f3; } tr:nth-child(even) td { background: #fafafa; }
+td img { display: block; max-width: 256px; height: auto; image-rendering: pixelated; }
+figure { margin: 1em 0; } figure img { max-width: 100%; border: 1px solid #ddd; }
+figcaption { font-size: 12px; color: #555; max-width: 900px; }
+pre { background: #f5f5f5; padding: 0.6em; overflow-x: auto; font-size: 12px; }
+.small { font-size: 12px; color: #555; }
+)";
+
+std::string cellHtml(const Cell& c) {
+  std::string inner;
+  if (!c.image.empty()) inner = "<img src=\"" + html(c.image) + "\" alt=\"" + html(c.text) + "\">";
+  const std::string text = html(c.text);
+  if (!c.link.empty()) inner = "<a href=\"" + html(c.link) + "\">" + (inner.empty() ? text : inner) + "</a>";
+  else if (inner.empty()) inner = text;
+  if (!c.image.empty() && !c.text.empty()) inner += "<span class=\"small\">" + text + "</span>";
+  return inner;
+}
+
+}  // namespace
+
+std::string toHtml(const Document& doc) {
+  std::string out = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
+                    html(doc.title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" +
+                    html(doc.title) + "</h1>\n";
+  for (const Block& b : doc.blocks) {
+    switch (b.kind) {
+      case Block::Kind::Heading: {
+        const std::string h = "h" + std::to_string(std::max(1, std::min(b.level, 6)));
+        out += "<" + h + (b.anchor.empty() ? "" : " id=\"" + html(b.anchor) + "\"") + ">" + html(b.text) +
+               "</" + h + ">\n";
+        break;
+      }
+      case Block::Kind::Paragraph:
+        out += "<p>" + html(b.text) + "</p>\n";
+        break;
+      case Block::Kind::Code:
+        out += "<pre>" + html(b.text) + "</pre>\n";
+        break;
+      case Block::Kind::Bullets:
+        out += "<ul>\n";
+        for (const std::string& i : b.items) out += "<li>" + html(i) + "</li>\n";
+        out += "</ul>\n";
+        break;
+      case Block::Kind::Table:
+        out += "<table>\n<tr>";
+        for (const std::string& h : b.header) out += "<th>" + html(h) + "</th>";
+        out += "</tr>\n";
+        for (const auto& row : b.rows) {
+          out += "<tr>";
+          for (size_t i = 0; i < b.header.size(); ++i) out += "<td>" + (i < row.size() ? cellHtml(row[i]) : "") + "</td>";
+          out += "</tr>\n";
+        }
+        out += "</table>\n";
+        break;
+      case Block::Kind::Figure:
+        out += "<figure><img src=\"" + html(b.image) + "\" alt=\"" + html(b.title) + "\"><figcaption><b>" +
+               html(b.title) + "</b>. " + html(b.text) + "</figcaption></figure>\n";
+        break;
+    }
+  }
+  return out + "</body>\n</html>\n";
+}
+
+}  // namespace mb::report

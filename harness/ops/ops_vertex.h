@@ -1,0 +1,255 @@
+// harness/ops/ops_vertex.h: ops per vertex of each pipeline, measured two ways (issue 5):
+//  (a) counted: the per-vertex GLSL functions (shaders/matrix_transform.glsl,
+//      shaders/motor_transform.glsl) executed once on mb::Counted through the shim;
+//  (b) SPIR-V: the same function called from a small probe vertex shader, and every real
+//      vertex-shader variant (matrix.vs, motor.vs with their #defines), compiled and counted by
+//      harness/ops/spirv_count.h.
+// The counted kernels are header-only (tests/pga/test_pga_vertex_ops.cpp counts them without GL or
+// tools); the SPIR-V side and the report live in ops_vertex.cpp.
+#pragma once
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/bench/bench_shaders.h"
+#include "harness/ops/spirv_count.h"
+#include "shaders/shim/counted.h"
+#include "shaders/shim/pga.h"
+
+namespace mb::opsv {
+
+// One per-vertex kernel: a GLSL function of a pipeline, run once on mb::Counted, and a probe
+// vertex shader that calls the same function with per-vertex inputs and per-draw uniforms.
+struct VertexKernel {
+  std::string pipeline;  // "matrix", "motor", "matrix-affine" (extra baseline)
+  std::string kernel;    // "rigid vertex with frame", "skinned vertex (4 joints)", ...
+  std::string function;  // the GLSL function measured
+  std::function<void()> run;  // executes the function once on mb::Counted
+  std::string probe;     // GLSL body of the probe's main() (declarations in probeDecls)
+  std::string probeDecls;
+  std::string note;      // known reason a count differs, "" when none
+};
+
+namespace detail {
+
+using MC = MatrixShader<Counted>;
+using PC = MotorShader<Counted>;
+using PD = Pga<double>;
+
+// Generic inputs: no zero coefficients (no product is skipped by a branch), unit motors built
+// in double, matrices with arbitrary entries (counting does not depend on the values).
+struct VertexInputs {
+  MC::mat4 model, normal, viewProj, j[4], n[4];
+  MC::mat4x3 affine;
+  MC::mat3 affineNormal;
+  MC::vec3 position, normalV;
+  MC::vec4 tangent, weights, world;
+  PC::motor toWorld, camera, joints[4];
+  PC::vec4 rotor;
+  VertexInputs() {
+    auto mat = [](double seed) {
+      MC::mat4 m;
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) m[c][r] = Counted(seed + 0.37 * c - 0.21 * r + 0.05 * c * r);
+      return m;
+    };
+    model = mat(0.9), normal = mat(-0.4), viewProj = mat(1.3);
+    for (int i = 0; i < 4; ++i) j[i] = mat(0.1 * i + 0.2), n[i] = mat(-0.1 * i + 0.5);
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 3; ++r) affine[c][r] = Counted(0.3 + 0.4 * c - 0.25 * r);
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) affineNormal[c][r] = Counted(-0.6 + 0.3 * c + 0.2 * r);
+    position = MC::vec3(0.5, -1.25, 2.0), normalV = MC::vec3(0.36, 0.48, 0.8);
+    tangent = MC::vec4(0.8, -0.6, 0.1, -1.0), weights = MC::vec4(0.4, 0.3, 0.2, 0.1);
+    world = MC::vec4(1.5, 0.25, -3.0, 1.0);
+    PD& P = pga<double>;
+    auto motor = [&](double w, double x, double y, double z, double tx, double ty, double tz) {
+      PD::motor r = P.normalize_m(PD::motor(PD::vec4(w, -x, -y, -z), PD::vec4(0.0)));
+      PD::motor t(PD::vec4(1.0, 0.0, 0.0, 0.0), PD::vec4(-0.5 * tx, -0.5 * ty, -0.5 * tz, 0.0));
+      return PC::motor(P.gp_tr(t, r));
+    };
+    toWorld = motor(0.8, 0.3, -0.4, 0.2, 1.5, -2.0, 0.75);
+    camera = motor(0.1, -0.7, 0.5, 0.4, -0.25, 3.0, 1.25);
+    // Joint 2 points away from joint 0 (negative dot): the blend's shortest-arc flip is taken.
+    joints[0] = toWorld, joints[1] = motor(0.7, 0.2, 0.5, -0.1, 0.1, 0.2, 0.3);
+    joints[2] = motor(-0.6, 0.4, 0.3, 0.2, -0.5, 0.4, 0.0);
+    joints[3] = motor(0.9, -0.1, 0.2, 0.3, 0.3, -0.2, 0.1);
+    rotor = PC::vec4(-0.5, 0.5, -0.5, 0.5);  // handedness -1
+  }
+};
+
+inline const VertexInputs& inputs() {
+  static const VertexInputs in;
+  return in;
+}
+
+inline const char* kMatrixAttribs =
+    "layout(location = 0) in vec3 a_position; layout(location = 1) in vec3 a_normal;\n"
+    "layout(location = 2) in vec4 a_tangent; layout(location = 7) in vec4 a_weights;\n"
+    "layout(location = 0) out vec4 o_0; layout(location = 1) out vec4 o_1;\n"
+    "layout(location = 2) out vec4 o_2;\n";
+inline const char* kMotorAttribs =
+    "layout(location = 0) in vec3 a_position; layout(location = 1) in vec4 a_tangentRotor;\n"
+    "layout(location = 7) in vec4 a_weights;\n"
+    "layout(location = 0) out vec4 o_0; layout(location = 1) out vec4 o_1;\n"
+    "layout(location = 2) out vec4 o_2;\n";
+inline const char* kStore3 = "o_0 = v[0]; o_1 = v[1]; o_2 = v[2];";
+
+}  // namespace detail
+
+// The per-vertex kernels of every pipeline, in report order.
+inline std::vector<VertexKernel> vertexKernels() {
+  using namespace detail;
+  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+  static MC M;
+  static PC P;
+  const std::string matrixIncl = "#include \"matrix_transform.glsl\"\n";
+  const std::string motorIncl = "#include \"pga.glsl\"\n#include \"motor_transform.glsl\"\n";
+  const std::string store = kStore3;
+  return {
+      {"matrix", "rigid vertex with frame", "matrixRigidVertex",
+       [&] { M.matrixRigidVertex(in.model, in.normal, in.position, in.normalV, in.tangent); },
+       "mat3x4 v = matrixRigidVertex(u_model, u_normal, a_position, a_normal, a_tangent);" + store,
+       matrixIncl + kMatrixAttribs + "uniform mat4 u_model; uniform mat4 u_normal;\n",
+       "paper 48/36: the three mat4 * vec4 (matrixTransformFrame); +1 mul: handedness of "
+       "mirrored nodes (w * sign(det))"},
+      {"matrix", "skinned vertex (4 joints)", "matrixSkinnedVertex",
+       [&] {
+         M.matrixSkinnedVertex(in.j[0], in.j[1], in.j[2], in.j[3], in.n[0], in.n[1], in.n[2],
+                               in.n[3], in.weights, in.model, in.normal, in.position,
+                               in.normalV, in.tangent);
+       },
+       "mat3x4 v = matrixSkinnedVertex(u_j[0], u_j[1], u_j[2], u_j[3], u_n[0], u_n[1], u_n[2], "
+       "u_n[3], a_weights, u_model, u_normal, a_position, a_normal, a_tangent);" + store,
+       matrixIncl + kMatrixAttribs +
+           "uniform mat4 u_model; uniform mat4 u_normal; uniform mat4 u_j[4]; uniform mat4 u_n[4];\n",
+       ""},
+      {"matrix", "joint blend (4 joints)", "matrixBlendJoints",
+       [&] { M.matrixBlendJoints(in.j[0], in.j[1], in.j[2], in.j[3], in.weights); },
+       "mat4 m = matrixBlendJoints(u_j[0], u_j[1], u_j[2], u_j[3], a_weights); o_0 = m[0]; "
+       "o_1 = m[1]; o_2 = m[2]; gl_Position = m[3];",
+       matrixIncl + kMatrixAttribs + "uniform mat4 u_j[4];\n",
+       "part of the skinned vertex, twice: joint matrices and joint normal matrices"},
+      {"matrix", "world to clip", "matrixWorldToClip",
+       [&] { M.matrixWorldToClip(in.viewProj, in.world); },
+       "gl_Position = matrixWorldToClip(u_viewProj, a_world);",
+       matrixIncl + "uniform mat4 u_viewProj; layout(location = 0) in vec4 a_world;\n", ""},
+      {"matrix-affine", "rigid vertex with frame", "matrixAffineVertex",
+       [&] {
+         M.matrixAffineVertex(in.affine, in.affineNormal, 1.0, in.position, in.normalV, in.tangent);
+       },
+       "mat3x4 v = matrixAffineVertex(u_model, u_normal, u_mirror, a_position, a_normal, "
+       "a_tangent);" + store,
+       matrixIncl + kMatrixAttribs +
+           "uniform mat4x3 u_model; uniform mat3 u_normal; uniform float u_mirror;\n",
+       ""},
+      {"motor", "rigid vertex with frame", "motorRigidVertex",
+       [&] { P.motorRigidVertex(in.toWorld, 1.25, in.position, in.rotor); },
+       "mat3x4 v = motorRigidVertex(motor(u_world[0], u_world[1]), u_scale, a_position, "
+       "a_tangentRotor);" + store,
+       motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform float u_scale;\n",
+       "paper 47/38 = sw_mp 21/18 + gp_rr 16/12 + extractNormalTangent 9/8 + 1 mul handedness; "
+       "here +3 mul: the uniform scale of the position, and the handedness is sign(1/x) "
+       "(1 div, 1 other: IEEE signed zero) instead of 1 mul"},
+      {"motor", "skinned vertex (4 joints)", "motorSkinnedVertex",
+       [&] {
+         P.motorSkinnedVertex(in.joints[0], in.joints[1], in.joints[2], in.joints[3],
+                              PC::vec4(0.4, 0.3, 0.2, 0.1), 1.25, in.position, in.rotor);
+       },
+       "mat3x4 v = motorSkinnedVertex(motor(u_j[0], u_j[1]), motor(u_j[2], u_j[3]), "
+       "motor(u_j[4], u_j[5]), motor(u_j[6], u_j[7]), a_weights, u_scale, a_position, "
+       "a_tangentRotor);" + store,
+       motorIncl + kMotorAttribs + "uniform vec4 u_j[8]; uniform float u_scale;\n", ""},
+      {"motor", "joint blend (4 joints)", "motorBlendJoints",
+       [&] {
+         P.motorBlendJoints(in.joints[0], in.joints[1], in.joints[2], in.joints[3],
+                            PC::vec4(0.4, 0.3, 0.2, 0.1));
+       },
+       "motor m = motorBlendJoints(motor(u_j[0], u_j[1]), motor(u_j[2], u_j[3]), "
+       "motor(u_j[4], u_j[5]), motor(u_j[6], u_j[7]), a_weights); o_0 = m[0]; o_1 = m[1];",
+       motorIncl + kMotorAttribs + "uniform vec4 u_j[8];\n",
+       "part of the skinned vertex: shortest-arc blend + normalize_m"},
+      {"motor", "world to clip", "motorWorldToClip",
+       [&] {
+         P.motorWorldToClip(in.camera, PC::vec3(1.5, 0.25, -3.0), 0.05, 100.0, 0.8, 1.5);
+       },
+       "gl_Position = motorWorldToClip(motor(u_camera[0], u_camera[1]), a_world, "
+       "u_projection.x, u_projection.y, u_projection.z, u_projection.w);",
+       motorIncl + "uniform vec4 u_camera[2]; uniform vec4 u_projection;\n"
+                   "layout(location = 0) in vec3 a_world;\n",
+       "project() recomputes its per-draw constants (cot of half the fov, depth terms: 6 mul, "
+       "3 add, 4 div, 1 sin, 1 cos) per vertex, in the shim and in the SPIR-V alike; per "
+       "vertex proper: sw_mp + 3 mul, 1 add"},
+      {"motor", "scaled vertex (fallback)", "motorScaledVertex",
+       [&] { P.motorScaledVertex(in.toWorld, PC::vec3(1.0, -2.0, 0.5), in.position, in.rotor); },
+       "mat3x4 v = motorScaledVertex(motor(u_world[0], u_world[1]), u_scale3, a_position, "
+       "a_tangentRotor);" + store,
+       motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n", ""},
+  };
+}
+
+// The counted ops of one kernel.
+inline OpCounts countVertexKernel(const VertexKernel& k) { return countOps(k.run); }
+
+// One real vertex-shader variant and the kernels whose counted sum it is compared with.
+struct ShaderVariant {
+  std::string pipeline;  // "matrix", "motor"
+  std::string file;      // relative to the shader folder
+  std::vector<std::pair<std::string, std::string>> defines;
+  std::string label;     // "rigid", "skinned", ...
+  std::vector<std::string> kernels;  // VertexKernel::function names the variant's main() calls
+  std::string note = "";             // what main() does besides those kernels, "" when nothing
+};
+
+inline std::vector<ShaderVariant> shaderVariants() {
+  const std::string matrixMain =
+      "main() divides the position by w and normalises normal and tangent for the varyings "
+      "(motor.vs leaves normalisation to forward.fs, which normalises both anyway)";
+  return {
+      {"matrix", "matrix.vs", {}, "rigid", {"matrixRigidVertex", "matrixWorldToClip"}, matrixMain},
+      {"matrix", "matrix.vs", {{"SKINNED", ""}}, "skinned", {"matrixSkinnedVertex", "matrixWorldToClip"},
+       matrixMain},
+      {"motor", "motor.vs", {}, "rigid", {"motorRigidVertex", "motorWorldToClip"}},
+      {"motor", "motor.vs", {{"MB_SKINNED", ""}}, "skinned", {"motorSkinnedVertex", "motorWorldToClip"}},
+      {"motor", "motor.vs", {{"MB_SCALE_FALLBACK", ""}}, "scaled fallback",
+       {"motorScaledVertex", "motorWorldToClip"}},
+      {"motor", "motor.vs", {{"MB_SKINNED", ""}, {"MB_SCALE_FALLBACK", ""}}, "skinned+scaled",
+       {"motorBlendJoints", "motorScaledVertex", "motorWorldToClip"}},
+  };
+}
+
+// ---- measurement and report (ops_vertex.cpp) ------------------------------------------------
+
+struct KernelRow {
+  VertexKernel kernel;
+  OpCounts counted;
+  // The probe after inlining only, after -O without instruction folding, after spirv-opt -O.
+  std::optional<spirv::Counts> inlined, noFold, optimised;
+  std::string error;  // why the SPIR-V side is missing
+  std::string why;    // "" when counted and optimised SPIR-V agree
+};
+
+struct VariantRow {
+  ShaderVariant variant;
+  OpCounts counted;                       // sum of the counted kernels it calls
+  std::optional<spirv::Counts> probes;    // sum of those kernels' optimised probes
+  std::optional<spirv::Counts> shader;    // the whole variant, spirv-opt -O
+  std::string error, why;
+};
+
+struct VertexOps {
+  std::vector<KernelRow> kernels;
+  std::vector<VariantRow> variants;
+  std::string toolsProblem;  // non-empty: no SPIR-V column
+};
+
+// Counts every kernel and, when the tools run, compiles every probe and variant.
+VertexOps measureVertexOps();
+std::string formatVertexOps(const VertexOps& ops);
+nlohmann::json toJson(const VertexOps& ops);
+
+}  // namespace mb::opsv

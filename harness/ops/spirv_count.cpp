@@ -1,0 +1,331 @@
+#include "harness/ops/spirv_count.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace mb::spirv {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Shape of a SPIR-V type: scalar (cols 0, comps 1), vector (comps N), matrix (cols C of comps R).
+struct Shape {
+  bool isFloat = false, isInt = false;
+  int comps = 1, cols = 0;
+  int scalars() const { return cols ? cols * comps : comps; }
+};
+
+struct Parser {
+  std::map<std::string, Shape> types;        // type id -> shape
+  std::map<std::string, std::string> typeOf; // value id -> type id
+  std::string glslSet;                       // id of the GLSL.std.450 import
+  Counts counts;
+  std::string error;
+
+  const Shape* shapeOfValue(const std::string& id) const {
+    auto t = typeOf.find(id);
+    if (t == typeOf.end()) return nullptr;
+    auto s = types.find(t->second);
+    return s == types.end() ? nullptr : &s->second;
+  }
+  const Shape* shapeOfType(const std::string& id) const {
+    auto s = types.find(id);
+    return s == types.end() ? nullptr : &s->second;
+  }
+  void fail(const std::string& line, const std::string& why) {
+    if (error.empty()) error = why + " in: " + line;
+  }
+
+  void declareType(const std::vector<std::string>& t) {
+    const std::string& op = t[2];
+    Shape s;
+    if (op == "OpTypeFloat") s.isFloat = true;
+    else if (op == "OpTypeInt") s.isInt = true;
+    else if (op == "OpTypeVector" || op == "OpTypeMatrix") {
+      const Shape* e = t.size() > 4 ? shapeOfType(t[3]) : nullptr;
+      if (!e) return;
+      s = *e;
+      if (op == "OpTypeVector") s.comps = std::atoi(t[4].c_str());
+      else s.cols = std::atoi(t[4].c_str());
+    } else {
+      return;  // pointers, structs, arrays, functions: never operands of arithmetic we count
+    }
+    types[t[0]] = s;
+  }
+
+  // One instruction inside a function body: `%r = OpX %type operands...` or `OpX operands`.
+  void count(const std::vector<std::string>& t, const std::string& line) {
+    if (t.size() < 4 || t[1] != "=") return;
+    const std::string& op = t[2];
+    const Shape* res = shapeOfType(t[3]);
+    const int n = res ? res->scalars() : 1;
+    Counts& c = counts;
+    auto hit = [&](const std::string& key) { ++c.histogram[key]; };
+    auto operand = [&](size_t i) -> const Shape* {
+      const Shape* s = i < t.size() ? shapeOfValue(t[i]) : nullptr;
+      if (!s) fail(line, "unknown operand type");
+      return s;
+    };
+    if (res && res->isInt) {
+      static const char* kIntOps[] = {"OpIAdd", "OpISub", "OpIMul", "OpSDiv", "OpUDiv",
+                                      "OpSMod", "OpUMod", "OpSRem", "OpShiftLeftLogical",
+                                      "OpShiftRightLogical", "OpShiftRightArithmetic",
+                                      "OpBitwiseAnd", "OpBitwiseOr", "OpBitwiseXor"};
+      for (const char* k : kIntOps)
+        if (op == k) { c.intOps += uint64_t(n); hit(op); }
+      return;
+    }
+    if (op == "OpFAdd" || op == "OpFSub") { c.add += uint64_t(n); hit(op); }
+    else if (op == "OpFMul" || op == "OpVectorTimesScalar" || op == "OpMatrixTimesScalar" ||
+             op == "OpOuterProduct") { c.mul += uint64_t(n); hit(op); }
+    else if (op == "OpFDiv") { c.div += uint64_t(n); hit(op); }
+    else if (op == "OpFRem" || op == "OpFMod") { c.other += uint64_t(n); hit(op); }
+    else if (op == "OpDot") {
+      if (const Shape* a = operand(4)) { c.mul += uint64_t(a->comps); c.add += uint64_t(a->comps - 1); }
+      hit(op);
+    } else if (op == "OpMatrixTimesVector") {
+      if (const Shape* m = operand(4)) {
+        c.mul += uint64_t(m->cols * m->comps);
+        c.add += uint64_t((m->cols - 1) * m->comps);
+      }
+      hit(op);
+    } else if (op == "OpVectorTimesMatrix") {
+      if (const Shape* m = operand(5)) {
+        c.mul += uint64_t(m->cols * m->comps);
+        c.add += uint64_t(m->cols * (m->comps - 1));
+      }
+      hit(op);
+    } else if (op == "OpMatrixTimesMatrix") {
+      const Shape* a = operand(4);
+      const Shape* b = operand(5);
+      if (a && b) {
+        c.mul += uint64_t(b->cols * a->cols * a->comps);
+        c.add += uint64_t(b->cols * (a->cols - 1) * a->comps);
+      }
+      hit(op);
+    } else if (op == "OpExtInst" && t.size() > 5 && t[4] == glslSet) {
+      countGlsl(t, line, n);
+    }
+  }
+
+  void countGlsl(const std::vector<std::string>& t, const std::string& line, int n) {
+    Counts& c = counts;
+    const std::string& f = t[5];
+    const Shape* a = t.size() > 6 ? shapeOfValue(t[6]) : nullptr;
+    if (!a) return fail(line, "unknown operand type");
+    const uint64_t k = uint64_t(a->comps);
+    ++c.histogram[f];
+    if (f == "Fma") { c.mul += uint64_t(n); c.add += uint64_t(n); }
+    else if (f == "Sqrt") c.sqrt += uint64_t(n);
+    else if (f == "Normalize") { c.mul += 2 * k; c.add += k - 1; c.other += 1; }
+    else if (f == "Length") { c.mul += k; c.add += k - 1; c.sqrt += 1; }
+    else if (f == "Distance") { c.mul += k; c.add += 2 * k - 1; c.sqrt += 1; }
+    else if (f == "Cross") { c.mul += 6; c.add += 3; }
+    else if (f == "FMix") { c.mul += uint64_t(n); c.add += 2 * uint64_t(n); }
+    else if (f == "Reflect") { c.mul += 2 * k + 1; c.add += 2 * k - 1; }
+    else if (f == "FClamp") c.other += 2 * uint64_t(n);
+    else if (f == "Fract") { c.add += uint64_t(n); c.other += uint64_t(n); }
+    else if (f == "Step") { /* a comparison and a select, free as in the shim */ }
+    else {
+      static const char* kOther[] = {"InverseSqrt", "Sin", "Cos", "Tan", "Asin", "Acos",
+                                     "Atan", "Atan2", "Exp", "Log", "Exp2", "Log2", "Pow",
+                                     "FAbs", "FSign", "Floor", "Ceil", "Trunc", "Round",
+                                     "RoundEven", "FMin", "FMax", "NMin", "NMax", "SmoothStep"};
+      bool known = false;
+      for (const char* o : kOther) known = known || f == o;
+      if (!known) ++c.unknownExtInsts[f];
+      c.other += uint64_t(n);
+    }
+  }
+};
+
+std::vector<std::string> tokens(const std::string& line) {
+  std::vector<std::string> t;
+  std::istringstream in(line);
+  for (std::string w; in >> w;) t.push_back(w);
+  return t;
+}
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return q + "'";
+}
+
+std::string readFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Runs `cmd` with stdout+stderr into `log`; returns the exit status (-1: did not run).
+int run(const std::string& cmd, const fs::path& log) {
+  int st = std::system((cmd + " > " + quote(log.string()) + " 2>&1").c_str());
+  if (st == -1 || !WIFEXITED(st)) return -1;
+  return WEXITSTATUS(st);
+}
+
+bool runs(const std::string& tool, const std::string& versionFlag) {
+  return std::system((quote(tool) + " " + versionFlag + " > /dev/null 2>&1").c_str()) == 0;
+}
+
+// A private temporary folder, removed when the object goes away.
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "motorbench-spirv-XXXXXX").string();
+    if (mkdtemp(tmpl.data())) path = tmpl;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    if (!path.empty()) fs::remove_all(path, ec);
+  }
+};
+
+// spirv-opt -O (SPIRV-Tools 2023) as listed by --print-all, without simplify-instructions.
+const char* kNoFoldPasses =
+    "--wrap-opkill --eliminate-dead-branches --merge-return --inline-entry-points-exhaustive "
+    "--eliminate-dead-functions --eliminate-dead-code-aggressive --private-to-local "
+    "--eliminate-local-single-block --eliminate-local-single-store "
+    "--eliminate-dead-code-aggressive --scalar-replacement=100 --convert-local-access-chains "
+    "--eliminate-local-single-block --eliminate-local-single-store "
+    "--eliminate-dead-code-aggressive --ssa-rewrite --eliminate-dead-code-aggressive --ccp "
+    "--eliminate-dead-code-aggressive --loop-unroll --eliminate-dead-branches "
+    "--redundancy-elimination --combine-access-chains --scalar-replacement=100 "
+    "--convert-local-access-chains --eliminate-local-single-block --eliminate-local-single-store "
+    "--eliminate-dead-code-aggressive --ssa-rewrite --eliminate-dead-code-aggressive --vector-dce "
+    "--eliminate-dead-inserts --eliminate-dead-branches --if-conversion --copy-propagate-arrays "
+    "--reduce-load-size --eliminate-dead-code-aggressive --merge-blocks --redundancy-elimination "
+    "--eliminate-dead-branches --merge-blocks";
+
+std::string passesFor(Optimise opt) {
+  switch (opt) {
+    case Optimise::Full: return "-O";
+    case Optimise::NoFold: return kNoFoldPasses;
+    // Inlining alone leaves the callees in the module: drop them, or they would count twice.
+    case Optimise::InlineOnly: break;
+  }
+  return "--inline-entry-points-exhaustive --eliminate-dead-functions";
+}
+
+}  // namespace
+
+Counts& Counts::operator+=(const Counts& o) {
+  mul += o.mul, add += o.add, div += o.div, sqrt += o.sqrt, other += o.other, intOps += o.intOps;
+  for (const auto& [k, v] : o.histogram) histogram[k] += v;
+  for (const auto& [k, v] : o.unknownExtInsts) unknownExtInsts[k] += v;
+  return *this;
+}
+
+std::string shortText(const Counts& c) {
+  return std::to_string(c.mul) + "/" + std::to_string(c.add) + "/" + std::to_string(c.div) + "/" +
+         std::to_string(c.sqrt) + "/" + std::to_string(c.other);
+}
+
+std::string histogramDiff(const Counts& a, const Counts& b) {
+  std::map<std::string, long long> d;
+  for (const auto& [k, v] : b.histogram) d[k] += (long long)v;
+  for (const auto& [k, v] : a.histogram) d[k] -= (long long)v;
+  std::string out;
+  for (const auto& [k, v] : d) {
+    if (!v) continue;
+    if (!out.empty()) out += ", ";
+    out += (v > 0 ? "+" : "") + std::to_string(v) + " " + k;
+  }
+  return out;
+}
+
+Result<Counts> countDisassembly(const std::string& text) {
+  Parser p;
+  bool inFunction = false;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> t = tokens(line);
+    if (t.empty() || t[0][0] == ';') continue;
+    if (t.size() >= 3 && t[1] == "=" && t[2] == "OpExtInstImport") {
+      if (line.find("\"GLSL.std.450\"") != std::string::npos) p.glslSet = t[0];
+      continue;
+    }
+    if (t.size() >= 3 && t[1] == "=" && t[2].rfind("OpType", 0) == 0) {
+      p.declareType(t);
+      continue;
+    }
+    const std::string& op = t.size() >= 3 && t[1] == "=" ? t[2] : t[0];
+    if (op == "OpFunction") inFunction = true;
+    if (op == "OpFunctionEnd") inFunction = false;
+    // Every value (constants and globals too) has its result type as first operand.
+    if (t.size() >= 4 && t[1] == "=") p.typeOf[t[0]] = t[3];
+    if (inFunction) p.count(t, line);
+  }
+  if (!p.error.empty()) return Result<Counts>::fail("SPIR-V count: " + p.error);
+  return p.counts;
+}
+
+Tools findTools() {
+  Tools t;
+#ifdef MB_GLSLANG_VALIDATOR
+  t.glslang = MB_GLSLANG_VALIDATOR;
+#endif
+#ifdef MB_SPIRV_OPT
+  t.spirvOpt = MB_SPIRV_OPT;
+#endif
+  // CMake's find_program leaves "<VAR>-NOTFOUND" when a tool is missing.
+  if (t.glslang.empty() || t.glslang.find("NOTFOUND") != std::string::npos) t.glslang = "glslangValidator";
+  if (t.spirvOpt.empty() || t.spirvOpt.find("NOTFOUND") != std::string::npos) t.spirvOpt = "spirv-opt";
+  fs::path dis = fs::path(t.spirvOpt).parent_path() / "spirv-dis";
+  t.spirvDis = fs::path(t.spirvOpt).has_parent_path() && fs::exists(dis) ? dis.string() : "spirv-dis";
+  return t;
+}
+
+std::string toolsProblem(const Tools& tools) {
+  if (!runs(tools.glslang, "--version"))
+    return tools.glslang + " does not run (install glslang-tools)";
+  if (!runs(tools.spirvOpt, "--version")) return tools.spirvOpt + " does not run (install spirv-tools)";
+  if (!runs(tools.spirvDis, "--version")) return tools.spirvDis + " does not run (install spirv-tools)";
+  return "";
+}
+
+Result<std::string> compileToDisassembly(const std::string& source, const std::string& stage,
+                                         Optimise opt, const std::string& name,
+                                         const Tools& tools) {
+  using R = Result<std::string>;
+  TempDir tmp;
+  if (tmp.path.empty()) return R::fail(name + ": cannot create a temporary folder");
+  const fs::path src = tmp.path / ("shader." + stage), spv = tmp.path / "shader.spv",
+                 opt_spv = tmp.path / "opt.spv", dis = tmp.path / "opt.spvasm",
+                 log = tmp.path / "log.txt";
+  {
+    std::ofstream out(src, std::ios::binary);
+    out << source;
+    if (!out) return R::fail(name + ": cannot write " + src.string());
+  }
+  // -G: SPIR-V for OpenGL (plain uniforms allowed); --aml: locations for those uniforms.
+  if (run(quote(tools.glslang) + " -G --aml -S " + stage + " -o " + quote(spv.string()) + " " +
+              quote(src.string()), log) != 0)
+    return R::fail(name + ": glslangValidator failed:\n" + readFile(log));
+  if (run(quote(tools.spirvOpt) + " " + passesFor(opt) + " " + quote(spv.string()) + " -o " +
+              quote(opt_spv.string()), log) != 0)
+    return R::fail(name + ": spirv-opt failed:\n" + readFile(log));
+  if (run(quote(tools.spirvDis) + " --no-color -o " + quote(dis.string()) + " " +
+              quote(opt_spv.string()), log) != 0)
+    return R::fail(name + ": spirv-dis failed:\n" + readFile(log));
+  return readFile(dis);
+}
+
+Result<Counts> countSource(const std::string& source, const std::string& stage, Optimise opt,
+                           const std::string& name, const Tools& tools) {
+  auto dis = compileToDisassembly(source, stage, opt, name, tools);
+  if (!dis) return Result<Counts>::fail(dis.error());
+  auto c = countDisassembly(*dis);
+  if (!c) return Result<Counts>::fail(name + ": " + c.error());
+  return c;
+}
+
+}  // namespace mb::spirv

@@ -1,0 +1,148 @@
+#include "harness/render/image_metrics.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace mb {
+namespace {
+
+// Wraps the bytes without copying (OpenImageIO reads them through the spec).
+OIIO::ImageBuf wrap(const RgbaImage& img) {
+  OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT8);
+  return OIIO::ImageBuf(spec, const_cast<uint8_t*>(img.rgba.data()));
+}
+
+std::string sizeText(const RgbaImage& img) {
+  return std::to_string(img.width) + "x" + std::to_string(img.height);
+}
+
+bool sameSize(const RgbaImage& a, const RgbaImage& b) {
+  return a.width == b.width && a.height == b.height && a.width > 0 && a.height > 0 &&
+         a.rgba.size() == size_t(a.width) * size_t(a.height) * 4 && b.rgba.size() == a.rgba.size();
+}
+
+// Pixels with some channel difference above `threshold` (OpenImageIO counts per pixel).
+OIIO::ImageBufAlgo::CompareResults compareAt(const RgbaImage& a, const RgbaImage& b,
+                                             double threshold) {
+  OIIO::ImageBuf ia = wrap(a), ib = wrap(b);
+  return OIIO::ImageBufAlgo::compare(ia, ib, float(threshold), float(threshold));
+}
+
+}  // namespace
+
+Status writeImage(const std::string& path, const RgbaImage& image) {
+  if (image.width <= 0 || image.height <= 0 ||
+      image.rgba.size() != size_t(image.width) * size_t(image.height) * 4)
+    return Status::fail(path + ": image data does not match " + sizeText(image) + " RGBA8");
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) return Status::fail(path + ": no image writer for this file type (" + OIIO::geterror() + ")");
+  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  if (!out->open(path, spec)) return Status::fail(path + ": cannot open for writing: " + out->geterror());
+  bool ok = out->write_image(OIIO::TypeDesc::UINT8, image.rgba.data());
+  ok = out->close() && ok;
+  if (!ok) return Status::fail(path + ": write failed: " + out->geterror());
+  return {};
+}
+
+Result<RgbaImage> readImage(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return Result<RgbaImage>::fail(path + ": cannot read image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  int channels = spec.nchannels;
+  std::vector<uint8_t> raw(size_t(spec.width) * size_t(spec.height) * size_t(channels));
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
+    return Result<RgbaImage>::fail(path + ": decode failed: " + in->geterror());
+  RgbaImage img{spec.width, spec.height, {}};
+  img.rgba.resize(size_t(spec.width) * size_t(spec.height) * 4);
+  for (size_t p = 0; p < size_t(spec.width) * size_t(spec.height); ++p)
+    for (int c = 0; c < 4; ++c) {
+      int from = channels >= 3 ? c : (c < 3 ? 0 : 1);  // grey(+alpha) -> RGBA
+      img.rgba[p * 4 + size_t(c)] =
+          from < channels ? raw[p * size_t(channels) + size_t(from)] : uint8_t(255);
+    }
+  return img;
+}
+
+Result<ImageMetrics> compareImages(const RgbaImage& a, const RgbaImage& b) {
+  if (!sameSize(a, b))
+    return Result<ImageMetrics>::fail("cannot compare images of different sizes (" +
+                                      sizeText(a) + " vs " + sizeText(b) + ")");
+  // Thresholds sit half a byte step above k/255 so a difference of exactly k steps is not
+  // "over k/255" despite float rounding.
+  auto over = [&](int k) { return compareAt(a, b, (k + 0.5) / 255.0); };
+  OIIO::ImageBufAlgo::CompareResults r1 = over(1);
+  ImageMetrics m;
+  m.width = a.width;
+  m.height = a.height;
+  const double pixels = double(a.width) * double(a.height);
+  m.meanError = r1.meanerror;
+  m.rmse = r1.rms_error;
+  m.psnr = m.rmse > 0 ? 20.0 * std::log10(1.0 / m.rmse) : std::numeric_limits<double>::infinity();
+  m.maxError = r1.maxerror;
+  m.maxX = r1.maxx;
+  m.maxY = r1.maxy;
+  m.maxChannel = r1.maxc;
+  m.fractionOver1 = double(r1.nfail) / pixels;
+  m.fractionOver2 = double(over(2).nfail) / pixels;
+  m.fractionOver4 = double(over(4).nfail) / pixels;
+  return m;
+}
+
+Verdict judge(const RgbaImage& a, const RgbaImage& b, const Thresholds& t) {
+  Verdict v;
+  if (!sameSize(a, b)) {
+    v.failed = true;
+    v.failPercent = 100.0;
+    v.reason = "image sizes differ (" + sizeText(a) + " vs " + sizeText(b) + ")";
+    return v;
+  }
+  auto r = compareAt(a, b, t.fail);
+  const double pixels = double(a.width) * double(a.height);
+  v.failPercent = 100.0 * double(r.nfail) / pixels;
+  char buf[200];
+  if (double(r.nfail) > t.failPercent / 100.0 * pixels) {
+    std::snprintf(buf, sizeof buf, "%.4f%% of pixels differ by more than %g (allowed %g%%)",
+                  v.failPercent, t.fail, t.failPercent);
+    v.failed = true;
+    v.reason = buf;
+  } else if (r.maxerror > t.hardFail) {
+    std::snprintf(buf, sizeof buf, "max error %g exceeds --hardfail %g", double(r.maxerror), t.hardFail);
+    v.failed = true;
+    v.reason = buf;
+  }
+  return v;
+}
+
+RgbaImage diffHeatmap(const RgbaImage& a, const RgbaImage& b) {
+  RgbaImage out{a.width, a.height, std::vector<uint8_t>(a.rgba.size(), 0)};
+  if (!sameSize(a, b)) return out;
+  // Colour ramp stops (t = 0..1): black, blue, red, yellow, white.
+  static const float ramp[5][3] = {{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}};
+  for (size_t p = 0; p < a.rgba.size(); p += 4) {
+    int d = 0;
+    for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(a.rgba[p + c]) - int(b.rgba[p + c])));
+    uint8_t* o = &out.rgba[p];
+    o[3] = 255;
+    if (d == 0) {
+      int grey = (int(a.rgba[p]) * 2 + int(a.rgba[p + 1]) * 5 + int(a.rgba[p + 2])) / 8;
+      o[0] = o[1] = o[2] = uint8_t(grey / 4);
+      continue;
+    }
+    // d = 1 step maps to 0.25 (dark blue), 64+ steps to 1 (white).
+    float t = 0.25f + 0.75f * std::min(1.0f, std::log2(float(d)) / 6.0f);
+    float x = t * 4.0f;
+    int i = std::min(3, int(x));
+    float f = x - float(i);
+    for (int c = 0; c < 3; ++c)
+      o[c] = uint8_t(std::lround(255.0f * (ramp[i][c] + f * (ramp[i + 1][c] - ramp[i][c]))));
+  }
+  return out;
+}
+
+}  // namespace mb

@@ -1,0 +1,96 @@
+#include "harness/report/report_bench.h"
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+#include "harness/process/report_workers.h"
+
+namespace mb::report {
+namespace {
+
+using json = nlohmann::json;
+
+bool isSide(const std::string& s) { return s == "matrix" || s == "motor" || s == "glm"; }
+
+json sideFigures(const json& b) {
+  json s = {{"items_per_second", b.value("items_per_second", 0.0)},
+            {"bytes_per_second", b.value("bytes_per_second", 0.0)},
+            {"real_time", b.value("real_time", 0.0)}, {"time_unit", b.value("time_unit", "ns")}};
+  if (b.contains("bw_fraction")) s["bw_fraction"] = b["bw_fraction"];
+  if (b.contains("probe_GBps")) s["probe_GBps"] = b["probe_GBps"];
+  return s;
+}
+
+}  // namespace
+
+Status runBench(const std::string& outJson, const std::string& logPath, double minTime,
+                const std::string& filter) {
+  char mt[64];
+  std::snprintf(mt, sizeof mt, "--benchmark_min_time=%g", minTime);
+  std::vector<std::string> args = {"bench", "--out", outJson, mt};
+  if (!filter.empty()) args.push_back("--benchmark_filter=" + filter);
+  // Both streams to the log: Google Benchmark prints its machine context on stderr.
+  const std::string how = runProgram(selfExecutable(), args, logPath, true, 1800);
+  if (!how.empty()) return Status::fail("motorbench bench " + how + " (log: " + logPath + ")");
+  return Status();
+}
+
+Result<json> readBenchJson(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return Result<json>::fail(path + ": cannot open");
+  json j = json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.contains("benchmarks") || !j["benchmarks"].is_array())
+    return Result<json>::fail(path + ": not a Google Benchmark JSON file (no \"benchmarks\" array)");
+  return j;
+}
+
+json kernelPairs(const json& bench) {
+  // name -> figures; a median aggregate replaces the individual repetitions.
+  std::map<std::string, json> figures;
+  std::map<std::string, bool> fromMedian;
+  std::vector<std::string> order;
+  for (const json& b : bench.value("benchmarks", json::array())) {
+    if (b.value("error_occurred", false)) continue;
+    const std::string runType = b.value("run_type", "iteration");
+    const std::string name = b.value("run_name", b.value("name", ""));
+    if (runType == "aggregate" && b.value("aggregate_name", "") != "median") continue;
+    if (runType != "aggregate" && fromMedian[name]) continue;
+    if (!figures.count(name)) order.push_back(name);
+    figures[name] = b;
+    fromMedian[name] = runType == "aggregate";
+  }
+  json pairs = json::array(), probe = json::array();
+  std::map<std::string, size_t> pairIndex;
+  for (const std::string& name : order) {
+    const json& b = figures[name];
+    const size_t slash = name.rfind('/');
+    const std::string side = slash == std::string::npos ? "" : name.substr(slash + 1);
+    if (!isSide(side)) {
+      probe.push_back({{"name", name}, {"bytes_per_second", b.value("bytes_per_second", 0.0)},
+                       {"items_per_second", b.value("items_per_second", 0.0)}});
+      continue;
+    }
+    const std::string prefix = name.substr(0, slash);
+    if (!pairIndex.count(prefix)) {
+      const size_t s2 = prefix.rfind('/');
+      const std::string tail = s2 == std::string::npos ? "" : prefix.substr(s2 + 1);
+      const bool sized = tail == "in_cache" || tail == "out_of_cache";
+      pairIndex[prefix] = pairs.size();
+      pairs.push_back({{"pair", prefix}, {"kernel", sized ? prefix.substr(0, s2) : prefix},
+                       {"size", sized ? json(tail) : json(nullptr)}});
+    }
+    pairs[pairIndex[prefix]][side] = sideFigures(b);
+  }
+  for (json& p : pairs) {
+    auto ips = [&](const char* side) {
+      return p.contains(side) ? p[side].value("items_per_second", 0.0) : 0.0;
+    };
+    const double m = ips("matrix"), mo = ips("motor"), g = ips("glm");
+    p["ratio_motor_matrix"] = m > 0 && mo > 0 ? json(mo / m) : json(nullptr);
+    p["ratio_glm_matrix"] = m > 0 && g > 0 ? json(g / m) : json(nullptr);
+  }
+  return {{"context", bench.value("context", json::object())}, {"pairs", pairs}, {"probe", probe}};
+}
+
+}  // namespace mb::report

@@ -1,0 +1,92 @@
+#include "harness/report/report_ops.h"
+
+#include "harness/ops/ops_vertex.h"
+
+namespace mb::report {
+namespace {
+
+using json = nlohmann::json;
+const char* const kColumns[] = {"mul", "add", "div", "sqrt", "other"};
+
+json ops5(const json& c) {
+  json o;
+  for (const char* k : kColumns) o[k] = c.is_object() ? c.value(k, 0.0) : 0.0;
+  return o;
+}
+
+// The variant of `pipeline` labelled `label`, or nullptr.
+const json* findVariant(const json& ops, const std::string& pipeline, const std::string& label) {
+  if (!ops.contains("variants") || !ops["variants"].is_array()) return nullptr;
+  for (const json& v : ops["variants"])
+    if (v.value("pipeline", "") == pipeline && v.value("label", "") == label) return &v;
+  return nullptr;
+}
+
+}  // namespace
+
+json measureOpsPerVertex() {
+  const opsv::VertexOps ops = opsv::measureVertexOps();
+  json full = opsv::toJson(ops);
+  // A flat, stable view of the variants (ops_vertex's own JSON may grow other fields).
+  json variants = json::array();
+  for (const opsv::VariantRow& v : ops.variants) {
+    json row = {{"pipeline", v.variant.pipeline}, {"label", v.variant.label},
+                {"shader", v.variant.file}, {"kernels", v.variant.kernels},
+                {"counted", {{"mul", v.counted.mul}, {"add", v.counted.add}, {"div", v.counted.div},
+                             {"sqrt", v.counted.sqrt}, {"other", v.counted.other}}},
+                {"spirv", nullptr}, {"difference", v.error.empty() ? v.why : v.error}};
+    if (v.shader)
+      row["spirv"] = {{"mul", v.shader->mul}, {"add", v.shader->add}, {"div", v.shader->div},
+                      {"sqrt", v.shader->sqrt}, {"other", v.shader->other}, {"int", v.shader->intOps}};
+    variants.push_back(row);
+  }
+  json kernels = json::array();
+  for (const opsv::KernelRow& k : ops.kernels) {
+    json row = {{"pipeline", k.kernel.pipeline}, {"kernel", k.kernel.kernel},
+                {"function", k.kernel.function},
+                {"counted", {{"mul", k.counted.mul}, {"add", k.counted.add}, {"div", k.counted.div},
+                             {"sqrt", k.counted.sqrt}, {"other", k.counted.other},
+                             {"other_calls", k.counted.otherCalls()}}},
+                {"spirv", nullptr}, {"note", k.kernel.note}, {"difference", k.error.empty() ? k.why : k.error}};
+    if (k.optimised)
+      row["spirv"] = {{"mul", k.optimised->mul}, {"add", k.optimised->add}, {"div", k.optimised->div},
+                      {"sqrt", k.optimised->sqrt}, {"other", k.optimised->other}};
+    kernels.push_back(row);
+  }
+  return {{"kernels", kernels}, {"variants", variants}, {"toolsProblem", ops.toolsProblem},
+          {"detail", full}};
+}
+
+json sceneOpsPerVertex(const json& ops, const json& mix) {
+  if (!mix.is_object()) return nullptr;
+  const double skinned = mix.value("skinned", 0.0), rigidAll = mix.value("rigid", 0.0),
+               scaled = mix.value("scaledFallback", 0.0), total = skinned + rigidAll;
+  if (total <= 0) return nullptr;
+  json out = json::object();
+  for (const std::string pipeline : {"matrix", "motor", "matrix-affine"}) {
+    const json* rigid = findVariant(ops, pipeline, "rigid");
+    const json* skin = findVariant(ops, pipeline, "skinned");
+    const json* fb = findVariant(ops, pipeline, "scaled fallback");
+    if (!rigid || (skinned > 0 && !skin)) continue;
+    json row;
+    for (const char* way : {"counted", "spirv"}) {
+      if ((*rigid)[way].is_null() || (skinned > 0 && (*skin)[way].is_null())) {
+        row[way] = nullptr;
+        continue;
+      }
+      const double nFallback = fb && !(*fb)[way].is_null() ? scaled : 0.0;
+      json mean;
+      for (const char* c : kColumns) {
+        double sum = ops5((*rigid)[way])[c].get<double>() * (rigidAll - nFallback);
+        if (nFallback > 0) sum += ops5((*fb)[way])[c].get<double>() * nFallback;
+        if (skinned > 0) sum += ops5((*skin)[way])[c].get<double>() * skinned;
+        mean[c] = sum / total;
+      }
+      row[way] = mean;
+    }
+    out[pipeline] = row;
+  }
+  return out;
+}
+
+}  // namespace mb::report

@@ -1,0 +1,21 @@
+// Ops per vertex for the report: the per-vertex kernels and whole vertex-shader variants of
+// harness/ops/ops_vertex.h (counted through the shim and, when glslang/spirv-tools run, counted in
+// the optimised SPIR-V), and per scene the average over the vertices it draws, weighted by the
+// variant each vertex goes through (report_scene.h, vertexMix).
+#pragma once
+#include <nlohmann/json.hpp>
+
+namespace mb::report {
+
+// {"kernels": [...], "variants": [...], "toolsProblem": ...} with, for every variant (one
+// pipeline's rigid / skinned / scaled-fallback vertex shader incl. world to clip), "counted"
+// and "spirv" mul/add/div/sqrt/other.
+nlohmann::json measureOpsPerVertex();
+
+// Per pipeline, the mean ops of one drawn vertex of a scene with `mix` ({"rigid", "skinned",
+// "scaledFallback"} vertex counts): {"matrix": {"counted": {...}, "spirv": {...}}, ...}. The
+// motor pipeline's scaled-fallback vertices use its "scaled fallback" variant; other pipelines
+// have none and use "rigid". null when the scene draws nothing.
+nlohmann::json sceneOpsPerVertex(const nlohmann::json& ops, const nlohmann::json& mix);
+
+}  // namespace mb::report

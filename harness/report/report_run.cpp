@@ -1,0 +1,181 @@
+#include "harness/report/report_run.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "harness/report/report_bench.h"
+#include "harness/document/report_document.h"
+#include "harness/document/report_format.h"
+#include "harness/report/report_inputs.h"
+#include "harness/report/report_machine.h"
+#include "harness/document/report_layout.h"
+#include "harness/report/report_ops.h"
+#include "harness/document/report_plots.h"
+#include "harness/process/report_workers.h"
+
+namespace mb::report {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+void say(const std::string& line) {
+  std::fprintf(stderr, "report: %s\n", line.c_str());
+  std::fflush(stderr);
+}
+
+std::string joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const std::string& x : v) s += (s.empty() ? "" : ",") + x;
+  return s;
+}
+
+// The worker command line shared by the render and time phases.
+std::vector<std::string> workerArgs(const Options& o, const Input& in, int index, int total,
+                                    const std::string& mode, const std::string& resultPath) {
+  return {"report", "--worker", mode, "--worker-out", resultPath, "--worker-id", in.id,
+          "--worker-index", std::to_string(index), "--worker-total", std::to_string(total),
+          "-o", o.outDir, "--size", std::to_string(o.width) + "x" + std::to_string(o.height),
+          "--frames", std::to_string(o.frames), "--time-size",
+          std::to_string(o.timeWidth) + "x" + std::to_string(o.timeHeight), "--pipelines",
+          joined(o.pipelines), in.spec};
+}
+
+Status writeText(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  if (!out.flush()) return Status::fail(path.string() + ": write failed");
+  return Status();
+}
+
+// Kernel throughput: a bench JSON named on the command line, else one run now into the
+// report folder (short min time), else nothing (--no-bench).
+json kernels(const Options& o) {
+  json k = {{"source", "skipped"}, {"error", nullptr}, {"file", nullptr}};
+  std::string path;
+  if (!o.benchJson.empty()) {
+    k["source"] = "file";
+    path = o.benchJson;
+  } else if (o.bench) {
+    path = (fs::path(o.outDir) / "bench.json").string();
+    char mt[32];
+    std::snprintf(mt, sizeof mt, "%g", o.benchMinTime);
+    say(std::string("running motorbench bench (--benchmark_min_time=") + mt +
+        "; console output in bench.txt)");
+    Status s = runBench(path, (fs::path(o.outDir) / "bench.txt").string(), o.benchMinTime);
+    k["source"] = "run";
+    k["minTime"] = o.benchMinTime;
+    if (!s) {
+      k["error"] = s.error();
+      return k;
+    }
+  } else {
+    k["error"] = "not measured (--no-bench)";
+    return k;
+  }
+  auto j = readBenchJson(path);
+  if (!j) {
+    k["error"] = j.error();
+    return k;
+  }
+  k["file"] = fs::path(path).parent_path() == fs::path(o.outDir) ? fs::path(path).filename().string() : path;
+  json pairs = kernelPairs(*j);
+  k["context"] = pairs["context"];
+  k["pairs"] = pairs["pairs"];
+  k["probe"] = pairs["probe"];
+  return k;
+}
+
+}  // namespace
+
+int runReport(const Options& o) {
+  std::error_code ec;
+  fs::create_directories(o.outDir, ec);
+  if (ec) {
+    std::fprintf(stderr, "motorbench report: error: %s: cannot create folder: %s\n", o.outDir.c_str(),
+                 ec.message().c_str());
+    return 2;
+  }
+  std::string tmpl = (fs::temp_directory_path() / "motorbench-report-XXXXXX").string();
+  if (!mkdtemp(tmpl.data())) {
+    std::fprintf(stderr, "motorbench report: error: cannot create a temporary folder\n");
+    return 2;
+  }
+  const fs::path work = tmpl;
+  const std::vector<Input> inputs = expandInputs(o.scenes);
+  const int total = int(inputs.size());
+  say(std::to_string(total) + " scene(s), pipelines " + joined(o.pipelines) + ", " +
+      std::to_string(o.jobs) + " job(s), images " + std::to_string(o.width) + "x" +
+      std::to_string(o.height) + " -> " + o.outDir);
+
+  // Phase 1: images, metrics, memory, statistics (parallel).
+  std::vector<WorkerTask> tasks;
+  for (int i = 0; i < total; ++i) {
+    const std::string result = (work / (inputs[size_t(i)].id + ".render.json")).string();
+    tasks.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "render", result), result,
+                     {{"id", inputs[size_t(i)].id}, {"spec", inputs[size_t(i)].spec}}});
+  }
+  std::vector<json> scenes = runWorkers(tasks, o.jobs, o.timeoutS);
+
+  // Phase 2: frame timing, one scene at a time.
+  if (o.frames > 0) {
+    std::vector<WorkerTask> timing;
+    std::vector<size_t> which;
+    for (int i = 0; i < total; ++i) {
+      if (scenes[size_t(i)].value("status", "failed") == "failed") continue;
+      const std::string result = (work / (inputs[size_t(i)].id + ".time.json")).string();
+      timing.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "time", result), result, json::object()});
+      which.push_back(size_t(i));
+    }
+    std::vector<json> times = runWorkers(timing, 1, o.timeoutS);
+    for (size_t t = 0; t < times.size(); ++t) scenes[which[t]]["timing"] = times[t];
+  }
+
+  // Phase 3: ops per vertex (shared by every scene, weighted by each scene's vertices).
+  say("counting ops per vertex (shim and SPIR-V)");
+  json ops = measureOpsPerVertex();
+  for (json& s : scenes) s["opsPerVertex"] = sceneOpsPerVertex(ops, s.value("vertexMix", json()));
+
+  // Phase 4: kernel throughput.
+  json kernelJson = kernels(o);
+
+  json settings = {{"pipelines", o.pipelines}, {"baseline", o.pipelines.front()},
+                   {"width", o.width}, {"height", o.height}, {"frames", o.frames},
+                   {"timeWidth", o.timeWidth}, {"timeHeight", o.timeHeight},
+                   {"jobs", o.jobs}, {"arguments", o.scenes}};
+  json report = assembleReport(machineJson(), settings, std::move(scenes), std::move(ops),
+                               std::move(kernelJson));
+  const fs::path jsonPath = fs::path(o.outDir) / "report.json";
+  if (Status s = writeText(jsonPath, dumpJson(report, 2) + "\n"); !s) {
+    std::fprintf(stderr, "motorbench report: error: %s\n", s.error().c_str());
+    return 2;
+  }
+  // Phase 5: plots from report.json, then the final report.json and the documents.
+  if (o.plots) {
+    say("plotting (" + (o.python.empty() ? defaultPython() : o.python) + " scripts/plot.py)");
+    report["plots"] = makePlots(o.python, o.plotScript, jsonPath.string(), o.outDir);
+  } else {
+    report["plots"] = {{"available", false}, {"error", "not made (--no-plots)"}, {"files", json::array()}};
+  }
+  for (const auto& [path, text] : {std::pair{jsonPath, dumpJson(report, 2) + "\n"},
+                                   std::pair{fs::path(o.outDir) / "report.md", toMarkdown(reportDocument(report))},
+                                   std::pair{fs::path(o.outDir) / "report.html", toHtml(reportDocument(report))}}) {
+    if (Status s = writeText(path, text); !s) {
+      std::fprintf(stderr, "motorbench report: error: %s\n", s.error().c_str());
+      return 2;
+    }
+  }
+  fs::remove_all(work, ec);
+  const json& sum = report["summary"];
+  say("done: " + std::to_string(sum.value("scenes", 0)) + " scene(s), " +
+      std::to_string(sum.value("ok", 0)) + " ok, " + std::to_string(sum.value("partial", 0)) +
+      " partial, " + std::to_string(sum.value("failed", 0)) + " failed -> " +
+      (fs::path(o.outDir) / "report.html").string());
+  return 0;
+}
+
+}  // namespace mb::report

@@ -1,0 +1,206 @@
+#include "harness/report/report_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "harness/render/image_metrics.h"
+#include "harness/render/render_frame.h"
+#include "pipelines/scene/loader.h"
+#include "pipelines/scene/scale_analysis.h"
+#include "pipelines/scene/scene_stats.h"
+
+namespace mb::report {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+// Bytes and floats as uploaded. bytesPerVertex counts the shading attributes only (the
+// paper's 12 vs 9 floats); bytesPerVertexAll adds skin and optional streams.
+json memoryJson(const PipelineStats& s) {
+  const double v = double(s.vertices);
+  auto per = [&](uint64_t bytes) { return v > 0 ? json(double(bytes) / v) : json(nullptr); };
+  return {{"vertices", s.vertices},
+          {"vertexBytes", s.vertexBytes},
+          {"skinVertexBytes", s.skinVertexBytes},
+          {"extraVertexBytes", s.extraVertexBytes},
+          {"indexBytes", s.indexBytes},
+          {"textureBytes", s.textureBytes},
+          {"uniformBytesPerFrame", s.uniformBytesPerFrame},
+          {"skinBytesPerFrame", s.skinBytesPerFrame},
+          {"bytesPerVertex", per(s.vertexBytes)},
+          {"bytesPerVertexAll", per(s.vertexBytes + s.skinVertexBytes + s.extraVertexBytes)},
+          {"floatsPerVertex", s.floatsPerVertex},
+          {"floatsPerTransform", s.floatsPerTransform},
+          {"floatsPerJoint", s.floatsPerJoint}};
+}
+
+json fallbacksJson(const PipelineStats& s) {
+  return {{"nonUniformScaleNodes", s.nonUniformScaleNodes},
+          {"negativeScaleNodes", s.negativeScaleNodes},
+          {"shearMatrixNodes", s.shearMatrixNodes},
+          {"zeroScalarFrames", s.zeroScalarFrames}};
+}
+
+std::string timeText(float t) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", double(t));
+  return buf;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+std::vector<float> imageTimes(const Scene& scene) {
+  if (scene.animations.empty() || !(scene.animations[0].duration > 0.0f)) return {0.0f};
+  const float d = scene.animations[0].duration;
+  return {0.0f, d / 3.0f, 2.0f * d / 3.0f};
+}
+
+json vertexMix(const Scene& scene) {
+  const ScaleReport scale = analyzeScale(scene);
+  long rigid = 0, skinned = 0, scaled = 0;
+  std::set<int> seen;
+  std::vector<int> stack(scene.roots.rbegin(), scene.roots.rend());
+  while (!stack.empty()) {  // every reachable node once, even in malformed graphs
+    const int n = stack.back();
+    stack.pop_back();
+    if (n < 0 || size_t(n) >= scene.nodes.size() || !seen.insert(n).second) continue;
+    const Node& node = scene.nodes[size_t(n)];
+    for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.push_back(*c);
+    if (node.mesh < 0 || size_t(node.mesh) >= scene.meshes.size()) continue;
+    const NodeScale& ns = scale.nodes.size() > size_t(n) ? scale.nodes[size_t(n)] : NodeScale{};
+    const bool ownFallback = ns.restNonUniform || ns.restClass == ScaleClass::Negative || ns.shear;
+    for (const Primitive& p : scene.meshes[size_t(node.mesh)].primitives) {
+      const long count = long(p.positions.size());
+      if (node.skin >= 0 && !p.joints.empty()) skinned += count;
+      else {
+        rigid += count;
+        if (ownFallback) scaled += count;
+      }
+    }
+  }
+  return {{"rigid", rigid}, {"skinned", skinned}, {"scaledFallback", scaled}};
+}
+
+void progress(const SceneJob& job, const std::string& what) {
+  std::fprintf(stderr, "[%d/%d] %s: %s\n", job.index, job.total, job.input.id.c_str(), what.c_str());
+  std::fflush(stderr);
+}
+
+json measureScene(const SceneJob& job) {
+  json out = {{"id", job.input.id}, {"spec", job.input.spec}, {"status", "failed"},
+              {"error", nullptr}, {"frames", json::array()}, {"pipelines", json::object()}};
+  progress(job, "loading " + job.input.spec);
+  auto scene = loadScene(job.input.spec);
+  if (!scene) {
+    out["error"] = scene.error();
+    out["stats"] = toJson(failedFileStats(job.input.spec, scene.error()));
+    progress(job, "FAILED: " + scene.error());
+    return out;
+  }
+  out["source"] = scene->source;
+  out["stats"] = toJson(computeFileStats(*scene));
+  out["vertexMix"] = vertexMix(*scene);
+  const std::vector<float> times = imageTimes(*scene);
+  out["animation"] = scene->animations.empty()
+                         ? json(nullptr)
+                         : json{{"index", 0}, {"name", scene->animations[0].name},
+                                {"duration", scene->animations[0].duration}};
+  out["times"] = times;
+
+  const std::string rel = "images/" + job.input.id + "/";
+  std::error_code ec;
+  fs::create_directories(fs::path(job.outDir) / rel, ec);
+  if (ec) {
+    out["error"] = job.outDir + "/" + rel + ": cannot create folder: " + ec.message();
+    return out;
+  }
+  std::map<std::string, std::vector<double>> conversion;
+  std::map<std::string, std::string> pipelineError;
+  int framesOk = 0, framesTried = 0;
+  for (size_t k = 0; k < times.size(); ++k) {
+    FrameSettings settings;
+    settings.width = job.width, settings.height = job.height;
+    if (times.size() > 1) settings.anim.anim = 0;
+    settings.anim.time = times[k];
+    json frame = {{"time", times[k]}, {"images", json::object()}, {"diffs", json::object()},
+                  {"metrics", json::object()}, {"errors", json::object()}};
+    std::map<std::string, RgbaImage> images;
+    for (const std::string& p : job.pipelines) {
+      ++framesTried;
+      progress(job, "rendering " + p + " t=" + timeText(times[k]));
+      auto f = renderFrame(*scene, p, settings);
+      if (!f) {
+        frame["errors"][p] = f.error();
+        pipelineError.emplace(p, f.error());
+        progress(job, "FAILED " + p + ": " + f.error());
+        continue;
+      }
+      const std::string file = rel + "t" + std::to_string(k) + "_" + p + ".png";
+      Status written = writeImage((fs::path(job.outDir) / file).string(), f->image);
+      if (!written) {
+        frame["errors"][p] = written.error();
+        pipelineError.emplace(p, written.error());
+        continue;
+      }
+      ++framesOk;
+      frame["images"][p] = file;
+      conversion[p].push_back(f->stats.conversionMs);
+      json& pj = out["pipelines"][p];
+      if (!pj.contains("memory")) {  // the uploads do not depend on the time; keep the first
+        pj["memory"] = memoryJson(f->stats);
+        pj["fallbacks"] = fallbacksJson(f->stats);
+        pj["stats"] = toJson(f->stats);
+        pj["draws"] = f->stats.draws;
+        if (!out.contains("gl"))
+          out["gl"] = {{"renderer", f->glRenderer}, {"version", f->glVersion}, {"backend", f->glBackend}};
+      }
+      images.emplace(p, std::move(f->image));
+    }
+    const std::string& base = job.pipelines.front();
+    for (size_t i = 1; i < job.pipelines.size() && images.count(base); ++i) {
+      const std::string& p = job.pipelines[i];
+      if (!images.count(p)) continue;
+      auto m = compareImages(images[base], images[p]);
+      if (!m) {
+        frame["errors"]["diff_" + p] = m.error();
+        continue;
+      }
+      const std::string file = rel + "t" + std::to_string(k) + "_diff_" + p + ".png";
+      Status written = writeImage((fs::path(job.outDir) / file).string(),
+                                  diffHeatmap(images[base], images[p]));
+      if (written) frame["diffs"][p] = file;
+      else frame["errors"]["diff_" + p] = written.error();
+      frame["metrics"][p] = toJson(*m);  // the compare command's metrics
+    }
+    out["frames"].push_back(frame);
+  }
+  for (const std::string& p : job.pipelines) {
+    json& pj = out["pipelines"][p];
+    pj["error"] = pipelineError.count(p) ? json(pipelineError[p]) : json(nullptr);
+    if (conversion.count(p)) {
+      const auto& c = conversion[p];
+      pj["conversionMs"] = {{"median", median(c)},
+                            {"min", *std::min_element(c.begin(), c.end())},
+                            {"samples", c}};
+    }
+  }
+  out["status"] = framesOk == framesTried ? "ok" : framesOk > 0 ? "partial" : "failed";
+  if (framesOk < framesTried && !pipelineError.empty())
+    out["error"] = pipelineError.begin()->second;
+  progress(job, std::string("done (") + out["status"].get<std::string>() + ")");
+  return out;
+}
+
+}  // namespace mb::report

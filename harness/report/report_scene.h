@@ -1,0 +1,43 @@
+// One scene of a `motorbench report` run, measured in the process that calls it (a worker,
+// see report_workers.h): load, the statistics of `inspect`, images of every pipeline at up to
+// three animation times, diff heat maps and image metrics against the first (baseline)
+// pipeline, and what each pipeline uploaded (PipelineStats). Never throws and never stops on
+// an error: a failure is recorded in the returned JSON ("status", "error", per-pipeline and
+// per-frame "error") and whatever could be measured is kept.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/report/report_inputs.h"
+#include "pipelines/scene/scene.h"
+
+namespace mb::report {
+
+struct SceneJob {
+  Input input;
+  int index = 1, total = 1;             // for progress lines "[index/total] id: ..."
+  std::string outDir;                   // report folder; images go to images/<id>/
+  int width = 256, height = 192;
+  std::vector<std::string> pipelines;   // first = baseline of the diffs
+};
+
+// Animation times the images are taken at: the first animation at 0, 1/3 and 2/3 of its
+// duration (not the end, which equals the start for looping clips); one time (0, rest pose)
+// for a scene without animation or with a zero-length one.
+std::vector<float> imageTimes(const Scene& scene);
+
+// Drawn vertices by the vertex-shader variant that transforms them: "rigid" and "skinned"
+// for every pipeline, and for the motor pipeline how many rigid ones sit on nodes whose own
+// scale is non-uniform or mirrored ("scaledFallback"; the node's own scale only, parents'
+// scales are not folded in). Used to weight ops per vertex per scene.
+nlohmann::json vertexMix(const Scene& scene);
+
+// Progress line on stderr: "[3/8] skinned_tube: rendering motor t=0.5".
+void progress(const SceneJob& job, const std::string& what);
+
+// The "render" part of the scene's report.json entry (see README, section Report).
+nlohmann::json measureScene(const SceneJob& job);
+
+}  // namespace mb::report

@@ -1,0 +1,74 @@
+#include "harness/report/report_timing.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "harness/timing/frame_timing.h"
+
+namespace mb::report {
+namespace {
+
+using json = nlohmann::json;
+
+// The viewport of the vertex-bound configuration (`motorbench time --tiny`'s default).
+constexpr int kTiny = 64;
+
+// One configuration in the report's shape (frame_timing's own JSON also keeps every sample,
+// which the report does not need).
+json configJson(const timing::ConfigTiming& c, const std::vector<std::string>& pipelines) {
+  json out = {{"width", c.width}, {"height", c.height}, {"config", c.config}, {"pipelines", json::object()}};
+  for (const timing::PipelineTiming& t : c.pipelines) {
+    if (std::find(pipelines.begin(), pipelines.end(), t.pipeline) == pipelines.end()) continue;
+    if (!t.error.empty()) {
+      out["pipelines"][t.pipeline] = {{"error", t.error}};
+      continue;
+    }
+    out["pipelines"][t.pipeline] = {{"medianMs", t.frame.median}, {"q1Ms", t.frame.q1}, {"q3Ms", t.frame.q3},
+                                    {"madMs", t.frame.mad}, {"minMs", t.frame.min}, {"maxMs", t.frame.max},
+                                    {"frames", t.frame.n}, {"cpuMedianMs", t.cpu.median},
+                                    {"updateMedianMs", t.update.median}};
+  }
+  auto num = [](double r) { return r > 0 ? json(r) : json(); };
+  out["ratio_motor_matrix"] = num(c.frameRatio);
+  out["paired_ratio_motor_matrix"] = num(c.pairedFrameRatio);
+  out["paired_cpu_ratio_motor_matrix"] = num(c.pairedCpuRatio);
+  out["update"] = {{"ratio_motor_matrix", num(c.updateRatio)}};
+  return out;
+}
+
+}  // namespace
+
+json timeScene(const Scene& scene, const std::vector<std::string>& pipelines, int frames, int width, int height) {
+  timing::Settings normal;
+  normal.frames = std::max(1, frames);
+  normal.warmup = std::max(2, std::min(5, frames / 5));
+  normal.width = width, normal.height = height;
+  auto t = timing::timeScene(scene, scene.source, normal);
+  if (!t) return {{"error", t.error()}};
+  json out = configJson(*t, pipelines);
+  timing::Settings tiny = normal;
+  tiny.width = tiny.height = kTiny;
+  tiny.config = "vertex-bound";
+  if (timing::drawsVertexBoundAt(scene, kTiny, kTiny)) {
+    auto v = timing::timeScene(scene, scene.source, tiny);
+    out["vertexBound"] = v ? configJson(*v, pipelines) : json{{"error", v.error()}};
+  } else {
+    out["vertexBound"] = {{"skipped", "not vertex-bound at " + std::to_string(kTiny) + "x" + std::to_string(kTiny) +
+                                          ": fewer than " + std::to_string(timing::kVertexBoundVerticesPerPixel) +
+                                          " drawn vertices per pixel"}};
+  }
+  out["frames"] = normal.frames;
+  out["warmup"] = normal.warmup;
+  out["bestOf"] = normal.bestOf;
+  out["error"] = nullptr;
+  char summary[256];
+  std::snprintf(summary, sizeof summary,
+                "%d frames per pipeline after %d warm-up at %dx%d, each the fastest of %d renders, pipelines "
+                "interleaved in alternating order (harness/timing/frame_timing.h); vertex-bound: the same at %dx%d "
+                "where the scene draws enough vertices.",
+                normal.frames, normal.warmup, width, height, normal.bestOf, kTiny, kTiny);
+  out["summary"] = summary;
+  return out;
+}
+
+}  // namespace mb::report

@@ -1,0 +1,266 @@
+#include "harness/timing/frame_timing.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <memory>
+#include <thread>
+
+#include "harness/render/render_frame.h"
+#include "pipelines/gl/context.h"
+#include "pipelines/gl/framebuffer.h"
+#include "pipelines/scene/camera_rule.h"
+#include "pipelines/scene/scene_stats.h"
+
+namespace mb::timing {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+// CPU time of the whole process (all threads, llvmpipe's rasterisers included), in ms.
+double processCpuMs() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
+}
+
+// Per-frame ratios b[i] / a[i] of two sample series.
+std::vector<double> pairedRatios(const std::vector<double>& a, const std::vector<double>& b) {
+  std::vector<double> r;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+    if (a[i] > 0) r.push_back(b[i] / a[i]);
+  return r;
+}
+
+// Linear-interpolated quantile of sorted samples.
+double quantile(const std::vector<double>& s, double q) {
+  if (s.empty()) return 0;
+  const double pos = q * double(s.size() - 1);
+  const size_t i = size_t(pos);
+  const double f = pos - double(i);
+  return i + 1 < s.size() ? s[i] * (1 - f) + s[i + 1] * f : s[i];
+}
+
+std::string cpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) {
+      const size_t colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  return "unknown";
+}
+
+bool softwareRenderer(const std::string& renderer) {
+  for (const char* sw : {"llvmpipe", "softpipe", "swrast", "lavapipe", "SwiftShader", "Software"})
+    if (renderer.find(sw) != std::string::npos) return true;
+  return false;
+}
+
+// The animation state of frame `i`: animation 0 playing at 60 Hz (wrapped), blended halfway
+// with animation 1 when the scene has two, so the update samples and blends as it would.
+AnimState stateForFrame(const Scene& scene, int i) {
+  AnimState st;
+  if (scene.animations.empty()) return st;
+  auto at = [&](int a) {
+    const float d = scene.animations[size_t(a)].duration;
+    return d > 0 ? std::fmod(float(i) / 60.0f, d) : 0.0f;
+  };
+  st.anim = 0, st.time = at(0);
+  if (scene.animations.size() > 1) st.anim2 = 1, st.time2 = at(1), st.blend = 0.5f;
+  return st;
+}
+
+double ratioOf(double motor, double matrix) { return motor > 0 && matrix > 0 ? motor / matrix : -1; }
+
+}  // namespace
+
+Spread spreadOf(std::vector<double> s) {
+  Spread r;
+  r.n = int(s.size());
+  if (s.empty()) return r;
+  std::sort(s.begin(), s.end());
+  r.median = quantile(s, 0.5), r.q1 = quantile(s, 0.25), r.q3 = quantile(s, 0.75);
+  r.min = s.front(), r.max = s.back();
+  std::vector<double> dev;
+  for (double x : s) dev.push_back(std::abs(x - r.median));
+  std::sort(dev.begin(), dev.end());
+  r.mad = quantile(dev, 0.5);
+  return r;
+}
+
+Result<MachineInfo> machineInfo() {
+  auto ctx = gl::sharedContext();
+  if (!ctx) return Result<MachineInfo>::fail(ctx.error());
+  MachineInfo m;
+  m.cpuModel = cpuModel();
+  m.cores = std::thread::hardware_concurrency();
+  m.glRenderer = (*ctx)->info().renderer;
+  m.glVersion = (*ctx)->info().version;
+  m.glBackend = (*ctx)->info().backend;
+  const char* lp = std::getenv("LP_NUM_THREADS");
+  m.lpNumThreads = lp ? lp : "unset";
+  m.realGpu = !softwareRenderer(m.glRenderer);
+  return m;
+}
+
+bool drawsVertexBoundAt(const Scene& scene, int width, int height) {
+  const double pixels = double(width) * double(height);
+  return pixels > 0 && computeFileStats(scene).drawnVertices >= kVertexBoundVerticesPerPixel * pixels;
+}
+
+Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
+                               const Settings& settings) {
+  using R = Result<ConfigTiming>;
+  auto machine = machineInfo();
+  if (!machine) return R::fail(machine.error());
+  auto fb = gl::Framebuffer::create(settings.width, settings.height);
+  if (!fb) return R::fail(sceneName + ": " + fb.error());
+
+  ConfigTiming out;
+  out.scene = sceneName, out.config = settings.config;
+  out.width = settings.width, out.height = settings.height;
+  std::vector<std::unique_ptr<Pipeline>> live;  // parallel to `slots`
+  std::vector<size_t> slots;                    // index into out.pipelines
+  for (const std::string& name : pipelineNames()) {
+    PipelineTiming t;
+    t.pipeline = name;
+    auto p = createPipeline(name);
+    if (!p) t.error = "registered but not implemented (placeholder factory)";
+    else if (Status s = p->prepare(scene); !s) t.error = s.error();
+    if (t.error.empty()) {
+      live.push_back(std::move(p));
+      slots.push_back(out.pipelines.size());
+    }
+    out.pipelines.push_back(std::move(t));
+  }
+
+  // A fixed camera (the rest pose's framing): the same view for every frame and pipeline.
+  const View view = frameScene(scene, stateForFrame(scene, 0),
+                               float(settings.width) / float(settings.height));
+  GLuint query = 0;
+  if (machine->realGpu) glGenQueries(1, &query);
+  const int total = settings.warmup + settings.frames;
+  for (int i = 0; i < total; ++i) {
+    const AnimState st = stateForFrame(scene, i);
+    for (size_t k = 0; k < live.size(); ++k) {
+      // Alternate the order every frame: A B, B A, A B ...
+      const size_t idx = i % 2 ? live.size() - 1 - k : k;
+      Pipeline& p = *live[idx];
+      PipelineTiming& t = out.pipelines[slots[idx]];
+      glFinish();  // nothing of the previous pipeline is left in flight
+      // Update: the fastest of bestOf blocks of R back-to-back calls, per call.
+      double updateMs = 0;
+      for (int rep = 0; rep < std::max(1, settings.bestOf); ++rep) {
+        const auto t0 = Clock::now();
+        for (int r = 0; r < t.updateRepeats; ++r) p.update(st);
+        const double u = ms(t0, Clock::now()) / t.updateRepeats;
+        updateMs = rep ? std::min(updateMs, u) : u;
+      }
+      double frameMs = 0, cpuMs = 0, gpuMs = 0;
+      for (int rep = 0; rep < std::max(1, settings.bestOf); ++rep) {
+        const auto r0 = Clock::now();
+        const double c0 = processCpuMs();
+        if (query) glBeginQuery(GL_TIME_ELAPSED, query);
+        (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
+        p.render(view);
+        if (query) glEndQuery(GL_TIME_ELAPSED);
+        glFinish();
+        const double wall = ms(r0, Clock::now()), cpu = processCpuMs() - c0;
+        GLuint64 ns = 0;
+        if (query) glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+        frameMs = rep ? std::min(frameMs, wall) : wall;
+        cpuMs = rep ? std::min(cpuMs, cpu) : cpu;
+        gpuMs = rep ? std::min(gpuMs, double(ns) * 1e-6) : double(ns) * 1e-6;
+      }
+      if (i < settings.warmup) {
+        // Calibrate R on the warm-up: enough calls for a block of kMinUpdateBlockMs.
+        if (updateMs > 0)
+          t.updateRepeats = std::clamp(int(std::ceil(kMinUpdateBlockMs / updateMs)), 1, 1000);
+        continue;
+      }
+      t.updateMs.push_back(updateMs);
+      t.frameMs.push_back(frameMs);
+      t.cpuMs.push_back(cpuMs);
+      if (query && i > 0) t.gpuMs.push_back(gpuMs);  // frame 0's queries dropped
+    }
+  }
+  if (query) glDeleteQueries(1, &query);
+  if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    return R::fail(sceneName + ": GL error while timing: " + gl::errorName(err));
+
+  for (size_t k = 0; k < live.size(); ++k) {
+    PipelineTiming& t = out.pipelines[slots[k]];
+    t.frame = spreadOf(t.frameMs), t.update = spreadOf(t.updateMs), t.gpu = spreadOf(t.gpuMs);
+    t.cpu = spreadOf(t.cpuMs);
+    t.stats = live[k]->stats();
+  }
+  const PipelineTiming* matrix = nullptr;
+  const PipelineTiming* motor = nullptr;
+  for (const PipelineTiming& t : out.pipelines) {
+    if (!t.error.empty()) continue;
+    if (t.pipeline == "matrix") matrix = &t;
+    if (t.pipeline == "motor") motor = &t;
+  }
+  if (matrix && motor) {
+    out.frameRatio = ratioOf(motor->frame.median, matrix->frame.median);
+    auto pairedMedian = [](const std::vector<double>& r) { return r.empty() ? -1 : spreadOf(r).median; };
+    const std::vector<double> frames = pairedRatios(matrix->frameMs, motor->frameMs);
+    out.pairedFrame = spreadOf(frames);
+    out.pairedFrameRatio = pairedMedian(frames);
+    out.pairedCpuRatio = pairedMedian(pairedRatios(matrix->cpuMs, motor->cpuMs));
+    out.updateRatio = pairedMedian(pairedRatios(matrix->updateMs, motor->updateMs));
+  }
+  return out;
+}
+
+nlohmann::json toJson(const Spread& s) {
+  return {{"median", s.median}, {"q1", s.q1}, {"q3", s.q3}, {"iqr", s.iqr()}, {"mad", s.mad},
+          {"min", s.min}, {"max", s.max}, {"n", s.n}};
+}
+
+nlohmann::json toJson(const MachineInfo& m) {
+  return {{"cpu_model", m.cpuModel}, {"cores", m.cores}, {"GL_RENDERER", m.glRenderer},
+          {"GL_VERSION", m.glVersion}, {"gl_backend", m.glBackend},
+          {"LP_NUM_THREADS", m.lpNumThreads}, {"gpu_timer_queries", m.realGpu}};
+}
+
+nlohmann::json toJson(const ConfigTiming& c) {
+  nlohmann::json pipelines = nlohmann::json::object();
+  for (const PipelineTiming& t : c.pipelines) {
+    nlohmann::json j = {{"error", t.error.empty() ? nlohmann::json() : nlohmann::json(t.error)}};
+    if (t.error.empty()) {
+      j["frame_ms"] = toJson(t.frame);
+      j["frame_cpu_ms"] = toJson(t.cpu);
+      j["update_ms"] = toJson(t.update);
+      j["update_calls_per_block"] = t.updateRepeats;
+      j["frame_samples_ms"] = t.frameMs;
+      j["frame_cpu_samples_ms"] = t.cpuMs;
+      j["update_samples_ms"] = t.updateMs;
+      j["gpu_ms"] = t.gpuMs.empty() ? nlohmann::json() : toJson(t.gpu);
+      j["vertices"] = t.stats.vertices;
+      j["draws"] = t.stats.draws;
+    }
+    pipelines[t.pipeline] = j;
+  }
+  auto num = [](double r) { return r > 0 ? nlohmann::json(r) : nlohmann::json(); };
+  return {{"scene", c.scene},
+          {"config", c.config},
+          {"width", c.width},
+          {"height", c.height},
+          {"pipelines", pipelines},
+          {"ratio_motor_over_matrix", num(c.frameRatio)},
+          {"paired_ratio_motor_over_matrix", num(c.pairedFrameRatio)},
+          {"paired_ratio_spread", toJson(c.pairedFrame)},
+          {"paired_cpu_ratio_motor_over_matrix", num(c.pairedCpuRatio)},
+          {"update_ratio_motor_over_matrix", num(c.updateRatio)}};
+}
+
+}  // namespace mb::timing

@@ -1,0 +1,41 @@
+// `motorbench`, `motorbench --help` and `motorbench <command> --help`: usage goes to stdout,
+// asking for it exits 0, a missing or unknown command exits 2.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/support/cli_test_support.h"
+
+namespace {
+
+using mb::cli_test::motorbench;
+using mb::cli_test::runCommand;
+
+TEST(CliUsage, TopLevelHelpListsEveryCommand) {
+  std::string out;
+  EXPECT_EQ(runCommand(motorbench() + "--help", &out), 0) << out;
+  for (const char* c : {"bench", "check", "claims", "compare", "inspect", "ops", "render", "report", "scenes", "time"})
+    EXPECT_NE(out.find(std::string("  ") + c + " "), std::string::npos) << c << " missing from:\n" << out;
+  std::string none;
+  EXPECT_EQ(runCommand(motorbench(), &none), 2) << none;
+}
+
+TEST(CliUsage, CommandHelpPrintsThatCommandsUsageAndRunsNothing) {
+  for (const char* c : {"time", "report", "render", "bench"}) {
+    std::string out;
+    EXPECT_EQ(runCommand(motorbench() + c + " --help", &out), 0) << c << ": " << out;
+    EXPECT_EQ(out.rfind(std::string("usage: motorbench ") + c + " ", 0), 0u) << out;
+    EXPECT_EQ(out.find('\n', out.find('\n') + 1), out.size() - 1) << c << " printed more than its usage:\n" << out;
+  }
+  std::string out;
+  EXPECT_EQ(runCommand(motorbench() + "time --frames 3 -h", &out), 0) << out;
+  EXPECT_NE(out.find("usage: motorbench time"), std::string::npos) << out;
+}
+
+TEST(CliUsage, UnknownCommandIsAnError) {
+  std::string out;
+  EXPECT_EQ(runCommand(motorbench() + "frobnicate", &out), 2) << out;
+  EXPECT_NE(out.find("unknown command 'frobnicate'"), std::string::npos) << out;
+}
+
+}  // namespace
