@@ -102,7 +102,7 @@ Status writeCheckReport(const std::string& dir, const CheckRun& run) {
                       {"notes", run.notes},
                       {"counts", {{"pass", counts[0]}, {"warn", counts[1]}, {"fail", counts[2]},
                                   {"error", counts[3]}}},
-                      {"images", nlohmann::json::array()}};
+                      {"images", nlohmann::json::array()}, {"shard", run.shard}};
   for (const CheckItem& it : run.items) {
     nlohmann::json e = {{"file", it.file}, {"scene", it.scene}, {"pipeline", it.pipeline},
                         {"pose", it.pose}, {"outcome", outcomeName(it.outcome)},

@@ -3,6 +3,8 @@
 // failure and warning) and check.json.
 #pragma once
 #include <string>
+
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "harness/render/image_metrics.h"
@@ -26,6 +28,7 @@ struct CheckRun {
   std::string goldenDir, shaderDir, glRenderer, glVersion;
   std::vector<std::string> notes;  // run-wide warnings (renderer differs, stale entries...)
   std::vector<CheckItem> items;
+  nlohmann::json shard;  // {"index", "count", "inputs": every scene of the selection}
 };
 
 const char* outcomeName(CheckItem::Outcome o);

@@ -15,6 +15,7 @@
 #include <set>
 
 #include "harness/options/args.h"
+#include "harness/options/shard.h"
 #include "harness/check/check_report.h"
 #include "harness/cli/command.h"
 #include "harness/check/golden.h"
@@ -38,6 +39,7 @@ std::string joined(const std::vector<std::string>& v) {
 struct Selection {
   std::vector<std::string> scenes, pipelines;
   std::string goldenDir, outDir;
+  Shard shard;  // --shard I/N: this run checks its part of `scenes` only
 };
 
 // Compares one planned golden; fills `item` (and writes its images into outDir unless clean).
@@ -111,8 +113,11 @@ int check(const Selection& sel) {
   CheckRun run;
   run.goldenDir = sel.goldenDir;
   run.shaderDir = gl::shaderDir();
+  run.shard = {{"index", sel.shard.index}, {"count", sel.shard.count}, {"inputs", sel.scenes}};
+  std::vector<std::string> mine;
+  for (size_t k : shardPositions(sel.scenes, sel.shard)) mine.push_back(sel.scenes[k]);
   std::set<std::string> rendererNotes, planned;
-  for (const std::string& name : sel.scenes) {
+  for (const std::string& name : mine) {
     auto scene = loadScene(name);
     golden::SceneThresholds thresholds = golden::defaultThresholds(name);
     if (auto t = manifest->thresholds.find(name); t != manifest->thresholds.end()) thresholds = t->second;
@@ -137,7 +142,7 @@ int check(const Selection& sel) {
       }
     }
   }
-  std::set<std::string> scenes(sel.scenes.begin(), sel.scenes.end());
+  std::set<std::string> scenes(mine.begin(), mine.end());
   std::set<std::string> pipelines(sel.pipelines.begin(), sel.pipelines.end());
   for (const golden::Entry& e : manifest->entries)
     if (scenes.count(e.scene) && pipelines.count(e.pipeline) && !planned.count(e.file))
@@ -224,7 +229,7 @@ int runCheck(const std::vector<std::string>& argv) {
   Args args(argv, {"update"});
   auto fail = [](const std::string& message) { return commandError("check", message); };
   if (!args.error().empty()) return fail(args.error());
-  if (auto unknown = args.unknown({"golden", "scenes", "pipelines", "out", "o", "shader-dir", "update"});
+  if (auto unknown = args.unknown({"golden", "scenes", "pipelines", "out", "o", "shader-dir", "update", "shard"});
       !unknown.empty())
     return fail("unknown option " + unknown[0]);
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
@@ -253,6 +258,13 @@ int runCheck(const std::vector<std::string>& argv) {
     sel.pipelines.push_back(p);
   }
   if (sel.scenes.empty() || sel.pipelines.empty()) return fail("nothing selected (no scenes or pipelines)");
+  if (auto text = args.get("shard")) {
+    if (args.has("update")) return fail("--shard checks; --update writes every golden in one run");
+    std::string error;
+    auto shard = parseShard(*text, &error);
+    if (!shard) return fail(error);
+    sel.shard = *shard;
+  }
   return args.has("update") ? update(sel) : check(sel);
 }
 
@@ -260,6 +272,6 @@ int runCheck(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(check, "check",
-           "[--golden DIR] [--scenes a,b] [--pipelines p,q] [--out DIR] [--shader-dir DIR] [--update]",
+           "[--golden DIR] [--scenes a,b] [--pipelines p,q] [--out DIR] [--shader-dir DIR] [--update] [--shard I/N]",
            "compare renders with the golden images (exit 1 on a threshold, 2 on a missing golden)",
            mb::runCheck);

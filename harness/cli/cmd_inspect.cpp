@@ -8,6 +8,8 @@
 #include <fstream>
 
 #include "harness/options/args.h"
+#include "harness/options/shard.h"
+#include "harness/report/report_inputs.h"
 #include "harness/cli/command.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
@@ -17,28 +19,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool isGltf(const fs::path& p) {
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".gltf" || ext == ".glb";
-}
-
-// Files named on the command line, directories expanded (recursively, sorted).
+// Files named on the command line, folders expanded (recursively, sorted): the report's rule.
 std::vector<std::string> expand(const std::vector<std::string>& inputs) {
   std::vector<std::string> out;
-  for (const auto& in : inputs) {
-    std::error_code ec;
-    if (!fs::is_directory(in, ec)) {
-      out.push_back(in);
-      continue;
-    }
-    std::vector<std::string> found;
-    for (auto it = fs::recursive_directory_iterator(in, fs::directory_options::skip_permission_denied, ec);
-         !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-      if (it->is_regular_file(ec) && isGltf(it->path())) found.push_back(it->path().string());
-    std::sort(found.begin(), found.end());
-    out.insert(out.end(), found.begin(), found.end());
-  }
+  for (const mb::report::Input& in : mb::report::expandInputs(inputs)) out.push_back(in.spec);
   return out;
 }
 
@@ -99,27 +83,41 @@ void printAggregate(const nlohmann::json& a) {
 
 int runInspect(const std::vector<std::string>& argv) {
   mb::Args args(argv);
-  auto unknown = args.unknown({"json"});
+  auto unknown = args.unknown({"json", "shard"});
   if (!args.error().empty() || !unknown.empty() || args.positional().empty()) {
-    std::fprintf(stderr, "usage: motorbench inspect FILE|DIR|BUILTIN... [--json FILE]%s%s\n",
+    std::fprintf(stderr, "usage: motorbench inspect FILE|DIR|BUILTIN... [--json FILE] [--shard I/N]%s%s\n",
                  args.error().empty() ? "" : ("\n  " + args.error()).c_str(),
                  unknown.empty() ? "" : ("\n  unknown option " + unknown[0]).c_str());
     return 2;
   }
+  mb::Shard shard;
+  if (auto text = args.get("shard")) {
+    std::string error;
+    auto parsed = mb::parseShard(*text, &error);
+    if (!parsed) {
+      std::fprintf(stderr, "motorbench inspect: error: %s\n", error.c_str());
+      return 2;
+    }
+    shard = *parsed;
+  }
+  const std::vector<std::string> all = expand(args.positional());
   std::vector<mb::FileStats> stats;
   nlohmann::json files = nlohmann::json::array();
-  for (const auto& file : expand(args.positional())) {
+  for (size_t k : mb::shardPositions(all, shard)) {
+    const std::string& file = all[k];
     auto scene = mb::loadScene(file);
     stats.push_back(scene ? mb::computeFileStats(*scene) : mb::failedFileStats(file, scene.error()));
     printFile(stats.back());
     files.push_back(mb::toJson(stats.back()));
+    files.back()["input"] = file;  // the argument (a built-in's "file" is its generated name)
   }
   nlohmann::json aggregate = mb::aggregateJson(stats);
   if (stats.size() > 1) printAggregate(aggregate);
   if (auto path = args.get("json")) {
     std::ofstream out(*path);
     // replace: error messages may quote file bytes or paths that are not UTF-8.
-    out << nlohmann::json{{"files", files}, {"aggregate", aggregate}}.dump(2, ' ', false,
+    const nlohmann::json shardJson = {{"index", shard.index}, {"count", shard.count}, {"inputs", all}};
+    out << nlohmann::json{{"files", files}, {"aggregate", aggregate}, {"shard", shardJson}}.dump(2, ' ', false,
                                                                         nlohmann::json::error_handler_t::replace)
         << "\n";
     if (!out.flush()) {
@@ -132,6 +130,6 @@ int runInspect(const std::vector<std::string>& argv) {
 
 }  // namespace
 
-MB_COMMAND(inspect, "inspect", "FILE|DIR|BUILTIN... [--json FILE]",
+MB_COMMAND(inspect, "inspect", "FILE|DIR|BUILTIN... [--json FILE] [--shard I/N]",
            "glTF statistics: geometry, skins, animations, scale classes, unsupported features, fallbacks",
            runInspect);

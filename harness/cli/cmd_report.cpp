@@ -67,7 +67,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
   const std::set<std::string> known = {"o", "output", "jobs", "size", "frames", "no-bench", "bench-json",
                                        "bench-min-time", "pipelines", "no-plots", "python", "plot-script",
                                        "timeout", "time-size", "worker", "worker-out", "worker-id",
-                                       "worker-index", "worker-total"};
+                                       "worker-index", "worker-total", "shard"};
   if (auto unknown = args.unknown(known); !unknown.empty()) return fail("unknown option " + unknown[0]);
   report::Options o;
   o.scenes = args.positional();
@@ -96,6 +96,12 @@ int runReportCommand(const std::vector<std::string>& argv) {
   o.plots = !args.has("no-plots");
   o.python = args.get("python", o.python);
   o.plotScript = args.get("plot-script", "");
+  if (auto text = args.get("shard")) {
+    std::string error;
+    auto shard = parseShard(*text, &error);
+    if (!shard) return fail(error);
+    o.shard = *shard;
+  }
   if (args.has("worker")) return runWorker(args, o);
   return report::runReport(o);
 }
@@ -105,7 +111,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
 
 MB_COMMAND(report, "report",
            "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--no-bench | "
-           "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--time-size WxH] [--no-plots]",
+           "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--time-size WxH] [--no-plots] [--shard I/N]",
            "measure scenes with every pipeline: images, diffs, memory, ops, timing, kernel ratios "
            "-> report.json/.md/.html",
            mb::runReportCommand);

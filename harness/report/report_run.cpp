@@ -106,8 +106,18 @@ int runReport(const Options& o) {
     return 2;
   }
   const fs::path work = tmpl;
-  const std::vector<Input> inputs = expandInputs(o.scenes);
+  // Ids are made over the whole list, so every shard names a scene (and its image folder) alike.
+  const std::vector<Input> all = expandInputs(o.scenes);
+  std::vector<std::string> specs;
+  for (const Input& in : all) specs.push_back(in.spec);
+  std::vector<Input> inputs;
+  json shard = {{"index", o.shard.index}, {"count", o.shard.count}, {"inputs", json::array()}};
+  for (const Input& in : all) shard["inputs"].push_back({{"spec", in.spec}, {"id", in.id}});
+  for (size_t k : shardPositions(specs, o.shard)) inputs.push_back(all[k]);
   const int total = int(inputs.size());
+  if (o.shard.count > 1)
+    say("shard " + std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count) + ": " +
+        std::to_string(total) + " of " + std::to_string(all.size()) + " scene(s)");
   say(std::to_string(total) + " scene(s), pipelines " + joined(o.pipelines) + ", " +
       std::to_string(o.jobs) + " job(s), images " + std::to_string(o.width) + "x" +
       std::to_string(o.height) + " -> " + o.outDir);
@@ -146,9 +156,15 @@ int runReport(const Options& o) {
   json settings = {{"pipelines", o.pipelines}, {"baseline", o.pipelines.front()},
                    {"width", o.width}, {"height", o.height}, {"frames", o.frames},
                    {"timeWidth", o.timeWidth}, {"timeHeight", o.timeHeight},
-                   {"jobs", o.jobs}, {"arguments", o.scenes}};
+                   {"jobs", o.jobs}, {"arguments", o.scenes}, {"shard", shard}};
   json report = assembleReport(machineJson(), settings, std::move(scenes), std::move(ops),
                                std::move(kernelJson));
+  const int status = writeReportFolder(std::move(report), o);
+  fs::remove_all(work, ec);
+  return status;
+}
+
+int writeReportFolder(json report, const Options& o) {
   const fs::path jsonPath = fs::path(o.outDir) / "report.json";
   if (Status s = writeText(jsonPath, dumpJson(report, 2) + "\n"); !s) {
     std::fprintf(stderr, "motorbench report: error: %s\n", s.error().c_str());
@@ -169,7 +185,6 @@ int runReport(const Options& o) {
       return 2;
     }
   }
-  fs::remove_all(work, ec);
   const json& sum = report["summary"];
   say("done: " + std::to_string(sum.value("scenes", 0)) + " scene(s), " +
       std::to_string(sum.value("ok", 0)) + " ok, " + std::to_string(sum.value("partial", 0)) +

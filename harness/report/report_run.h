@@ -5,6 +5,10 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "harness/options/shard.h"
+
 namespace mb::report {
 
 struct Options {
@@ -22,10 +26,16 @@ struct Options {
   std::string python;                // "" = defaultPython() (report_plots.h)
   std::string plotScript;            // "" = scripts/plot.py of this source tree
   double timeoutS = 900;             // per worker process
+  Shard shard;                       // --shard I/N: this run's part of the input list
 };
 
 // Runs every phase; a failing scene is recorded and the run goes on. Returns 0 when the run
 // completed (whatever the scenes did), 2 when the output could not be written.
 int runReport(const Options& options);
+
+// The last phase, shared with `motorbench merge`: writes report.json, the plots (when
+// options.plots) and report.md / report.html into options.outDir. 0, or 2 when a file could not
+// be written (the message is printed).
+int writeReportFolder(nlohmann::json report, const Options& options);
 
 }  // namespace mb::report

@@ -105,26 +105,34 @@ nlohmann::json toJson(const FileStats& f) {
 }
 
 nlohmann::json aggregateJson(const std::vector<FileStats>& files) {
+  nlohmann::json each = nlohmann::json::array();
+  for (const FileStats& f : files) each.push_back(toJson(f));
+  return aggregateFileJson(each);
+}
+
+nlohmann::json aggregateFileJson(const nlohmann::json& files) {
   int loaded = 0, animated = 0, animatedNonUniform = 0, nonUniform = 0, negative = 0, leavesOnly = 0,
       withUnsupported = 0, withFallbacks = 0, skinned = 0, normalMapped = 0;
   long vertices = 0, triangles = 0, primitives = 0, joints = 0, channels = 0;
-  for (const FileStats& f : files) {
-    if (!f.loaded) continue;
+  const nlohmann::json noFallbacks = toJson(LoadStats{});
+  for (const nlohmann::json& f : files) {
+    if (!f.value("loaded", false)) continue;
     ++loaded;
-    animated += f.scale.animatedScale;
-    animatedNonUniform += f.scale.animatedNonUniformScale;
-    nonUniform += f.scale.nonUniformScale;
-    negative += f.scale.negativeScale;
-    leavesOnly += f.scale.nonUniformScale && f.scale.nonUniformOnlyOnLeaves;
-    withUnsupported += !f.unsupported.empty();
-    withFallbacks += toJson(f.fallbacks) != toJson(LoadStats{});
-    skinned += f.skins > 0;
-    normalMapped += f.normalMappedPrimitives > 0;
-    vertices += f.vertices;
-    triangles += f.triangles;
-    primitives += f.primitives;
-    joints += f.joints;
-    channels += f.channels;
+    const nlohmann::json& sc = f["scale"];
+    animated += sc.value("animated", false);
+    animatedNonUniform += sc.value("animatedNonUniform", false);
+    nonUniform += sc.value("nonUniform", false);
+    negative += sc.value("negative", false);
+    leavesOnly += sc.value("nonUniform", false) && sc.value("nonUniformOnlyOnLeaves", false);
+    withUnsupported += !f["unsupported"].empty();
+    withFallbacks += f["fallbacks"] != noFallbacks;
+    skinned += f["skinning"].value("skins", 0) > 0;
+    normalMapped += f["materials"].value("normalMappedPrimitives", 0) > 0;
+    vertices += f["geometry"].value("vertices", 0);
+    triangles += f["geometry"].value("triangles", 0);
+    primitives += f["geometry"].value("primitives", 0);
+    joints += f["skinning"].value("joints", 0);
+    channels += f["animation"].value("channels", 0);
   }
   auto frac = [&](int n) { return loaded ? double(n) / loaded : 0.0; };
   return {{"files", files.size()}, {"loaded", loaded}, {"failed", int(files.size()) - loaded},

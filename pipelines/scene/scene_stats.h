@@ -35,5 +35,8 @@ nlohmann::json toJson(const FileStats& s);
 nlohmann::json toJson(const LoadStats& s);
 // Aggregate over files: counts, sums and fractions (e.g. of loaded files with animated scale).
 nlohmann::json aggregateJson(const std::vector<FileStats>& files);
+// The same from the files' JSON (toJson(FileStats) of each), so that sharded inspect runs can be
+// aggregated by `motorbench merge` exactly as one run would.
+nlohmann::json aggregateFileJson(const nlohmann::json& files);
 
 }  // namespace mb

@@ -1,0 +1,96 @@
+// `motorbench merge DIR... -o OUT [--no-plots] [--python P]`: puts the outputs of sharded runs
+// (`--shard I/N` on report, check or inspect) back together. What is merged follows the inputs:
+// report folders (report.json) -> one report folder; check folders (check.json) -> one
+// check.json + summary; inspect JSON files (--json) -> one inspect JSON. A missing or duplicated
+// shard is an error (exit 2), never a silent partial merge.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/check/check_merge.h"
+#include "harness/cli/command.h"
+#include "harness/options/args.h"
+#include "harness/options/shard.h"
+#include "harness/report/report_merge.h"
+#include "harness/render/render_frame.h"
+#include "pipelines/scene/scene_stats.h"
+
+namespace mb {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+// Inspect --json files of shards -> one inspect JSON with the aggregate over every file, as one
+// run would write it. Exit 1 when some file failed to load (as inspect), 2 when the merge failed.
+int mergeInspectRuns(const std::vector<std::string>& inputs, const std::string& out) {
+  auto fail = [](const std::string& message) { return commandError("merge", message); };
+  std::vector<ShardPart> parts;
+  std::map<std::string, json> byFile;
+  for (const std::string& path : inputs) {
+    std::ifstream in(path);
+    json j = in ? json::parse(in, nullptr, false) : json();
+    if (j.is_discarded() || !j.is_object() || !j.contains("files") || !j.contains("aggregate"))
+      return fail(path + ": not a motorbench inspect --json file");
+    if (!j["shard"].is_object()) return fail(path + ": made without shard information (re-run with --shard I/N)");
+    parts.push_back({path, j["shard"].value("index", 0), j["shard"].value("count", 0),
+                     j["shard"].value("inputs", std::vector<std::string>{})});
+    for (const json& f : j["files"]) byFile[f.value("input", f.value("file", ""))] = f;
+  }
+  if (std::string why = checkShardSet(parts); !why.empty()) return fail(why);
+  json files = json::array();
+  int failed = 0;
+  for (const std::string& file : parts[0].inputs) {
+    auto it = byFile.find(file);
+    if (it == byFile.end()) return fail(file + " is in no shard's file list");
+    failed += !it->second.value("loaded", false);
+    files.push_back(it->second);
+  }
+  json merged = {{"files", files}, {"aggregate", aggregateFileJson(files)},
+                 {"shard", {{"count", parts[0].count}, {"inputs", parts[0].inputs}, {"merged", inputs}}}};
+  std::ofstream o(out);
+  o << merged.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
+  if (!o.flush()) return fail(out + ": cannot write");
+  std::printf("merge: %d shard(s), %zu file(s), %d failed -> %s\n", parts[0].count, files.size(), failed, out.c_str());
+  return failed ? 1 : 0;
+}
+
+int runMerge(const std::vector<std::string>& argv) {
+  auto fail = [](const std::string& message) { return commandError("merge", message); };
+  const Args args(argv, {"no-plots"});
+  if (!args.error().empty()) return fail(args.error());
+  if (auto unknown = args.unknown({"o", "output", "no-plots", "python"}); !unknown.empty())
+    return fail("unknown option " + unknown[0]);
+  const std::vector<std::string>& inputs = args.positional();
+  const std::string out = args.get("o", args.get("output", ""));
+  if (inputs.empty() || out.empty()) return fail("expected shard outputs and -o OUT");
+  auto all = [&](auto pred) {
+    for (const std::string& in : inputs)
+      if (!pred(fs::path(in))) return false;
+    return true;
+  };
+  std::error_code ec;
+  if (all([&](const fs::path& p) { return fs::exists(p / "report.json", ec); })) {
+    report::Options o;
+    o.outDir = out;
+    o.plots = !args.has("no-plots");
+    o.python = args.get("python", "");
+    return report::mergeReports(inputs, o);
+  }
+  if (all([&](const fs::path& p) { return fs::exists(p / "check.json", ec); }))
+    return mergeCheckRuns(inputs, out);
+  if (all([&](const fs::path& p) { return fs::is_regular_file(p, ec) && p.extension() == ".json"; }))
+    return mergeInspectRuns(inputs, out);
+  return fail("every input must be a report folder (report.json), a check folder (check.json) or an "
+              "inspect --json file, all of one kind");
+}
+
+}  // namespace
+}  // namespace mb
+
+MB_COMMAND(merge, "merge", "DIR|FILE... -o OUT [--no-plots] [--python P]",
+           "combine the outputs of --shard I/N runs of report, check or inspect into one",
+           mb::runMerge);
