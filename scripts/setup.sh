@@ -13,7 +13,7 @@ PACKAGES=(
   libbenchmark-dev libgtest-dev libgmock-dev
   glslang-tools spirv-tools
   python3 python3-matplotlib
-  parallel                          # sharded runs (motorbench --shard, tests/cli)
+  parallel python3-yaml              # sharded runs (motorbench --shard, tests/cli, README examples)
 )
 
 missing=()
