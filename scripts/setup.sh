@@ -14,6 +14,7 @@ PACKAGES=(
   glslang-tools spirv-tools
   python3 python3-matplotlib
   parallel python3-yaml              # sharded runs (motorbench --shard, tests/cli, README examples)
+  chromium                          # the report opened in a real browser (tests/cli/test_cli_browser.cpp)
 )
 
 missing=()

@@ -1,5 +1,6 @@
-// HTML renderer of the report document model: one self-contained page (inline CSS, no
-// scripts), images by relative path so the folder can be opened from disk or a repository.
+// HTML renderer of the report document model: one self-contained page (inline CSS, one inline
+// script that only counts images, nothing fetched from the network), images by relative path so
+// the folder can be opened from disk or a repository.
 #include <algorithm>
 
 #include "harness/document/report_format.h"
@@ -20,6 +21,17 @@ figcaption { font-size: 12px; color: #555; max-width: 900px; }
 pre { background: #f5f5f5; padding: 0.6em; overflow-x: auto; font-size: 12px; }
 .small { font-size: 12px; color: #555; }
 )";
+
+// Once the page has loaded, the <body> says how many images it shows and how many failed to
+// decode (data-images, data-broken-images): the browser test (tests/cli/test_cli_browser.cpp)
+// reads them back from headless Chromium. No network, no external script.
+const char* kImageCheck =
+    "<script>window.addEventListener('load', function () {\n"
+    "  var imgs = document.images, broken = 0;\n"
+    "  for (var i = 0; i < imgs.length; ++i) if (!imgs[i].complete || imgs[i].naturalWidth === 0) ++broken;\n"
+    "  document.body.setAttribute('data-images', imgs.length);\n"
+    "  document.body.setAttribute('data-broken-images', broken);\n"
+    "});</script>\n";
 
 std::string cellHtml(const Cell& c) {
   std::string inner;
@@ -73,7 +85,7 @@ std::string toHtml(const Document& doc) {
         break;
     }
   }
-  return out + "</body>\n</html>\n";
+  return out + kImageCheck + "</body>\n</html>\n";
 }
 
 }  // namespace mb::report

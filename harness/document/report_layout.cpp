@@ -239,6 +239,17 @@ void sceneSection(Document& d, const json& r, const json& s) {
     rows.push_back(row);
   }
   if (!rows.empty()) d.table(head, rows);
+  // One loop of the animation, baseline | pipeline | diff, per compared pipeline.
+  if (s.contains("animated") && s["animated"].is_object())
+    for (const auto& [p, a] : s["animated"].items()) {
+      if (a.contains("file"))
+        d.figure(a["file"].get<std::string>(), "Animated: " + pipes[0] + " | " + p + " | diff",
+                 "One loop of animation 0 (" + fixed(a["duration"], 2) + " s) in " + str(a["frames"]) + " frames at " +
+                     str(a["fps"]) + " fps: " + pipes[0] + " left, " + p + " middle, diff heat map right; at most " +
+                     percent(a["maxPixelsOver2"], 2) + " of the pixels differ by more than 2/255 in any frame.");
+      else
+        d.paragraph("Animated comparison " + pipes[0] + " vs " + p + " not made: " + str(a.value("error", json())));
+    }
   // Per pipeline: memory, conversion, fallbacks, timing.
   std::vector<std::vector<Cell>> prow;
   for (const std::string& p : pipes) {

@@ -50,6 +50,31 @@ Status writeImage(const std::string& path, const RgbaImage& image) {
   return {};
 }
 
+Status writeAnimation(const std::string& path, const std::vector<RgbaImage>& frames, int fps) {
+  if (frames.empty()) return Status::fail(path + ": no frames");
+  const int w = frames[0].width, h = frames[0].height;
+  for (const RgbaImage& f : frames)
+    if (f.width != w || f.height != h || f.rgba.size() != size_t(w) * size_t(h) * 4)
+      return Status::fail(path + ": frames differ in size or do not match their RGBA8 data");
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) return Status::fail(path + ": no image writer for this file type (" + OIIO::geterror() + ")");
+  if (!out->supports("multiimage") || !out->supports("appendsubimage"))
+    return Status::fail(path + ": this file type holds no animation (use .gif)");
+  OIIO::ImageSpec spec(w, h, 4, OIIO::TypeDesc::UINT8);
+  const int rate[2] = {fps, 1};
+  spec.attribute("FramesPerSecond", OIIO::TypeRational, rate);
+  spec.attribute("oiio:LoopCount", 0);  // loop forever
+  std::vector<OIIO::ImageSpec> specs(frames.size(), spec);
+  bool ok = out->open(path, int(specs.size()), specs.data());
+  for (size_t i = 0; ok && i < frames.size(); ++i) {
+    if (i > 0) ok = out->open(path, spec, OIIO::ImageOutput::AppendSubimage);
+    ok = ok && out->write_image(OIIO::TypeDesc::UINT8, frames[i].rgba.data());
+  }
+  ok = out->close() && ok;
+  if (!ok) return Status::fail(path + ": write failed: " + out->geterror());
+  return {};
+}
+
 Result<RgbaImage> readImage(const std::string& path) {
   auto in = OIIO::ImageInput::open(path);
   if (!in) return Result<RgbaImage>::fail(path + ": cannot read image: " + OIIO::geterror());

@@ -19,6 +19,9 @@ struct RgbaImage {
 // converts 1-3 channel images to RGBA (grey replicated, alpha 1).
 Status writeImage(const std::string& path, const RgbaImage& image);
 Result<RgbaImage> readImage(const std::string& path);
+// An animated image (GIF through OpenImageIO: one subimage per frame, looping forever) of
+// `frames`, all the same size, shown at `fps` frames per second. Errors name the file.
+Status writeAnimation(const std::string& path, const std::vector<RgbaImage>& frames, int fps);
 
 struct ImageMetrics {
   int width = 0, height = 0;

@@ -130,6 +130,32 @@ Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene
   return s;
 }
 
+Result<std::vector<RgbaImage>> renderFrames(const Scene& scene, const std::string& pipeline,
+                                            const FrameSettings& settings, const std::vector<float>& times) {
+  using R = Result<std::vector<RgbaImage>>;
+  const std::string where = scene.source + " [" + pipeline + "]: ";
+  std::unique_ptr<Pipeline> p = createPipeline(pipeline);
+  if (!p) return R::fail(where + "unknown or unimplemented pipeline");
+  auto ctx = gl::sharedContext();
+  if (!ctx) return R::fail(where + ctx.error());
+  auto fb = gl::Framebuffer::create(settings.width, settings.height);
+  if (!fb) return R::fail(where + fb.error());
+  Status prepared = p->prepare(scene);
+  if (!prepared) return R::fail(where + prepared.error());
+  std::vector<RgbaImage> images;
+  for (float t : times) {
+    AnimState anim = settings.anim;
+    anim.time = t;
+    p->update(anim);
+    const View view = frameScene(scene, anim, float(settings.width) / float(settings.height), settings.camera);
+    (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
+    p->render(view);
+    images.push_back({settings.width, settings.height, (*fb)->readRgba()});
+    if (GLenum err = glGetError(); err != GL_NO_ERROR) return R::fail(where + "GL error after render: " + gl::errorName(err));
+  }
+  return images;
+}
+
 Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
                           const FrameSettings& settings) {
   using R = Result<Frame>;

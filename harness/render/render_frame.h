@@ -38,6 +38,11 @@ constexpr float kBackground[4] = {0.2f, 0.2f, 0.22f, 1.0f};
 Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
                           const FrameSettings& settings);
 
+// The same for several animation times with one prepared pipeline (update + render per time;
+// `settings.anim.time` is replaced by each of `times`): for animated comparisons.
+Result<std::vector<RgbaImage>> renderFrames(const Scene& scene, const std::string& pipeline,
+                                            const FrameSettings& settings, const std::vector<float>& times);
+
 // The options shared by render/compare: --anim A --time T [--anim2 B --time2 T2 --blend W]
 // --camera C --size WxH (or N for NxN). Animations and cameras are indices or names (checked
 // against `scene`); --time2 defaults to --time. Errors name the option and the value.

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "harness/render/image_metrics.h"
+#include "harness/report/report_animation.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scale_analysis.h"
@@ -196,6 +197,7 @@ json measureScene(const SceneJob& job) {
                             {"samples", c}};
     }
   }
+  out["animated"] = animatedComparisons(*scene, job, rel);
   out["status"] = framesOk == framesTried ? "ok" : framesOk > 0 ? "partial" : "failed";
   if (framesOk < framesTried && !pipelineError.empty())
     out["error"] = pipelineError.begin()->second;
