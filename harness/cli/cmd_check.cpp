@@ -16,6 +16,7 @@
 
 #include "harness/options/args.h"
 #include "harness/options/shard.h"
+#include "harness/process/progress.h"
 #include "harness/check/check_report.h"
 #include "harness/cli/command.h"
 #include "harness/check/golden.h"
@@ -117,6 +118,7 @@ int check(const Selection& sel) {
   std::vector<std::string> mine;
   for (size_t k : shardPositions(sel.scenes, sel.shard)) mine.push_back(sel.scenes[k]);
   std::set<std::string> rendererNotes, planned;
+  Progress progress("check", "scenes checked", mine.size(), false);
   for (const std::string& name : mine) {
     auto scene = loadScene(name);
     golden::SceneThresholds thresholds = golden::defaultThresholds(name);
@@ -125,6 +127,7 @@ int check(const Selection& sel) {
     if (!scene) {
       run.items.push_back({name, name, "", "", Outcome::Error, "", false, {}, scene.error(), "", "", ""});
       std::printf("%s\n", consoleLine(run.items.back()).c_str());
+      progress.done(name + ": error");
       continue;
     }
     for (const golden::Pose& pose : golden::posesFor(*scene)) {
@@ -141,6 +144,7 @@ int check(const Selection& sel) {
         run.items.push_back(std::move(item));
       }
     }
+    progress.done(name);
   }
   std::set<std::string> scenes(mine.begin(), mine.end());
   std::set<std::string> pipelines(sel.pipelines.begin(), sel.pipelines.end());

@@ -17,6 +17,7 @@
 #include <set>
 
 #include "harness/options/args.h"
+#include "harness/process/progress.h"
 #include "harness/cli/command.h"
 #include "harness/timing/frame_timing.h"
 #include "harness/process/report_workers.h"
@@ -178,6 +179,7 @@ int runTime(const std::vector<std::string>& argv) {
   int status = 0;
   const std::string scratch = (std::filesystem::temp_directory_path() /
                                ("motorbench-time-" + std::to_string(::getpid()) + ".json")).string();
+  Progress progress("time", "scenes timed", names.size(), false);
   for (const std::string& name : names) {
     std::vector<std::string> child = {"time", name, "--worker", scratch};
     for (const char* key : {"frames", "warmup", "best-of", "size", "tiny"})
@@ -192,8 +194,10 @@ int runTime(const std::vector<std::string>& argv) {
       std::fprintf(stderr, "motorbench time: error: %s: %s\n", name.c_str(), why.c_str());
       results.push_back({{"scene", name}, {"error", why}});
       status = 2;
+      progress.done(name + ": failed");
       continue;
     }
+    progress.done(name);
     if (!how.empty()) status = 2;
     for (auto& r : rows) results.push_back(std::move(r));
   }

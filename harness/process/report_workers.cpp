@@ -1,5 +1,9 @@
 #include "harness/process/report_workers.h"
 
+#include <optional>
+
+#include "harness/process/progress.h"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -94,8 +98,11 @@ std::string selfExecutable() {
   return std::string(buf, size_t(n));
 }
 
-std::vector<nlohmann::json> runWorkers(const std::vector<WorkerTask>& tasks, int jobs, double timeoutS) {
+std::vector<nlohmann::json> runWorkers(const std::vector<WorkerTask>& tasks, int jobs, double timeoutS,
+                                       const std::string& progress) {
   std::vector<nlohmann::json> results(tasks.size());
+  std::optional<Progress> line;
+  if (!progress.empty()) line.emplace("report", progress, tasks.size());
   std::vector<Child> running;
   size_t next = 0;
   // A result counts when the child marked it complete ("complete": true, written last), even
@@ -126,6 +133,7 @@ std::vector<nlohmann::json> runWorkers(const std::vector<WorkerTask>& tasks, int
       std::string how;
       if (finished(running[r], timeoutS, &how)) {
         collect(running[r].task, how);
+        if (line) line->done(tasks[running[r].task].onFailure.value("id", "#" + std::to_string(running[r].task + 1)));
         running.erase(running.begin() + long(r));
         any = true;
       } else {

@@ -22,7 +22,9 @@ std::string selfExecutable();
 // Runs every task, at most `jobs` at once, each killed after `timeoutS` seconds. Returns, in
 // task order, the JSON each child wrote, or `onFailure` with "error" saying how it ended
 // ("exit status 3", "killed by signal 11", "timed out after 600 s").
-std::vector<nlohmann::json> runWorkers(const std::vector<WorkerTask>& tasks, int jobs, double timeoutS);
+// `progress` ("scenes rendered"; empty: none) names the items of a Progress line per finished task.
+std::vector<nlohmann::json> runWorkers(const std::vector<WorkerTask>& tasks, int jobs, double timeoutS,
+                                       const std::string& progress = "");
 
 // Runs one command (this executable with `args`) to completion, stdout sent to `stdoutPath`
 // (or inherited when empty). Returns "" on exit status 0, else how it ended.

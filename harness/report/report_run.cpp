@@ -129,7 +129,7 @@ int runReport(const Options& o) {
     tasks.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "render", result), result,
                      {{"id", inputs[size_t(i)].id}, {"spec", inputs[size_t(i)].spec}}});
   }
-  std::vector<json> scenes = runWorkers(tasks, o.jobs, o.timeoutS);
+  std::vector<json> scenes = runWorkers(tasks, o.jobs, o.timeoutS, "scenes measured");
 
   // Phase 2: frame timing, one scene at a time.
   if (o.frames > 0) {
@@ -138,10 +138,11 @@ int runReport(const Options& o) {
     for (int i = 0; i < total; ++i) {
       if (scenes[size_t(i)].value("status", "failed") == "failed") continue;
       const std::string result = (work / (inputs[size_t(i)].id + ".time.json")).string();
-      timing.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "time", result), result, json::object()});
+      timing.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "time", result), result,
+                        {{"id", inputs[size_t(i)].id}}});
       which.push_back(size_t(i));
     }
-    std::vector<json> times = runWorkers(timing, 1, o.timeoutS);
+    std::vector<json> times = runWorkers(timing, 1, o.timeoutS, "scenes timed");
     for (size_t t = 0; t < times.size(); ++t) scenes[which[t]]["timing"] = times[t];
   }
 

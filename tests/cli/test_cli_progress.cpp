@@ -1,0 +1,38 @@
+// Long runs show progress with an estimate of the time left (issue 17, item 4): in a log
+// (stderr not a terminal, as here) one plain line per finished item.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "harness/process/progress.h"
+#include "tests/support/cli_test_support.h"
+
+namespace mb::cli_test {
+namespace {
+
+TEST(Progress, DurationTextReadsAsAPersonWouldSayIt) {
+  EXPECT_EQ(durationText(0.4), "0 s");
+  EXPECT_EQ(durationText(45), "45 s");
+  EXPECT_EQ(durationText(185), "3 min 05 s");
+  EXPECT_EQ(durationText(3720), "1 h 02 min");
+}
+
+TEST(Progress, CheckAndReportPrintOneLinePerItemWithTimeLeft) {
+  const auto dir = scratchDir("progress");
+  std::string out;
+  runCommand(motorbench() + "check --golden " + quoted(std::filesystem::path(MB_SOURCE_DIR) / "tests" / "golden") +
+                 " --scenes textured_box,normal_torus --out " + quoted(dir / "check"), &out);
+  EXPECT_TRUE(std::regex_search(out, std::regex("check: 1/2 scenes checked \\((normal_torus|textured_box)\\), [0-9]+ s elapsed, about [0-9]+ s left\n")))
+      << out;
+  EXPECT_TRUE(std::regex_search(out, std::regex("check: 2/2 scenes checked \\([a-z_]+\\), [0-9]+ s elapsed\n"))) << out;
+  EXPECT_EQ(out.find('\r'), std::string::npos);  // not a terminal: no in-place rewriting
+  out.clear();
+  ASSERT_EQ(runCommand(motorbench() + "report textured_box normal_torus --frames 0 --no-bench --no-plots --size 32x24 -o " +
+                           quoted(dir / "report"), &out), 0) << out;
+  EXPECT_NE(out.find("report: 1/2 scenes measured (textured_box)"), std::string::npos) << out;
+  EXPECT_NE(out.find("report: 2/2 scenes measured (normal_torus)"), std::string::npos) << out;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace mb::cli_test
