@@ -147,7 +147,11 @@ Result<Scene> loadGltfMemory(const std::vector<uint8_t>& bytes, const std::strin
     bool ok = glb ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir)
                   : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
                                                unsigned(bytes.size()), baseDir);
-    if (!ok) return Result<Scene>::fail(name + ": " + (err.empty() ? "tinygltf failed to parse" : firstLines(err)));
+    if (!ok && err.empty()) {
+      const std::string why = explainRefusal(bytes);
+      return Result<Scene>::fail(name + ": " + (why.empty() ? "tinygltf refused the file without saying why" : why));
+    }
+    if (!ok) return Result<Scene>::fail(name + ": " + firstLines(err));
     return convert(model, name, ctx);
   } catch (const std::exception& e) {
     return Result<Scene>::fail(name + ": " + e.what());

@@ -158,4 +158,52 @@ Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameH
   return {};
 }
 
+std::string explainRefusal(const std::vector<uint8_t>& bytes) {
+  size_t begin = 0, length = bytes.size();
+  if (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0 && !checkGlb(bytes, &begin, &length)) return "";
+  const nlohmann::json doc = nlohmann::json::parse(bytes.begin() + long(begin), bytes.begin() + long(begin + length),
+                                                   nullptr, false);
+  if (!doc.is_object()) return "";
+  // The required properties of the glTF 2.0 schema that tinygltf 2.7 enforces without a message.
+  struct Rule {
+    const char* array;
+    const char* what;
+    std::vector<const char*> required;
+  };
+  static const Rule rules[] = {
+      {"buffers", "buffer", {"byteLength"}},
+      {"bufferViews", "bufferView", {"buffer", "byteLength"}},
+      {"accessors", "accessor", {"componentType", "count", "type"}},
+      {"meshes", "mesh", {"primitives"}},
+      {"skins", "skin", {"joints"}},
+      {"animations", "animation", {"channels", "samplers"}},
+      {"cameras", "camera", {"type"}},
+  };
+  for (const Rule& r : rules) {
+    auto arr = doc.find(r.array);
+    if (arr == doc.end() || !arr->is_array()) continue;
+    for (size_t i = 0; i < arr->size(); ++i) {
+      const nlohmann::json& o = (*arr)[i];
+      const std::string who = std::string(r.what) + " " + std::to_string(i);
+      if (!o.is_object()) return who + " is not an object";
+      for (const char* key : r.required) {
+        if (o.contains(key)) continue;
+        if (std::string(r.array) == "skins" && o.contains("jointNames"))
+          return who + " has 'jointNames' but no 'joints': glTF 2.0 pre-release file";
+        return who + " has no '" + key + "' (required by glTF 2.0)";
+      }
+      if (std::string(r.array) == "meshes")
+        for (size_t p = 0; p < o["primitives"].size(); ++p)
+          if (o["primitives"].is_array() && !o["primitives"][p].contains("attributes"))
+            return who + " primitive " + std::to_string(p) + " has no 'attributes' (required by glTF 2.0)";
+      if (std::string(r.array) == "animations" && o["channels"].is_array())
+        for (size_t c = 0; c < o["channels"].size(); ++c)
+          for (const char* key : {"sampler", "target"})
+            if (!o["channels"][c].contains(key))
+              return who + " channel " + std::to_string(c) + " has no '" + key + "' (required by glTF 2.0)";
+    }
+  }
+  return "";
+}
+
 }  // namespace mb

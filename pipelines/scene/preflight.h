@@ -15,4 +15,9 @@ namespace mb {
 // `nameHint` (the file name) turns a non-GLB file named *.glb into "bad GLB magic".
 Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb);
 
+// Why tinygltf 2.7 refused a document that passed preflightGltf without saying why: the first
+// property the glTF 2.0 schema requires that is missing (e.g. "skin 0 has 'jointNames' but no
+// 'joints': glTF 2.0 pre-release file"), or "" when none is missing.
+std::string explainRefusal(const std::vector<uint8_t>& bytes);
+
 }  // namespace mb
