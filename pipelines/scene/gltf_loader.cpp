@@ -1,17 +1,16 @@
 // loadGltfFile / loadGltfMemory / loadScene: preflight, tinygltf parse, conversion to Scene.
 #include "pipelines/scene/loader.h"
 
-#include <stb_image.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
 
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/gltf_convert.h"
+#include "pipelines/scene/image_decode.h"
 #include "pipelines/scene/preflight.h"
 
 namespace mb {
@@ -42,48 +41,28 @@ bool fsWrite(std::string* err, const std::string&, const std::vector<unsigned ch
   return false;
 }
 
-// Images above this many pixels (8192 x 8192, 256 MiB as RGBA8) are not decoded: the header
-// alone decides, so a few-hundred-byte PNG claiming 16000 x 16000 does not make stb_image
-// reserve a gigabyte.
-constexpr long long kMaxImagePixels = 1LL << 26;
-
-// stb_image reserves a PNG chunk's declared length before reading it, so a 4 kB file whose IDAT
-// claims 1 GB made it allocate 1 GB. Every chunk must fit in the bytes there are.
-bool pngChunksFit(const unsigned char* bytes, int size) {
-  static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  if (size < 8 || std::memcmp(bytes, sig, 8) != 0) return true;  // not PNG: nothing to check
-  for (size_t at = 8; at + 8 <= size_t(size);) {
-    uint64_t len = (uint64_t(bytes[at]) << 24) | (uint64_t(bytes[at + 1]) << 16) | (uint64_t(bytes[at + 2]) << 8) | bytes[at + 3];
-    if (len + 12 > size_t(size) - at) return false;
-    at += size_t(len) + 12;
-  }
-  return true;
-}
-
-// Undecodable images do not fail the file: the image stays empty and is replaced later.
+// Undecodable images do not fail the file: the image stays empty (replaced by 1x1 white and
+// counted later) and the reason is listed. Decoding is decodeImage's: header checks, then
+// OpenImageIO's PNG or JPEG reader; the result is always RGBA8.
 bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
                int reqWidth, int reqHeight, const unsigned char* bytes, int size, void* user) {
-  int w = 0, h = 0, comps = 0;
-  if (stbi_info_from_memory(bytes, size, &w, &h, &comps) && (long long)w * h > kMaxImagePixels) {
-    static_cast<LoadContext*>(user)->imageNotes.push_back("image " + std::to_string(index) + ": " + std::to_string(w) +
-                                                          "x" + std::to_string(h) + " pixels is too large (limit " +
-                                                          std::to_string(kMaxImagePixels) + ")");
-    image->image.clear();
-    return true;
-  }
-  if (!pngChunksFit(bytes, size)) {
-    static_cast<LoadContext*>(user)->imageNotes.push_back("image " + std::to_string(index) +
-                                                          ": corrupt PNG (a chunk is longer than the image data)");
-    image->image.clear();
-    return true;
-  }
-  std::string myErr;
-  if (tinygltf::LoadImageData(image, index, &myErr, warn, reqWidth, reqHeight, bytes, size, nullptr))
-    return true;
   (void)err;
-  std::string reason = myErr.substr(0, myErr.find('\n'));
-  static_cast<LoadContext*>(user)->imageNotes.push_back("image " + std::to_string(index) + ": " + reason);
+  (void)warn;
+  auto& notes = static_cast<LoadContext*>(user)->imageNotes;
   image->image.clear();
+  Result<DecodedImage> d = decodeImage(bytes, size > 0 ? size_t(size) : 0);
+  if (d && ((reqWidth > 0 && reqWidth != d->width) || (reqHeight > 0 && reqHeight != d->height)))
+    d = Result<DecodedImage>::fail("size differs from the declared " + std::to_string(reqWidth) + "x" + std::to_string(reqHeight));
+  if (!d) {
+    notes.push_back("image " + std::to_string(index) + ": " + d.error());
+    return true;
+  }
+  image->width = d->width;
+  image->height = d->height;
+  image->component = 4;
+  image->bits = 8;
+  image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+  image->image = std::move(d->rgba);
   return true;
 }
 
