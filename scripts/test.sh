@@ -2,8 +2,8 @@
 # The test command: installs packages, configures, builds and runs the whole test suite.
 #   scripts/test.sh              Release-ish build in build/, all tests
 #   scripts/test.sh --sanitize   ASan+UBSan build in build-asan/, all tests
-# The default run then fuzzes the loader for 60 s (scripts/fuzz.sh, its own clang build in
-# build-fuzz/); MB_SKIP_FUZZ=1 skips that step.
+# The default run then fuzzes the loader and the image decoder for 60 s (scripts/fuzz.sh, its
+# own clang build in build-fuzz/); MB_SKIP_FUZZ=1 skips that step.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

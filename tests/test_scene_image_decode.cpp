@@ -34,25 +34,9 @@ namespace {
 
 using mb::hostile::Bytes;
 
-// A PNG with the given IHDR fields and already-packed scanlines (filter byte 0 is prepended).
 Bytes pngOf(uint32_t w, uint32_t h, uint8_t depth, uint8_t colourType, const std::vector<Bytes>& rows,
             const Bytes& plte = {}, const Bytes& trns = {}) {
-  Bytes out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
-  Bytes ihdr;
-  for (uint32_t v : {w, h})
-    for (int s = 24; s >= 0; s -= 8) ihdr.push_back(uint8_t(v >> s));
-  ihdr.insert(ihdr.end(), {depth, colourType, 0, 0, 0});
-  mb::hostile::pngChunk(out, "IHDR", ihdr);
-  if (!plte.empty()) mb::hostile::pngChunk(out, "PLTE", plte);
-  if (!trns.empty()) mb::hostile::pngChunk(out, "tRNS", trns);
-  Bytes raw;
-  for (const Bytes& r : rows) {
-    raw.push_back(0);
-    raw.insert(raw.end(), r.begin(), r.end());
-  }
-  mb::hostile::pngChunk(out, "IDAT", mb::hostile::zlibStored(raw));
-  mb::hostile::pngChunk(out, "IEND", {});
-  return out;
+  return mb::hostile::pngRaw(w, h, depth, colourType, rows, plte, trns);
 }
 
 Bytes rgba(std::initializer_list<std::array<int, 4>> px) {
@@ -113,6 +97,9 @@ std::vector<PngCase> pngCases() {
   // RGBA: straight alpha stays as stored (OpenImageIO would premultiply without the hint).
   cs.push_back({"RGBA 8", pngOf(1, 2, 8, 6, {{200, 100, 50, 10}, {1, 2, 3, 0}}), rgba({{200, 100, 50, 10}, {1, 2, 3, 0}})});
   cs.push_back({"RGBA 16", pngOf(1, 1, 16, 6, {{0x80, 0, 0x40, 0xFF, 0x20, 1, 0x10, 0x80}}), rgba({{0x80, 0x40, 0x20, 0x10}})});
+  // Adam7, 2x2 RGB: pass 1 holds (0,0), pass 6 (1,0), pass 7 row 1; passes 2-5 are empty.
+  cs.push_back({"RGB 8 Adam7", mb::hostile::pngRaw(2, 2, 8, 2, {{1, 2, 3}, {4, 5, 6}, {7, 8, 9, 10, 11, 12}}, {}, {}, true),
+                rgba({{1, 2, 3, 255}, {4, 5, 6, 255}, {7, 8, 9, 255}, {10, 11, 12, 255}})});
   return cs;
 }
 

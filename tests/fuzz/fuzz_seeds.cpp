@@ -1,12 +1,15 @@
-// fuzz_seeds DIR: writes the fuzzer's seed corpus -- every built-in scene as .glb (through
-// builtinSceneGlb, the bytes `motorbench scenes -o` writes), the hostile catalogue
+// fuzz_seeds DIR: writes the run-time part of the fuzzer's seeds -- every built-in scene as .glb
+// (through builtinSceneGlb, the bytes `motorbench scenes -o` writes), the hostile catalogue
 // (tests/hostile/hostile_cases.h, both good and bad files) and the rich test document in its
 // three forms (.glb, .gltf with data: URI). Deterministic: same files every run.
+// fuzz_seeds --repo DIR: writes the committed seed corpus (tests/fuzz/seed_corpus_scenes.h) to
+// DIR/loader and DIR/images; run as `fuzz_seeds --repo tests/fuzz/seeds` after changing it.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
 #include "pipelines/scene/builtin_scenes.h"
+#include "tests/fuzz/seed_corpus_scenes.h"
 #include "tests/hostile/hostile_cases.h"
 
 namespace {
@@ -18,12 +21,31 @@ bool write(const std::filesystem::path& p, const std::vector<uint8_t>& b) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: fuzz_seeds DIR\n");
-    return 2;
-  }
   namespace fs = std::filesystem;
   using namespace mb::hostile;
+  if (argc == 3 && std::string(argv[1]) == "--repo") {
+    size_t bytes = 0;
+    int n = 0;
+    for (const auto& [sub, files] : {std::pair{"loader", mb::fuzz::loaderSeeds()}, std::pair{"images", mb::fuzz::imageSeeds()}}) {
+      const fs::path dir = fs::path(argv[2]) / sub;
+      fs::remove_all(dir);
+      fs::create_directories(dir);
+      for (const auto& f : files) {
+        if (f.bytes.empty()) {
+          std::fprintf(stderr, "fuzz_seeds: %s came out empty\n", f.name.c_str());
+          return 2;
+        }
+        n += write(dir / f.name, f.bytes);
+        bytes += f.bytes.size();
+      }
+    }
+    std::printf("fuzz_seeds: %d files, %zu bytes in %s\n", n, bytes, argv[2]);
+    return 0;
+  }
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: fuzz_seeds DIR | fuzz_seeds --repo DIR\n");
+    return 2;
+  }
   const fs::path dir = argv[1];
   fs::create_directories(dir);
   int n = 0;

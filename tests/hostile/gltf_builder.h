@@ -154,6 +154,28 @@ inline Bytes png(uint32_t width, uint32_t height, const Bytes& rgba, uint32_t da
   return out;
 }
 
+// A PNG with any IHDR fields and already-packed scanlines (filter byte 0 is prepended to each
+// row; for Adam7, pass the reduced rows of the seven passes in order). Optional PLTE and tRNS.
+inline Bytes pngRaw(uint32_t w, uint32_t h, uint8_t depth, uint8_t colourType, const std::vector<Bytes>& rows,
+                    const Bytes& plte = {}, const Bytes& trns = {}, bool adam7 = false) {
+  Bytes out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  Bytes ihdr;
+  for (uint32_t v : {w, h})
+    for (int s = 24; s >= 0; s -= 8) ihdr.push_back(uint8_t(v >> s));
+  ihdr.insert(ihdr.end(), {depth, colourType, 0, 0, uint8_t(adam7 ? 1 : 0)});
+  pngChunk(out, "IHDR", ihdr);
+  if (!plte.empty()) pngChunk(out, "PLTE", plte);
+  if (!trns.empty()) pngChunk(out, "tRNS", trns);
+  Bytes raw;
+  for (const Bytes& r : rows) {
+    raw.push_back(0);
+    raw.insert(raw.end(), r.begin(), r.end());
+  }
+  pngChunk(out, "IDAT", zlibStored(raw));
+  pngChunk(out, "IEND", {});
+  return out;
+}
+
 inline Bytes checkerPng(uint32_t size = 4) {
   Bytes px;
   for (uint32_t y = 0; y < size; ++y)
