@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "tests/cli_test_support.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 
