@@ -70,7 +70,7 @@ if [ "$LOADER_S" -gt 0 ]; then
     || { rc=$?; echo "fuzz.sh: FINDING in fuzz_loader (exit $rc); input saved in $ARTIFACTS/ -- see $BUILD/fuzz.log" >&2; }
 fi
 if [ "$rc" -eq 0 ] && [ "$IMAGES_S" -gt 0 ]; then
-  fuzz fuzz_images "$IMAGES_S" "$BUILD/fuzz-images.log" "$BUILD/fuzz-corpus-images" tests/fuzz/seeds/images \
+  fuzz fuzz_images "$IMAGES_S" "$BUILD/fuzz-images.log" "$BUILD/fuzz-corpus-images" tests/fuzz/seeds/images tests/fuzz/regressions/images \
     || { rc=$?; echo "fuzz.sh: FINDING in fuzz_images (exit $rc); input saved in $ARTIFACTS/ -- see $BUILD/fuzz-images.log" >&2; }
 fi
 [ "$rc" -ne 0 ] && exit 1

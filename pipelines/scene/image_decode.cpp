@@ -18,13 +18,18 @@ Result<ImageHeader> pngHeader(const uint8_t* b, size_t size) {
   // Signature, then IHDR: length 13, "IHDR", width, height, depth, colour type, ...
   if (size < 8 + 8 + 13) return Result<ImageHeader>::fail("truncated PNG header");
   if (be32(b + 8) != 13 || std::memcmp(b + 12, "IHDR", 4) != 0) return Result<ImageHeader>::fail("PNG does not start with IHDR");
-  // libpng reserves nothing for a chunk before reading it, but stb_image did, and a chunk that
-  // runs past the data is corrupt either way (finding F11: an IDAT length of 1.1 GB in 4 kB).
-  for (size_t at = 8; at + 8 <= size;) {
+  // Every chunk must lie inside the bytes, up to a complete IEND: a chunk running past the data
+  // made stb_image reserve its declared length (finding F11: an IDAT of 1.1 GB in 4 kB), and a
+  // PNG ending before IEND makes OpenImageIO 2.4's read callback longjmp (png_error) past a
+  // std::string it just built, leaking it (finding F13). libpng reads nothing after IEND.
+  bool iend = false;
+  for (size_t at = 8; at + 8 <= size && !iend;) {
     uint64_t len = be32(b + at);
     if (len + 12 > size - at) return Result<ImageHeader>::fail("corrupt PNG (a chunk is longer than the image data)");
+    iend = std::memcmp(b + at + 4, "IEND", 4) == 0;
     at += size_t(len) + 12;
   }
+  if (!iend) return Result<ImageHeader>::fail("truncated PNG (no IEND chunk)");
   ImageHeader h;
   h.format = ImageFormat::Png;
   h.width = be32(b + 16);

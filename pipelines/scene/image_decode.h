@@ -26,7 +26,8 @@ struct ImageHeader {
 // Reads the PNG IHDR (which must be the first chunk) or the first JPEG frame header (SOFn,
 // skipping other segments by their lengths, tolerating junk between markers as libjpeg does).
 // Fails, with the reason, on anything that is neither PNG nor JPEG, on a truncated or zero-size
-// header, and on a PNG whose chunk lengths run past the bytes there are. Reads only inside
+// header, on a PNG whose chunk lengths run past the bytes there are, and on a PNG that ends
+// before a complete IEND chunk. Reads only inside
 // [bytes, bytes + size).
 Result<ImageHeader> readImageHeader(const uint8_t* bytes, size_t size);
 

@@ -206,6 +206,20 @@ TEST(ImageDecode, HeadersAreCheckedBeforeAnyDecoding) {
   d = mb::decodeImage(gif.data(), gif.size());
   ASSERT_FALSE(d.ok());
   EXPECT_NE(d.error().find("not a PNG or JPEG"), std::string::npos) << d.error();
+  // A PNG that ends after IHDR (finding F13: OpenImageIO's read callback leaked a string when
+  // libpng hit the end): refused before OpenImageIO runs.
+  Bytes ihdrOnly = mb::hostile::checkerPng();
+  ihdrOnly.resize(8 + 25 + 3);
+  d = mb::decodeImage(ihdrOnly.data(), ihdrOnly.size());
+  ASSERT_FALSE(d.ok());
+  EXPECT_NE(d.error().find("no IEND"), std::string::npos) << d.error();
+  // Complete chunks but no IEND (cut after IDAT), and junk after IEND (ignored, decodes).
+  Bytes noIend = mb::hostile::checkerPng();
+  noIend.resize(noIend.size() - 12);
+  EXPECT_FALSE(mb::decodeImage(noIend.data(), noIend.size()).ok());
+  Bytes trailing = mb::hostile::checkerPng();
+  trailing.insert(trailing.end(), {1, 2, 3, 4, 5, 6, 7, 8, 9});
+  EXPECT_TRUE(mb::decodeImage(trailing.data(), trailing.size()).ok());
   // Zero width.
   Bytes zero = pngOf(0, 1, 8, 0, {{}});
   EXPECT_FALSE(mb::readImageHeader(zero.data(), zero.size()).ok());
