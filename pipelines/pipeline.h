@@ -51,9 +51,22 @@ public:
   virtual PipelineStats stats() const = 0;
 };
 
+// The glTF pipelines' guard in prepare(): a curved-space scene (Scene::curved, issue 15) is
+// refused with a message naming the scene, its space and the pipelines that draw it.
+inline Status refuseCurvedScene(const Scene& scene, const std::string& pipeline) {
+  if (scene.curved.space == Space::Euclidean) return {};
+  const bool s3 = scene.curved.space == Space::Spherical;
+  return Status::fail(scene.source + ": pipeline " + pipeline + " draws Euclidean glTF scenes; this is a " +
+                      (s3 ? "spherical (S3)" : "hyperbolic (H3)") + " scene: use " +
+                      (s3 ? "s3_matrix or s3_motor" : "h3_matrix or h3_motor"));
+}
+
 // nullptr when `name` is not registered.
 std::unique_ptr<Pipeline> createPipeline(const std::string& name);
-// Registered names, the matrix baseline first.
-std::vector<std::string> pipelineNames();
+// Registered names of the pipelines that draw scenes of `space`, the matrix baseline first.
+// The default (Euclidean: every glTF scene) is what commands and tests run when not told.
+std::vector<std::string> pipelineNames(Space space = Space::Euclidean);
+// Every registered name, curved-space pipelines included.
+std::vector<std::string> allPipelineNames();
 
 }  // namespace mb

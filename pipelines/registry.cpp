@@ -1,4 +1,5 @@
 // Name -> factory for every pipeline. One line per pipeline.
+#include "pipelines/curved/curved_pipeline.h"
 #include "pipelines/matrix/matrix_pipeline.h"
 #include "pipelines/motor/motor_pipeline.h"
 #include "pipelines/pipeline.h"
@@ -8,10 +9,15 @@ namespace {
 struct Entry {
   const char* name;
   std::unique_ptr<Pipeline> (*make)();
+  Space space;  // the scenes it draws
 };
 const Entry kPipelines[] = {
-    {"matrix", makeMatrixPipeline},
-    {"motor", makeMotorPipeline},
+    {"matrix", makeMatrixPipeline, Space::Euclidean},
+    {"motor", makeMotorPipeline, Space::Euclidean},
+    {"s3_matrix", makeS3MatrixPipeline, Space::Spherical},
+    {"s3_motor", makeS3MotorPipeline, Space::Spherical},
+    {"h3_matrix", makeH3MatrixPipeline, Space::Hyperbolic},
+    {"h3_motor", makeH3MotorPipeline, Space::Hyperbolic},
 };
 }  // namespace
 
@@ -21,7 +27,14 @@ std::unique_ptr<Pipeline> createPipeline(const std::string& name) {
   return nullptr;
 }
 
-std::vector<std::string> pipelineNames() {
+std::vector<std::string> pipelineNames(Space space) {
+  std::vector<std::string> names;
+  for (const Entry& e : kPipelines)
+    if (e.space == space) names.push_back(e.name);
+  return names;
+}
+
+std::vector<std::string> allPipelineNames() {
   std::vector<std::string> names;
   for (const Entry& e : kPipelines) names.push_back(e.name);
   return names;

@@ -43,6 +43,7 @@ private:
 
 Status MatrixPipeline::prepare(const Scene& scene) {
   release();
+  if (Status curved = refuseCurvedScene(scene, name()); !curved) return curved;
   scene_ = &scene;
   stats_ = PipelineStats{};
   auto rigid = gl::Program::fromFiles("matrix.vs", "forward.fs");

@@ -65,6 +65,7 @@ private:
 
 Status MotorPipeline::prepare(const Scene& scene) {
   release();
+  if (Status curved = refuseCurvedScene(scene, name()); !curved) return curved;
   scene_ = &scene;
   stats_ = PipelineStats{};
   for (int skinned = 0; skinned < 2; ++skinned)

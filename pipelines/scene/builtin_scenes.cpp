@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "pipelines/scene/builtin_internal.h"
+#include "pipelines/scene/curved_space.h"
 
 namespace mb {
 namespace {
@@ -26,9 +27,13 @@ const std::vector<std::string>& builtinSceneNames() {
   return names;
 }
 
-bool isBuiltinScene(const std::string& name) { return builderFor(name) != nullptr; }
+bool isBuiltinScene(const std::string& name) {
+  return builderFor(name) != nullptr || isCurvedScene(name);
+}
 
 Result<std::vector<uint8_t>> builtinSceneGlb(const std::string& name) {
+  if (isCurvedScene(name))
+    return Result<std::vector<uint8_t>>::fail(name + ": a curved-space scene (built in code); glTF cannot hold it");
   Builder build = builderFor(name);
   if (!build) return Result<std::vector<uint8_t>>::fail(name + ": not a built-in scene");
   GlbBuilder b;

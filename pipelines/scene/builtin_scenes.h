@@ -12,6 +12,8 @@ namespace mb {
 
 // "normal_torus", "textured_box", "skinned_tube", "scaled_hierarchy", "crowd".
 const std::vector<std::string>& builtinSceneNames();
+// True for those and for the curved-space scenes (curved_space.h: curvedSceneNames()), which
+// loadScene builds in code; builtinSceneGlb refuses those (glTF has no curved space).
 bool isBuiltinScene(const std::string& name);
 // The .glb bytes of built-in scene `name` (deterministic: same bytes every call).
 Result<std::vector<uint8_t>> builtinSceneGlb(const std::string& name);

@@ -1,5 +1,6 @@
 // loadGltfFile / loadGltfMemory / loadScene: preflight, tinygltf parse, conversion to Scene.
 #include "pipelines/scene/loader.h"
+#include "pipelines/scene/curved_space.h"
 
 #include <tiny_gltf.h>
 
@@ -152,6 +153,7 @@ Result<Scene> loadGltfFile(const std::string& path) {
 }
 
 Result<Scene> loadScene(const std::string& fileOrBuiltinName) {
+  if (isCurvedScene(fileOrBuiltinName)) return buildCurvedScene(fileOrBuiltinName);
   if (!isBuiltinScene(fileOrBuiltinName)) return loadGltfFile(fileOrBuiltinName);
   auto glb = builtinSceneGlb(fileOrBuiltinName);
   if (!glb) return Result<Scene>::fail(glb.error());

@@ -138,6 +138,32 @@ struct LoadStats {
   int imagesNotDecoded = 0;           // images replaced by 1x1 white (listed in unsupported)
 };
 
+// Curved space (issue 15): spherical S3 and hyperbolic H3 scenes, built in code (glTF has no
+// curved space). Points are vec4 (x, y, z, w) on the quadric x^2+y^2+z^2 + kappa w^2 = kappa
+// (kappa = +1: S3, -1: H3, origin (0,0,0,1)); normals are tangent vectors there. Isometries
+// are 4x4 matrices (O(4) / O(3,1)) as the scene's generator made them, in double; each
+// pipeline converts them to its own form (a motor pipeline to motors) in prepare().
+enum class Space { Euclidean, Spherical, Hyperbolic };
+
+// A rotation of the coordinate plane (i, j) of R^4 by angle0 + rate * t: j < 3 turns e_i
+// towards e_j; j = 3 moves the origin towards +e_i by that distance (S3: a rotation, H3: a
+// boost). The camera's pose (camera -> world) is the product of its moves, first one leftmost.
+struct CurvedMove {
+  int i = 0, j = 1;
+  double angle0 = 0.0, rate = 0.0;
+};
+
+struct CurvedScene {
+  Space space = Space::Euclidean;           // Euclidean: not a curved scene (every glTF)
+  std::vector<glm::vec4> positions;         // triangle list shared by every instance
+  std::vector<glm::vec4> normals;           // tangent at each position, unit in the form
+  std::vector<glm::dmat4> instances;        // object -> world isometry per instance
+  std::vector<glm::vec4> lights;            // 3 point lights (world), red / green / blue
+  float lightStrength = 0.3f;               // diffuse factor of each light
+  std::vector<CurvedMove> camera;           // camera -> world at time t (AnimState::time)
+  float yfov = 1.5707964f;                  // vertical field of view
+};
+
 struct Scene {
   std::string source;  // file path or built-in name
   std::vector<Node> nodes;
@@ -152,6 +178,7 @@ struct Scene {
   std::vector<Camera> cameras;
   std::vector<std::string> unsupported;  // features present but not rendered, one line each
   LoadStats stats;
+  CurvedScene curved;  // space != Euclidean: a curved-space scene (no nodes or meshes)
 };
 
 }  // namespace mb

@@ -14,21 +14,21 @@ namespace mb {
 #define MB_KAPPA 0
 #define MB_GLSL_CLASS PgaKappaEuclidean
 #include "shaders/shim/glsl_begin.h"
-#include "shaders/pga_kappa.glsl"
+#include "shaders/curved_transform.glsl"
 #include "shaders/shim/glsl_end.h"
 #undef MB_KAPPA
 
 #define MB_KAPPA 1
 #define MB_GLSL_CLASS PgaKappaElliptic
 #include "shaders/shim/glsl_begin.h"
-#include "shaders/pga_kappa.glsl"
+#include "shaders/curved_transform.glsl"
 #include "shaders/shim/glsl_end.h"
 #undef MB_KAPPA
 
 #define MB_KAPPA -1
 #define MB_GLSL_CLASS PgaKappaHyperbolic
 #include "shaders/shim/glsl_begin.h"
-#include "shaders/pga_kappa.glsl"
+#include "shaders/curved_transform.glsl"
 #include "shaders/shim/glsl_end.h"
 #undef MB_KAPPA
 

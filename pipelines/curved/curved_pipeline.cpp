@@ -1,0 +1,193 @@
+#include "pipelines/curved/curved_pipeline.h"
+
+#include <cmath>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "pipelines/curved/curved_motor.h"
+#include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/program.h"
+#include "pipelines/gl/upload.h"
+#include "pipelines/scene/curved_space.h"
+
+namespace mb {
+namespace {
+
+// The space's perspective (column-major). S3: the reference's matrix, clip = (f x / aspect,
+// f y, -0.01 w, -z): depth = -0.01 cot(d) grows with the distance d along the view ray over
+// the whole (0, pi) (near atan(0.01), far pi - atan(0.01)), so what lies behind is seen as
+// its antipodal copy ahead. H3: the ordinary perspective of the Klein model (x, y, z) / w,
+// near tanh(0.01), far 1 (the ideal boundary).
+glm::mat4 projection(int kappa, float yfov, float aspect) {
+  const float f = 1.0f / std::tan(0.5f * yfov);
+  glm::mat4 p(0.0f);
+  p[0][0] = f / aspect;
+  p[1][1] = f;
+  p[2][3] = -1.0f;
+  if (kappa > 0) {
+    p[3][2] = -0.01f;
+  } else {
+    const float n = std::tanh(0.01f), fa = 1.0f;
+    p[2][2] = (fa + n) / (n - fa);
+    p[3][2] = 2.0f * fa * n / (n - fa);
+  }
+  return p;
+}
+
+class CurvedPipeline final : public Pipeline {
+public:
+  CurvedPipeline(Space space, bool motor) : space_(space), kappa_(kappaOf(space)), motor_(motor) {}
+  ~CurvedPipeline() override { release(); }
+  std::string name() const override {
+    return std::string(kappa_ > 0 ? "s3_" : "h3_") + (motor_ ? "motor" : "matrix");
+  }
+  Status prepare(const Scene& scene) override;
+  void update(const AnimState& state) override;
+  void render(const View& view) override;
+  PipelineStats stats() const override { return stats_; }
+
+private:
+  void release();
+
+  Space space_;
+  int kappa_;
+  bool motor_;
+  const Scene* scene_ = nullptr;
+  std::unique_ptr<gl::Program> program_;
+  GLuint vao_ = 0, vertexBuffer_ = 0, instanceBuffer_ = 0;
+  GLsizei vertexCount_ = 0, instanceCount_ = 0;
+  // Posed by update(): the camera and the lights in view space, each side by its own math.
+  glm::mat4 view_{1.0f};
+  std::array<float, 8> viewMotor_{};
+  std::array<glm::vec4, 3> lights_{};
+  PipelineStats stats_;
+};
+
+Status CurvedPipeline::prepare(const Scene& scene) {
+  release();
+  stats_ = PipelineStats{};
+  const CurvedScene& c = scene.curved;
+  if (c.space != space_)
+    return Status::fail(scene.source + ": pipeline " + name() + " draws " + spaceName(space_) +
+                        " scenes (s3_tiling / h3_tiling), this one is " +
+                        (c.space == Space::Euclidean ? std::string("a Euclidean glTF scene")
+                                                     : std::string(spaceName(c.space))));
+  if (c.positions.empty() || c.positions.size() != c.normals.size() || c.instances.empty() ||
+      c.lights.size() != 3)
+    return Status::fail(scene.source + ": curved scene without triangles, instances or 3 lights");
+  auto program = gl::Program::fromFiles(motor_ ? "curved_motor.vs" : "curved_matrix.vs", "curved.fs",
+                                        {{"MB_KAPPA", kappa_ > 0 ? "1" : "-1"}});
+  if (!program) return Status::fail(program.error());
+  program_ = program.take();
+
+  // Per vertex: position and normal, 8 floats, the same on both sides.
+  std::vector<float> vertices;
+  for (size_t v = 0; v < c.positions.size(); ++v)
+    for (const glm::vec4& x : {c.positions[v], c.normals[v]}) vertices.insert(vertices.end(), {x.x, x.y, x.z, x.w});
+  // Per instance: the matrix as is, or the motor converted from it (timed: conversion).
+  auto t0 = gl::Clock::now();
+  std::vector<float> instances;
+  instances.reserve(c.instances.size() * (motor_ ? 8 : 16));
+  for (const glm::dmat4& m : c.instances) {
+    if (!motor_) {
+      const glm::mat4 f(m);
+      instances.insert(instances.end(), glm::value_ptr(f), glm::value_ptr(f) + 16);
+      continue;
+    }
+    auto mo = curved::motorOfMatrix(kappa_, m);
+    if (!mo) return Status::fail(scene.source + ": instance " + std::to_string(&m - c.instances.data()) + ": " + mo.error());
+    const curved::Motor8 up = kappa_ > 0 ? curved::pairOfMotor(*mo) : *mo;
+    for (double x : up) instances.push_back(float(x));
+  }
+  stats_.conversionMs = motor_ ? gl::msSince(t0) : 0.0;
+
+  glGenVertexArrays(1, &vao_);
+  glBindVertexArray(vao_);
+  vertexBuffer_ = gl::createBuffer(GL_ARRAY_BUFFER, vertices, stats_.vertexBytes);
+  for (GLuint loc : {0u, 1u}) {
+    glEnableVertexAttribArray(loc);
+    glVertexAttribPointer(loc, 4, GL_FLOAT, GL_FALSE, 8 * sizeof(float),
+                          reinterpret_cast<const void*>(size_t(loc) * 4 * sizeof(float)));
+  }
+  uint64_t instanceBytes = 0;
+  instanceBuffer_ = gl::createBuffer(GL_ARRAY_BUFFER, instances, instanceBytes);
+  const GLuint columns = motor_ ? 2 : 4;
+  for (GLuint k = 0; k < columns; ++k) {
+    glEnableVertexAttribArray(2 + k);
+    glVertexAttribPointer(2 + k, 4, GL_FLOAT, GL_FALSE, GLsizei(columns * 4 * sizeof(float)),
+                          reinterpret_cast<const void*>(size_t(k) * 4 * sizeof(float)));
+    glVertexAttribDivisor(2 + k, 1);
+  }
+  glBindVertexArray(0);
+  vertexCount_ = GLsizei(c.positions.size());
+  instanceCount_ = GLsizei(c.instances.size());
+  // Instances are the curved scenes' transforms; their uploads are the floats per transform.
+  stats_.extraVertexBytes = instanceBytes;
+  stats_.vertices = uint64_t(vertexCount_);
+  stats_.floatsPerVertex = gl::floatsPer(stats_.vertexBytes, stats_.vertices);
+  stats_.floatsPerTransform = gl::floatsPer(instanceBytes, uint64_t(instanceCount_));
+  scene_ = &scene;
+  update(AnimState{});
+  GLenum err = glGetError();
+  if (err != GL_NO_ERROR) return Status::fail(scene.source + ": " + name() + " prepare: " + gl::errorName(err));
+  return {};
+}
+
+void CurvedPipeline::update(const AnimState& state) {
+  if (!scene_) return;
+  auto t0 = gl::Clock::now();
+  const CurvedScene& c = scene_->curved;
+  const double t = state.anim >= 0 ? double(state.time) : 0.0;
+  if (motor_) {
+    const curved::Motor8 v = curved::viewMotor(c, t);
+    const curved::Motor8 up = kappa_ > 0 ? curved::pairOfMotor(v) : v;
+    for (int k = 0; k < 8; ++k) viewMotor_[size_t(k)] = float(up[size_t(k)]);
+    for (int l = 0; l < 3; ++l) lights_[size_t(l)] = glm::vec4(curved::sandwich(kappa_, v, glm::dvec4(c.lights[size_t(l)])));
+  } else {
+    glm::dmat4 v(1.0);  // (E1 ... En)^-1 = En^-1 ... E1^-1
+    for (const CurvedMove& mv : c.camera)
+      v = elementaryMatrix(kappa_, mv.i, mv.j, -(mv.angle0 + mv.rate * t)) * v;
+    view_ = glm::mat4(v);
+    for (int l = 0; l < 3; ++l) lights_[size_t(l)] = glm::vec4(v * glm::dvec4(c.lights[size_t(l)]));
+  }
+  stats_.updateMs = gl::msSince(t0);
+}
+
+void CurvedPipeline::render(const View& view) {
+  if (!scene_) return;
+  stats_.uniformBytesPerFrame = 0;
+  const glm::mat4 proj = projection(kappa_, scene_->curved.yfov, view.aspect);
+  gl::beginDraws();
+  glDisable(GL_CULL_FACE);
+  program_->use();
+  uint64_t& u = stats_.uniformBytesPerFrame;
+  gl::uniformMatrix4(program_->uniform("u_Projection"), 1, glm::value_ptr(proj), u);
+  if (motor_)
+    gl::uniform4fv(program_->uniform("u_Camera"), 2, viewMotor_.data(), u);
+  else
+    gl::uniformMatrix4(program_->uniform("u_View"), 1, glm::value_ptr(view_), u);
+  gl::uniform4fv(program_->uniform("u_Lights"), 3, glm::value_ptr(lights_[0]), u);
+  gl::uniform1f(program_->uniform("u_LightStrength"), scene_->curved.lightStrength, u);
+  glBindVertexArray(vao_);
+  glDrawArraysInstanced(GL_TRIANGLES, 0, vertexCount_, instanceCount_);
+  stats_.draws = 1;
+  gl::endDraws();
+}
+
+void CurvedPipeline::release() {
+  if (vertexBuffer_) glDeleteBuffers(1, &vertexBuffer_);
+  if (instanceBuffer_) glDeleteBuffers(1, &instanceBuffer_);
+  if (vao_) glDeleteVertexArrays(1, &vao_);
+  vertexBuffer_ = instanceBuffer_ = vao_ = 0;
+  program_.reset();
+  scene_ = nullptr;
+}
+
+}  // namespace
+
+std::unique_ptr<Pipeline> makeS3MatrixPipeline() { return std::make_unique<CurvedPipeline>(Space::Spherical, false); }
+std::unique_ptr<Pipeline> makeS3MotorPipeline() { return std::make_unique<CurvedPipeline>(Space::Spherical, true); }
+std::unique_ptr<Pipeline> makeH3MatrixPipeline() { return std::make_unique<CurvedPipeline>(Space::Hyperbolic, false); }
+std::unique_ptr<Pipeline> makeH3MotorPipeline() { return std::make_unique<CurvedPipeline>(Space::Hyperbolic, true); }
+
+}  // namespace mb

@@ -1,0 +1,18 @@
+// The curved-space pipelines (issue 15), one class for four registered names:
+//   s3_matrix / h3_matrix: one O(4) / O(3,1) mat4 per instance (16 floats), as
+//     non-euclidean-rendering.txt does (shaders/curved_matrix.vs);
+//   s3_motor / h3_motor: 8 floats per instance (S3: the quaternion pair, H3: the motor),
+//     sandwiched in the vertex shader (shaders/curved_motor.vs).
+// Both sides of a space share shaders/curved.fs. They draw only scenes of their space
+// (Scene::curved) and refuse glTF scenes; the glTF pipelines refuse curved scenes.
+#pragma once
+#include <memory>
+
+#include "pipelines/pipeline.h"
+
+namespace mb {
+std::unique_ptr<Pipeline> makeS3MatrixPipeline();
+std::unique_ptr<Pipeline> makeS3MotorPipeline();
+std::unique_ptr<Pipeline> makeH3MatrixPipeline();
+std::unique_ptr<Pipeline> makeH3MotorPipeline();
+}  // namespace mb
