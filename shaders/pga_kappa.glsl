@@ -135,6 +135,13 @@ motor motor_from_pair(mat2x4 q) {
 // measured: 32 mul, 24 add
 mat2x4 gp_pair(mat2x4 a, mat2x4 b) { return mat2x4(qmul(b[0], a[0]), qmul(a[1], b[1])); }
 
+// Renormalisation of a pair: each quaternion to unit length (exact: the pair of a unit motor
+// is two unit quaternions).
+// measured: 16 mul, 6 add, 2 inversesqrt
+mat2x4 normalize_pair(mat2x4 q) {
+  return mat2x4(q[0] * inversesqrt(dot(q[0], q[0])), q[1] * inversesqrt(dot(q[1], q[1])));
+}
+
 // Sandwich of a point or tangent vector (x, y, z, w) with a unit pair.
 // measured: 32 mul, 24 add
 vec4 sw_pair(mat2x4 a, vec4 b) {

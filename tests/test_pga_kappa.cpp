@@ -285,4 +285,7 @@ TEST(PgaKappaOpCount, SphericalPairForm) {
   expectCount(count<1>([](auto& P, auto a, auto) { P.sw_pair(a, V4(0.1, 0.2, 0.3, 0.9)); }), 32, 24, "sw_pair");
   expectCount(count<1>([](auto& P, auto a, auto) { P.pair_from_motor(a); }), 0, 8, "pair_from_motor");
   expectCount(count<1>([](auto& P, auto a, auto) { P.motor_from_pair(a); }), 8, 8, "motor_from_pair");
+  const auto n = count<1>([](auto& P, auto a, auto) { P.normalize_pair(a); });
+  expectCount(n, 16, 6, "normalize_pair");
+  EXPECT_EQ(n.other, 2u);
 }
