@@ -289,3 +289,19 @@ TEST(PgaKappaOpCount, SphericalPairForm) {
   expectCount(n, 16, 6, "normalize_pair");
   EXPECT_EQ(n.other, 2u);
 }
+
+// Per vertex of the curved pipelines (shaders/curved_transform.glsl): position and normal.
+template <int K> void vertexCounts(uint64_t motorMul, uint64_t motorAdd) {
+  using C = mb::Counted;
+  using V4 = KVec4<C, K>;
+  auto& P = mb::pgaK<C, K>;
+  const typename PK<C, K>::mat4 m(C(0.5));
+  const V4 p(C(0.1), C(0.2), C(0.3), C(0.9)), n(C(0.3), C(0.2), C(0.1), C(0.0));
+  const KMotor<C, K> a(V4(C(0.5), C(0.1), C(0.2), C(0.3)), V4(C(0.4), C(0.5), C(0.6), C(0.7)));
+  expectCount(mb::countOps([&] { P.curvedMatrixVertex(m, m, p, n); }), 64, 48, "curvedMatrixVertex");
+  expectCount(mb::countOps([&] { P.curvedMotorVertex(a, a, p, n); }), motorMul, motorAdd, "curvedMotorVertex");
+}
+TEST(PgaKappaOpCount, CurvedVertexTransforms) {
+  vertexCounts<1>(96, 72);
+  vertexCounts<-1>(192, 152);
+}
