@@ -23,6 +23,7 @@
 #include "harness/render/render_frame.h"
 #include "pipelines/gl/shader_source.h"
 #include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/scene/curved_space.h"
 #include "pipelines/scene/loader.h"
 
 namespace mb {
@@ -42,6 +43,16 @@ struct Selection {
   std::string goldenDir, outDir;
   Shard shard;  // --shard I/N: this run checks its part of `scenes` only
 };
+
+// The selected pipelines that draw `scene`'s space (glTF pipelines for glTF scenes, s3_* for
+// s3_tiling, ...): a curved pipeline has no golden of a glTF scene and the other way round.
+std::vector<std::string> pipelinesFor(const Scene& scene, const Selection& sel) {
+  const std::vector<std::string> own = pipelineNames(scene.curved.space);
+  std::vector<std::string> out;
+  for (const std::string& p : sel.pipelines)
+    if (std::find(own.begin(), own.end(), p) != own.end()) out.push_back(p);
+  return out;
+}
 
 // Compares one planned golden; fills `item` (and writes its images into outDir unless clean).
 void checkOne(const Scene& scene, const golden::Manifest& manifest,
@@ -131,7 +142,7 @@ int check(const Selection& sel) {
       continue;
     }
     for (const golden::Pose& pose : golden::posesFor(*scene)) {
-      for (const std::string& pipeline : sel.pipelines) {
+      for (const std::string& pipeline : pipelinesFor(*scene, sel)) {
         CheckItem item;
         item.file = golden::fileName(name, pose.name, pipeline);
         item.scene = name;
@@ -188,7 +199,7 @@ int update(const Selection& sel) {
     if (!scene) return fail(scene.error());
     if (!next.thresholds.count(name)) next.thresholds[name] = golden::defaultThresholds(name);
     for (const golden::Pose& pose : golden::posesFor(*scene)) {
-      for (const std::string& pipeline : sel.pipelines) {
+      for (const std::string& pipeline : pipelinesFor(*scene, sel)) {
         golden::Entry e;
         e.file = golden::fileName(name, pose.name, pipeline);
         e.scene = name;
@@ -245,13 +256,16 @@ int runCheck(const std::vector<std::string>& argv) {
     // shaderDir() reads MB_SHADER_DIR on every load, so this redirects every pipeline.
     ::setenv("MB_SHADER_DIR", fs::absolute(*dir).string().c_str(), 1);
   }
-  sel.scenes = args.has("scenes") ? splitList(args.get("scenes", "")) : builtinSceneNames();
+  std::vector<std::string> builtins = builtinSceneNames();  // glTF built-ins, then curved ones
+  for (const std::string& c : curvedSceneNames()) builtins.push_back(c);
+  sel.scenes = args.has("scenes") ? splitList(args.get("scenes", "")) : builtins;
   for (const std::string& s : sel.scenes)
     if (!isBuiltinScene(s))
-      return fail("--scenes: '" + s + "' is not a built-in scene (" + joined(builtinSceneNames()) + ")");
+      return fail("--scenes: '" + s + "' is not a built-in scene (" + joined(builtins) + ")");
+  // Each scene is drawn by the selected pipelines of its space (pipelinesFor).
   std::vector<std::string> requested =
-      args.has("pipelines") ? splitList(args.get("pipelines", "")) : pipelineNames();
-  const std::vector<std::string> registered = pipelineNames();
+      args.has("pipelines") ? splitList(args.get("pipelines", "")) : allPipelineNames();
+  const std::vector<std::string> registered = allPipelineNames();
   for (const std::string& p : requested) {
     if (std::find(registered.begin(), registered.end(), p) == registered.end())
       return fail("--pipelines: unknown pipeline '" + p + "' (registered: " + joined(registered) + ")");

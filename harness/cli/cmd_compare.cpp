@@ -39,7 +39,9 @@ int runCompare(const std::vector<std::string>& argv) {
   const std::string& dir = cmd->output;
   const Scene& scene = cmd->scene;
   const FrameSettings& settings = cmd->settings;
-  std::vector<std::string> names = splitList(args.get("pipelines", "matrix,motor"));
+  // Default: the pair of the scene's space (matrix,motor; s3_matrix,s3_motor; h3_...).
+  const std::vector<std::string> pair = pipelineNames(scene.curved.space);
+  std::vector<std::string> names = args.has("pipelines") ? splitList(args.get("pipelines", "")) : pair;
   if (names.size() != 2) return fail("--pipelines needs exactly two names, e.g. matrix,motor");
   bool thresholdsGiven = args.has("fail") || args.has("failpercent") || args.has("hardfail");
   Thresholds t;

@@ -15,7 +15,8 @@ int runRender(const std::vector<std::string>& argv) {
   if (!cmd) return fail(cmd.error());
   const std::string& out = cmd->output;
   const Scene& scene = cmd->scene;
-  std::string pipeline = args.get("pipeline", "matrix");
+  // Default: the matrix baseline of the scene's space (matrix, s3_matrix, h3_matrix).
+  std::string pipeline = args.get("pipeline", pipelineNames(scene.curved.space).front());
   auto frame = renderFrame(scene, pipeline, cmd->settings);
   if (!frame) return fail(frame.error());
   Status written = writeImage(out, frame->image);

@@ -7,6 +7,7 @@
 #include "harness/ops/op_count.h"
 #include "shaders/shim/counted.h"
 #include "shaders/shim/pga.h"
+#include "harness/ops/op_kernels_curved.h"
 
 namespace mb::ops {
 
@@ -109,6 +110,7 @@ inline std::vector<Kernel> matrixKernels() {
 inline std::vector<Kernel> allKernels() {
   std::vector<Kernel> k = pgaKernels();
   for (Kernel& m : matrixKernels()) k.push_back(std::move(m));
+  for (Kernel& c : curvedKernels()) k.push_back(std::move(c));
   return k;
 }
 

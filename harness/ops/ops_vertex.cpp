@@ -146,7 +146,7 @@ VertexOps measureVertexOps() {
     VariantRow row{v, {}, Counts{}, std::nullopt, "", ""};
     for (const std::string& fn : v.kernels)
       for (const KernelRow& k : ops.kernels)
-        if (k.kernel.function == fn) {
+        if (k.kernel.function == fn && k.kernel.pipeline == v.pipeline) {
           row.counted += k.counted;
           if (row.probes && k.optimised) *row.probes += *k.optimised;
           else row.probes.reset();

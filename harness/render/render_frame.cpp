@@ -161,10 +161,10 @@ Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
   using R = Result<Frame>;
   const std::string where = scene.source + " [" + pipeline + "]: ";
   bool registered = false;
-  for (const std::string& n : pipelineNames()) registered = registered || n == pipeline;
+  for (const std::string& n : allPipelineNames()) registered = registered || n == pipeline;
   if (!registered) {
     std::string known;
-    for (const std::string& n : pipelineNames()) known += (known.empty() ? "" : ", ") + n;
+    for (const std::string& n : allPipelineNames()) known += (known.empty() ? "" : ", ") + n;
     return R::fail("unknown pipeline '" + pipeline + "' (registered: " + known + ")");
   }
   std::unique_ptr<Pipeline> p = createPipeline(pipeline);

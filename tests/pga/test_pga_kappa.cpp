@@ -12,7 +12,7 @@
 
 #include "shaders/shim/counted.h"
 #include "shaders/shim/pga_kappa.h"
-#include "tests/pga_test_support.h"
+#include "tests/support/pga_test_support.h"
 
 namespace {
 

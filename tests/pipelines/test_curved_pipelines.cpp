@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "harness/image_metrics.h"
+#include "harness/render/image_metrics.h"
 #include "pipelines/curved/curved_motor.h"
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
