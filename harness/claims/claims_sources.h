@@ -4,6 +4,7 @@
 //   claims_speed.cpp     "as fast as matrices" (bench kernel ratios + frame timing)
 //   claims_corpus.cpp    animated / non-uniform scale over the built-in scenes + a corpus
 //   claims_baselines.cpp affine matrix path, full world-to-clip, skinning per vertex
+//   claims_curved.cpp    curved space (issue 15): S3 / H3 matrix vs motor
 #pragma once
 #include <string>
 #include <vector>
@@ -38,5 +39,9 @@ std::vector<Claim> corpusClaims(const std::string& corpusDir);
 
 // Reviewer baselines (Verdict::Baseline): counted and SPIR-V.
 std::vector<Claim> baselineClaims();
+
+// Curved space (section "Curved space"): floats per instance, ops per vertex, frame time
+// (when `runTiming`, `frames` per pipeline), drift over 10^6 steps. Needs GL.
+std::vector<Claim> curvedClaims(bool runTiming, int frames);
 
 }  // namespace mb::claims

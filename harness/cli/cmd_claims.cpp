@@ -146,6 +146,11 @@ int runClaims(const std::vector<std::string>& argv) {
   for (auto& c : claims::corpusClaims(corpus)) all.push_back(c);
   say("baselines (counted and SPIR-V)");
   for (auto& c : claims::baselineClaims()) all.push_back(c);
+  say("curved space (uploads, ops, frame timing, drift)");
+  {
+    const auto framesOpt = numberOption(args, "frames", 20);
+    for (auto& c : claims::curvedClaims(!args.has("no-run"), framesOpt ? int(*framesOpt) : 20)) all.push_back(c);
+  }
 
   const json j = claims::claimsJson(all, report::machineJson(), sources);
   const std::string md = report::toMarkdown(claims::claimsDocument(j));

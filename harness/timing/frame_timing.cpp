@@ -129,7 +129,7 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   out.width = settings.width, out.height = settings.height;
   std::vector<std::unique_ptr<Pipeline>> live;  // parallel to `slots`
   std::vector<size_t> slots;                    // index into out.pipelines
-  for (const std::string& name : pipelineNames()) {
+  for (const std::string& name : pipelineNames(scene.curved.space)) {  // the scene's space's pair
     PipelineTiming t;
     t.pipeline = name;
     auto p = createPipeline(name);
@@ -206,8 +206,9 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   const PipelineTiming* motor = nullptr;
   for (const PipelineTiming& t : out.pipelines) {
     if (!t.error.empty()) continue;
-    if (t.pipeline == "matrix") matrix = &t;
-    if (t.pipeline == "motor") motor = &t;
+    // The pair of the scene's space: matrix / motor, s3_matrix / s3_motor, h3_matrix / h3_motor.
+    if (t.pipeline == "matrix" || t.pipeline.ends_with("_matrix")) matrix = &t;
+    if (t.pipeline == "motor" || t.pipeline.ends_with("_motor")) motor = &t;
   }
   if (matrix && motor) {
     out.frameRatio = ratioOf(motor->frame.median, matrix->frame.median);

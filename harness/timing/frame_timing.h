@@ -89,7 +89,7 @@ inline constexpr int kVertexBoundVerticesPerPixel = 10;
 // least kVertexBoundVerticesPerPixel per pixel of a width x height viewport.
 bool drawsVertexBoundAt(const Scene& scene, int width, int height);
 
-// Times every registered pipeline on `scene` under `settings`.
+// Times the registered pipelines of `scene`'s space (pipelineNames(space)) under `settings`.
 Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
                                const Settings& settings);
 

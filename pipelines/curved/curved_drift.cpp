@@ -26,7 +26,7 @@ template <class S> void gramSchmidt(int kappa, S (&m)[4][4]) {
     }
     const S fc = form(c, c);
     const S len = (n == 0 && kappa < 0) ? -fc : fc;
-    const S inv = S(1.0) / glsl::scalar_ops<S>::sqrt(len);
+    const S inv = glsl::scalar_ops<S>::inversesqrt(len);  // as the motor side: one call
     for (int r = 0; r < 4; ++r) c[r] = c[r] * inv;
   }
 }

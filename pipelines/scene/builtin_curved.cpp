@@ -178,6 +178,12 @@ const std::vector<std::string>& curvedSceneNames() {
 
 bool isCurvedScene(const std::string& name) { return name == "s3_tiling" || name == "h3_tiling"; }
 
+Space curvedSceneSpace(const std::string& name) {
+  if (name == "s3_tiling") return Space::Spherical;
+  if (name == "h3_tiling") return Space::Hyperbolic;
+  return Space::Euclidean;
+}
+
 Result<Scene> buildCurvedScene(const std::string& name) {
   if (name == "s3_tiling") return s3Tiling();
   if (name == "h3_tiling") return h3Tiling();

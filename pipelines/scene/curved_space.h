@@ -24,6 +24,8 @@ glm::dmat4 cameraToWorld(const CurvedScene& scene, double t);
 // The built-in curved scenes: "s3_tiling", "h3_tiling".
 const std::vector<std::string>& curvedSceneNames();
 bool isCurvedScene(const std::string& name);
+// The space of curved scene `name` without building it (Euclidean for any other name).
+Space curvedSceneSpace(const std::string& name);
 // Builds one (deterministic). Scene::source is the name; one Animation "camera_path" with no
 // channels carries the camera path's duration so render/compare/report pick times in it.
 Result<Scene> buildCurvedScene(const std::string& name);

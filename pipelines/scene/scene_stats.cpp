@@ -33,6 +33,9 @@ FileStats computeFileStats(const Scene& s) {
       f.drawnVertices += meshVertices[size_t(n.mesh)];
     }
   }
+  // A curved-space scene draws its triangle list once per instance (no nodes or meshes).
+  f.vertices += int(s.curved.positions.size());
+  f.drawnVertices += int(s.curved.positions.size() * s.curved.instances.size());
   f.skins = int(s.skins.size());
   for (const Skin& k : s.skins) {
     f.joints += int(k.joints.size());

@@ -72,7 +72,7 @@ TEST_P(Determinism, SameFrameTwiceInOneProcess) {
   FrameSettings other;
   other.width = kW;
   other.height = kH;
-  for (const std::string& p : pipelineNames())
+  for (const std::string& p : pipelineNames(scene_.curved.space))
     if (createPipeline(p)) {
       EXPECT_TRUE(renderFrame(scene_, p, other)) << p;
     }

@@ -1,0 +1,179 @@
+// Curved space (issue 15): the paper's question on S3 and H3, where a motor has no scale or
+// shear to excuse: floats per instance (uploads), ops per vertex (counted + SPIR-V), frame
+// time motor / matrix (normal and vertex-bound viewport, one run), camera drift. No paper
+// figure exists: verdict "baseline", except floats per instance (the issue's 16 vs 8).
+#include <cmath>
+#include <cstdio>
+
+#include "harness/claims/claims_sources.h"
+#include "harness/ops/ops_vertex.h"
+#include "harness/render/render_frame.h"
+#include "harness/report/report_timing.h"
+#include "pipelines/curved/curved_drift.h"
+#include "pipelines/scene/curved_space.h"
+#include "pipelines/scene/loader.h"
+
+namespace mb::claims {
+namespace {
+
+using nlohmann::json;
+
+std::string num(double v, const char* fmt = "%g") {
+  char b[64];
+  std::snprintf(b, sizeof b, fmt, v);
+  return b;
+}
+
+Claim baseline(Claim c) {
+  c.paper = "-";
+  c.paperValue = nullptr;
+  c.verdict = Verdict::Baseline;
+  c.verdictText = "baseline (no paper figure)";
+  return c;
+}
+
+Claim failed(Claim c, const std::string& why) {
+  c.verdict = Verdict::NotMeasurable;
+  c.verdictText = "not measurable here: " + why;
+  c.measured = "-";
+  c.measuredValue = nullptr;
+  return c;
+}
+
+const char* kSpaces[2][3] = {{"S3", "s3_tiling", "s3_"}, {"H3", "h3_tiling", "h3_"}};
+
+}  // namespace
+
+std::vector<Claim> curvedClaims(bool runTiming, int frames) {
+  const std::string section = "Curved space";
+  std::vector<Claim> out;
+
+  // Floats per instance, from the uploads of one frame of each pipeline.
+  Claim fpi{"curved_floats_per_instance", section,
+            "floats per instance: O(4) / O(3,1) mat4 vs 8-float motor (S3: quaternion pair)"};
+  fpi.paper = "16 vs 8 (issue 15)";
+  fpi.paperValue = {{"matrix", 16}, {"motor", 8}};
+  fpi.method = "PipelineStats.floatsPerTransform (instance-buffer bytes uploaded / instances / 4) of "
+               "s3_matrix, s3_motor on s3_tiling and h3_matrix, h3_motor on h3_tiling, one 32x32 frame each";
+  json fpiValue = json::object();
+  std::string fpiText, fpiError;
+  bool fpiSame = true;
+  for (auto& sp : kSpaces) {
+    auto scene = loadScene(sp[1]);
+    if (!scene) { fpiError = scene.error(); break; }
+    FrameSettings fs;
+    fs.width = fs.height = 32;
+    double v[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+      auto f = renderFrame(*scene, std::string(sp[2]) + (k ? "motor" : "matrix"), fs);
+      if (!f) { fpiError = f.error(); break; }
+      v[k] = f->stats.floatsPerTransform;
+    }
+    if (!fpiError.empty()) break;
+    fpiValue[sp[0]] = {{"matrix", v[0]}, {"motor", v[1]}};
+    fpiText += std::string(fpiText.empty() ? "" : "; ") + sp[0] + ": " + num(v[0]) + " vs " + num(v[1]);
+    fpiSame = fpiSame && v[0] == 16 && v[1] == 8;
+  }
+  if (!fpiError.empty()) {
+    out.push_back(failed(fpi, fpiError));
+  } else {
+    fpi.measured = fpiText + " floats/instance";
+    fpi.measuredValue = fpiValue;
+    fpi.verdict = fpiSame ? Verdict::Reproduced : Verdict::Differs;
+    fpi.verdictText = fpiSame ? "reproduced" : "differs";
+    out.push_back(fpi);
+  }
+
+  // Ops per vertex: counted transforms and the whole vertex shaders in SPIR-V.
+  Claim opv = baseline({"curved_ops_per_vertex", section,
+                        "ops per vertex (position + normal by camera * instance): matrix vs motor"});
+  opv.method = "counted: curvedMatrixVertex / curvedMotorVertex (shaders/curved_transform.glsl) on "
+               "mb::Counted; SPIR-V: curved_matrix.vs / curved_motor.vs per space, spirv-opt -O, incl. "
+               "the projection (16 mul, 12 add) both sides share (motorbench ops)";
+  {
+    const opsv::VertexOps ops = opsv::measureVertexOps();
+    json value = json::object();
+    std::string text;
+    for (auto& sp : kSpaces)
+      for (const char* side : {"matrix", "motor"}) {
+        const std::string p = std::string(sp[2]) + side;
+        for (const opsv::VariantRow& v : ops.variants) {
+          if (v.variant.pipeline != p) continue;
+          value[p] = {{"counted", opsJson(v.counted)},
+                      {"spirv", v.shader ? json{{"mul", v.shader->mul}, {"add", v.shader->add}} : json()}};
+          text += std::string(text.empty() ? "" : "; ") + p + " " + std::to_string(v.counted.mul) + "/" +
+                  std::to_string(v.counted.add) + " counted, " +
+                  (v.shader ? std::to_string(v.shader->mul) + "/" + std::to_string(v.shader->add) + " SPIR-V"
+                            : std::string("no SPIR-V (") + ops.toolsProblem + ")");
+        }
+      }
+    opv.measured = text + " (mul/add)";
+    opv.measuredValue = value;
+    out.push_back(opv);
+  }
+
+  // Frame time, motor / matrix, both viewports in one run per scene.
+  Claim ft = baseline({"curved_frame_time", section, "frame time motor / matrix (< 1: motor faster)"});
+  ft.method = "report::timeScene per curved scene: " + std::to_string(frames) +
+              " frames per pipeline at 512x512 and at 64x64 (vertex-bound: >= 10 drawn vertices per "
+              "pixel), pipelines interleaved, median of the paired per-frame ratios";
+  if (!runTiming) {
+    out.push_back(failed(ft, "--no-run"));
+  } else {
+    json value = json::object();
+    std::string text, error;
+    for (auto& sp : kSpaces) {
+      auto scene = loadScene(sp[1]);
+      if (!scene) { error = scene.error(); break; }
+      const json t = report::timeScene(*scene, {std::string(sp[2]) + "matrix", std::string(sp[2]) + "motor"},
+                                       frames, 512, 512);
+      auto ratio = [](const json& c) -> json {
+        if (!c.is_object()) return nullptr;
+        for (const char* key : {"paired_ratio_motor_matrix", "ratio_motor_matrix"})
+          if (c.contains(key) && c[key].is_number()) return c[key];
+        return nullptr;
+      };
+      const json normal = ratio(t), tiny = ratio(t.value("vertexBound", json()));
+      if (normal.is_null()) { error = t.value("error", json("no ratio")).dump(); break; }
+      value[sp[0]] = {{"normal", normal}, {"vertexBound", tiny}};
+      text += std::string(text.empty() ? "" : "; ") + sp[0] + ": " + num(normal.get<double>(), "%.2f") +
+              " (64x64: " + (tiny.is_null() ? std::string("-") : num(tiny.get<double>(), "%.2f")) + ")";
+    }
+    if (!error.empty()) out.push_back(failed(ft, error));
+    else {
+      ft.measured = text;
+      ft.measuredValue = value;
+      out.push_back(ft);
+    }
+  }
+
+  // Drift of an accumulated camera.
+  Claim dr = baseline({"curved_drift", section,
+                       "camera accumulated over 10^6 float steps: distance from the group, raw and "
+                       "renormalised every step"});
+  dr.method = "pipelines/curved/curved_drift.h (motorbench drift): matrix max|M^T eta M - eta| vs motor "
+              "max|M~M - 1| (S3 pair: ||L|^2 - 1|, ||R|^2 - 1|); renormalisation: Gram-Schmidt in the "
+              "space's form vs normalize_pair (S3) / normalize_m_k (H3), counted";
+  {
+    json value = json::object();
+    std::string text;
+    for (int k : {1, -1}) {
+      const curved::DriftResult r = curved::measureDrift(k, 1000000);
+      const char* s = k > 0 ? "S3" : "H3";
+      value[s] = {{"matrix", {{"raw", r.matrix.raw}, {"renormalised", r.matrix.renormalised},
+                              {"renormOps", opsJson(r.matrix.renormOps)}}},
+                  {"motor", {{"raw", r.motor.raw}, {"renormalised", r.motor.renormalised},
+                             {"renormOps", opsJson(r.motor.renormOps)}}}};
+      text += std::string(text.empty() ? "" : "; ") + s + ": matrix " + num(r.matrix.raw, "%.2g") + " -> " +
+              num(r.matrix.renormalised, "%.2g") + " (" + opsText(r.matrix.renormOps) + "), motor " +
+              num(r.motor.raw, "%.2g") + " -> " + num(r.motor.renormalised, "%.2g") + " (" +
+              opsText(r.motor.renormOps) + ")";
+    }
+    dr.measured = text;
+    dr.measuredValue = value;
+    out.push_back(dr);
+  }
+  return out;
+}
+
+}  // namespace mb::claims
