@@ -58,8 +58,9 @@ const char* const kRowFormat = "%-17s %-13s %-8s %-25s %-25s %7s %7s %7s  %-22s 
 void printRow(const timing::ConfigTiming& c) {
   const timing::PipelineTiming* side[2] = {nullptr, nullptr};
   for (const auto& t : c.pipelines) {
-    if (t.pipeline == "matrix") side[0] = &t;
-    if (t.pipeline == "motor") side[1] = &t;
+    // The pair of the scene's space: matrix / motor, s3_matrix / s3_motor, h3_matrix / h3_motor.
+    if (t.pipeline == "matrix" || t.pipeline.ends_with("_matrix")) side[0] = &t;
+    if (t.pipeline == "motor" || t.pipeline.ends_with("_motor")) side[1] = &t;
   }
   auto frame = [](const timing::PipelineTiming* t) {
     return !t ? std::string("-") : !t->error.empty() ? "error" : cell(t->frame);
