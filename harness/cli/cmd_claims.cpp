@@ -98,8 +98,7 @@ claims::SpeedInputs speedInputs(const Args& args, json& sources) {
   }
   if ((in.frameTimes.is_null() || in.frameTimes.empty()) && run) {
     in.frameTimes = json::array();
-    const auto framesOpt = numberOption(args, "frames", 20);
-    const int frames = framesOpt ? int(*framesOpt) : 20;  // validated in runClaims
+    const int frames = int(args.integer("frames", 20, 1, 100000));
     for (const char* name : {"normal_torus", "skinned_tube", "crowd"}) {
       say(std::string("timing ") + name + " (" + std::to_string(frames) + " frames per pipeline)");
       auto scene = loadScene(name);
@@ -124,12 +123,10 @@ claims::SpeedInputs speedInputs(const Args& args, json& sources) {
 }
 
 int runClaims(const std::vector<std::string>& argv) {
-  const Args args(argv, {"no-run"});
+  const Args args(argv, {{"o", "output", "json", "report", "bench-json", "corpus", "frames"}, {"no-run"}, {}});
   if (!args.error().empty()) return fail(args.error());
-  if (auto u = args.unknown({"o", "output", "json", "report", "bench-json", "corpus", "frames", "no-run"}); !u.empty())
-    return fail("unknown option " + u[0]);
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
-  if (auto f = numberOption(args, "frames", 20); !f || *f < 1) return fail(f ? "--frames: expected 1 or more" : f.error());
+  args.integer("frames", 20, 1, 100000);  // checked here; speedInputs reads it
   const std::string corpus = args.get("corpus", "../shared/corpus");
   json sources = {{"opCounts", "shaders/pga.glsl, shaders/matrix_transform.glsl, shaders/motor_transform.glsl "
                                 "executed on mb::Counted; SPIR-V via glslangValidator + spirv-opt"},

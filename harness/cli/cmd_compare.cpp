@@ -1,13 +1,17 @@
 // motorbench compare SCENE [--pipelines A,B] [frame options] [--fail F --failpercent P
 //   --hardfail H] -o DIR: renders both, writes DIR/A.png, DIR/B.png, DIR/diff.png and
-// DIR/metrics.json, prints one summary line; exit 1 when the idiff thresholds are exceeded.
+// DIR/diff_legend.png and DIR/metrics.json, prints one summary line; exit 1 when the idiff
+// thresholds are exceeded. Units: --fail and --hardfail are channel differences as a fraction
+// of full scale (0..1; 1/255 = one byte step), --failpercent a percentage of pixels (0..100).
+// Only the thresholds given judge: --hardfail alone fails only on the largest difference.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
-#include "harness/options/args.h"
 #include "harness/cli/command.h"
+#include "harness/options/args.h"
+#include "harness/render/counter_glossary.h"
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
 
@@ -27,14 +31,36 @@ std::string summaryLine(const std::string& scene, const std::string& a, const st
                 std::round(m.maxError * 255.0), m.maxX, m.maxY, 100 * m.fractionOver1,
                 100 * m.fractionOver2, 100 * m.fractionOver4);
   std::string s = line;
-  if (v) s += v->failed ? " -> FAIL (" + v->reason + ")" : " -> PASS";
+  if (!v) s += " -> no threshold given, not judged (--fail/--failpercent/--hardfail judge; exit 0)";
+  else s += v->failed ? " -> FAIL (" + v->reason + ")" : " -> PASS (within the thresholds given)";
   return s;
 }
 
 int runCompare(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("compare", message); };
-  Args args(argv);
-  auto cmd = parseSceneCommand(args, {"pipelines", "fail", "failpercent", "hardfail"}, "DIR");
+  Args args(argv, sceneCommandOptions({"pipelines", "fail", "failpercent", "hardfail"}));
+  if (!args.error().empty()) return fail(args.error());
+  // Everything about the options is checked before the (slow) load and render.
+  if (args.has("pipelines")) {
+    const std::vector<std::string> given = splitList(args.get("pipelines", ""));
+    if (given.size() != 2) return fail("--pipelines needs exactly two names, e.g. matrix,motor");
+    if (given[0] == given[1]) return fail("--pipelines " + given[0] + "," + given[1] + ": two different pipelines");
+  }
+  const bool thresholdsGiven = args.has("fail") || args.has("failpercent") || args.has("hardfail");
+  Thresholds t;
+  t.fail = args.real("fail", t.fail, 0.0, 1.0, "a channel difference as a fraction of full scale (1/255 = one byte step)");
+  // --hardfail alone judges the largest difference only; --failpercent alone counts any change.
+  t.failPercent = args.real("failpercent", args.has("fail") || !args.has("hardfail") ? 0.0 : 100.0, 0.0, 100.0,
+                            "a percentage of pixels");
+  t.hardFail = args.real("hardfail", t.hardFail, 0.0, 1.0, "a channel difference as a fraction of full scale");
+  {
+    namespace fs = std::filesystem;
+    const std::string dir = args.get("o", args.get("output", ""));
+    std::error_code ec;
+    if (!dir.empty() && fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+      return fail("-o " + dir + ": is a file; compare writes a folder (images, diff, metrics.json)");
+  }
+  auto cmd = parseSceneCommand(args, "DIR");
   if (!cmd) return fail(cmd.error());
   const std::string& dir = cmd->output;
   const Scene& scene = cmd->scene;
@@ -43,14 +69,9 @@ int runCompare(const std::vector<std::string>& argv) {
   const std::vector<std::string> pair = pipelineNames(scene.curved.space);
   std::vector<std::string> names = args.has("pipelines") ? splitList(args.get("pipelines", "")) : pair;
   if (names.size() != 2) return fail("--pipelines needs exactly two names, e.g. matrix,motor");
-  bool thresholdsGiven = args.has("fail") || args.has("failpercent") || args.has("hardfail");
-  Thresholds t;
-  for (auto [key, value] : {std::pair{"fail", &t.fail}, {"failpercent", &t.failPercent},
-                            {"hardfail", &t.hardFail}}) {
-    auto v = numberOption(args, key, *value);
-    if (!v) return fail(v.error());
-    *value = *v;
-  }
+  commandNotes("compare", cmd->notes);
+  commandNotes("compare", loaderFallbackLines(scene));
+  commandNotes("compare", describeFrame(scene, settings));
 
   std::vector<Frame> frames;
   for (const std::string& name : names) {
@@ -73,22 +94,36 @@ int runCompare(const std::vector<std::string>& argv) {
   Status d = writeImage((fs::path(dir) / "diff.png").string(),
                         diffHeatmap(frames[0].image, frames[1].image));
   if (!d) return fail(d.error());
+  Status legend = writeImage((fs::path(dir) / "diff_legend.png").string(), heatLegend());
+  if (!legend) return fail(legend.error());
 
   nlohmann::json j = {
       {"scene", scene.source},
       {"pipelines", names},
       {"images", {names[0] + ".png", names[1] + ".png"}},
       {"diff", "diff.png"},
+      {"diffLegend", heatLegendJson()},
       {"settings", toJson(settings)},
+      {"animation", settings.anim.anim < 0
+                        ? nlohmann::json(nullptr)
+                        : nlohmann::json{{"index", settings.anim.anim},
+                                         {"name", scene.animations[size_t(settings.anim.anim)].name},
+                                         {"duration", scene.animations[size_t(settings.anim.anim)].duration},
+                                         {"time", settings.anim.time}}},
+      {"loaderFallbacks", loaderFallbackJson(scene)},
       {"view", toJson(frames[0].view)},
       {"gl", {{"renderer", frames[0].glRenderer}, {"version", frames[0].glVersion},
               {"backend", frames[0].glBackend}}},
       {"metrics", toJson(*metrics)},
-      {"thresholds", {{"applied", thresholdsGiven}, {"fail", t.fail},
+      {"thresholds", {{"applied", thresholdsGiven},
+                      {"units", "fail, hardfail: channel difference / 255 (0..1); failpercent: % of pixels"},
+                      {"fail", t.fail},
                       {"failpercent", t.failPercent},
                       {"hardfail", std::isinf(t.hardFail) ? nlohmann::json(nullptr)
                                                           : nlohmann::json(t.hardFail)}}},
-      {"verdict", {{"failed", thresholdsGiven && verdict.failed},
+      {"verdict", {{"judged", thresholdsGiven},
+                   {"text", !thresholdsGiven ? "no threshold given" : verdict.failed ? "fail" : "pass"},
+                   {"failed", thresholdsGiven && verdict.failed},
                    {"failPercent", verdict.failPercent}, {"reason", verdict.reason}}},
       {"stats", {toJson(frames[0].stats), toJson(frames[1].stats)}}};  // in --pipelines order
   std::string jsonPath = (fs::path(dir) / "metrics.json").string();
@@ -104,7 +139,8 @@ int runCompare(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(compare, "compare",
-           "SCENE [--pipelines matrix,motor] [--anim A --time T ...] [--size WxH] "
-           "[--fail F --failpercent P --hardfail H] -o DIR",
-           "render a scene with two pipelines; write both images, diff.png and metrics.json",
+           "SCENE [--pipelines matrix,motor] [--anim A] [--time T] [--anim2 B --time2 T2 --blend W] "
+           "[--camera C] [--size WxH] [--fail F(0..1)] [--failpercent P(0..100)] [--hardfail H(0..1)] -o DIR",
+           "render a scene with two pipelines; write both images, diff.png, diff_legend.png and "
+           "metrics.json; exit 1 when a threshold given is exceeded (F, H: channel difference / 255)",
            mb::runCompare);

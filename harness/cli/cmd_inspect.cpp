@@ -1,7 +1,9 @@
-// `motorbench inspect FILE|DIR|BUILTIN... [--json FILE]`: per-file statistics of glTF files
+// `motorbench inspect FILE|DIR|BUILTIN... [--json FILE] [--shard I/N]`: per-file statistics of glTF files
 // (geometry, materials, skins, animations, scale classes, unsupported features, fallbacks)
-// and, for several files, their aggregate. A file that fails to load is listed with its error
-// and the run goes on; exit 0 when the run completed, 2 on bad usage or unwritable --json.
+// and, for several files, their aggregate, plus each file's animations (name, duration,
+// channels) and cameras (type, name). A file that fails to load is listed with its error and
+// the run goes on; exit 0 when every input loaded, 1 when any failed (or nothing was found to
+// inspect: an empty folder is warned about), 2 on bad usage or an unwritable --json.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +13,8 @@
 #include "harness/options/shard.h"
 #include "harness/report/report_inputs.h"
 #include "harness/cli/command.h"
+#include "harness/render/frame_options.h"
+#include "harness/render/scene_inputs.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scene_stats.h"
@@ -60,6 +64,26 @@ void printFile(const mb::FileStats& f) {
   for (const auto& u : f.unsupported) std::printf("  unsupported %s\n", u.c_str());
 }
 
+// The animations (name, duration, channels) and cameras (type, name) of a loaded scene, as
+// text lines and as JSON ("animationList", "cameraList" of the file's entry).
+void describeViews(const mb::Scene& scene, nlohmann::json& file) {
+  nlohmann::json anims = nlohmann::json::array(), cams = nlohmann::json::array();
+  for (size_t i = 0; i < scene.animations.size(); ++i) {
+    const mb::Animation& a = scene.animations[i];
+    std::printf("  animation %zu '%s': %.3f s, %zu channels\n", i, a.name.c_str(), double(a.duration), a.channels.size());
+    anims.push_back({{"index", i}, {"name", a.name}, {"duration", a.duration}, {"channels", a.channels.size()}});
+  }
+  for (size_t i = 0; i < scene.cameras.size(); ++i) {
+    const mb::Camera& c = scene.cameras[i];
+    const char* type = c.perspective ? "perspective" : "orthographic";
+    std::printf("  camera %zu '%s': %s\n", i, c.name.c_str(), type);
+    cams.push_back({{"index", i}, {"name", c.name}, {"type", type}});
+  }
+  if (scene.cameras.empty()) std::printf("  cameras     none (render/compare frame the scene automatically)\n");
+  file["animationList"] = anims;
+  file["cameraList"] = cams;
+}
+
 void printAggregate(const nlohmann::json& a) {
   int loaded = a["loaded"];
   auto pct = [&](const char* count) {
@@ -82,12 +106,10 @@ void printAggregate(const nlohmann::json& a) {
 }
 
 int runInspect(const std::vector<std::string>& argv) {
-  mb::Args args(argv);
-  auto unknown = args.unknown({"json", "shard"});
-  if (!args.error().empty() || !unknown.empty() || args.positional().empty()) {
-    std::fprintf(stderr, "usage: motorbench inspect FILE|DIR|BUILTIN... [--json FILE] [--shard I/N]%s%s\n",
-                 args.error().empty() ? "" : ("\n  " + args.error()).c_str(),
-                 unknown.empty() ? "" : ("\n  unknown option " + unknown[0]).c_str());
+  mb::Args args(argv, {{"json", "shard"}, {}, {}});
+  if (!args.error().empty() || args.positional().empty()) {
+    std::fprintf(stderr, "usage: motorbench inspect FILE|DIR|BUILTIN... [--json FILE] [--shard I/N]\n  %s\n",
+                 args.error().empty() ? "expected at least one FILE, DIR or built-in scene name" : args.error().c_str());
     return 2;
   }
   mb::Shard shard;
@@ -100,16 +122,23 @@ int runInspect(const std::vector<std::string>& argv) {
     }
     shard = *parsed;
   }
+  for (const std::string& w : mb::emptyInputWarnings(args.positional()))
+    std::fprintf(stderr, "motorbench inspect: warning: %s\n", w.c_str());
   const std::vector<std::string> all = expand(args.positional());
   std::vector<mb::FileStats> stats;
   nlohmann::json files = nlohmann::json::array();
-  for (size_t k : mb::shardPositions(all, shard)) {
+  int failed = 0;
+  const std::vector<size_t> mine = mb::shardPositions(all, shard);
+  for (size_t k : mine) {
     const std::string& file = all[k];
-    auto scene = mb::loadScene(file);
+    mb::Status spec = mb::checkSceneSpec(file);  // "no such file, and not a built-in (built-in: ...)"
+    auto scene = spec ? mb::loadScene(file) : mb::Result<mb::Scene>::fail(spec.error());
     stats.push_back(scene ? mb::computeFileStats(*scene) : mb::failedFileStats(file, scene.error()));
     printFile(stats.back());
     files.push_back(mb::toJson(stats.back()));
     files.back()["input"] = file;  // the argument (a built-in's "file" is its generated name)
+    if (scene) describeViews(*scene, files.back());
+    failed += !scene;
   }
   nlohmann::json aggregate = mb::aggregateJson(stats);
   if (stats.size() > 1) printAggregate(aggregate);
@@ -125,11 +154,21 @@ int runInspect(const std::vector<std::string>& argv) {
       return 2;
     }
   }
+  if (all.empty()) {  // (an empty shard of a non-empty list is fine)
+    std::fprintf(stderr, "motorbench inspect: warning: nothing to inspect (no .gltf or .glb files found)\n");
+    return 1;
+  }
+  if (failed > 0) {
+    std::fprintf(stderr, "motorbench inspect: %d of %zu input(s) failed to load (listed as FAILED above)\n", failed,
+                 mine.size());
+    return 1;
+  }
   return 0;
 }
 
 }  // namespace
 
 MB_COMMAND(inspect, "inspect", "FILE|DIR|BUILTIN... [--json FILE] [--shard I/N]",
-           "glTF statistics: geometry, skins, animations, scale classes, unsupported features, fallbacks",
+           "glTF statistics: geometry, skins, animations (name, duration, channels), cameras, scale "
+           "classes, unsupported features, fallbacks; exit 1 when any input failed to load",
            runInspect);

@@ -60,10 +60,8 @@ int mergeInspectRuns(const std::vector<std::string>& inputs, const std::string& 
 
 int runMerge(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("merge", message); };
-  const Args args(argv, {"no-plots"});
+  const Args args(argv, {{"o", "output", "python"}, {"no-plots"}, {}});
   if (!args.error().empty()) return fail(args.error());
-  if (auto unknown = args.unknown({"o", "output", "no-plots", "python"}); !unknown.empty())
-    return fail("unknown option " + unknown[0]);
   const std::vector<std::string>& inputs = args.positional();
   const std::string out = args.get("o", args.get("output", ""));
   if (inputs.empty() || out.empty()) return fail("expected shard outputs and -o OUT");

@@ -15,13 +15,9 @@
 namespace {
 
 int runOps(const std::vector<std::string>& argv) {
-  const mb::Args args(argv);
+  const mb::Args args(argv, {{"json"}, {}, {}});
   if (!args.error().empty()) {
     std::fprintf(stderr, "motorbench ops: %s\n", args.error().c_str());
-    return 2;
-  }
-  for (const std::string& u : args.unknown({"json"})) {
-    std::fprintf(stderr, "motorbench ops: unknown option %s\n", u.c_str());
     return 2;
   }
   if (!args.positional().empty()) {

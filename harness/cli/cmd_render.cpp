@@ -1,8 +1,10 @@
-// motorbench render SCENE --pipeline NAME [frame options] -o out.png
+// motorbench render SCENE [--pipeline NAME] [frame options] -o out.png
 #include <cstdio>
+#include <filesystem>
 
-#include "harness/options/args.h"
 #include "harness/cli/command.h"
+#include "harness/options/args.h"
+#include "harness/render/counter_glossary.h"
 #include "harness/render/render_frame.h"
 
 namespace mb {
@@ -10,15 +12,28 @@ namespace {
 
 int runRender(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("render", message); };
-  Args args(argv);
-  auto cmd = parseSceneCommand(args, {"pipeline"}, "out.png");
+  Args args(argv, sceneCommandOptions({"pipeline"}));
+  if (!args.error().empty()) return fail(args.error());
+  // The output path is checked before the (slow) load and render.
+  if (auto out = args.get("o", args.get("output", "")); !out.empty())
+    if (Status ok = checkImageOutput(out); !ok) return fail(ok.error());
+  auto cmd = parseSceneCommand(args, "out.png");
   if (!cmd) return fail(cmd.error());
   const std::string& out = cmd->output;
   const Scene& scene = cmd->scene;
   // Default: the matrix baseline of the scene's space (matrix, s3_matrix, h3_matrix).
-  std::string pipeline = args.get("pipeline", pipelineNames(scene.curved.space).front());
+  const std::string pipeline = args.get("pipeline", pipelineNames(scene.curved.space).front());
+  commandNotes("render", cmd->notes);
+  commandNotes("render", loaderFallbackLines(scene));
+  std::vector<std::string> what = describeFrame(scene, cmd->settings);
+  what.insert(what.begin(), "pipeline: " + pipeline + (args.has("pipeline") ? "" : " (the default)"));
+  commandNotes("render", what);
   auto frame = renderFrame(scene, pipeline, cmd->settings);
   if (!frame) return fail(frame.error());
+  const auto parent = std::filesystem::path(out).parent_path();
+  std::error_code ec;
+  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+  if (ec) return fail(parent.string() + ": cannot create folder: " + ec.message());
   Status written = writeImage(out, frame->image);
   if (!written) return fail(written.error());
   const PipelineStats& s = frame->stats;
@@ -33,7 +48,8 @@ int runRender(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(render, "render",
-           "SCENE --pipeline NAME [--anim A --time T] [--anim2 B --time2 T2 --blend W] "
-           "[--camera C] [--size WxH] -o out.png",
-           "render one frame of a scene (file or built-in name) with one pipeline to a PNG",
+           "SCENE [--pipeline NAME (default matrix; curved scenes: their space's matrix)] [--anim A] [--time T] [--anim2 B --time2 T2 "
+           "--blend W] [--camera C] [--size WxH] -o out.png",
+           "render one frame of a scene (file or built-in name) with one pipeline to an image; "
+           "--time alone poses animation 0; prints the animation, time and camera on stderr",
            mb::runRender);

@@ -5,11 +5,13 @@
 // The same command with --worker measures one scene for the parent run (report_workers.h).
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 #include "harness/options/args.h"
 #include "harness/cli/command.h"
 #include "harness/render/render_frame.h"
+#include "harness/render/scene_inputs.h"
 #include "harness/document/report_format.h"
 #include "harness/report/report_run.h"
 #include "harness/report/report_scene.h"
@@ -21,14 +23,6 @@ namespace mb {
 namespace {
 
 using json = nlohmann::json;
-
-bool parseSize(const std::string& s, int* w, int* h) {
-  char x = 0, extra = 0;
-  const int n = std::sscanf(s.c_str(), "%d%c%d%c", w, &x, h, &extra);
-  if (n == 1) *h = *w;
-  else if (n != 3 || (x != 'x' && x != 'X')) return false;
-  return *w >= 1 && *h >= 1 && *w <= 8192 && *h <= 8192;
-}
 
 int fail(const std::string& message) { return commandError("report", message); }
 
@@ -62,13 +56,12 @@ int runWorker(const Args& args, const report::Options& o) {
 }
 
 int runReportCommand(const std::vector<std::string>& argv) {
-  const Args args(argv, {"no-bench", "no-plots"});
+  const Args args(argv, {{"o", "output", "jobs", "size", "frames", "bench-json", "bench-min-time", "pipelines",
+                          "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
+                          "worker-index", "worker-total", "shard"},
+                         {"no-bench", "no-plots"},
+                         {}});
   if (!args.error().empty()) return fail(args.error());
-  const std::set<std::string> known = {"o", "output", "jobs", "size", "frames", "no-bench", "bench-json",
-                                       "bench-min-time", "pipelines", "no-plots", "python", "plot-script",
-                                       "timeout", "time-size", "worker", "worker-out", "worker-id",
-                                       "worker-index", "worker-total", "shard"};
-  if (auto unknown = args.unknown(known); !unknown.empty()) return fail("unknown option " + unknown[0]);
   report::Options o;
   o.scenes = args.positional();
   o.outDir = args.get("o", args.get("output", ""));
@@ -78,19 +71,16 @@ int runReportCommand(const std::vector<std::string>& argv) {
   for (const std::string& p : o.pipelines) {
     bool registered = false;
     for (const std::string& n : pipelineNames()) registered = registered || n == p;
-    if (!registered) return fail("--pipelines: unknown pipeline '" + p + "'");
+    if (!registered) return fail("--pipelines: unknown pipeline '" + p + "' (registered: " + joinNames(pipelineNames()) + ")");
   }
-  if (args.has("size") && !parseSize(args.get("size", ""), &o.width, &o.height))
-    return fail("--size " + args.get("size", "") + ": expected WxH, e.g. 256x192");
-  if (args.has("time-size") && !parseSize(args.get("time-size", ""), &o.timeWidth, &o.timeHeight))
-    return fail("--time-size " + args.get("time-size", "") + ": expected WxH, e.g. 512x512");
-  auto jobs = numberOption(args, "jobs", 1), frames = numberOption(args, "frames", o.frames),
-       timeout = numberOption(args, "timeout", o.timeoutS), minTime = numberOption(args, "bench-min-time", o.benchMinTime);
-  for (const auto* r : {&jobs, &frames, &timeout, &minTime})
-    if (!*r) return fail(r->error());
-  o.jobs = int(*jobs), o.frames = int(*frames), o.timeoutS = *timeout, o.benchMinTime = *minTime;
-  if (o.jobs < 1 || o.jobs > 256) return fail("--jobs: expected 1..256");
-  if (o.frames < 0) return fail("--frames: expected 0 or more");
+  std::tie(o.width, o.height) = args.size("size", o.width, o.height);
+  std::tie(o.timeWidth, o.timeHeight) = args.size("time-size", o.timeWidth, o.timeHeight);
+  o.jobs = int(args.integer("jobs", 1, 1, 256));
+  o.frames = int(args.integer("frames", o.frames, 0, 100000));
+  o.timeoutS = args.real("timeout", o.timeoutS, 1.0, 1e7, "seconds");
+  o.benchMinTime = args.real("bench-min-time", o.benchMinTime, 0.0, 1e4, "seconds");
+  if (args.has("no-bench") && args.has("bench-json"))
+    return fail("--no-bench and --bench-json: give one (skip the kernel ratios, or read them from a file)");
   o.bench = !args.has("no-bench");
   o.benchJson = args.get("bench-json", "");
   o.plots = !args.has("no-plots");
@@ -103,6 +93,18 @@ int runReportCommand(const std::vector<std::string>& argv) {
     o.shard = *shard;
   }
   if (args.has("worker")) return runWorker(args, o);
+  // Checked before the run starts: a missing --bench-json would otherwise surface after the
+  // whole report as a note.
+  if (!o.benchJson.empty()) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(o.benchJson, ec))
+      return fail("--bench-json " + o.benchJson + ": no such file (write one with `motorbench bench --out FILE`, "
+                  "or drop the option to run the kernels now)");
+    std::ifstream in(o.benchJson);
+    if (nlohmann::json::parse(in, nullptr, false).is_discarded())
+      return fail("--bench-json " + o.benchJson + ": not JSON (expected a `motorbench bench --out` file)");
+  }
+  for (const std::string& w : emptyInputWarnings(o.scenes)) std::fprintf(stderr, "motorbench report: warning: %s\n", w.c_str());
   return report::runReport(o);
 }
 

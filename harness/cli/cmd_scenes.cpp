@@ -10,13 +10,11 @@
 namespace {
 
 int runScenes(const std::vector<std::string>& argv) {
-  mb::Args args(argv);
-  auto unknown = args.unknown({"o", "out"});
+  mb::Args args(argv, {{"o", "out"}, {}, {}});
   std::string dir = args.get("o", args.get("out", ""));
-  if (!args.error().empty() || !unknown.empty() || dir.empty()) {
-    std::fprintf(stderr, "usage: motorbench scenes -o DIR [NAME...]%s%s\n",
-                 args.error().empty() ? "" : ("\n  " + args.error()).c_str(),
-                 unknown.empty() ? "" : ("\n  unknown option " + unknown[0]).c_str());
+  if (!args.error().empty() || dir.empty()) {
+    std::fprintf(stderr, "usage: motorbench scenes -o DIR [NAME...]\n  %s\n",
+                 args.error().empty() ? "missing -o DIR" : args.error().c_str());
     return 2;
   }
   std::vector<std::string> names = args.positional();
@@ -30,8 +28,9 @@ int runScenes(const std::vector<std::string>& argv) {
   for (const auto& name : names) {
     auto glb = mb::builtinSceneGlb(name);
     if (!glb) {
-      std::fprintf(stderr, "motorbench scenes: %s (known: normal_torus textured_box skinned_tube scaled_hierarchy crowd)\n",
-                   glb.error().c_str());
+      std::string known;
+      for (const auto& n : mb::builtinSceneNames()) known += (known.empty() ? "" : ", ") + n;
+      std::fprintf(stderr, "motorbench scenes: %s (built-in: %s)\n", glb.error().c_str(), known.c_str());
       return 2;
     }
     std::string path = (std::filesystem::path(dir) / (name + ".glb")).string();

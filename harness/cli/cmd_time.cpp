@@ -1,4 +1,4 @@
-// `motorbench time [SCENE...] [--frames N] [--warmup W] [--size WxH] [--tiny WxH]
+// `motorbench time [SCENE|DIR...] [--frames N] [--warmup W] [--size WxH] [--tiny WxH]
 //  [--best-of K] [--lp-threads N] [--json FILE]`: frame time of every registered pipeline on each scene
 // (harness/timing/frame_timing.h), printed as medians with quartiles and as motor/matrix ratios
 // measured in the same run. No SCENE: every built-in scene. A scene that draws at least
@@ -21,19 +21,13 @@
 #include "harness/cli/command.h"
 #include "harness/timing/frame_timing.h"
 #include "harness/process/report_workers.h"
+#include "harness/render/frame_options.h"
+#include "harness/render/scene_inputs.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
 
 namespace mb {
 namespace {
-
-bool parseSize(const std::string& s, int& w, int& h) {
-  char x = 0, extra = 0;
-  const int n = std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra);
-  if (n == 1) h = w;
-  else if (n != 3 || (x != 'x' && x != 'X')) return false;
-  return w >= 1 && h >= 1 && w <= 16384 && h <= 16384;
-}
 
 // "median [q1-q3]" of a spread in ms, shown scaled by `scale` (1: ms, 1000: us).
 std::string cell(const timing::Spread& s, double scale = 1.0) {
@@ -119,45 +113,32 @@ int runTime(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "motorbench time: error: %s\n", m.c_str());
     return 2;
   };
-  const Args args(argv);
+  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker"}, {}, {}});
   if (!args.error().empty()) return fail(args.error());
-  if (auto u = args.unknown({"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker"});
-      !u.empty())
-    return fail("unknown option " + u[0]);
 
   timing::Settings normal, tiny;
-  try {
-    const double frames = args.number("frames", 30), warmup = args.number("warmup", 5);
-    if (frames < 1 || frames > 100000 || frames != int(frames))
-      return fail("--frames " + args.get("frames", "") + ": expected a whole number >= 1");
-    if (warmup < 0 || warmup > 100000 || warmup != int(warmup))
-      return fail("--warmup " + args.get("warmup", "") + ": expected a whole number >= 0");
-    const double best = args.number("best-of", normal.bestOf);
-    if (best < 1 || best > 100 || best != int(best))
-      return fail("--best-of " + args.get("best-of", "") + ": expected a whole number in 1..100");
-    normal.frames = int(frames), normal.warmup = int(warmup), normal.bestOf = int(best);
-  } catch (const std::exception& e) {
-    return fail(e.what());
-  }
-  if (!parseSize(args.get("size", "512x512"), normal.width, normal.height))
-    return fail("--size " + args.get("size", "") + ": expected WxH in 1..16384, e.g. 512x512");
+  normal.frames = int(args.integer("frames", 30, 1, 100000));
+  normal.warmup = int(args.integer("warmup", 5, 0, 100000));
+  normal.bestOf = int(args.integer("best-of", normal.bestOf, 1, 100));
+  std::tie(normal.width, normal.height) = args.size("size", 512, 512);
   tiny = normal;
   tiny.config = "vertex-bound";
-  if (!parseSize(args.get("tiny", "64x64"), tiny.width, tiny.height))
-    return fail("--tiny " + args.get("tiny", "") + ": expected WxH in 1..16384, e.g. 64x64");
+  std::tie(tiny.width, tiny.height) = args.size("tiny", 64, 64);
   // llvmpipe reads LP_NUM_THREADS when the context is created, which has not happened yet.
-  if (auto lp = args.get("lp-threads")) {
-    if (lp->empty() || lp->find_first_not_of("0123456789") != std::string::npos)
-      return fail("--lp-threads " + *lp + ": expected a whole number");
-    setenv("LP_NUM_THREADS", lp->c_str(), 1);
-  }
+  if (args.has("lp-threads"))
+    setenv("LP_NUM_THREADS", std::to_string(args.integer("lp-threads", 0, 0, 1024)).c_str(), 1);
 
-  std::vector<std::string> names = args.positional();
-  if (names.empty()) names = builtinSceneNames();
+  std::vector<std::string> warnings;
+  std::vector<std::string> names = expandSceneInputs(args.positional(), &warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "motorbench time: warning: %s\n", w.c_str());
+  if (args.positional().empty()) names = builtinSceneNames();
+  if (names.empty()) return fail("no scenes to time (the folders given hold no .gltf or .glb files)");
   if (auto file = args.get("worker")) {
     if (names.size() != 1) return fail("--worker times exactly one scene");
     return timeOneScene(names[0], normal, tiny, *file);
   }
+  for (const std::string& name : names)  // before any timing: a misspelt name costs no run
+    if (Status ok = checkSceneSpec(name); !ok) return fail(ok.error());
 
   auto machine = timing::machineInfo();
   if (!machine) return fail(machine.error());
@@ -230,7 +211,7 @@ int runTime(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(time, "time",
-           "[SCENE...] [--frames N] [--warmup W] [--best-of K] [--size WxH] [--tiny WxH] "
+           "[SCENE|DIR...] [--frames N] [--warmup W] [--best-of K] [--size WxH] [--tiny WxH] "
            "[--lp-threads N] [--json FILE]",
            "frame time (glFinish wall clock) and CPU update time of every pipeline; motor/matrix "
            "ratios from one interleaved run; scenes with >= 10 drawn vertices per tiny-viewport pixel "

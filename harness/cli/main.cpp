@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "harness/cli/command.h"
+#include "mb_version.h"  // generated: MB_VERSION, MB_GIT_COMMIT (harness/cli/version.cmake)
 
 namespace mb {
 std::vector<Command>& commands() {
@@ -16,7 +17,7 @@ std::vector<Command>& commands() {
 }  // namespace mb
 
 static void usage() {
-  std::printf("usage: motorbench <command> [options]\n\ncommands:\n");
+  std::printf("usage: motorbench <command> [options]   (motorbench --version; motorbench <command> --help)\n\ncommands:\n");
   auto cmds = mb::commands();
   std::sort(cmds.begin(), cmds.end(),
             [](const mb::Command& a, const mb::Command& b) { return std::strcmp(a.name, b.name) < 0; });
@@ -28,6 +29,10 @@ int main(int argc, char** argv) {
       !std::strcmp(argv[1], "help")) {
     usage();
     return argc < 2 ? 2 : 0;
+  }
+  if (!std::strcmp(argv[1], "--version") || !std::strcmp(argv[1], "version")) {
+    std::printf("motorbench %s (git %s)\n", MB_VERSION, *MB_GIT_COMMIT ? MB_GIT_COMMIT : "commit unknown");
+    return 0;
   }
   for (const auto& c : mb::commands()) {
     if (std::strcmp(argv[1], c.name) != 0) continue;

@@ -5,6 +5,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <array>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -144,11 +146,23 @@ Verdict judge(const RgbaImage& a, const RgbaImage& b, const Thresholds& t) {
   return v;
 }
 
+std::array<uint8_t, 3> heatColour(int steps) {
+  // Colour ramp stops (t = 0..1): black, blue, red, yellow, white.
+  static const float ramp[5][3] = {{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}};
+  // d = 1 step maps to 0.25 (blue), 64+ steps to 1 (white).
+  const float t = 0.25f + 0.75f * std::min(1.0f, std::log2(float(std::max(1, steps))) / 6.0f);
+  const float x = t * 4.0f;
+  const int i = std::min(3, int(x));
+  const float f = x - float(i);
+  std::array<uint8_t, 3> rgb{};
+  for (int c = 0; c < 3; ++c)
+    rgb[size_t(c)] = uint8_t(std::lround(255.0f * (ramp[i][c] + f * (ramp[i + 1][c] - ramp[i][c]))));
+  return rgb;
+}
+
 RgbaImage diffHeatmap(const RgbaImage& a, const RgbaImage& b) {
   RgbaImage out{a.width, a.height, std::vector<uint8_t>(a.rgba.size(), 0)};
   if (!sameSize(a, b)) return out;
-  // Colour ramp stops (t = 0..1): black, blue, red, yellow, white.
-  static const float ramp[5][3] = {{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1}};
   for (size_t p = 0; p < a.rgba.size(); p += 4) {
     int d = 0;
     for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(a.rgba[p + c]) - int(b.rgba[p + c])));
@@ -159,15 +173,58 @@ RgbaImage diffHeatmap(const RgbaImage& a, const RgbaImage& b) {
       o[0] = o[1] = o[2] = uint8_t(grey / 4);
       continue;
     }
-    // d = 1 step maps to 0.25 (dark blue), 64+ steps to 1 (white).
-    float t = 0.25f + 0.75f * std::min(1.0f, std::log2(float(d)) / 6.0f);
-    float x = t * 4.0f;
-    int i = std::min(3, int(x));
-    float f = x - float(i);
-    for (int c = 0; c < 3; ++c)
-      o[c] = uint8_t(std::lround(255.0f * (ramp[i][c] + f * (ramp[i + 1][c] - ramp[i][c]))));
+    const auto rgb = heatColour(d);
+    o[0] = rgb[0], o[1] = rgb[1], o[2] = rgb[2];
   }
   return out;
+}
+
+const std::vector<int>& heatLegendSteps() {
+  static const std::vector<int> steps = {1, 2, 4, 8, 16, 32, 64};
+  return steps;
+}
+
+RgbaImage heatLegend() {
+  const int block = 32;
+  const auto& steps = heatLegendSteps();
+  RgbaImage img{block * int(steps.size()), block, {}};
+  img.rgba.resize(size_t(img.width) * size_t(img.height) * 4);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const auto rgb = heatColour(steps[size_t(x / block)]);
+      uint8_t* o = &img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4];
+      o[0] = rgb[0], o[1] = rgb[1], o[2] = rgb[2], o[3] = 255;
+    }
+  return img;
+}
+
+nlohmann::json heatLegendJson() {
+  nlohmann::json stops = nlohmann::json::array();
+  for (int s : heatLegendSteps()) {
+    const auto rgb = heatColour(s);
+    stops.push_back({{"steps", s}, {"maxError", s / 255.0}, {"rgb", {rgb[0], rgb[1], rgb[2]}}});
+  }
+  return {{"unchanged", "pixels that agree in every channel show the first image as dim grey (1/4 of its luma)"},
+          {"scale", "a changed pixel is coloured by its largest channel difference in byte steps (1/255), on a "
+                    "log2 scale: 1 step blue, 2 purple, 4 red, 8 orange, 16 yellow, 32 pale yellow, 64 and more white"},
+          {"stops", stops},
+          {"image", "diff_legend.png: one 32x32 block per stop, left to right"}};
+}
+
+Status checkImageOutput(const std::string& path, const std::string& option) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (path.empty()) return Status::fail(option + ": empty file name");
+  if (fs::is_directory(path, ec))
+    return Status::fail(option + " " + path + ": is a folder; give a file name such as " +
+                        (fs::path(path) / "frame.png").string());
+  const std::string ext = fs::path(path).extension().string();
+  if (ext.empty() || ext == ".")
+    return Status::fail(option + " " + path + ": no file extension; name the image format, e.g. " + path + ".png");
+  if (!OIIO::ImageOutput::create(path))
+    return Status::fail(option + " " + path + ": '" + ext +
+                        "' is not an image format OpenImageIO writes here (use .png)");
+  return Status();
 }
 
 }  // namespace mb

@@ -1,10 +1,13 @@
 // Image I/O and image-difference metrics (OpenImageIO), with idiff's pass/fail semantics.
 // Pixel values are bytes / 255; a channel difference is |a - b| in those units.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "pipelines/result.h"
 
@@ -60,5 +63,19 @@ Verdict judge(const RgbaImage& a, const RgbaImage& b, const Thresholds& t);
 // step blue, 4 steps red, 8 orange, 16 yellow, 64 and more white. An empty image when the
 // sizes differ.
 RgbaImage diffHeatmap(const RgbaImage& a, const RgbaImage& b);
+
+// The heat map's colour for a largest channel difference of `steps` byte steps (>= 1).
+std::array<uint8_t, 3> heatColour(int steps);
+// The legend of diffHeatmap: one 32x32 block per stop of heatLegendSteps() (1, 2, 4, ... 64
+// steps), left to right; and the same as JSON (what unchanged pixels show, the scale, each
+// stop's steps, maxError and rgb) for metrics.json and the report.
+const std::vector<int>& heatLegendSteps();
+RgbaImage heatLegend();
+nlohmann::json heatLegendJson();
+
+// Checks an image path for `option` (e.g. "-o") before anything is rendered: not a folder,
+// has an extension, OpenImageIO can write that format. Errors name the option, the path and
+// what to write instead.
+Status checkImageOutput(const std::string& path, const std::string& option = "-o");
 
 }  // namespace mb

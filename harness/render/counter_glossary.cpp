@@ -1,0 +1,91 @@
+#include "harness/render/counter_glossary.h"
+
+#include "pipelines/scene/scene_stats.h"
+
+namespace mb {
+
+const std::vector<CounterEntry>& counterGlossary() {
+  static const std::vector<CounterEntry> g = {
+      // PipelineStats (pipelines/pipeline.h): measured from the pipeline's own uploads and draws.
+      {"PipelineStats", "vertexBytes", "bytes", "vertex buffer bytes of the shading attributes (position, normal/tangent frame or tangent rotor, uv0) as uploaded"},
+      {"PipelineStats", "skinVertexBytes", "bytes", "vertex buffer bytes of the skinning attributes (joints, weights)"},
+      {"PipelineStats", "extraVertexBytes", "bytes", "optional streams uploaded only when the file has them (uv1, vertex colour)"},
+      {"PipelineStats", "indexBytes", "bytes", "index buffer bytes"},
+      {"PipelineStats", "textureBytes", "bytes", "texture bytes handed to glTexImage2D (RGBA8, level 0; the mipmaps the driver generates are not counted)"},
+      {"PipelineStats", "uniformBytesPerFrame", "bytes", "per-frame plus per-draw uniform bytes of the last render (transforms: matrices or motors)"},
+      {"PipelineStats", "skinBytesPerFrame", "bytes", "joint palette bytes of the last update (matrices or motors per joint)"},
+      {"PipelineStats", "vertices", "vertices", "vertices uploaded"},
+      {"PipelineStats", "floatsPerVertex", "floats", "shading-attribute floats per vertex, from the upload stride"},
+      {"PipelineStats", "floatsPerTransform", "floats", "floats per node transform sent to the GPU (transform uniform bytes / 4 / transforms)"},
+      {"PipelineStats", "floatsPerJoint", "floats", "floats per joint of the skin palette (0 without skins)"},
+      {"PipelineStats", "draws", "draw calls", "draw calls of the last render"},
+      {"PipelineStats", "conversionMs", "ms", "load-time conversion inside prepare (CPU, wall clock; e.g. frames to tangent rotors)"},
+      {"PipelineStats", "updateMs", "ms", "the last update: sampling, hierarchy, skin palette (CPU, wall clock)"},
+      {"PipelineStats", "nonUniformScaleNodes", "nodes", "motor pipeline: nodes with non-uniform scale, carried by the per-leaf scale fallback (exact on leaves, approximated on inner nodes and joints)"},
+      {"PipelineStats", "negativeScaleNodes", "nodes", "motor pipeline: nodes with a negative scale component (mirrored; matrix: det < 0)"},
+      {"PipelineStats", "shearMatrixNodes", "nodes", "motor pipeline: authored matrices with shear, replaced by the nearest rotation and mean scale"},
+      {"PipelineStats", "zeroScalarFrames", "vertices", "motor pipeline: tangent frames whose rotor scalar was exactly 0 (a 180-degree turn of the basis frame); handedness is kept by the sign bit and |scalar| raised to 1/32767 so it survives packing"},
+      // LoadStats (pipelines/scene/scene.h): what the loader had to fix; `inspect` lists them.
+      {"LoadStats", "flatNormalsGenerated", "primitives", "primitives without NORMAL: flat normals generated"},
+      {"LoadStats", "tangentsGenerated", "primitives", "normal-mapped primitives without TANGENT: tangents generated from the uvs"},
+      {"LoadStats", "badNormalsReplaced", "vertices", "zero-length or NaN normals replaced"},
+      {"LoadStats", "badTangentsReplaced", "vertices", "zero-length, NaN or normal-parallel tangents replaced"},
+      {"LoadStats", "weightsRenormalised", "vertices", "skin weights that did not sum to 1, rescaled"},
+      {"LoadStats", "weightsZeroSum", "vertices", "all skin weights 0: bound to joint 0"},
+      {"LoadStats", "influencesTruncated", "vertices", "more than 4 influences (JOINTS_1...): the 4 largest kept"},
+      {"LoadStats", "nonFinitePositions", "vertices", "NaN or infinite positions, set to 0"},
+      {"LoadStats", "skippedPrimitives", "primitives", "primitives not drawn (points, lines; listed under unsupported)"},
+      {"LoadStats", "normalsRenormalised", "vertices", "normals whose length differed from 1 by more than 1e-3, normalised"},
+      {"LoadStats", "jointsOutOfRange", "influences", "influences naming a joint the skin lacks, given weight 0"},
+      {"LoadStats", "stripsFansConverted", "primitives", "TRIANGLE_STRIP / TRIANGLE_FAN primitives converted to triangle lists"},
+      {"LoadStats", "degenerateUvTriangles", "triangles", "tangent generation: triangles with zero uv area (no tangent contribution)"},
+      {"LoadStats", "tangentSplitVertices", "vertices", "vertices duplicated because their triangles disagree in tangent handedness"},
+      {"LoadStats", "imagesNotDecoded", "images", "images that could not be decoded, sampled as 1x1 white (listed under unsupported)"},
+      // Image metrics (harness/render/image_metrics.h): compare, report and check.
+      {"ImageMetrics", "rmse", "", "root mean square of the channel differences (bytes / 255), RGBA, every pixel"},
+      {"ImageMetrics", "psnr", "dB", "20 log10(1 / rmse); null (infinite) when the images are identical"},
+      {"ImageMetrics", "identical", "", "true when every byte agrees"},
+      {"ImageMetrics", "meanError", "", "mean |difference| over every channel of every pixel (bytes / 255)"},
+      {"ImageMetrics", "maxError", "", "largest channel difference (bytes / 255; 1/255 = one byte step)"},
+      {"ImageMetrics", "maxErrorPixel", "", "where maxError first occurs: x (right), y (down), channel (0..3 = RGBA)"},
+      {"ImageMetrics", "fractionOver1", "fraction", "fraction of pixels (0..1) with some channel off by more than 1/255"},
+      {"ImageMetrics", "fractionOver2", "fraction", "fraction of pixels with some channel off by more than 2/255"},
+      {"ImageMetrics", "fractionOver4", "fraction", "fraction of pixels with some channel off by more than 4/255"},
+  };
+  return g;
+}
+
+const CounterEntry* findCounter(const std::string& group, const std::string& key) {
+  for (const CounterEntry& e : counterGlossary())
+    if (e.group == group && e.key == key) return &e;
+  return nullptr;
+}
+
+nlohmann::json glossaryJson() {
+  nlohmann::json j = nlohmann::json::object();
+  for (const CounterEntry& e : counterGlossary()) j[e.group][e.key] = {{"unit", e.unit}, {"meaning", e.meaning}};
+  return j;
+}
+
+std::vector<std::string> loaderFallbackLines(const Scene& scene) {
+  std::vector<std::string> lines;
+  const nlohmann::json stats = toJson(scene.stats);  // items() must not outlive it
+  for (const auto& [key, value] : stats.items()) {
+    if (!value.is_number() || value.get<double>() == 0) continue;
+    const CounterEntry* e = findCounter("LoadStats", key);
+    std::string line = "loader fallback: " + key + " " + value.dump();
+    if (e) line += (e->unit.empty() ? "" : " " + e->unit) + ": " + e->meaning;
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+nlohmann::json loaderFallbackJson(const Scene& scene) {
+  nlohmann::json j = nlohmann::json::object();
+  const nlohmann::json stats = toJson(scene.stats);
+  for (const auto& [key, value] : stats.items())
+    if (value.is_number() && value.get<double>() != 0) j[key] = value;
+  return j;
+}
+
+}  // namespace mb

@@ -1,0 +1,209 @@
+#include "harness/render/frame_options.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/scene/loader.h"
+
+namespace mb {
+namespace {
+
+// Index of `value` among `count` items named by `nameOf`, accepting a number or a name.
+template <class NameOf>
+Result<int> resolveIndex(const std::string& option, const std::string& value, size_t count,
+                         NameOf nameOf, const std::string& source) {
+  char* end = nullptr;
+  long i = std::strtol(value.c_str(), &end, 10);
+  if (!value.empty() && *end == '\0') {
+    if (i >= 0 && size_t(i) < count) return int(i);
+    if (count == 0) return Result<int>::fail("--" + option + " " + value + ": " + source + " has none");
+    return Result<int>::fail("--" + option + " " + value + ": " + source + " has " +
+                             std::to_string(count) + " (indices 0.." +
+                             std::to_string(long(count) - 1) + ")");
+  }
+  std::string names;
+  for (size_t k = 0; k < count; ++k) {
+    if (nameOf(k) == value) return int(k);
+    names += (names.empty() ? "'" : ", '") + nameOf(k) + "'";
+  }
+  return Result<int>::fail("--" + option + " " + value + ": no such name in " + source +
+                           (names.empty() ? " (it has none)" : " (names: " + names + ")"));
+}
+
+std::string seconds(double t) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g s", t);
+  return b;
+}
+
+std::string animText(const Scene& scene, int index) {
+  const Animation& a = scene.animations[size_t(index)];
+  return "animation " + std::to_string(index) + (a.name.empty() ? " (unnamed)" : " '" + a.name + "'") + " (" + std::to_string(index + 1) + " of " +
+         std::to_string(scene.animations.size()) + ", duration " + seconds(a.duration) + ")";
+}
+
+// Reads --<timeKey> for animation `anim` (>= 0): >= 0 seconds, clamped to the duration (noted).
+Result<float> timeFor(const Args& args, const std::string& timeKey, double fallback, const Scene& scene,
+                      int anim, std::vector<std::string>& notes) {
+  const double t = args.real(timeKey, fallback, 0.0, 1e9, "a time in seconds");
+  const double duration = scene.animations[size_t(anim)].duration;
+  if (t > duration) {
+    notes.push_back("--" + timeKey + " " + args.get(timeKey, "") + " is past the end of " + animText(scene, anim) +
+                    ": drawing its last pose, t = " + seconds(duration) +
+                    " (times are clamped to the animation, not looped)");
+    return float(duration);
+  }
+  return float(t);
+}
+
+}  // namespace
+
+OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags) {
+  OptionSpec spec;
+  spec.values = std::move(values);
+  spec.values.insert({"o", "output", "anim", "time", "anim2", "time2", "blend", "camera", "size"});
+  spec.flags = std::move(flags);
+  const std::string once =
+      "a run draws one frame per pipeline: run the command once per time (report draws three times per scene)";
+  spec.repeatHints["time"] = once;
+  spec.repeatHints["anim"] = once;
+  return spec;
+}
+
+Status checkSceneSpec(const std::string& spec) {
+  namespace fs = std::filesystem;
+  if (isBuiltinScene(spec)) return Status();
+  std::error_code ec;
+  if (fs::is_directory(spec, ec))
+    return Status::fail(spec + ": is a folder; this command takes one glTF file or a built-in scene "
+                               "(inspect, report and time take folders)");
+  if (!fs::exists(spec, ec))
+    return Status::fail(spec + ": no such file, and not a built-in scene (built-in: " +
+                        joinNames(builtinSceneNames()) + ")");
+  return Status();
+}
+
+Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene, std::vector<std::string>* notesOut) {
+  using R = Result<FrameSettings>;
+  std::vector<std::string> notes;
+  FrameSettings s;
+  auto animName = [&](size_t k) { return scene.animations[k].name; };
+  const std::string& src = scene.source;
+  if (auto a = args.get("anim")) {
+    auto i = resolveIndex("anim", *a, scene.animations.size(), animName, src + " (animations)");
+    if (!i) return R::fail(i.error());
+    s.anim.anim = *i;
+  } else if (args.has("time")) {
+    if (scene.animations.empty())
+      return R::fail("--time " + args.get("time", "") + ": " + src + " has no animations (only its rest pose)");
+    s.anim.anim = 0;
+    notes.push_back("--time without --anim: using " + animText(scene, 0));
+  }
+  if (auto a = args.get("anim2")) {
+    auto i = resolveIndex("anim2", *a, scene.animations.size(), animName, src + " (animations)");
+    if (!i) return R::fail(i.error());
+    s.anim.anim2 = *i;
+  }
+  if (args.has("time2") && s.anim.anim2 < 0) return R::fail("--time2 needs --anim2 (the animation it poses)");
+  if (args.has("blend") && s.anim.anim2 < 0) return R::fail("--blend needs --anim2 (the animation to blend towards)");
+  if (auto c = args.get("camera")) {
+    auto camName = [&](size_t k) { return scene.cameras[k].name; };
+    auto i = resolveIndex("camera", *c, scene.cameras.size(), camName, src + " (cameras)");
+    if (!i) return R::fail(i.error());
+    s.camera = *i;
+  }
+  if (s.anim.anim >= 0) {
+    auto t = timeFor(args, "time", 0.0, scene, s.anim.anim, notes);
+    if (!t) return R::fail(t.error());
+    s.anim.time = *t;
+  }
+  if (s.anim.anim2 >= 0) {
+    auto t = timeFor(args, "time2", args.real("time", 0.0, 0.0, 1e9, "a time in seconds"), scene, s.anim.anim2, notes);
+    if (!t) return R::fail(t.error());
+    s.anim.time2 = *t;
+    s.anim.blend = float(args.real("blend", 0.5, 0.0, 1.0, "a weight"));
+  }
+  std::tie(s.width, s.height) = args.size("size", s.width, s.height);
+  if (notesOut) notesOut->insert(notesOut->end(), notes.begin(), notes.end());
+  return s;
+}
+
+Result<SceneCommand> parseSceneCommand(const Args& args, const std::string& outputWhat) {
+  using R = Result<SceneCommand>;
+  if (!args.error().empty()) return R::fail(args.error());
+  if (args.positional().size() != 1)
+    return R::fail("expected one SCENE (a glTF file or a built-in scene name), got " +
+                   std::to_string(args.positional().size()) +
+                   (args.positional().empty() ? "" : ": " + joinNames(args.positional())));
+  SceneCommand c;
+  c.output = args.get("o", args.get("output", ""));
+  if (c.output.empty()) return R::fail("missing -o " + outputWhat);
+  if (Status ok = checkSceneSpec(args.positional()[0]); !ok) return R::fail(ok.error());
+  auto scene = loadScene(args.positional()[0]);
+  if (!scene) return R::fail(scene.error());
+  c.scene = scene.take();
+  auto settings = frameSettingsFromArgs(args, c.scene, &c.notes);
+  if (!settings) return R::fail(settings.error());
+  c.settings = *settings;
+  return c;
+}
+
+std::vector<std::string> describeFrame(const Scene& scene, const FrameSettings& s) {
+  std::vector<std::string> lines;
+  const size_t n = scene.animations.size();
+  if (s.anim.anim >= 0) {
+    lines.push_back(animText(scene, s.anim.anim) + " at t = " + seconds(s.anim.time));
+  } else {
+    lines.push_back(n == 0 ? "rest pose (the scene has no animations)"
+                           : "rest pose (no --anim/--time; the scene has " + std::to_string(n) + " animation" +
+                                 (n == 1 ? "" : "s") + ")");
+  }
+  if (s.anim.anim2 >= 0) {
+    char w[32];
+    std::snprintf(w, sizeof w, "%g", double(s.anim.blend));
+    lines.push_back("blended towards " + animText(scene, s.anim.anim2) + " at t = " + seconds(s.anim.time2) +
+                    ", weight " + w);
+  }
+  bool carried = false;
+  for (const Node& node : scene.nodes) carried = carried || (s.camera >= 0 && node.camera == s.camera);
+  if (s.camera < 0) {
+    lines.push_back("camera: automatic framing of the posed scene (" + std::to_string(scene.cameras.size()) +
+                    " glTF camera(s) in the file; --camera picks one)");
+  } else {
+    const Camera& c = scene.cameras[size_t(s.camera)];
+    std::string line = "camera: glTF camera " + std::to_string(s.camera) + " '" + c.name + "' (" +
+                       (c.perspective ? "perspective" : "orthographic, drawn as perspective") + ")";
+    if (!carried) line += " is on no node: automatic framing instead";
+    lines.push_back(line);
+  }
+  lines.push_back("size: " + std::to_string(s.width) + "x" + std::to_string(s.height));
+  return lines;
+}
+
+int commandError(const char* command, const std::string& message) {
+  std::fprintf(stderr, "motorbench %s: error: %s\n", command, message.c_str());
+  return 2;
+}
+
+void commandNotes(const char* command, const std::vector<std::string>& lines) {
+  for (const std::string& l : lines) std::fprintf(stderr, "motorbench %s: %s\n", command, l.c_str());
+}
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+}  // namespace mb
