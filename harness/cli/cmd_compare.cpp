@@ -124,7 +124,8 @@ int runCompare(const std::vector<std::string>& argv) {
       {"verdict", {{"judged", thresholdsGiven},
                    {"text", !thresholdsGiven ? "no threshold given" : verdict.failed ? "fail" : "pass"},
                    {"failed", thresholdsGiven && verdict.failed},
-                   {"failPercent", verdict.failPercent}, {"reason", verdict.reason}}},
+                   {"failPercent", verdict.failPercent},
+                   {"reason", thresholdsGiven ? nlohmann::json(verdict.reason) : nlohmann::json(nullptr)}}},
       {"stats", {toJson(frames[0].stats), toJson(frames[1].stats)}}};  // in --pipelines order
   std::string jsonPath = (fs::path(dir) / "metrics.json").string();
   std::ofstream out(jsonPath);

@@ -23,6 +23,14 @@ std::string str(const json& v, const std::string& fallback = "-") {
   return v.is_string() ? v.get<std::string>() : v.is_number() ? fmt(v, 6) : fallback;
 }
 
+// " over N scenes" for a spread (its "n"), so a median says how many scenes it covers: the
+// pipelines' figures may come from different scene sets (a skin-only quantity, a failed scene).
+std::string scenesText(const json& spread, const char* what = "scenes") {
+  if (!spread.is_object() || spread.value("n", 0) == 0) return "";
+  const int n = spread.value("n", 0);
+  return " over " + std::to_string(n) + " " + (n == 1 ? std::string(what).substr(0, std::string(what).size() - 1) : what);
+}
+
 void header(Document& d, const json& r) {
   const json& m = r["machine"];
   d.paragraph("Measured on " + str(m["cpu"]) + " (" + str(m["logicalCores"]) + " logical cores), " +
@@ -46,7 +54,7 @@ void summary(Document& d, const json& r) {
   const std::vector<std::string> pipes = pipelinesOf(r);
   const json& sum = r["summary"];
   d.heading(2, "Summary", "summary");
-  std::vector<std::string> head = {"quantity (median over scenes, range)"};
+  std::vector<std::string> head = {"quantity (median (min..max) over the N scenes that have it)"};
   for (const std::string& p : pipes) head.push_back(p);
   std::vector<std::vector<Cell>> rows;
   auto row = [&](const std::string& label, auto value) {
@@ -55,7 +63,10 @@ void summary(Document& d, const json& r) {
     rows.push_back(cells);
   };
   auto fromSpread = [&](const char* key, int digits) {
-    return [&sum, key, digits](const std::string& p) { return spreadText(at(sum, {"pipelines"})[p][key], digits); };
+    return [&sum, key, digits](const std::string& p) {
+      const json& spread = at(sum, {"pipelines"})[p][key];
+      return spreadText(spread, digits) + scenesText(spread);
+    };
   };
   row("bytes per vertex, shading attributes", fromSpread("bytesPerVertex", 3));
   row("bytes per vertex incl. skin + extra streams", fromSpread("bytesPerVertexAll", 3));
@@ -82,7 +93,7 @@ void summary(Document& d, const json& r) {
     const json& im = at(sum, {"images"})[pipes[i]];
     lines.push_back(pipes[i] + " vs " + pipes[0] + ": " + str(im["comparedFrames"], "0") + " frames compared, " +
                     str(im["identicalFrames"], "0") + " identical; PSNR of the others " +
-                    spreadText(im["psnr"], 4) + " dB; pixels off by more than 1/255: at most " +
+                    spreadText(im["psnr"], 4) + " dB" + scenesText(im["psnr"], "frames") + "; pixels off by more than 1/255: at most " +
                     percent(at(im, {"fractionOver1", "max"}), 3) + "; largest channel error " +
                     fmt(at(im, {"maxError", "max"}).is_number() ? json(255.0 * im["maxError"]["max"].get<double>()) : json(), 3) +
                     "/255.");
@@ -90,13 +101,33 @@ void summary(Document& d, const json& r) {
   const json& ft = sum["frameTimeRatio"];
   lines.push_back("Frame time motor / matrix (median frame, per scene): " +
                   (ft.value("n", 0) ? ratio(ft["median"]) + " (" + ratio(ft["min"]) + ".." + ratio(ft["max"]) + ")" : "-") +
-                  " (< 1: motor faster).");
+                  scenesText(ft) + " (< 1: motor faster).");
   std::string kr;
   for (const auto& [k, v] : members(sum, "kernelRatios").items())
     if (k.rfind("vertex_frame", 0) == 0 || k.rfind("skinned_vertex", 0) == 0) kr += (kr.empty() ? "" : ", ") + k + " " + ratio(v);
   lines.push_back("CPU kernel throughput motor / matrix (items/s, > 1: motor faster): " +
                   (kr.empty() ? str(at(r, {"kernels", "error"}), "not measured") : kr) + ".");
   d.bullets(lines);
+}
+
+// The heat maps' colour scale (report.json "diffLegend") and what every counter means
+// (report.json "glossary"), so the figures above read without the source.
+void glossary(Document& d, const json& r) {
+  d.heading(2, "Glossary", "glossary");
+  const json& legend = r["diffLegend"];
+  if (legend.is_object()) {
+    std::string stops;
+    for (const json& s : legend.value("stops", json::array()))
+      stops += (stops.empty() ? "" : ", ") + str(s["steps"]) + " step(s) rgb(" + str(s["rgb"][0]) + "," +
+               str(s["rgb"][1]) + "," + str(s["rgb"][2]) + ")";
+    d.paragraph("Diff heat maps: " + str(legend["unchanged"]) + "; " + str(legend["scale"]) + ". Colours: " + stops + ".");
+  }
+  for (const auto& [group, entries] : members(r, "glossary").items()) {
+    std::vector<std::vector<Cell>> rows;
+    for (const auto& [key, e] : entries.items()) rows.push_back({{key}, {str(e["unit"], "")}, {str(e["meaning"], "")}});
+    d.heading(3, group);
+    d.table({"counter", "unit", "meaning"}, rows);
+  }
 }
 
 void plots(Document& d, const json& r) {
@@ -375,6 +406,7 @@ Document reportDocument(const json& r) {
   opsSection(d, r);
   kernelSection(d, r);
   method(d);
+  glossary(d, r);
   return d;
 }
 

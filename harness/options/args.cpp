@@ -13,13 +13,15 @@ bool looksLikeOption(const std::string& a) {
   return a.size() > 1 && a[0] == '-' && !(a[1] >= '0' && a[1] <= '9') && a[1] != '.';
 }
 
-std::string rangeText(double min, double max, bool whole) {
+// The accepted range as the error states it. A large upper bound (>= 1e5) is only a sanity
+// cap: named when the value exceeds it, otherwise the message reads ">= min".
+std::string rangeText(double min, double max, bool whole, bool overMax) {
   auto num = [whole](double v) {
     char b[32];
     std::snprintf(b, sizeof b, whole ? "%.0f" : "%g", v);
     return std::string(b);
   };
-  if (max >= 1e15) return ">= " + num(min);
+  if (max >= 1e5 && !overMax) return ">= " + num(min);
   return "in " + num(min) + ".." + num(max);
 }
 
@@ -92,7 +94,8 @@ long Args::integer(const std::string& key, long fallback, long min, long max) co
   char* end = nullptr;
   const long n = std::strtol(v->c_str(), &end, 10);
   if (v->empty() || *end != '\0' || errno == ERANGE || n < min || n > max)
-    throw OptionError("--" + key + ": expected a whole number " + rangeText(double(min), double(max), true) +
+    throw OptionError("--" + key + ": expected a whole number " +
+                      rangeText(double(min), double(max), true, *end == '\0' && n > max) +
                       ", got '" + *v + "'");
   return n;
 }
@@ -104,7 +107,8 @@ double Args::real(const std::string& key, double fallback, double min, double ma
   char* end = nullptr;
   const double d = std::strtod(v->c_str(), &end);
   if (v->empty() || *end != '\0' || !std::isfinite(d) || d < min || d > max)
-    throw OptionError("--" + key + ": expected " + what + " " + rangeText(min, max, false) + ", got '" +
+    throw OptionError("--" + key + ": expected " + what + " " + rangeText(min, max, false, *end == '\0' && d > max) +
+                      ", got '" +
                       *v + "'");
   return d;
 }

@@ -1,3 +1,5 @@
+#include "harness/render/counter_glossary.h"
+#include "harness/render/image_metrics.h"
 #include "harness/report/report_run.h"
 
 #include <unistd.h>
@@ -166,6 +168,8 @@ int runReport(const Options& o) {
 }
 
 int writeReportFolder(json report, const Options& o) {
+  report["glossary"] = glossaryJson();    // what every counter means (shown in the documents)
+  report["diffLegend"] = heatLegendJson();  // the heat maps' colour scale
   const fs::path jsonPath = fs::path(o.outDir) / "report.json";
   if (Status s = writeText(jsonPath, dumpJson(report, 2) + "\n"); !s) {
     std::fprintf(stderr, "motorbench report: error: %s\n", s.error().c_str());
