@@ -96,7 +96,15 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
     EXPECT_NE(text.find("images/textured_box/t0_motor.png"), std::string::npos) << doc;
     EXPECT_EQ(text.find(out.string()), std::string::npos) << doc << " holds an absolute path";
     EXPECT_NE(text.find("broken.gltf"), std::string::npos) << doc;
+    // Issue 19: a summary median says how many scenes it covers (one scene loaded here), and
+    // the glossary explains every counter and the heat maps' colours.
+    EXPECT_NE(text.find("36 over 1 scene"), std::string::npos) << doc << ": bytes per vertex without its scene count";
+    EXPECT_NE(text.find("Glossary"), std::string::npos) << doc;
+    EXPECT_NE(text.find("zeroScalarFrames"), std::string::npos) << doc;
+    EXPECT_NE(text.find("Diff heat maps:"), std::string::npos) << doc;
   }
+  EXPECT_TRUE(r["glossary"]["PipelineStats"].contains("zeroScalarFrames")) << r["glossary"].dump();
+  EXPECT_EQ(r["diffLegend"]["stops"].size(), 7u);
   fs::remove_all(dir);
 }
 
