@@ -245,12 +245,6 @@ int runCheck(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("check", message); };
   if (!args.error().empty()) return fail(args.error());
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
-  // The default --golden is relative to the repository root. Elsewhere, point to --golden
-  // instead of letting --update create goldens in the wrong place (or suggesting it).
-  if (!args.has("golden") && !fs::exists(fs::path("tests/golden") / golden::kManifest))
-    return fail("tests/golden/" + std::string(golden::kManifest) + " not found under " + fs::current_path().string() +
-                ": run check from the repository root, or pass --golden DIR (the folder holding " +
-                golden::kManifest + ", e.g. --golden /path/to/motorbench/tests/golden)");
   Selection sel;
   sel.goldenDir = args.get("golden", "tests/golden");
   sel.outDir = args.get("out", args.get("o", "out/check"));
@@ -286,6 +280,12 @@ int runCheck(const std::vector<std::string>& argv) {
     if (!shard) return fail(error);
     sel.shard = *shard;
   }
+  // The default --golden is relative to the repository root. Elsewhere, point to --golden
+  // instead of letting --update create goldens in the wrong place (or suggesting it).
+  if (!args.has("golden") && !fs::exists(fs::path("tests/golden") / golden::kManifest))
+    return fail("tests/golden/" + std::string(golden::kManifest) + " not found under " + fs::current_path().string() +
+                ": run check from the repository root, or pass --golden DIR (the folder holding " +
+                golden::kManifest + ", e.g. --golden /path/to/motorbench/tests/golden)");
   return args.has("update") ? update(sel) : check(sel);
 }
 

@@ -79,7 +79,8 @@ int timeOneScene(const std::string& name, const timing::Settings& normal, const 
                  const std::string& resultPath) {
   nlohmann::json rows = nlohmann::json::array();
   int status = 0;
-  auto scene = loadScene(name);
+  const Status spec = checkSceneSpec(name);  // a misspelt name lists the built-ins
+  auto scene = spec ? loadScene(name) : Result<Scene>::fail(spec.error());
   if (!scene) {
     std::fprintf(stderr, "motorbench time: error: %s\n", scene.error().c_str());
     rows.push_back({{"scene", name}, {"error", scene.error()}});
@@ -137,8 +138,6 @@ int runTime(const std::vector<std::string>& argv) {
     if (names.size() != 1) return fail("--worker times exactly one scene");
     return timeOneScene(names[0], normal, tiny, *file);
   }
-  for (const std::string& name : names)  // before any timing: a misspelt name costs no run
-    if (Status ok = checkSceneSpec(name); !ok) return fail(ok.error());
 
   auto machine = timing::machineInfo();
   if (!machine) return fail(machine.error());
