@@ -145,8 +145,8 @@ int runClaims(const std::vector<std::string>& argv) {
   for (auto& c : claims::baselineClaims()) all.push_back(c);
   say("curved space (uploads, ops, frame timing, drift)");
   {
-    const auto framesOpt = numberOption(args, "frames", 20);
-    for (auto& c : claims::curvedClaims(!args.has("no-run"), framesOpt ? int(*framesOpt) : 20)) all.push_back(c);
+    const int frames = int(args.integer("frames", 20, 1, 100000));
+    for (auto& c : claims::curvedClaims(!args.has("no-run"), frames)) all.push_back(c);
   }
 
   const json j = claims::claimsJson(all, report::machineJson(), sources);

@@ -5,6 +5,7 @@
 // one renormalisation, counted by execution.
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -32,13 +33,10 @@ std::string opsText(const OpCounts& c) {
 
 int runDrift(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("drift", message); };
-  Args args(argv);
+  Args args(argv, {{"steps", "json"}, {}, {}});
   if (!args.error().empty()) return fail(args.error());
-  if (auto unknown = args.unknown({"steps", "json"}); !unknown.empty()) return fail("unknown option " + unknown[0]);
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
-  auto steps = numberOption(args, "steps", 1e6);
-  if (!steps) return fail(steps.error());
-  if (!(*steps >= 1 && *steps <= 1e9)) return fail("--steps " + args.get("steps", "") + ": expected 1 .. 1e9");
+  const std::optional<double> steps = double(args.integer("steps", 1000000, 1, 1000000000));
   nlohmann::json spaces = nlohmann::json::array();
   std::printf("Camera drift after %.0f steps (turn 2e-3 rad + move 1e-3 per step, float):\n"
               "distance from the group: matrix max|M^T eta M - eta|, motor max(|M~M - 1|) "
