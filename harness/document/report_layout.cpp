@@ -58,13 +58,17 @@ void summary(Document& d, const json& r) {
     return [&sum, key, digits](const std::string& p) { return spreadText(at(sum, {"pipelines"})[p][key], digits); };
   };
   row("bytes per vertex, shading attributes", fromSpread("bytesPerVertex", 3));
+  row("bytes per vertex, normal-mapped primitives", fromSpread("bytesPerVertexNormalMapped", 3));
+  row("bytes per vertex, primitives without normal map", fromSpread("bytesPerVertexNotNormalMapped", 3));
   row("bytes per vertex incl. skin + extra streams", fromSpread("bytesPerVertexAll", 3));
   row("floats per vertex", fromSpread("floatsPerVertex", 3));
   row("floats per transform", fromSpread("floatsPerTransform", 3));
+  row("floats per transform incl. the per-draw scale", fromSpread("floatsPerTransformWithScale", 3));
   row("floats per joint (skinned scenes)", fromSpread("floatsPerJoint", 3));
   row("load-time conversion [ms]", fromSpread("conversionMs", 3));
   const json& ops = r["opsPerVertex"];
-  for (const char* label : {"rigid", "skinned", "scaled fallback"})
+  for (const char* label : {"rigid", "rigid, no tangent", "skinned", "skinned, reference", "skinned, world palette",
+                            "scaled fallback"})
     for (const char* way : {"counted", "spirv"}) {
       bool any = false;
       for (const json& v : ops.value("variants", json::array())) any = any || v.value("label", "") == label;

@@ -157,6 +157,7 @@ void MatrixPipeline::render(const View& view) {
   gl::endDraws();
   stats_.uniformBytesPerFrame += transformBytes;
   stats_.floatsPerTransform = gl::floatsPer(transformBytes, uint64_t(stats_.draws));
+  stats_.floatsPerTransformWithScale = stats_.floatsPerTransform;  // the scale is in the matrices
 }
 
 void MatrixPipeline::release() {

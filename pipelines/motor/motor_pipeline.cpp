@@ -153,7 +153,7 @@ void MotorPipeline::render(const View& view) {
     }
     return p;
   };
-  uint64_t transformBytes = 0, transforms = 0;
+  uint64_t transformBytes = 0, transforms = 0, transformScaleBytes = 0;
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.at(d);
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
@@ -174,10 +174,13 @@ void MotorPipeline::render(const View& view) {
       gl::uniform4fv(program.uniform("u_World"), 2, &world.motor[0][0], transformBytes);
       ++transforms;
     }
+    uint64_t scaleBytes = 0;
     if (scale.fallback)
-      gl::uniform3f(program.uniform("u_Scale"), &scale.value[0], stats_.uniformBytesPerFrame);
+      gl::uniform3f(program.uniform("u_Scale"), &scale.value[0], scaleBytes);
     else
-      gl::uniform1f(program.uniform("u_Scale"), scale.value.x, stats_.uniformBytesPerFrame);
+      gl::uniform1f(program.uniform("u_Scale"), scale.value.x, scaleBytes);
+    stats_.uniformBytesPerFrame += scaleBytes;
+    if (!palette || referenceSkin_) transformScaleBytes += scaleBytes;  // draws with a transform
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(scale.mirrored);
     g.draw();
@@ -186,6 +189,7 @@ void MotorPipeline::render(const View& view) {
   gl::endDraws();
   stats_.uniformBytesPerFrame += transformBytes;
   stats_.floatsPerTransform = gl::floatsPer(transformBytes, transforms);
+  stats_.floatsPerTransformWithScale = gl::floatsPer(transformBytes + transformScaleBytes, transforms);
 }
 
 void MotorPipeline::release() {

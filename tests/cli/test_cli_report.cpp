@@ -144,7 +144,7 @@ TEST(CliClaims, JsonHoldsEveryClaimWithMeasuredValueAndVerdict) {
   EXPECT_EQ(j["schema"], "motorbench-claims/1");
   std::map<std::string, json> byId;
   for (const json& c : j["claims"]) byId[c["id"].get<std::string>()] = c;
-  const std::set<std::string> verdicts = {"reproduced", "differs", "not measurable here", "baseline"};
+  const std::set<std::string> verdicts = {"reproduced", "differs", "inconclusive", "not measurable here", "baseline"};
   // Every claim the issue lists, and the reviewer baselines.
   for (const char* id : {"gp_mm", "gp_rr", "gp_tt", "gp_rt", "gp_tr", "gp_rm", "gp_mr", "gp_tm", "gp_mt",
                          "mat4_mul_mat4", "sw_mp_naive", "sw_mp", "mat4_mul_vec4", "sw_md", "sw_mx", "normalize_m",
