@@ -93,6 +93,9 @@ std::vector<Claim> speedClaims(const SpeedInputs& in) {
                   ": motor " + x2(motor) + " of ours" + (glm > 0 ? ", GLM " + x2(glm) + " of ours" : "") +
                   " -> motor time / fastest " + x2(cost);
       }
+    if (!detail.empty())
+      detail += " (the motor kernel is the GLSL source compiled through the scalar shim; GLM is SIMD library code; "
+                "no GLM-class motor kernel is measured here)";
     Evidence e{"CPU kernel vertex_frame vs the fastest matrix code measured", detail, -1, ""};
     if (!worst.empty()) e.costRatio = *std::max_element(worst.begin(), worst.end());
     else e.why = "no vertex_frame bench pair";

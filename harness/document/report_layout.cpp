@@ -216,6 +216,11 @@ void sceneSection(Document& d, const json& r, const json& s) {
   if (s["error"].is_string()) d.paragraph(std::string(s.value("status", "") == "failed" ? "FAILED" : "Error") + ": " + s["error"].get<std::string>());
   if (s.contains("workerExit")) d.paragraph("Note: the worker process ended with " + str(s["workerExit"]) + " after writing its result.");
   d.bullets(statsLines(s.value("stats", json())));
+  if (at(s, {"vertexMix", "skinned"}).is_number() && s["vertexMix"]["skinned"].get<double>() > 0)
+    d.paragraph("Skinned scene: the matrix pipeline blends joints with linear blend skinning (LBS), the motor "
+                "pipeline blends joint motors (the dual-quaternion method). Where joints turn far apart the two "
+                "methods pose the mesh differently by design (LBS loses volume, a candy wrapper pinches), so the "
+                "difference columns below measure the methods' expected difference, not an error of either.");
   // Thumbnails: one row per time.
   std::vector<std::string> head = {"time [s]"};
   for (const std::string& p : pipes) head.push_back(p);
