@@ -119,16 +119,19 @@ std::vector<Claim> speedClaims(const SpeedInputs& in) {
   frameEvidence("llvmpipe frame time, vertex-bound rigid normal-mapped", "dense_torus");
   frameEvidence("llvmpipe frame time, vertex-bound skinned", "crowd");
 
+  json value = json::object();
   // Informational: frame time at 512x512 (fragment-bound on llvmpipe), not a verdict input.
   std::string info;
   std::vector<double> frame;
   if (in.frameTimes.is_array())
     for (const json& f : in.frameTimes)
       if (f["ratio"].is_number()) frame.push_back(f["ratio"].get<double>());
-  if (!frame.empty())
+  if (!frame.empty()) {
+    value["frame time ratio (median over " + std::to_string(frame.size()) + " scenes)"] = median(frame);
     info = "frame time motor/matrix at 512x512 " + x2(median(frame)) + " (median of " + std::to_string(frame.size()) +
            " scenes, " + x2(*std::min_element(frame.begin(), frame.end())) + ".." +
            x2(*std::max_element(frame.begin(), frame.end())) + "; fragment-bound, not a verdict input)";
+  }
 
   c.method = "Every kind of evidence as motor cost / matrix cost (< 1: motor cheaper): ops per vertex counted through "
              "the shim (rigid; skinned with both pipelines in the same configuration, both configurations); CPU: "
@@ -140,7 +143,6 @@ std::vector<Claim> speedClaims(const SpeedInputs& in) {
              "source: " + (in.frameSource.empty() ? std::string("none") : in.frameSource) +
              ". Verdict: reproduced when every kind agrees (cost ratio <= " + x2(1.0 + kTolerance) +
              "); differs when none does; inconclusive when they disagree or some kind is missing or asymmetric.";
-  json value = json::object();
   std::string text, agree, disagree, missing;
   for (const Evidence& e : ev) {
     json j = {{"detail", e.detail}, {"costRatio", e.costRatio >= 0 ? json(e.costRatio) : json(nullptr)}};
