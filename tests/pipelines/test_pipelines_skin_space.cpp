@@ -9,8 +9,8 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "harness/image_metrics.h"
-#include "harness/render_frame.h"
+#include "harness/render/image_metrics.h"
+#include "harness/render/render_frame.h"
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
 #include "pipelines/matrix/matrix_pose.h"

@@ -5,8 +5,8 @@
 // normal-mapped / not, for every pipeline.
 #include <gtest/gtest.h>
 
-#include "harness/image_metrics.h"
-#include "harness/render_frame.h"
+#include "harness/render/image_metrics.h"
+#include "harness/render/render_frame.h"
 #include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/matrix/matrix_vertices.h"
 #include "pipelines/scene/loader.h"
