@@ -26,8 +26,14 @@ struct PipelineStats {
   uint64_t uniformBytesPerFrame = 0;  // per-frame + per-draw uniforms of the last render()
   uint64_t skinBytesPerFrame = 0;     // joint palette of the last update()/render()
   uint64_t vertices = 0;              // vertices uploaded
+  // Of vertexBytes / vertices: the primitives whose material has a normal texture, so that
+  // bytes per vertex split normal-mapped / not (the paper's 12-vs-9 floats is the former).
+  uint64_t normalMappedVertexBytes = 0, normalMappedVertices = 0;
   // Floats per vertex / transform / joint, derived from the upload sizes and strides.
   double floatsPerVertex = 0, floatsPerTransform = 0, floatsPerJoint = 0;
+  // Per transform with the per-draw scale uniform the transform needs (motor: 8 + u_Scale;
+  // a pipeline without one: floatsPerTransform), from the bytes uploaded for the same draws.
+  double floatsPerTransformWithScale = 0;
   int draws = 0;                      // draw calls of the last render()
   double conversionMs = 0;            // load-time conversion inside prepare()
   double updateMs = 0;                // last update() (hierarchy, animation, palette)
@@ -38,10 +44,29 @@ struct PipelineStats {
   int zeroScalarFrames = 0;           // tangent rotors whose scalar part was exactly 0
 };
 
+// Where a skinned vertex reaches world space (issue 18: compare both pipelines in the same
+// configuration). Reference: as the references do it, the joint palette relative to the mesh
+// node and the node's world transform applied per vertex after the blend (glTF-Sample-Viewer:
+// u_ModelMatrix after the skin; the paper's shader: gp(toWorld, blend)). WorldPalette: the
+// palette is joint world * inverse bind and nothing is applied after the blend (neither
+// reference does this). PipelineDefault: what the pipeline draws unless told (matrix:
+// Reference, motor: WorldPalette; the goldens were made so), see Pipeline::skinSpace().
+enum class SkinSpace { PipelineDefault, Reference, WorldPalette };
+
+// Settings a pipeline takes before prepare(). A pipeline without the choice ignores it.
+struct PipelineOptions {
+  SkinSpace skinSpace = SkinSpace::PipelineDefault;
+};
+
 class Pipeline {
 public:
   virtual ~Pipeline() = default;
   virtual std::string name() const = 0;
+  // Applies `options` (call before prepare()). The default ignores them.
+  virtual void configure(const PipelineOptions& options) { (void)options; }
+  // The skinning configuration this pipeline draws with (its default resolved);
+  // PipelineDefault from a pipeline that has no choice.
+  virtual SkinSpace skinSpace() const { return SkinSpace::PipelineDefault; }
   // Converts and uploads `scene` (which must outlive the pipeline). Needs a current GL context.
   virtual Status prepare(const Scene& scene) = 0;
   // Poses the scene on the CPU for `state` (sampling, hierarchy, skin palette).

@@ -6,6 +6,13 @@
 // and a joint normal matrix per joint, read from a shader storage buffer (no joint limit
 // beyond GL_MAX_SHADER_STORAGE_BLOCK_SIZE).
 //
+// Variants (#define), as the Sample Viewer's:
+//   MB_NO_TANGENT     no tangent attribute (the primitive has no TANGENT and no normal map;
+//                     the Sample Viewer's HAS_TANGENT_VEC4 unset): position + normal + uv
+//   MB_WORLD_PALETTE  with SKINNED: the joint matrices are in world space (joint world *
+//                     inverse bind) and no model matrix is applied per vertex (issue 18's
+//                     symmetric configuration; the Sample Viewer applies it)
+//
 // Handedness: u_NormalMatrix's last column is never used for a direction (w = 0), so its
 // [3][3] entry carries sign(det(model)); a mirrored node flips the tangent handedness, which
 // keeps bitangent = w * cross(n, t) equal to the transformed bitangent.
@@ -14,7 +21,9 @@
 
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
+#ifndef MB_NO_TANGENT
 layout(location = 2) in vec4 a_tangent;
+#endif
 layout(location = 3) in vec2 a_uv0;
 layout(location = 4) in vec2 a_uv1;
 layout(location = 5) in vec4 a_color;
@@ -47,18 +56,44 @@ void main() {
   // The transform itself is matrix_transform.glsl's (the source `motorbench ops` counts and
   // `motorbench bench` times); main() adds the varyings' perspective divide and normalisation.
 #ifdef SKINNED
+#if defined(MB_WORLD_PALETTE) && defined(MB_NO_TANGENT)
+  mat3x4 v = matrixSkinnedVertexWorldNoTangent(
+      u_joints[a_joints.x].matrix, u_joints[a_joints.y].matrix, u_joints[a_joints.z].matrix,
+      u_joints[a_joints.w].matrix, u_joints[a_joints.x].normalMatrix,
+      u_joints[a_joints.y].normalMatrix, u_joints[a_joints.z].normalMatrix,
+      u_joints[a_joints.w].normalMatrix, a_weights, a_position, a_normal);
+#elif defined(MB_WORLD_PALETTE)
+  mat3x4 v = matrixSkinnedVertexWorld(
+      u_joints[a_joints.x].matrix, u_joints[a_joints.y].matrix, u_joints[a_joints.z].matrix,
+      u_joints[a_joints.w].matrix, u_joints[a_joints.x].normalMatrix,
+      u_joints[a_joints.y].normalMatrix, u_joints[a_joints.z].normalMatrix,
+      u_joints[a_joints.w].normalMatrix, a_weights, u_NormalMatrix, a_position, a_normal, a_tangent);
+#elif defined(MB_NO_TANGENT)
+  mat3x4 v = matrixSkinnedVertexNoTangent(
+      u_joints[a_joints.x].matrix, u_joints[a_joints.y].matrix, u_joints[a_joints.z].matrix,
+      u_joints[a_joints.w].matrix, u_joints[a_joints.x].normalMatrix,
+      u_joints[a_joints.y].normalMatrix, u_joints[a_joints.z].normalMatrix,
+      u_joints[a_joints.w].normalMatrix, a_weights, u_ModelMatrix, u_NormalMatrix, a_position, a_normal);
+#else
   mat3x4 v = matrixSkinnedVertex(
       u_joints[a_joints.x].matrix, u_joints[a_joints.y].matrix, u_joints[a_joints.z].matrix,
       u_joints[a_joints.w].matrix, u_joints[a_joints.x].normalMatrix,
       u_joints[a_joints.y].normalMatrix, u_joints[a_joints.z].normalMatrix,
       u_joints[a_joints.w].normalMatrix, a_weights, u_ModelMatrix, u_NormalMatrix, a_position,
       a_normal, a_tangent);
+#endif
+#elif defined(MB_NO_TANGENT)
+  mat3x4 v = matrixRigidVertexNoTangent(u_ModelMatrix, u_NormalMatrix, a_position, a_normal);
 #else
   mat3x4 v = matrixRigidVertex(u_ModelMatrix, u_NormalMatrix, a_position, a_normal, a_tangent);
 #endif
   v_worldPosition = v[0].xyz / v[0].w;
   v_worldNormal = normalize(v[1].xyz);
+#ifdef MB_NO_TANGENT
+  v_worldTangent = v[2];  // (0, 0, 0, 1): unread without a normal map
+#else
   v_worldTangent = vec4(normalize(v[2].xyz), v[2].w);
+#endif
   v_uv0 = a_uv0;
   v_uv1 = a_uv1;
   v_color = a_color;

@@ -64,6 +64,57 @@ mat3x4 matrixSkinnedVertex(mat4 j0, mat4 j1, mat4 j2, mat4 j3, mat4 n0, mat4 n1,
   return v;
 }
 
+// ---- without a tangent attribute --------------------------------------------------------
+// The Sample Viewer's shader has no tangent input where the primitive has no TANGENT and its
+// material no normal map (HAS_TANGENT_VEC4 unset); the vertex then carries position, normal
+// and uv only (32 bytes) and no tangent product is done. [2] is (0, 0, 0, 1): nothing reads
+// it (forward.fs uses the tangent only with a normal map).
+
+// counted: 32 mul, 24 add (position and normal products)
+mat3x4 matrixRigidVertexNoTangent(mat4 model, mat4 normalMatrix, vec3 position, vec3 normal) {
+  return mat3x4(model * vec4(position, 1.0), normalMatrix * vec4(normal, 0.0),
+                vec4(0.0, 0.0, 0.0, 1.0));
+}
+
+// counted: 192 mul, 144 add (2 blends, 2 x two products)
+mat3x4 matrixSkinnedVertexNoTangent(mat4 j0, mat4 j1, mat4 j2, mat4 j3, mat4 n0, mat4 n1,
+                                    mat4 n2, mat4 n3, vec4 weights, mat4 model,
+                                    mat4 normalMatrix, vec3 position, vec3 normal) {
+  mat4 skin = matrixBlendJoints(j0, j1, j2, j3, weights);
+  mat4 skinNormal = matrixBlendJoints(n0, n1, n2, n3, weights);
+  return mat3x4(model * (skin * vec4(position, 1.0)),
+                normalMatrix * (skinNormal * vec4(normal, 0.0)), vec4(0.0, 0.0, 0.0, 1.0));
+}
+
+// ---- skinning with a world-space palette ---------------------------------------------------
+// The configuration neither reference uses, counted beside theirs so that both pipelines can
+// be compared in the same space: joint matrices are joint world * inverse bind (no
+// inverse(mesh node world) in front), so the blended skin alone reaches world space and no
+// model matrix is applied per vertex. `normalMatrix` is still the draw's, for the handedness
+// sign only. The motor counterpart is motorSkinnedVertex (motor_transform.glsl).
+
+// counted: 177 mul, 132 add (2 blends, three products, the handedness)
+mat3x4 matrixSkinnedVertexWorld(mat4 j0, mat4 j1, mat4 j2, mat4 j3, mat4 n0, mat4 n1, mat4 n2,
+                                mat4 n3, vec4 weights, mat4 normalMatrix, vec3 position,
+                                vec3 normal, vec4 tangent) {
+  mat4 skin = matrixBlendJoints(j0, j1, j2, j3, weights);
+  mat4 skinNormal = matrixBlendJoints(n0, n1, n2, n3, weights);
+  mat3x4 v = matrixTransformFrame(skin, skinNormal, vec4(position, 1.0), vec4(normal, 0.0),
+                                  vec4(tangent.xyz, 0.0));
+  v[2].w = matrixHandedness(normalMatrix, tangent.w);
+  return v;
+}
+
+// counted: 160 mul, 120 add (2 blends, two products)
+mat3x4 matrixSkinnedVertexWorldNoTangent(mat4 j0, mat4 j1, mat4 j2, mat4 j3, mat4 n0, mat4 n1,
+                                         mat4 n2, mat4 n3, vec4 weights, vec3 position,
+                                         vec3 normal) {
+  mat4 skin = matrixBlendJoints(j0, j1, j2, j3, weights);
+  mat4 skinNormal = matrixBlendJoints(n0, n1, n2, n3, weights);
+  return mat3x4(skin * vec4(position, 1.0), skinNormal * vec4(normal, 0.0),
+                vec4(0.0, 0.0, 0.0, 1.0));
+}
+
 // World to clip: one mat4 * vec4 with the per-frame view-projection matrix.
 // counted: 16 mul, 12 add
 vec4 matrixWorldToClip(mat4 viewProjection, vec4 worldPosition) {

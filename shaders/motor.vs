@@ -7,6 +7,9 @@
 // Variants (#define):
 //   MB_SKINNED        motor skinning: 4 joints per vertex, one motor (8 floats) per joint
 //   MB_SCALE_FALLBACK the draw's scale is non-uniform or negative (motorScaledVertex)
+//   MB_SKIN_REFERENCE with MB_SKINNED: the paper's form, joint motors relative to the mesh
+//                     node and toWorld = gp(u_World, blend) per vertex (issue 18; the default
+//                     palette is in world space and u_World is not used)
 #include "pga.glsl"
 #include "motor_transform.glsl"
 
@@ -47,8 +50,13 @@ void main() {
   motor toWorld = motor(u_World[0], u_World[1]);
 #ifdef MB_SKINNED
   // glTF: skinned meshes ignore their node's transform; the skin motors reach world space.
-  toWorld = motorBlendJoints(jointMotor(a_joints.x), jointMotor(a_joints.y),
-                             jointMotor(a_joints.z), jointMotor(a_joints.w), a_weights);
+  motor blended = motorBlendJoints(jointMotor(a_joints.x), jointMotor(a_joints.y),
+                                   jointMotor(a_joints.z), jointMotor(a_joints.w), a_weights);
+#ifdef MB_SKIN_REFERENCE
+  toWorld = gp_mm(toWorld, blended);
+#else
+  toWorld = blended;
+#endif
 #endif
 #ifdef MB_SCALE_FALLBACK
   mat3x4 v = motorScaledVertex(toWorld, u_Scale, a_position, a_tangentRotor);

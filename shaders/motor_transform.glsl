@@ -42,23 +42,39 @@ mat3x4 motorScaledVertex(motor toWorld, vec3 scale, vec3 position, vec4 tangentR
                 normalize(sw_md(toWorld, nt[1] * scale)), mirror * motorHandedness(tangentRotor));
 }
 
-// Motor skinning: the weighted blend of four joint motors along the shortest arc (a joint
-// motor whose rotor half points away from the first joint's is negated, here by negating its
-// weight), renormalised. Contract: weights sum to 1 and joint motors are unit.
+// Motor skinning: the weighted blend of four joint motors along the shortest arc,
+// renormalised, with the reference's hemisphere rule: each joint after the first is compared
+// with the running sum of those before it and negated (here: its weight) when the rotor
+// halves' dot product is <= 0. Negating the weight instead of the motor gives the same floats
+// (negation is exact). Contract: weights sum to 1 and joint motors are unit.
 motor motorBlendJoints(motor j0, motor j1, motor j2, motor j3, vec4 weights) {
-  float w1 = dot(j0[0], j1[0]) < 0.0 ? -weights.y : weights.y;
-  float w2 = dot(j0[0], j2[0]) < 0.0 ? -weights.z : weights.z;
-  float w3 = dot(j0[0], j3[0]) < 0.0 ? -weights.w : weights.w;
-  return normalize_m(j0 * weights.x + j1 * w1 + j2 * w2 + j3 * w3);
+  motor r = j0 * weights.x;
+  r = r + j1 * (dot(r[0], j1[0]) <= 0.0 ? -weights.y : weights.y);
+  r = r + j2 * (dot(r[0], j2[0]) <= 0.0 ? -weights.z : weights.z);
+  r = r + j3 * (dot(r[0], j3[0]) <= 0.0 ? -weights.w : weights.w);
+  return normalize_m(r);
 }
 
-// Skinned vertex with four joints. glTF: a skinned mesh ignores its node's transform, so the
-// blended joint motor alone takes the vertex to world space. `scale` > 0 is the skin's uniform
-// scale (the joints' common world scale times the inverse-bind scale).
+// Skinned vertex with four joints, world-space palette (the pipeline's default): the joint
+// motors are joint world * inverse bind, so the blended joint motor alone takes the vertex to
+// world space (glTF: a skinned mesh ignores its node's transform). `scale` > 0 is the skin's
+// uniform scale (the joints' common world scale times the inverse-bind scale).
 mat3x4 motorSkinnedVertex(motor j0, motor j1, motor j2, motor j3, vec4 weights,
                                float scale, vec3 position, vec4 tangentRotor) {
   return motorRigidVertex(motorBlendJoints(j0, j1, j2, j3, weights), scale, position,
                           tangentRotor);
+}
+
+// Skinned vertex as the paper's shader does it: the joint motors are relative to the mesh
+// node (reverse(node world) * joint world * inverse bind) and the node's world motor is
+// composed per vertex, toWorld = gp(toWorld, blend). The same pose as motorSkinnedVertex
+// (left-multiplying every joint by one unit motor commutes with the blend, the hemisphere
+// test and normalize_m); one gp_mm more per vertex.
+mat3x4 motorSkinnedVertexReference(motor toWorld, motor j0, motor j1, motor j2, motor j3,
+                                   vec4 weights, float scale, vec3 position,
+                                   vec4 tangentRotor) {
+  return motorRigidVertex(gp_mm(toWorld, motorBlendJoints(j0, j1, j2, j3, weights)), scale,
+                          position, tangentRotor);
 }
 
 // World to clip: the camera motor (world -> view, camera looking down +z with x mirrored, the

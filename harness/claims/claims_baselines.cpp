@@ -71,13 +71,30 @@ std::vector<Claim> baselineClaims() {
   const Full fulls[] = {
       {"matrix", "rigid", "world_to_clip_matrix", "matrix pipeline, object to clip: rigid vertex with frame + view-projection"},
       {"motor", "rigid", "world_to_clip_motor", "motor pipeline, object to clip: rigid vertex with frame + camera motor + project()"},
-      {"matrix", "skinned", "skinned_vertex_matrix", "matrix pipeline, skinned vertex (4 joints, LBS of joint and joint-normal matrices) to clip"},
-      {"motor", "skinned", "skinned_vertex_motor", "motor pipeline, skinned vertex (4 joints, motor blend + normalize) to clip"},
+      {"matrix", "rigid, no tangent", "world_to_clip_matrix_no_tangent",
+       "matrix pipeline, object to clip without a tangent (no TANGENT, no normal map: the Sample Viewer's "
+       "shader has no tangent input); the motor vertex has no such variant (its rotor carries the normal)"},
+      // Symmetric skinning (issue 18): each pipeline in the same configuration.
+      {"matrix", "skinned, reference", "skinned_vertex_matrix",
+       "matrix pipeline, skinned vertex (4 joints, LBS of joint and joint-normal matrices) to clip, as the Sample "
+       "Viewer does it: palette relative to the mesh node, then u_ModelMatrix per vertex"},
+      {"motor", "skinned, reference", "skinned_vertex_motor",
+       "motor pipeline, skinned vertex (4 joints, motor blend + normalize) to clip, as the paper's listing does "
+       "it: palette relative to the mesh node, then gp(toWorld, blend) per vertex"},
+      {"matrix", "skinned, world palette", "skinned_vertex_matrix_world_palette",
+       "matrix pipeline, skinned vertex to clip with a world-space palette (no model matrix per vertex; "
+       "neither reference does this)"},
+      {"motor", "skinned, world palette", "skinned_vertex_motor_world_palette",
+       "motor pipeline, skinned vertex to clip with a world-space palette (no node motor per vertex; the motor "
+       "pipeline's default)"},
   };
   for (const Full& f : fulls) {
     const opsv::VariantRow* v = variant(f.pipeline, f.label);
     if (!v) continue;
-    const opsv::VariantRow* other = variant(std::string(f.pipeline) == "matrix" ? "motor" : "matrix", f.label);
+    // The counterpart in the same configuration; the matrix no-tangent vertex against the
+    // motor's only rigid vertex.
+    const std::string otherLabel = std::string(f.label) == "rigid, no tangent" ? "rigid" : f.label;
+    const opsv::VariantRow* other = variant(std::string(f.pipeline) == "matrix" ? "motor" : "matrix", otherLabel);
     std::string kernels;
     for (const std::string& k : v->variant.kernels) kernels += (kernels.empty() ? "" : " + ") + k;
     row(f.id, f.what, v->counted, v->shader,

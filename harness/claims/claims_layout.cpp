@@ -15,7 +15,7 @@ std::string s(const json& v) { return v.is_string() ? v.get<std::string>() : v.i
 
 json claimsJson(const std::vector<Claim>& claims, const json& machine, const json& sources) {
   json list = json::array();
-  json counts = {{"reproduced", 0}, {"differs", 0}, {"not measurable here", 0}, {"baseline", 0}};
+  json counts = {{"reproduced", 0}, {"differs", 0}, {"inconclusive", 0}, {"not measurable here", 0}, {"baseline", 0}};
   for (const Claim& c : claims) {
     list.push_back(toJson(c));
     counts[verdictName(c.verdict)] = counts[verdictName(c.verdict)].get<int>() + 1;
@@ -34,7 +34,8 @@ report::Document claimsDocument(const json& j) {
               "pipelines uploaded, times from Google Benchmark and frame timing. Paper values are the "
               "paper's text; verdicts compare the two.");
   const json& c = j["counts"];
-  d.paragraph(s(c["reproduced"]) + " reproduced, " + s(c["differs"]) + " differ, " + s(c["not measurable here"]) +
+  d.paragraph(s(c["reproduced"]) + " reproduced, " + s(c["differs"]) + " differ, " + s(c.value("inconclusive", json(0))) +
+              " inconclusive, " + s(c["not measurable here"]) +
               " not measurable here; " + s(c["baseline"]) + " reviewer baselines.");
   d.heading(2, "Verdicts", "verdicts");
   std::vector<std::string> lines;

@@ -21,10 +21,16 @@ std::string num(double v) {
   return b;
 }
 
-// PipelineStats of `pipeline` on built-in `scene`, or the error.
-Result<PipelineStats> uploads(const std::string& scene, const std::string& pipeline) {
+// PipelineStats of `pipeline` on built-in `scene`, or the error. `plain`: the scene without its
+// normal maps and tangents, as a file with neither (the Sample Viewer then has no tangent).
+Result<PipelineStats> uploads(const std::string& scene, const std::string& pipeline, bool plain = false) {
   auto s = loadScene(scene);
   if (!s) return Result<PipelineStats>::fail(s.error());
+  if (plain) {
+    for (Material& m : s->materials) m.normal = TextureRef{};
+    for (Mesh& mesh : s->meshes)
+      for (Primitive& p : mesh.primitives) p.tangents.clear(), p.hadTangents = false;
+  }
   FrameSettings settings;
   settings.width = settings.height = 32;  // the uploads do not depend on the image size
   if (!s->animations.empty()) settings.anim.anim = 0;
@@ -60,9 +66,10 @@ Claim pairClaim(Claim c, double paperMatrix, double paperMotor, double matrix, d
 }  // namespace
 
 std::vector<Claim> memoryClaims() {
-  std::map<std::string, Result<PipelineStats>> rigid, skinned;
+  std::map<std::string, Result<PipelineStats>> rigid, skinned, plain;
   for (const char* p : {"matrix", "motor"}) {
     rigid.emplace(p, uploads(kRigidScene, p));
+    plain.emplace(p, uploads(kRigidScene, p, true));
     skinned.emplace(p, uploads(kSkinnedScene, p));
   }
   const std::string section = "Memory";
@@ -71,10 +78,20 @@ std::vector<Claim> memoryClaims() {
             "4 tangent, 2 uv) vs 9 (3 position, 4 tangent rotor, 2 uv)"};
   fpv.method = std::string("PipelineStats.floatsPerVertex (shading-attribute bytes uploaded / vertices / 4) of "
                            "each pipeline on the built-in ") + kRigidScene + " (normal-mapped, tangents generated)";
+  Claim fpvPlain{"floats_per_vertex_not_normal_mapped", section, "(not claimed by the paper) vertex without normal map "
+                 "or TANGENT: the Sample Viewer uploads 8 floats (3 position, 3 normal, 2 uv), the motor pipeline still 9"};
+  fpvPlain.method = std::string("PipelineStats.floatsPerVertex of each pipeline on the built-in ") + kRigidScene +
+                    " with its normal map and tangents removed (as a file with neither), the matrix pipeline "
+                    "uploading a tangent only where the Sample Viewer would (issue 18)";
   Claim fpt{"floats_per_transform", section, "floats per transform: 4x4 model matrix (+ normal matrix) vs 8-float motor"};
   fpt.method = std::string("PipelineStats.floatsPerTransform (per-draw transform uniforms uploaded, in floats) on ") +
                kRigidScene + "; the paper's table counts one 4x4 matrix per transform (16 + 16 with the "
                "normal matrix the Sample Viewer also uploads)";
+  Claim fpts{"floats_per_transform_with_scale", section, "floats per transform with the per-draw uniform scale the "
+             "motor path needs (the paper's renderer also uploads one; its table counts the motor only)"};
+  fpts.method = std::string("PipelineStats.floatsPerTransformWithScale on ") + kRigidScene +
+                ": the motor's u_World (8 floats) plus its u_Scale (1 float) as uploaded for the same draws; "
+                "the matrix pipeline's scale is inside its matrices (32)";
   Claim vps{"vertices_per_storage", section, "conclusion: an extra 33 % vertices in the same storage"};
   vps.method = "matrix bytes per vertex / motor bytes per vertex - 1, from the same uploads as floats_per_vertex";
   Claim fpj{"floats_per_joint", section, "(not claimed by the paper) floats per skin joint uploaded per frame"};
@@ -82,12 +99,14 @@ std::vector<Claim> memoryClaims() {
                " (joint palette bytes of one frame / joints / 4)";
   if (!rigid.at("matrix") || !rigid.at("motor")) {
     const std::string why = !rigid.at("matrix") ? rigid.at("matrix").error() : rigid.at("motor").error();
-    out = {notMeasurable(fpv, why), notMeasurable(fpt, why), notMeasurable(vps, why)};
+    out = {notMeasurable(fpv, why), notMeasurable(fpt, why), notMeasurable(fpts, why), notMeasurable(vps, why)};
   } else {
     const PipelineStats &m = *rigid.at("matrix"), &q = *rigid.at("motor");
     out.push_back(pairClaim(fpv, 12, 9, m.floatsPerVertex, q.floatsPerVertex, "floats/vertex"));
     // The paper: 32 for the matrix side (model + normal matrix in the Sample Viewer), 8 for a motor.
     out.push_back(pairClaim(fpt, 32, 8, m.floatsPerTransform, q.floatsPerTransform, "floats/transform"));
+    out.back().verdictText += " (the motor alone; with its per-draw scale float see floats_per_transform_with_scale)";
+    out.push_back(pairClaim(fpts, 32, 8, m.floatsPerTransformWithScale, q.floatsPerTransformWithScale, "floats/transform"));
     const double bm = m.vertices ? double(m.vertexBytes) / double(m.vertices) : 0;
     const double bq = q.vertices ? double(q.vertexBytes) / double(q.vertices) : 0;
     vps.paper = "+33 %";
@@ -103,6 +122,20 @@ std::vector<Claim> memoryClaims() {
     } else {
       out.push_back(notMeasurable(vps, "no vertices uploaded"));
     }
+  }
+  if (plain.at("matrix") && plain.at("motor")) {
+    const double a = plain.at("matrix")->floatsPerVertex, b = plain.at("motor")->floatsPerVertex;
+    fpvPlain.paper = "-";
+    fpvPlain.measured = num(a) + " vs " + num(b) + " floats/vertex";
+    if (a > 0) fpvPlain.measured += " (" + num(std::round(1000.0 * (b - a) / a) / 10.0) + " %)";
+    fpvPlain.measuredValue = {{"matrix", a}, {"motor", b}};
+    fpvPlain.verdict = Verdict::Baseline;
+    fpvPlain.verdictText = std::string("baseline: without a normal map the motor vertex is ") +
+                           (b > a ? "larger" : b < a ? "smaller" : "the same size") +
+                           "; the paper's 12-vs-9 (floats_per_vertex) holds for normal-mapped primitives only";
+    out.push_back(fpvPlain);
+  } else {
+    out.push_back(notMeasurable(fpvPlain, !plain.at("matrix") ? plain.at("matrix").error() : plain.at("motor").error()));
   }
   if (skinned.at("matrix") && skinned.at("motor")) {
     const double a = skinned.at("matrix")->floatsPerJoint, b = skinned.at("motor")->floatsPerJoint;

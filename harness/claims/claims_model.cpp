@@ -10,6 +10,7 @@ std::string verdictName(Verdict v) {
     case Verdict::Differs: return "differs";
     case Verdict::NotMeasurable: return "not measurable here";
     case Verdict::Baseline: return "baseline";
+    case Verdict::Inconclusive: return "inconclusive";
   }
   return "?";
 }
@@ -75,6 +76,50 @@ void judgeOps(Claim& c, const PaperOps& paper, const OpCounts& m) {
     c.verdictText = "differs: " + diff + pct;
   }
   if (!unstated.empty()) c.verdictText += "; not stated by the paper: " + unstated;
+}
+
+void judgeOpsThree(Claim& c, const PaperOps& paper, const OpCounts& listing,
+                   const OpCounts& measured, const std::string& oursWhy) {
+  Claim vsListing = c, vsOurs = c;
+  judgeOps(vsListing, paper, listing);
+  judgeOps(vsOurs, paper, measured);
+  c.paper = vsOurs.paper + " (table)";
+  c.paperValue = vsOurs.paperValue;
+  c.measured = "ours " + opsText(measured) + "; the paper's printed listing, counted: " + opsText(listing);
+  c.measuredValue = {{"ours", opsJson(measured)}, {"listing", opsJson(listing)}};
+  const std::string tableVsListing = "table vs printed listing: " +
+      (vsListing.verdict == Verdict::Reproduced ? std::string("the listing counts what the table says")
+                                                : "the listing " + vsListing.verdictText.substr(9, vsListing.verdictText.find(';') - 9) +
+                                                      " (the printed code does not reach its table)");
+  const std::string tableVsOurs =
+      "table vs ours: " + (vsOurs.verdictText.rfind("differs: ", 0) == 0 ? vsOurs.verdictText.substr(9) : vsOurs.verdictText);
+  std::string oursVsListing = "ours vs listing: ";
+  {
+    const long dm = long(measured.mul) - long(listing.mul), da = long(measured.add) - long(listing.add);
+    oursVsListing += (dm == 0 && da == 0) ? "same mul/add"
+                     : std::string(dm > 0 ? "+" : "") + std::to_string(dm) + " mul, " + (da > 0 ? "+" : "") +
+                           std::to_string(da) + " add";
+    auto calls = [](const OpCounts& o) {
+      std::string t;
+      if (o.div) t += std::to_string(o.div) + " div";
+      if (o.sqrt) t += (t.empty() ? "" : ", ") + std::to_string(o.sqrt) + " sqrt";
+      if (o.other) t += (t.empty() ? "" : ", ") + o.otherCalls();
+      return t.empty() ? std::string("none") : t;
+    };
+    if (calls(measured) != calls(listing))
+      oursVsListing += " (other calls: ours " + calls(measured) + ", listing " + calls(listing) + ")";
+  }
+  if (vsOurs.verdict == Verdict::Reproduced) {
+    c.verdict = Verdict::Reproduced;
+    c.verdictText = "reproduced by ours; " + tableVsListing;
+  } else if (vsListing.verdict == Verdict::Reproduced) {
+    c.verdict = Verdict::Reproduced;
+    c.verdictText = "reproduced by the paper's printed listing; ours differs (" + oursVsListing + "): " + oursWhy;
+  } else {
+    c.verdict = Verdict::Differs;
+    c.verdictText = "differs: " + tableVsOurs + "; " + tableVsListing + "; " + oursVsListing +
+                    (oursWhy.empty() ? "" : " (" + oursWhy + ")");
+  }
 }
 
 nlohmann::json toJson(const Claim& c) {

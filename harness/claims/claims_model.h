@@ -12,7 +12,9 @@
 
 namespace mb::claims {
 
-enum class Verdict { Reproduced, Differs, NotMeasurable, Baseline };
+// Inconclusive: measured, but the evidence cannot decide (kinds of evidence disagree, or the
+// paper does not define what its number counts).
+enum class Verdict { Reproduced, Differs, NotMeasurable, Baseline, Inconclusive };
 
 struct Claim {
   std::string id;         // stable key, e.g. "gp_mm", "floats_per_vertex"
@@ -27,7 +29,8 @@ struct Claim {
   std::string verdictText;  // "reproduced", "differs: +2 mul, +5 add (+10 %)", ...
 };
 
-std::string verdictName(Verdict v);  // "reproduced", "differs", "not measurable here", "baseline"
+// "reproduced", "differs", "not measurable here", "baseline", "inconclusive"
+std::string verdictName(Verdict v);
 
 // Op counts as data and text: {"mul", "add", "div", "sqrt", "other", "calls"}; "48 mul, 40 add
 // + 1 div + 1 sqrt (acos)".
@@ -45,6 +48,14 @@ struct PaperOps {
 };
 void judgeOps(Claim& c, const PaperOps& paper, const OpCounts& measured);
 nlohmann::json paperOpsJson(const PaperOps& p);
+
+// Three sources where they differ (issue 18): the paper's table `paper`, the paper's printed
+// listing counted through the shim `listing`, and ours `measured`. Reproduced when ours equals
+// the table, or when the printed listing does (the paper's code costs what its table says;
+// ours then differs for the reason `oursWhy`); else Differs, saying whether the listing reaches
+// the table. measuredValue = {"ours", "listing"}; the verdict text names every comparison.
+void judgeOpsThree(Claim& c, const PaperOps& paper, const OpCounts& listing,
+                   const OpCounts& measured, const std::string& oursWhy);
 std::string paperOpsText(const PaperOps& p);
 
 nlohmann::json toJson(const Claim& c);

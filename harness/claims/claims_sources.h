@@ -3,6 +3,7 @@
 //   claims_memory.cpp    floats per vertex / transform / joint (PipelineStats of real uploads)
 //   claims_speed.cpp     "as fast as matrices" (bench kernel ratios + frame timing)
 //   claims_corpus.cpp    animated / non-uniform scale over the built-in scenes + a corpus
+//   claims_skinning.cpp  volume kept by motor skinning vs LBS (candy wrapper)
 //   claims_baselines.cpp affine matrix path, full world-to-clip, skinning per vertex
 //   claims_curved.cpp    curved space (issue 15): S3 / H3 matrix vs motor
 #pragma once
@@ -36,6 +37,9 @@ std::vector<Claim> speedClaims(const SpeedInputs& in);
 // `corpusDir`: "" or a folder of .gltf/.glb files (recursively), measured with the built-in
 // scenes.
 std::vector<Claim> corpusClaims(const std::string& corpusDir);
+
+// Skinning: ring radius of skinned_tube's candy_wrapper, LBS vs motor (claims_skinning.cpp).
+std::vector<Claim> skinningClaims();
 
 // Reviewer baselines (Verdict::Baseline): counted and SPIR-V.
 std::vector<Claim> baselineClaims();

@@ -44,8 +44,14 @@ int runWorker(const Args& args, const report::Options& o) {
   } else if (mode == "time") {
     report::progress(job, "timing " + std::to_string(o.frames) + " frames per pipeline");
     auto scene = loadScene(job.input.spec);
-    result = scene ? report::timeScene(*scene, o.pipelines, o.frames, o.timeWidth, o.timeHeight)
+    // Skinned scenes are timed with every pipeline in the same skinning configuration (as the
+    // references do it), so the ratio compares like with like (issue 18); images keep each
+    // pipeline's default.
+    PipelineOptions options;
+    if (scene && !scene->skins.empty()) options.skinSpace = SkinSpace::Reference;
+    result = scene ? report::timeScene(*scene, o.pipelines, o.frames, o.timeWidth, o.timeHeight, options)
                    : json{{"error", scene.error()}};
+    if (scene && !scene->skins.empty()) result["skinSpace"] = "reference (every pipeline)";
   } else {
     return fail("--worker " + mode + ": expected render or time");
   }

@@ -23,12 +23,16 @@ void push(std::vector<double>& v, double x) {
 }
 
 json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
-  std::vector<double> bpv, bpvAll, fpv, fpt, fpj, conv;
+  std::vector<double> bpv, bpvAll, bpvNm, bpvPlain, fpv, fpt, fptScale, fpj, conv;
   for (const json& s : scenes) {
     if (!s.contains("pipelines") || !s["pipelines"].contains(p)) continue;
     const json& pj = s["pipelines"][p];
     push(bpv, number(pj, {"memory", "bytesPerVertex"}));
     push(bpvAll, number(pj, {"memory", "bytesPerVertexAll"}));
+    push(bpvNm, number(pj, {"memory", "bytesPerVertexNormalMapped"}));        // NaN (skipped) when none
+    push(bpvPlain, number(pj, {"memory", "bytesPerVertexNotNormalMapped"}));
+    const double ts = number(pj, {"memory", "floatsPerTransformWithScale"});
+    if (ts > 0) fptScale.push_back(ts);
     push(fpv, number(pj, {"memory", "floatsPerVertex"}));
     const double t = number(pj, {"memory", "floatsPerTransform"});
     if (t > 0) fpt.push_back(t);
@@ -37,6 +41,8 @@ json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
     push(conv, number(pj, {"conversionMs", "median"}));
   }
   return {{"bytesPerVertex", spread(bpv)}, {"bytesPerVertexAll", spread(bpvAll)},
+          {"bytesPerVertexNormalMapped", spread(bpvNm)}, {"bytesPerVertexNotNormalMapped", spread(bpvPlain)},
+          {"floatsPerTransformWithScale", spread(fptScale)},
           {"floatsPerVertex", spread(fpv)}, {"floatsPerTransform", spread(fpt)},
           {"floatsPerJoint", spread(fpj)}, {"conversionMs", spread(conv)}};
 }

@@ -69,13 +69,17 @@ void summary(Document& d, const json& r) {
     };
   };
   row("bytes per vertex, shading attributes", fromSpread("bytesPerVertex", 3));
+  row("bytes per vertex, normal-mapped primitives", fromSpread("bytesPerVertexNormalMapped", 3));
+  row("bytes per vertex, primitives without normal map", fromSpread("bytesPerVertexNotNormalMapped", 3));
   row("bytes per vertex incl. skin + extra streams", fromSpread("bytesPerVertexAll", 3));
   row("floats per vertex", fromSpread("floatsPerVertex", 3));
   row("floats per transform", fromSpread("floatsPerTransform", 3));
+  row("floats per transform incl. the per-draw scale", fromSpread("floatsPerTransformWithScale", 3));
   row("floats per joint (skinned scenes)", fromSpread("floatsPerJoint", 3));
   row("load-time conversion [ms]", fromSpread("conversionMs", 3));
   const json& ops = r["opsPerVertex"];
-  for (const char* label : {"rigid", "skinned", "scaled fallback"})
+  for (const char* label : {"rigid", "rigid, no tangent", "skinned", "skinned, reference", "skinned, world palette",
+                            "scaled fallback"})
     for (const char* way : {"counted", "spirv"}) {
       bool any = false;
       for (const json& v : ops.value("variants", json::array())) any = any || v.value("label", "") == label;
@@ -243,6 +247,11 @@ void sceneSection(Document& d, const json& r, const json& s) {
   if (s["error"].is_string()) d.paragraph(std::string(s.value("status", "") == "failed" ? "FAILED" : "Error") + ": " + s["error"].get<std::string>());
   if (s.contains("workerExit")) d.paragraph("Note: the worker process ended with " + str(s["workerExit"]) + " after writing its result.");
   d.bullets(statsLines(s.value("stats", json())));
+  if (at(s, {"vertexMix", "skinned"}).is_number() && s["vertexMix"]["skinned"].get<double>() > 0)
+    d.paragraph("Skinned scene: the matrix pipeline blends joints with linear blend skinning (LBS), the motor "
+                "pipeline blends joint motors (the dual-quaternion method). Where joints turn far apart the two "
+                "methods pose the mesh differently by design (LBS loses volume, a candy wrapper pinches), so the "
+                "difference columns below measure the methods' expected difference, not an error of either.");
   // Thumbnails: one row per time.
   std::vector<std::string> head = {"time [s]"};
   for (const std::string& p : pipes) head.push_back(p);

@@ -169,6 +169,42 @@ inline std::vector<VertexKernel> vertexKernels() {
        matrixIncl + kMatrixAttribs +
            "uniform mat4 u_model; uniform mat4 u_normal; uniform mat4 u_j[4]; uniform mat4 u_n[4];\n",
        ""},
+      {"matrix", "skinned vertex, world palette", "matrixSkinnedVertexWorld",
+       [&] {
+         M.matrixSkinnedVertexWorld(in.j[0], in.j[1], in.j[2], in.j[3], in.n[0], in.n[1],
+                                    in.n[2], in.n[3], in.weights, in.normal, in.position,
+                                    in.normalV, in.tangent);
+       },
+       "mat3x4 v = matrixSkinnedVertexWorld(u_j[0], u_j[1], u_j[2], u_j[3], u_n[0], u_n[1], "
+       "u_n[2], u_n[3], a_weights, u_normal, a_position, a_normal, a_tangent);" + store,
+       matrixIncl + kMatrixAttribs +
+           "uniform mat4 u_normal; uniform mat4 u_j[4]; uniform mat4 u_n[4];\n",
+       "palette in world space: no model matrix after the skin (neither reference does this)"},
+      {"matrix", "rigid vertex, no tangent", "matrixRigidVertexNoTangent",
+       [&] { M.matrixRigidVertexNoTangent(in.model, in.normal, in.position, in.normalV); },
+       "mat3x4 v = matrixRigidVertexNoTangent(u_model, u_normal, a_position, a_normal);" + store,
+       matrixIncl + kMatrixAttribs + "uniform mat4 u_model; uniform mat4 u_normal;\n",
+       "no TANGENT and no normal map: the Sample Viewer's shader has no tangent input"},
+      {"matrix", "skinned vertex, no tangent", "matrixSkinnedVertexNoTangent",
+       [&] {
+         M.matrixSkinnedVertexNoTangent(in.j[0], in.j[1], in.j[2], in.j[3], in.n[0], in.n[1],
+                                        in.n[2], in.n[3], in.weights, in.model, in.normal,
+                                        in.position, in.normalV);
+       },
+       "mat3x4 v = matrixSkinnedVertexNoTangent(u_j[0], u_j[1], u_j[2], u_j[3], u_n[0], u_n[1], "
+       "u_n[2], u_n[3], a_weights, u_model, u_normal, a_position, a_normal);" + store,
+       matrixIncl + kMatrixAttribs +
+           "uniform mat4 u_model; uniform mat4 u_normal; uniform mat4 u_j[4]; uniform mat4 u_n[4];\n",
+       ""},
+      {"matrix", "skinned, world palette, no tangent", "matrixSkinnedVertexWorldNoTangent",
+       [&] {
+         M.matrixSkinnedVertexWorldNoTangent(in.j[0], in.j[1], in.j[2], in.j[3], in.n[0],
+                                             in.n[1], in.n[2], in.n[3], in.weights,
+                                             in.position, in.normalV);
+       },
+       "mat3x4 v = matrixSkinnedVertexWorldNoTangent(u_j[0], u_j[1], u_j[2], u_j[3], u_n[0], "
+       "u_n[1], u_n[2], u_n[3], a_weights, a_position, a_normal);" + store,
+       matrixIncl + kMatrixAttribs + "uniform mat4 u_j[4]; uniform mat4 u_n[4];\n", ""},
       {"matrix", "joint blend (4 joints)", "matrixBlendJoints",
        [&] { M.matrixBlendJoints(in.j[0], in.j[1], in.j[2], in.j[3], in.weights); },
        "mat4 m = matrixBlendJoints(u_j[0], u_j[1], u_j[2], u_j[3], a_weights); o_0 = m[0]; "
@@ -205,6 +241,17 @@ inline std::vector<VertexKernel> vertexKernels() {
        "motor(u_j[4], u_j[5]), motor(u_j[6], u_j[7]), a_weights, u_scale, a_position, "
        "a_tangentRotor);" + store,
        motorIncl + kMotorAttribs + "uniform vec4 u_j[8]; uniform float u_scale;\n", ""},
+      {"motor", "skinned vertex, reference", "motorSkinnedVertexReference",
+       [&] {
+         P.motorSkinnedVertexReference(in.toWorld, in.joints[0], in.joints[1], in.joints[2],
+                                       in.joints[3], PC::vec4(0.4, 0.3, 0.2, 0.1), 1.25,
+                                       in.position, in.rotor);
+       },
+       "mat3x4 v = motorSkinnedVertexReference(motor(u_world[0], u_world[1]), "
+       "motor(u_j[0], u_j[1]), motor(u_j[2], u_j[3]), motor(u_j[4], u_j[5]), "
+       "motor(u_j[6], u_j[7]), a_weights, u_scale, a_position, a_tangentRotor);" + store,
+       motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform vec4 u_j[8]; uniform float u_scale;\n",
+       "the paper's form: palette relative to the mesh node, toWorld = gp(toWorld, blend) per vertex"},
       {"motor", "joint blend (4 joints)", "motorBlendJoints",
        [&] {
          P.motorBlendJoints(in.joints[0], in.joints[1], in.joints[2], in.joints[3],
@@ -249,6 +296,12 @@ struct ShaderVariant {
   std::string note = "";             // what main() does besides those kernels, "" when nothing
 };
 
+// Labels: "rigid", "skinned", "scaled fallback" are what each pipeline draws by default (the
+// report weights them by its vertex mix). The skinned configurations of issue 18 are counted
+// side by side for both pipelines: "skinned, reference" (as the references do: the node's
+// transform after the blend) and "skinned, world palette" (neither reference); the matrix
+// default "skinned" is the former, the motor default the latter. "..., no tangent": the
+// matrix variants without a tangent attribute (primitives without TANGENT or normal map).
 inline std::vector<ShaderVariant> shaderVariants() {
   const std::string matrixMain =
       "main() divides the position by w and normalises normal and tangent for the varyings "
@@ -256,15 +309,35 @@ inline std::vector<ShaderVariant> shaderVariants() {
   const std::string curvedMain =
       "main() adds the projection u_Projection * position (mat4 * vec4: 16 mul, 12 add), the "
       "same on both sides of a space";
+  const std::string ref = "the Sample Viewer's: skin, then u_ModelMatrix per vertex";
+  const std::string world = "joint world * inverse bind; no model matrix per vertex";
+  using D = std::vector<std::pair<std::string, std::string>>;
   return {
       {"matrix", "matrix.vs", {}, "rigid", {"matrixRigidVertex", "matrixWorldToClip"}, matrixMain},
       {"matrix", "matrix.vs", {{"SKINNED", ""}}, "skinned", {"matrixSkinnedVertex", "matrixWorldToClip"},
-       matrixMain},
+       matrixMain + "; = skinned, reference"},
+      {"matrix", "matrix.vs", {{"SKINNED", ""}}, "skinned, reference",
+       {"matrixSkinnedVertex", "matrixWorldToClip"}, ref},
+      {"matrix", "matrix.vs", D{{"SKINNED", ""}, {"MB_WORLD_PALETTE", ""}}, "skinned, world palette",
+       {"matrixSkinnedVertexWorld", "matrixWorldToClip"}, world},
+      {"matrix", "matrix.vs", D{{"MB_NO_TANGENT", ""}}, "rigid, no tangent",
+       {"matrixRigidVertexNoTangent", "matrixWorldToClip"}},
+      {"matrix", "matrix.vs", D{{"SKINNED", ""}, {"MB_NO_TANGENT", ""}}, "skinned, no tangent",
+       {"matrixSkinnedVertexNoTangent", "matrixWorldToClip"}, ref},
+      {"matrix", "matrix.vs", D{{"SKINNED", ""}, {"MB_WORLD_PALETTE", ""}, {"MB_NO_TANGENT", ""}},
+       "skinned, world palette, no tangent", {"matrixSkinnedVertexWorldNoTangent", "matrixWorldToClip"},
+       world},
       {"motor", "motor.vs", {}, "rigid", {"motorRigidVertex", "motorWorldToClip"}},
-      {"motor", "motor.vs", {{"MB_SKINNED", ""}}, "skinned", {"motorSkinnedVertex", "motorWorldToClip"}},
+      {"motor", "motor.vs", {{"MB_SKINNED", ""}}, "skinned", {"motorSkinnedVertex", "motorWorldToClip"},
+       "= skinned, world palette"},
+      {"motor", "motor.vs", D{{"MB_SKINNED", ""}, {"MB_SKIN_REFERENCE", ""}}, "skinned, reference",
+       {"motorSkinnedVertexReference", "motorWorldToClip"},
+       "the paper's: gp(toWorld, blend) per vertex"},
+      {"motor", "motor.vs", {{"MB_SKINNED", ""}}, "skinned, world palette",
+       {"motorSkinnedVertex", "motorWorldToClip"}, "joint world * inverse bind motors"},
       {"motor", "motor.vs", {{"MB_SCALE_FALLBACK", ""}}, "scaled fallback",
        {"motorScaledVertex", "motorWorldToClip"}},
-      {"motor", "motor.vs", {{"MB_SKINNED", ""}, {"MB_SCALE_FALLBACK", ""}}, "skinned+scaled",
+      {"motor", "motor.vs", D{{"MB_SKINNED", ""}, {"MB_SCALE_FALLBACK", ""}}, "skinned+scaled",
        {"motorBlendJoints", "motorScaledVertex", "motorWorldToClip"}},
       {"s3_matrix", "curved_matrix.vs", {{"MB_KAPPA", "1"}}, "S3 instance", {"curvedMatrixVertex"}, curvedMain},
       {"s3_motor", "curved_motor.vs", {{"MB_KAPPA", "1"}}, "S3 instance", {"curvedMotorVertex"}, curvedMain},

@@ -35,8 +35,17 @@ json memoryJson(const PipelineStats& s) {
           {"skinBytesPerFrame", s.skinBytesPerFrame},
           {"bytesPerVertex", per(s.vertexBytes)},
           {"bytesPerVertexAll", per(s.vertexBytes + s.skinVertexBytes + s.extraVertexBytes)},
+          // Split by material (issue 18): the paper's 12-vs-9 floats is the normal-mapped case.
+          {"normalMappedVertices", s.normalMappedVertices},
+          {"bytesPerVertexNormalMapped",
+           s.normalMappedVertices ? json(double(s.normalMappedVertexBytes) / double(s.normalMappedVertices)) : json(nullptr)},
+          {"bytesPerVertexNotNormalMapped",
+           s.vertices > s.normalMappedVertices
+               ? json(double(s.vertexBytes - s.normalMappedVertexBytes) / double(s.vertices - s.normalMappedVertices))
+               : json(nullptr)},
           {"floatsPerVertex", s.floatsPerVertex},
           {"floatsPerTransform", s.floatsPerTransform},
+          {"floatsPerTransformWithScale", s.floatsPerTransformWithScale},
           {"floatsPerJoint", s.floatsPerJoint}};
 }
 

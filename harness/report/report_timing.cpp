@@ -38,8 +38,10 @@ json configJson(const timing::ConfigTiming& c, const std::vector<std::string>& p
 
 }  // namespace
 
-json timeScene(const Scene& scene, const std::vector<std::string>& pipelines, int frames, int width, int height) {
+json timeScene(const Scene& scene, const std::vector<std::string>& pipelines, int frames, int width, int height,
+               const PipelineOptions& options) {
   timing::Settings normal;
+  normal.options = options;
   normal.frames = std::max(1, frames);
   normal.warmup = std::max(2, std::min(5, frames / 5));
   normal.width = width, normal.height = height;

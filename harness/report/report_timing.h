@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pipelines/pipeline.h"
 #include "pipelines/scene/scene.h"
 
 namespace mb::report {
@@ -14,7 +15,8 @@ namespace mb::report {
 // Times every pipeline on `scene` over `frames` frames (after warm-up) at width x height.
 // Returns {"frames", "pipelines": {name: {"medianMs", ...}}, "ratio_motor_matrix" (frame time,
 // < 1: motor faster), ...} or {"error": "..."}.
+// `options` go to every pipeline (claims time the skinned crowd with both in one SkinSpace).
 nlohmann::json timeScene(const Scene& scene, const std::vector<std::string>& pipelines,
-                         int frames, int width, int height);
+                         int frames, int width, int height, const PipelineOptions& options = {});
 
 }  // namespace mb::report

@@ -133,8 +133,12 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
     PipelineTiming t;
     t.pipeline = name;
     auto p = createPipeline(name);
-    if (!p) t.error = "registered but not implemented (placeholder factory)";
-    else if (Status s = p->prepare(scene); !s) t.error = s.error();
+    if (!p) {
+      t.error = "registered but not implemented (placeholder factory)";
+    } else {
+      p->configure(settings.options);
+      if (Status s = p->prepare(scene); !s) t.error = s.error();
+    }
     if (t.error.empty()) {
       live.push_back(std::move(p));
       slots.push_back(out.pipelines.size());

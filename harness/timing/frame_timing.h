@@ -52,6 +52,7 @@ struct Settings {
   int bestOf = 3;
   int width = 512, height = 512;
   std::string config = "normal";  // label: "normal", "vertex-bound"
+  PipelineOptions options;        // given to every pipeline (e.g. the same SkinSpace for both)
 };
 
 inline constexpr double kMinUpdateBlockMs = 0.25;

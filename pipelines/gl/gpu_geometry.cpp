@@ -20,30 +20,49 @@ void GpuPrimitive::release() {
   vao = vertices = indices = 0;
 }
 
+bool normalMapped(const Scene& scene, const Primitive& p) {
+  return p.material >= 0 && size_t(p.material) < scene.materials.size() &&
+         scene.materials[size_t(p.material)].normal.texture >= 0;
+}
+
 void SceneGeometry::upload(const Scene& scene, const Interleave& interleave,
                            std::initializer_list<GLint> attributeSizes, PipelineStats& stats) {
+  std::vector<VertexAttribute> attributes;
+  GLuint location = 0;
+  for (GLint size : attributeSizes) attributes.push_back({location++, size});
+  upload(scene, [&](const Primitive& p) { return VertexFormat{interleave(p), attributes, 0}; },
+         stats);
+}
+
+void SceneGeometry::upload(const Scene& scene, const Format& format, PipelineStats& stats) {
   release();
   // A mesh is drawn skinned when some node instancing it has a skin.
   std::vector<bool> skinnedMesh(scene.meshes.size(), false);
   for (const Node& n : scene.nodes)
     if (n.mesh >= 0 && size_t(n.mesh) < scene.meshes.size() && n.skin >= 0)
       skinnedMesh[size_t(n.mesh)] = true;
-  GLsizei stride = 0;
-  for (GLint s : attributeSizes) stride += GLsizei(s) * GLsizei(sizeof(float));
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     meshes_.emplace_back();
     for (const Primitive& p : scene.meshes[m].primitives) {
       GpuPrimitive g;
       glGenVertexArrays(1, &g.vao);
       glBindVertexArray(g.vao);
-      g.vertices = createBuffer(GL_ARRAY_BUFFER, interleave(p), stats.vertexBytes);
-      GLuint loc = 0;
+      VertexFormat f = format(p);
+      g.variant = f.variant;
+      const uint64_t before = stats.vertexBytes;
+      g.vertices = createBuffer(GL_ARRAY_BUFFER, f.data, stats.vertexBytes);
+      GLsizei stride = 0;
+      for (const VertexAttribute& a : f.attributes) stride += GLsizei(a.size) * GLsizei(sizeof(float));
       size_t offset = 0;
-      for (GLint size : attributeSizes) {
-        glEnableVertexAttribArray(loc);
-        glVertexAttribPointer(loc++, size, GL_FLOAT, GL_FALSE, stride,
+      for (const VertexAttribute& a : f.attributes) {
+        glEnableVertexAttribArray(a.location);
+        glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, stride,
                               reinterpret_cast<const void*>(offset * sizeof(float)));
-        offset += size_t(size);
+        offset += size_t(a.size);
+      }
+      if (normalMapped(scene, p)) {
+        stats.normalMappedVertexBytes += stats.vertexBytes - before;
+        stats.normalMappedVertices += p.positions.size();
       }
       g.extra.upload(p, stats.extraVertexBytes, stats.skinVertexBytes);
       g.skinned = skinnedMesh[m] && g.extra.joints != 0;

@@ -18,10 +18,27 @@ struct GpuPrimitive {
   GLuint vao = 0, vertices = 0, indices = 0;
   GLsizei indexCount = 0;
   bool skinned = false;  // drawn by a skinned node and has joints + weights
+  int variant = 0;       // the pipeline's vertex-format variant (VertexFormat::variant)
   ExtraStreams extra;
   // Binds the VAO, sets the defaults of absent streams, draws the triangles.
   void draw() const;
   void release();
+};
+
+// One float attribute of an interleaved vertex: shader location and component count.
+struct VertexAttribute {
+  GLuint location = 0;
+  GLint size = 0;
+};
+
+// A primitive's vertex format when it may differ per primitive (e.g. the matrix pipeline
+// uploads a tangent only where the glTF-Sample-Viewer would): the interleaved floats, the
+// attributes in interleave order, and a pipeline-defined variant number kept on GpuPrimitive
+// so the pipeline can pick the matching program.
+struct VertexFormat {
+  std::vector<float> data;
+  std::vector<VertexAttribute> attributes;
+  int variant = 0;
 };
 
 // Every primitive of every mesh on the GPU.
@@ -29,17 +46,25 @@ class SceneGeometry {
 public:
   // The pipeline's vertex layout of a primitive: tightly interleaved floats.
   using Interleave = std::function<std::vector<float>(const Primitive&)>;
+  using Format = std::function<VertexFormat(const Primitive&)>;
   // Uploads all primitives of `scene`: interleave(p) at float attributes of the given sizes on
   // locations 0, 1, ... (stats.vertexBytes), ExtraStreams (extraVertexBytes, skinVertexBytes),
   // indices (indexBytes); counts stats.vertices and sets stats.floatsPerVertex from the bytes.
+  // Also counts the normal-mapped share (PipelineStats::normalMappedVertexBytes/Vertices).
   void upload(const Scene& scene, const Interleave& interleave,
               std::initializer_list<GLint> attributeSizes, PipelineStats& stats);
+  // The same with a format chosen per primitive by `format`.
+  void upload(const Scene& scene, const Format& format, PipelineStats& stats);
   const GpuPrimitive& at(const DrawItem& d) const { return meshes_[size_t(d.mesh)][size_t(d.primitive)]; }
   void release();
 
 private:
   std::vector<std::vector<GpuPrimitive>> meshes_;  // [mesh][primitive]
 };
+
+// True when `p`'s material has a normal texture (the paper's 12-vs-9-float case; the split of
+// PipelineStats::normalMappedVertexBytes).
+bool normalMapped(const Scene& scene, const Primitive& p);
 
 // One shader storage buffer per joint palette, re-uploaded every frame.
 class PaletteBuffers {

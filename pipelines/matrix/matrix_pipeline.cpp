@@ -3,6 +3,10 @@
 // GPU: shaders/matrix.vs (+ SKINNED variant) and the shared shaders/forward.fs.
 // Per draw it uploads u_ModelMatrix and u_NormalMatrix (2 x mat4 = 32 floats, skinned draws
 // included, as the Sample Viewer does); per joint a joint matrix and a joint normal matrix.
+// Vertex format per primitive as the Sample Viewer's (matrix_vertices.h): a tangent only where
+// the primitive has one (authored, or generated for a normal map); the MB_NO_TANGENT shader
+// variant draws the others. Skinning: SkinSpace::Reference by default (the Sample Viewer's);
+// WorldPalette on request (configure()).
 #include "pipelines/matrix/matrix_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -22,6 +26,12 @@ class MatrixPipeline final : public Pipeline {
 public:
   ~MatrixPipeline() override { release(); }
   std::string name() const override { return "matrix"; }
+  void configure(const PipelineOptions& options) override {
+    worldPalette_ = options.skinSpace == SkinSpace::WorldPalette;
+  }
+  SkinSpace skinSpace() const override {
+    return worldPalette_ ? SkinSpace::WorldPalette : SkinSpace::Reference;
+  }
   Status prepare(const Scene& scene) override;
   void update(const AnimState& state) override;
   void render(const View& view) override;
@@ -32,7 +42,8 @@ private:
   void release();
 
   const Scene* scene_ = nullptr;
-  std::unique_ptr<gl::Program> rigid_, skinned_;
+  std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][no tangent]
+  bool worldPalette_ = false;
   gl::SceneTextures textures_;
   gl::SceneGeometry geometry_;
   gl::PaletteBuffers palettes_;  // one per pose_.palettes entry (same order every update)
@@ -46,18 +57,32 @@ Status MatrixPipeline::prepare(const Scene& scene) {
   if (Status curved = refuseCurvedScene(scene, name()); !curved) return curved;
   scene_ = &scene;
   stats_ = PipelineStats{};
-  auto rigid = gl::Program::fromFiles("matrix.vs", "forward.fs");
-  if (!rigid) return Status::fail(rigid.error());
-  auto skinned = gl::Program::fromFiles("matrix.vs", "forward.fs", {{"SKINNED", ""}});
-  if (!skinned) return Status::fail(skinned.error());
-  rigid_ = rigid.take();
-  skinned_ = skinned.take();
-  skinned_->bindStorageBlock("JointPalette", 0);
+  for (int skinned = 0; skinned < 2; ++skinned)
+    for (int noTangent = 0; noTangent < 2; ++noTangent) {
+      gl::Defines defines;
+      if (skinned) defines.push_back({"SKINNED", ""});
+      if (skinned && worldPalette_) defines.push_back({"MB_WORLD_PALETTE", ""});
+      if (noTangent) defines.push_back({"MB_NO_TANGENT", ""});
+      auto program = gl::Program::fromFiles("matrix.vs", "forward.fs", defines);
+      if (!program) return Status::fail(program.error());
+      programs_[skinned][noTangent] = program.take();
+      if (skinned) programs_[skinned][noTangent]->bindStorageBlock("JointPalette", 0);
+    }
   if (Status fits = gl::checkPaletteSize(scene, 2 * sizeof(glm::mat4)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
 
   auto t0 = gl::Clock::now();
-  geometry_.upload(scene, matrix::interleaveVertices, {3, 3, 4, 2}, stats_);  // pos, n, t, uv
+  geometry_.upload(
+      scene,
+      [](const Primitive& p) {
+        // locations: 0 position, 1 normal, 2 tangent (when uploaded), 3 uv0; variant 1 = none
+        const bool tangent = matrix::uploadsTangent(p);
+        std::vector<gl::VertexAttribute> attributes{{0, 3}, {1, 3}};
+        if (tangent) attributes.push_back({2, 4});
+        attributes.push_back({3, 2});
+        return gl::VertexFormat{matrix::interleaveVertices(p), attributes, tangent ? 0 : 1};
+      },
+      stats_);
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
   update(AnimState{});
@@ -69,7 +94,7 @@ Status MatrixPipeline::prepare(const Scene& scene) {
 void MatrixPipeline::update(const AnimState& state) {
   if (!scene_) return;
   auto t0 = gl::Clock::now();
-  pose_ = matrix::poseScene(*scene_, state);
+  pose_ = matrix::poseScene(*scene_, state, worldPalette_);
   stats_.updateMs = gl::msSince(t0);
 }
 
@@ -95,12 +120,20 @@ void MatrixPipeline::render(const View& view) {
   glm::mat4 viewProjection =
       glm::perspective(view.yfov, view.aspect, view.znear, view.zfar) * viewMatrix;
   gl::beginDraws();
-  for (gl::Program* p : {rigid_.get(), skinned_.get()}) {
-    p->use();
-    gl::uniformMatrix4(p->uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
-                       stats_.uniformBytesPerFrame);
-    gl::setFrameUniforms(*p, view, stats_.uniformBytesPerFrame);
-  }
+  // Per-frame uniforms go to a program when the frame first draws with it (unused variants
+  // upload nothing, so uniformBytesPerFrame counts what a frame needs).
+  bool frameSet[2][2] = {};
+  auto useProgram = [&](int skinned, int noTangent) -> const gl::Program& {
+    gl::Program& p = *programs_[skinned][noTangent];
+    p.use();
+    if (!frameSet[skinned][noTangent]) {
+      frameSet[skinned][noTangent] = true;
+      gl::uniformMatrix4(p.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
+                         stats_.uniformBytesPerFrame);
+      gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
+    }
+    return p;
+  };
   uint64_t transformBytes = 0;
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.at(d);
@@ -110,8 +143,7 @@ void MatrixPipeline::render(const View& view) {
     GLuint palette = 0;
     for (size_t i = 0; g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = palettes_[i];
-    const gl::Program& program = palette ? *skinned_ : *rigid_;
-    program.use();
+    const gl::Program& program = useProgram(palette ? 1 : 0, g.variant == 1 ? 1 : 0);
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
     const glm::mat4& model = pose_.world[size_t(d.node)];
     glm::mat4 normal = matrix::normalMatrix(model);
@@ -125,14 +157,15 @@ void MatrixPipeline::render(const View& view) {
   gl::endDraws();
   stats_.uniformBytesPerFrame += transformBytes;
   stats_.floatsPerTransform = gl::floatsPer(transformBytes, uint64_t(stats_.draws));
+  stats_.floatsPerTransformWithScale = stats_.floatsPerTransform;  // the scale is in the matrices
 }
 
 void MatrixPipeline::release() {
   geometry_.release();
   palettes_.release();
   textures_.release();
-  rigid_.reset();
-  skinned_.reset();
+  for (auto& row : programs_)
+    for (auto& p : row) p.reset();
   scene_ = nullptr;
 }
 

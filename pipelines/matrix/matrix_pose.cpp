@@ -10,7 +10,7 @@ glm::mat4 normalMatrix(const glm::mat4& m) {
   return n;
 }
 
-Pose poseScene(const Scene& scene, const AnimState& state) {
+Pose poseScene(const Scene& scene, const AnimState& state, bool worldPalette) {
   Pose pose;
   pose.world = worldMatrices(scene, samplePose(scene, state));
   for (size_t n = 0; n < scene.nodes.size(); ++n) {
@@ -19,7 +19,7 @@ Pose poseScene(const Scene& scene, const AnimState& state) {
     const Skin& skin = scene.skins[size_t(node.skin)];
     SkinPalette palette;
     palette.node = int(n);
-    glm::mat4 toMesh = glm::inverse(pose.world[n]);
+    const glm::mat4 toMesh = worldPalette ? glm::mat4(1.0f) : glm::inverse(pose.world[n]);
     for (size_t j = 0; j < skin.joints.size(); ++j) {
       int jn = skin.joints[j];
       glm::mat4 joint = jn >= 0 && size_t(jn) < pose.world.size() ? pose.world[size_t(jn)]

@@ -13,7 +13,8 @@ namespace mb::matrix {
 struct SkinPalette {
   int node = -1;  // the skinned mesh node
   // Two matrices per joint, interleaved as the shader's Joint struct reads them:
-  // [2j] = inverse(mesh node world) * joint world * inverse bind, [2j+1] = its normal matrix.
+  // [2j] = inverse(mesh node world) * joint world * inverse bind (Sample Viewer; with a
+  // world-space palette joint world * inverse bind), [2j+1] = its normal matrix.
   std::vector<glm::mat4> matrices;
 };
 
@@ -23,8 +24,9 @@ struct Pose {
 };
 
 // Poses `scene` for `state`: samplePose (shared animation sampling and blending), world
-// matrices, then a palette for every node that has both a mesh and a skin.
-Pose poseScene(const Scene& scene, const AnimState& state);
+// matrices, then a palette for every node that has both a mesh and a skin; `worldPalette`:
+// the palette without inverse(mesh node world) (SkinSpace::WorldPalette).
+Pose poseScene(const Scene& scene, const AnimState& state, bool worldPalette = false);
 
 // transpose(inverse(m)) with the [3][3] entry set to sign(det(upper 3x3 of m)): matrix.vs
 // transforms directions with w = 0 and reads the handedness flip from that free entry.

@@ -1,6 +1,8 @@
-// The matrix pipeline's vertex layout: position, normal, tangent (xyz + handedness w) and
-// TEXCOORD_0 interleaved, 12 floats (48 bytes) per vertex, as the glTF-Sample-Viewer feeds
-// its matrix shaders.
+// The matrix pipeline's vertex layout, per primitive as the glTF-Sample-Viewer feeds its
+// matrix shaders: position, normal, [tangent (xyz + handedness w),] TEXCOORD_0 interleaved.
+// The Sample Viewer has a tangent attribute only where the file authors TANGENT or the
+// material is normal-mapped (then it generates one); elsewhere its shader has no tangent
+// input. So: 12 floats (48 bytes) with a tangent, 8 floats (32 bytes) without.
 #pragma once
 #include <vector>
 
@@ -8,11 +10,17 @@
 
 namespace mb::matrix {
 
-constexpr int kFloatsPerVertex = 12;  // stride; stats are still measured from upload sizes
+constexpr int kFloatsWithTangent = 12;    // strides; stats are still measured from upload sizes
+constexpr int kFloatsWithoutTangent = 8;
 
-// Interleaves `p`'s streams. Absent streams are filled so every vertex has the same layout:
-// a missing tangent becomes any unit vector perpendicular to the normal (w = +1; no normal
-// map samples it), missing uv0 becomes (0, 0), a missing normal (0, 0, 1).
+// The Sample Viewer's rule. The loader fills Primitive::tangents exactly when TANGENT was
+// authored or the material has a normal texture (generated then), and built-in scenes set
+// tangents where a file would author them, so this is "tangents present".
+bool uploadsTangent(const Primitive& p);
+
+// Interleaves `p`'s streams: position, normal, tangent (only when uploadsTangent(p)), uv0.
+// Absent streams are filled so every vertex has the same layout: missing uv0 becomes (0, 0),
+// a missing normal (0, 0, 1).
 std::vector<float> interleaveVertices(const Primitive& p);
 
 }  // namespace mb::matrix

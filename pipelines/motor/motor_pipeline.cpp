@@ -9,7 +9,9 @@
 // vertices first, the frame corrected as a normal matrix would) and for mirrored nodes (a
 // negative scale: a point reflection, front-face winding flipped). Per joint: 8 floats.
 // PipelineStats::floatsPerTransform counts the motor uploads only; the scale is in
-// uniformBytesPerFrame.
+// uniformBytesPerFrame. Skinning: SkinSpace::WorldPalette by default (joint motors in world
+// space, no node motor per vertex); Reference on request (configure()): the paper's form,
+// joint motors relative to the mesh node and gp(u_World, blend) per vertex (MB_SKIN_REFERENCE).
 #include "pipelines/motor/motor_pipeline.h"
 
 #include "pipelines/gl/gpu_geometry.h"
@@ -42,6 +44,12 @@ class MotorPipeline final : public Pipeline {
 public:
   ~MotorPipeline() override { release(); }
   std::string name() const override { return "motor"; }
+  void configure(const PipelineOptions& options) override {
+    referenceSkin_ = options.skinSpace == SkinSpace::Reference;
+  }
+  SkinSpace skinSpace() const override {
+    return referenceSkin_ ? SkinSpace::Reference : SkinSpace::WorldPalette;
+  }
   Status prepare(const Scene& scene) override;
   void update(const AnimState& state) override;
   void render(const View& view) override;
@@ -53,6 +61,7 @@ private:
 
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][scale fallback]
+  bool referenceSkin_ = false;
   gl::SceneTextures textures_;
   gl::SceneGeometry geometry_;
   gl::PaletteBuffers paletteBuffers_;             // one per palettes_ entry
@@ -72,6 +81,7 @@ Status MotorPipeline::prepare(const Scene& scene) {
     for (int fallback = 0; fallback < 2; ++fallback) {
       gl::Defines defines;
       if (skinned) defines.push_back({"MB_SKINNED", ""});
+      if (skinned && referenceSkin_) defines.push_back({"MB_SKIN_REFERENCE", ""});
       if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
       auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
       if (!program) return Status::fail(program.error());
@@ -103,7 +113,7 @@ void MotorPipeline::update(const AnimState& state) {
   auto t0 = gl::Clock::now();
   motor::RigCounts counts = rig_.bindCounts;
   world_ = motor::worldPose(*scene_, motor::localForState(*scene_, rig_, state, &counts));
-  palettes_ = motor::jointPalettes(*scene_, rig_, world_);
+  palettes_ = motor::jointPalettes(*scene_, rig_, world_, referenceSkin_);
   stats_.updateMs = gl::msSince(t0);
   stats_.nonUniformScaleNodes = counts.nonUniformScaleNodes;
   stats_.negativeScaleNodes = counts.negativeScaleNodes;
@@ -129,14 +139,21 @@ void MotorPipeline::render(const View& view) {
   const motor::CameraMotor camera = motor::cameraFromView(view);
   const float projection[4] = {camera.znear, camera.zfar, camera.yfov, camera.aspect};
   gl::beginDraws();
-  for (auto& row : programs_)
-    for (auto& p : row) {
-      p->use();
-      gl::uniform4fv(p->uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
-      gl::uniform4f(p->uniform("u_Projection"), projection, stats_.uniformBytesPerFrame);
-      gl::setFrameUniforms(*p, view, stats_.uniformBytesPerFrame);
+  // Per-frame uniforms go to a program when the frame first draws with it (unused variants
+  // upload nothing, so uniformBytesPerFrame counts what a frame needs).
+  bool frameSet[2][2] = {};
+  auto useProgram = [&](int skinned, int fallback) -> const gl::Program& {
+    gl::Program& p = *programs_[skinned][fallback];
+    p.use();
+    if (!frameSet[skinned][fallback]) {
+      frameSet[skinned][fallback] = true;
+      gl::uniform4fv(p.uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
+      gl::uniform4f(p.uniform("u_Projection"), projection, stats_.uniformBytesPerFrame);
+      gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
     }
-  uint64_t transformBytes = 0, transforms = 0;
+    return p;
+  };
+  uint64_t transformBytes = 0, transforms = 0, transformScaleBytes = 0;
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.at(d);
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
@@ -149,19 +166,21 @@ void MotorPipeline::render(const View& view) {
     const motor::ScaledMotor& world = world_[size_t(d.node)];
     const DrawScale scale = palette ? drawScale(palette->scale, glm::vec3(1.0f))
                                     : drawScale(world.scale, world.residual);
-    const gl::Program& program = *programs_[palette ? 1 : 0][scale.fallback ? 1 : 0];
-    program.use();
-    if (palette) {
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
-    } else {
-      // glTF: a skinned mesh ignores its node's transform, so only rigid draws upload one.
+    const gl::Program& program = useProgram(palette ? 1 : 0, scale.fallback ? 1 : 0);
+    if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
+    // glTF: a skinned mesh ignores its node's transform, so with a world-space palette only
+    // rigid draws upload one; the reference form composes it per vertex.
+    if (!palette || referenceSkin_) {
       gl::uniform4fv(program.uniform("u_World"), 2, &world.motor[0][0], transformBytes);
       ++transforms;
     }
+    uint64_t scaleBytes = 0;
     if (scale.fallback)
-      gl::uniform3f(program.uniform("u_Scale"), &scale.value[0], stats_.uniformBytesPerFrame);
+      gl::uniform3f(program.uniform("u_Scale"), &scale.value[0], scaleBytes);
     else
-      gl::uniform1f(program.uniform("u_Scale"), scale.value.x, stats_.uniformBytesPerFrame);
+      gl::uniform1f(program.uniform("u_Scale"), scale.value.x, scaleBytes);
+    stats_.uniformBytesPerFrame += scaleBytes;
+    if (!palette || referenceSkin_) transformScaleBytes += scaleBytes;  // draws with a transform
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(scale.mirrored);
     g.draw();
@@ -170,6 +189,7 @@ void MotorPipeline::render(const View& view) {
   gl::endDraws();
   stats_.uniformBytesPerFrame += transformBytes;
   stats_.floatsPerTransform = gl::floatsPer(transformBytes, transforms);
+  stats_.floatsPerTransformWithScale = gl::floatsPer(transformBytes + transformScaleBytes, transforms);
 }
 
 void MotorPipeline::release() {

@@ -107,7 +107,8 @@ std::vector<ScaledMotor> worldPose(const Scene& scene, const std::vector<ScaledM
 }
 
 std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
-                                        const std::vector<ScaledMotor>& world) {
+                                        const std::vector<ScaledMotor>& world,
+                                        bool relativeToNode) {
   std::vector<JointPalette> out;
   for (size_t n = 0; n < scene.nodes.size(); ++n) {
     const Node& node = scene.nodes[n];
@@ -117,10 +118,12 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
     p.node = int(n);
     p.skin = node.skin;
     p.motors.reserve(skin.joints.size() * 8);
+    const Motor toNode = relativeToNode ? mk().reverse_m(world[n].motor) : Motor();
     for (size_t j = 0; j < skin.joints.size(); ++j) {
       const int jn = skin.joints[j];
       const ScaledMotor joint = nodeIndexOk(scene, jn) ? world[size_t(jn)] : identityScaledMotor();
-      const ScaledMotor m = compose(joint, rig.inverseBind[size_t(node.skin)][j]);
+      ScaledMotor m = compose(joint, rig.inverseBind[size_t(node.skin)][j]);
+      if (relativeToNode) m.motor = mk().gp_mm(toNode, m.motor);
       if (j == 0) p.scale = m.scale;
       else if (std::fabs(m.scale - p.scale) > 1e-4f * std::fabs(p.scale)) p.uniform = false;
       for (int c = 0; c < 2; ++c)

@@ -57,12 +57,16 @@ struct JointPalette {
   int node = -1;               // the skinned mesh node
   int skin = -1;
   std::vector<float> motors;   // 8 floats per joint: joint world motor * inverse-bind motor
+                               // (relativeToNode: reverse(node world motor) * that)
   float scale = 1.0f;          // the skin's uniform scale (joint world scale * bind scale)
   bool uniform = true;         // false: the joints' scales differ (joint 0's is used)
 };
 
-// Palettes for every node that has both a mesh and a skin.
+// Palettes for every node that has both a mesh and a skin. `relativeToNode`: each joint motor
+// is left-multiplied by the reverse of the mesh node's world motor (SkinSpace::Reference, the
+// shader composes the node's motor back per vertex); the scale is the same either way.
 std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
-                                        const std::vector<ScaledMotor>& world);
+                                        const std::vector<ScaledMotor>& world,
+                                        bool relativeToNode = false);
 
 }  // namespace mb::motor

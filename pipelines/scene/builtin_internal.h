@@ -8,6 +8,7 @@
 namespace mb {
 
 void buildNormalTorus(GlbBuilder& b);
+void buildDenseTorus(GlbBuilder& b);
 void buildTexturedBox(GlbBuilder& b);
 void buildSkinnedTube(GlbBuilder& b);
 void buildScaledHierarchy(GlbBuilder& b);

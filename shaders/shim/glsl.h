@@ -199,6 +199,8 @@ template <class S> struct vec<S, 3> : detail::vec_ops<S, 3> {
     struct { S x, y, z; };
     MB_GLSL_SWZ(3, 2, xy, 0, 1);
     MB_GLSL_SWZ(3, 2, yz, 1, 2);
+    MB_GLSL_SWZ(3, 3, xyz, 0, 1, 2);  // the paper's printed exp_b (shaders/paper_listings.glsl)
+    MB_GLSL_SWZ(3, 3, zyx, 2, 1, 0);
   };
   MB_GLSL_VEC_COMMON(3)
 };
@@ -211,6 +213,7 @@ template <class S> struct vec<S, 4> : detail::vec_ops<S, 4> {
     MB_GLSL_SWZ(4, 2, zw, 2, 3);
     MB_GLSL_SWZ(4, 3, xyz, 0, 1, 2);
     MB_GLSL_SWZ(4, 3, yzw, 1, 2, 3);
+    MB_GLSL_SWZ(4, 3, wzy, 3, 2, 1);  // the paper's printed log_m (shaders/paper_listings.glsl)
   };
   MB_GLSL_VEC_COMMON(4)
 };

@@ -115,3 +115,42 @@ TEST(VertexOps, EveryVariantNamesCountedKernels) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 18: the skinned vertex in both configurations for both pipelines, and the matrix
+// vertex without a tangent, from hand-derived counts (mat4 * vec4 = 16/12, blend = 64/48).
+TEST(VertexOps, SymmetricSkinningAndNoTangentVariants) {
+  auto c = countedByFunction();
+  // Without tangent: position and normal products only.
+  expectCounts(c["matrixRigidVertexNoTangent"], {2 * 16, 2 * 12}, "matrix rigid, no tangent");
+  expectCounts(c["matrixSkinnedVertexNoTangent"], {2 * 64 + 4 * 16, 2 * 48 + 4 * 12},
+               "matrix skinned (reference), no tangent");
+  // World-space palette: the blends and one set of three products (+ handedness).
+  expectCounts(c["matrixSkinnedVertexWorld"], {2 * 64 + 3 * 16 + 1, 2 * 48 + 3 * 12},
+               "matrix skinned, world palette");
+  expectCounts(c["matrixSkinnedVertexWorldNoTangent"], {2 * 64 + 2 * 16, 2 * 48 + 2 * 12},
+               "matrix skinned, world palette, no tangent");
+  // The reference configuration adds the model matrix's three products (48/36) to the
+  // matrix vertex and gp_mm (48/40) to the motor vertex.
+  mb::MotorShader<Counted> P;
+  const auto& in = mb::opsv::detail::inputs();
+  const OpCounts gpmm = countOps([&] { P.gp_mm(in.toWorld, in.toWorld); });
+  expectCounts(gpmm, {48, 40}, "gp_mm");
+  EXPECT_EQ(c["motorSkinnedVertexReference"], sum({c["motorSkinnedVertex"], gpmm}));
+  const OpCounts m = c["matrixSkinnedVertex"], w = c["matrixSkinnedVertexWorld"];
+  EXPECT_EQ(m.mul - w.mul, 48u);
+  EXPECT_EQ(m.add - w.add, 36u);
+}
+
+TEST(VertexOps, BothSkinnedConfigurationsAreVariantsOfBothPipelines) {
+  for (const char* pipeline : {"matrix", "motor"})
+    for (const char* label : {"skinned, reference", "skinned, world palette"}) {
+      bool found = false;
+      for (const auto& v : mb::opsv::shaderVariants())
+        found = found || (v.pipeline == pipeline && v.label == label);
+      EXPECT_TRUE(found) << pipeline << " " << label;
+    }
+}
+
+}  // namespace
