@@ -8,7 +8,7 @@
 #include "harness/claims/claims_sources.h"
 #include "harness/ops/ops_vertex.h"
 #include "harness/render/render_frame.h"
-#include "harness/report/report_timing.h"
+#include "harness/timing/report_timing.h"
 #include "pipelines/curved/curved_drift.h"
 #include "pipelines/scene/curved_space.h"
 #include "pipelines/scene/loader.h"

@@ -14,11 +14,11 @@
 #include "harness/claims/claims_layout.h"
 #include "harness/claims/claims_sources.h"
 #include "harness/cli/command.h"
-#include "harness/report/report_bench.h"
+#include "harness/bench/report_bench.h"
 #include "harness/document/report_format.h"
 #include "harness/report/report_machine.h"
 #include "harness/render/render_frame.h"
-#include "harness/report/report_timing.h"
+#include "harness/timing/report_timing.h"
 #include "pipelines/scene/loader.h"
 
 namespace mb {

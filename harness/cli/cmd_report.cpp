@@ -15,7 +15,7 @@
 #include "harness/document/report_format.h"
 #include "harness/report/report_run.h"
 #include "harness/report/report_scene.h"
-#include "harness/report/report_timing.h"
+#include "harness/timing/report_timing.h"
 #include "pipelines/pipeline.h"
 #include "pipelines/scene/loader.h"
 

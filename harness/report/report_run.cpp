@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "harness/report/report_bench.h"
+#include "harness/bench/report_bench.h"
 #include "harness/document/report_document.h"
 #include "harness/document/report_format.h"
 #include "harness/report/report_inputs.h"

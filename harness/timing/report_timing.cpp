@@ -1,4 +1,4 @@
-#include "harness/report/report_timing.h"
+#include "harness/timing/report_timing.h"
 
 #include <algorithm>
 #include <cstdio>

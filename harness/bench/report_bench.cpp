@@ -1,4 +1,4 @@
-#include "harness/report/report_bench.h"
+#include "harness/bench/report_bench.h"
 
 #include <cstdio>
 #include <fstream>
