@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
@@ -33,6 +34,8 @@ private:
 
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> rigid_, skinned_;
+  std::unique_ptr<gl::Program> patch_;  // matrix_patch.vs, only for scenes with patches
+  gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
   gl::SceneGeometry geometry_;
   gl::PaletteBuffers palettes_;  // one per pose_.palettes entry (same order every update)
@@ -56,6 +59,12 @@ Status MatrixPipeline::prepare(const Scene& scene) {
   if (Status fits = gl::checkPaletteSize(scene, 2 * sizeof(glm::mat4)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
 
+  if (gl::hasPatches(scene)) {
+    auto patch = gl::Program::fromFiles("matrix_patch.vs", "forward.fs");
+    if (!patch) return Status::fail(patch.error());
+    patch_ = patch.take();
+    if (Status up = patches_.upload(scene, stats_); !up) return up;
+  }
   auto t0 = gl::Clock::now();
   geometry_.upload(scene, matrix::interleaveVertices, {3, 3, 4, 2}, stats_);  // pos, n, t, uv
   stats_.conversionMs = gl::msSince(t0);
@@ -95,7 +104,8 @@ void MatrixPipeline::render(const View& view) {
   glm::mat4 viewProjection =
       glm::perspective(view.yfov, view.aspect, view.znear, view.zfar) * viewMatrix;
   gl::beginDraws();
-  for (gl::Program* p : {rigid_.get(), skinned_.get()}) {
+  for (gl::Program* p : {rigid_.get(), skinned_.get(), patch_.get()}) {
+    if (!p) continue;
     p->use();
     gl::uniformMatrix4(p->uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
                        stats_.uniformBytesPerFrame);
@@ -105,6 +115,18 @@ void MatrixPipeline::render(const View& view) {
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.at(d);
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
+    if (patches_.has(d)) {  // Bezier patches: drawn rigidly by their node (never skinned)
+      patch_->use();
+      const glm::mat4& model = pose_.world[size_t(d.node)];
+      glm::mat4 normal = matrix::normalMatrix(model);
+      gl::uniformMatrix4(patch_->uniform("u_ModelMatrix"), 1, glm::value_ptr(model), transformBytes);
+      gl::uniformMatrix4(patch_->uniform("u_NormalMatrix"), 1, glm::value_ptr(normal), transformBytes);
+      textures_.bindMaterial(*patch_, prim.material, stats_.uniformBytesPerFrame);
+      gl::setWinding(normal[3][3] < 0.0f);
+      patches_.draw(d);
+      ++stats_.draws;
+      continue;
+    }
     if (!g.indexCount) continue;
     // A mesh shared by a skinned and an unskinned node is drawn rigidly on the latter.
     GLuint palette = 0;
@@ -129,6 +151,8 @@ void MatrixPipeline::render(const View& view) {
 
 void MatrixPipeline::release() {
   geometry_.release();
+  patches_.release();
+  patch_.reset();
   palettes_.release();
   textures_.release();
   rigid_.reset();

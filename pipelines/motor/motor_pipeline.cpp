@@ -13,6 +13,7 @@
 #include "pipelines/motor/motor_pipeline.h"
 
 #include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
@@ -53,6 +54,8 @@ private:
 
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][scale fallback]
+  std::unique_ptr<gl::Program> patchPrograms_[2];  // motor_patch.vs [scale fallback], scenes with patches
+  gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
   gl::SceneGeometry geometry_;
   gl::PaletteBuffers paletteBuffers_;             // one per palettes_ entry
@@ -80,6 +83,16 @@ Status MotorPipeline::prepare(const Scene& scene) {
     }
   if (Status fits = gl::checkPaletteSize(scene, 8 * sizeof(float)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
+  if (gl::hasPatches(scene)) {
+    for (int fallback = 0; fallback < 2; ++fallback) {
+      gl::Defines defines;
+      if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
+      auto program = gl::Program::fromFiles("motor_patch.vs", "forward.fs", defines);
+      if (!program) return Status::fail(program.error());
+      patchPrograms_[fallback] = program.take();
+    }
+    if (Status up = patches_.upload(scene, stats_); !up) return up;
+  }
 
   // Load-time conversion: transforms and inverse binds to motors, frames to rotors.
   auto t0 = gl::Clock::now();
@@ -129,17 +142,38 @@ void MotorPipeline::render(const View& view) {
   const motor::CameraMotor camera = motor::cameraFromView(view);
   const float projection[4] = {camera.znear, camera.zfar, camera.yfov, camera.aspect};
   gl::beginDraws();
+  std::vector<gl::Program*> frameProgram;
   for (auto& row : programs_)
-    for (auto& p : row) {
-      p->use();
-      gl::uniform4fv(p->uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
-      gl::uniform4f(p->uniform("u_Projection"), projection, stats_.uniformBytesPerFrame);
-      gl::setFrameUniforms(*p, view, stats_.uniformBytesPerFrame);
-    }
+    for (auto& p : row) frameProgram.push_back(p.get());
+  for (auto& p : patchPrograms_)
+    if (p) frameProgram.push_back(p.get());
+  for (gl::Program* p : frameProgram) {
+    p->use();
+    gl::uniform4fv(p->uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
+    gl::uniform4f(p->uniform("u_Projection"), projection, stats_.uniformBytesPerFrame);
+    gl::setFrameUniforms(*p, view, stats_.uniformBytesPerFrame);
+  }
   uint64_t transformBytes = 0, transforms = 0;
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.at(d);
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
+    if (patches_.has(d)) {  // Bezier patches: drawn rigidly by their node (never skinned)
+      const motor::ScaledMotor& world = world_[size_t(d.node)];
+      const DrawScale scale = drawScale(world.scale, world.residual);
+      const gl::Program& program = *patchPrograms_[scale.fallback ? 1 : 0];
+      program.use();
+      gl::uniform4fv(program.uniform("u_World"), 2, &world.motor[0][0], transformBytes);
+      ++transforms;
+      if (scale.fallback)
+        gl::uniform3f(program.uniform("u_Scale"), &scale.value[0], stats_.uniformBytesPerFrame);
+      else
+        gl::uniform1f(program.uniform("u_Scale"), scale.value.x, stats_.uniformBytesPerFrame);
+      textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
+      gl::setWinding(scale.mirrored);
+      patches_.draw(d);
+      ++stats_.draws;
+      continue;
+    }
     if (!g.indexCount) continue;
     // A mesh shared by a skinned and an unskinned node is drawn rigidly on the latter.
     const motor::JointPalette* palette = nullptr;
@@ -174,6 +208,8 @@ void MotorPipeline::render(const View& view) {
 
 void MotorPipeline::release() {
   geometry_.release();
+  patches_.release();
+  for (auto& p : patchPrograms_) p.reset();
   paletteBuffers_.release();
   textures_.release();
   for (auto& row : programs_)

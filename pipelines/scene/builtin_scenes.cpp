@@ -16,6 +16,7 @@ Builder builderFor(const std::string& name) {
   if (name == "skinned_tube") return &buildSkinnedTube;
   if (name == "scaled_hierarchy") return &buildScaledHierarchy;
   if (name == "crowd") return &buildCrowd;
+  if (name == "teapot") return &buildTeapot;
   return nullptr;
 }
 
@@ -23,7 +24,7 @@ Builder builderFor(const std::string& name) {
 
 const std::vector<std::string>& builtinSceneNames() {
   static const std::vector<std::string> names = {"normal_torus", "textured_box", "skinned_tube",
-                                                 "scaled_hierarchy", "crowd"};
+                                                 "scaled_hierarchy", "crowd", "teapot"};
   return names;
 }
 
