@@ -22,7 +22,7 @@ mat3x4 matrixPatchVertex(mat4 model, mat4 normalMatrix, mat3 surface) {
 // Motor path (a), the one motor_patch.vs uses: both derivatives moved by the direction
 // sandwich and crossed in world space (a rotation commutes with the cross product, so this is
 // the world normal). `scale` > 0 is the draw's uniform scale (it does not turn directions).
-// counted: 63 mul, 45 add (sw_mp 21/18 + scale 3/0, two sw_md 36/24, cross 6/3)
+// counted: 66 mul, 45 add (sw_mp 21/18 + scale 3/0, two sw_md 36/24, cross 6/3)
 mat3x4 motorPatchVertex(motor toWorld, float scale, mat3 surface) {
   vec3 t = sw_md(toWorld, surface[1]);
   vec3 b = sw_md(toWorld, surface[2]);
@@ -66,7 +66,8 @@ vec4 frameRotor(vec3 t, vec3 n) {
 // Motor path (b), counted and reported, not drawn: the object-space frame as a tangent rotor,
 // composed with the world motor's rotor (gp_rr) and decoded (extractNormalTangent), the
 // stored-rotor path of motor_transform.glsl with the rotor built per vertex.
-// counted: see tests/test_shim_patch.cpp (more than (a): two normalisations and the rotor)
+// counted: 75 mul, 56 add, 3 div, 1 sqrt, 2 inversesqrt where the frame's trace is <= 0;
+// 71 mul, 57 add, 1 div, 3 inversesqrt where it is > 0 (tests/test_patch_eval.cpp)
 mat3x4 motorPatchVertexRotor(motor toWorld, float scale, mat3 surface) {
   vec4 r = frameRotor(normalize(surface[1]), normalize(cross(surface[1], surface[2])));
   mat2x3 nt = extractNormalTangent(gp_rr(toWorld, motor(r, vec4(0.0))));
