@@ -42,7 +42,7 @@ glm::mat4 world(const mb::Scene& s, const std::vector<mb::TRS>& pose, int node) 
 
 TEST(SceneBuiltin, NamesAreStable) {
   EXPECT_EQ(mb::builtinSceneNames(),
-            (std::vector<std::string>{"normal_torus", "textured_box", "skinned_tube", "scaled_hierarchy", "crowd"}));
+            (std::vector<std::string>{"normal_torus", "textured_box", "skinned_tube", "scaled_hierarchy", "crowd", "teapot"}));
   EXPECT_TRUE(mb::isBuiltinScene("crowd"));
   EXPECT_FALSE(mb::isBuiltinScene("crowd.glb"));
   EXPECT_FALSE(mb::builtinSceneGlb("nope").ok());
