@@ -14,6 +14,7 @@
 #include "pipelines/scene/bpt_reader.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
+#include "pipelines/scene/scene_stats.h"
 #include "pipelines/scene/transform.h"
 
 namespace fs = std::filesystem;
@@ -169,6 +170,17 @@ TEST(SceneBpt, BuiltinTeapotSplitsBodyAndLidOnTwoNodes) {
   EXPECT_NEAR(x.x, -1.0f, 1e-5f);
   glm::quat world = pose[size_t(bodyNode)].rotation * pose[size_t(lidNode)].rotation;
   EXPECT_NEAR(std::fabs(world.w), 1.0f, 1e-5f) << "lid turns against the body";
+}
+
+TEST(SceneBpt, StatisticsCountPatchesAndTheirTessellatedVertices) {
+  auto s = mb::loadScene("teapot");
+  ASSERT_TRUE(s) << s.error();
+  mb::FileStats f = mb::computeFileStats(*s);
+  EXPECT_EQ(f.patches, 32);
+  EXPECT_EQ(f.vertices, 0) << "no stored vertices";
+  EXPECT_EQ(f.drawnVertices, 32 * 17 * 17) << "level 16: (16+1)^2 per patch";
+  s->patchLevel = 64;
+  EXPECT_EQ(mb::computeFileStats(*s).drawnVertices, 32 * 65 * 65);
 }
 
 TEST(SceneBpt, PatchPrimitiveExtensionIsValidated) {
