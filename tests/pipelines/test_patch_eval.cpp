@@ -11,7 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "patch_test_support.h"
+#include "tests/support/patch_test_support.h"
 #include "shaders/shim/counted.h"
 
 namespace {

@@ -10,8 +10,8 @@
 #include <map>
 #include <tuple>
 
-#include "harness/render_frame.h"
-#include "patch_test_support.h"
+#include "harness/render/render_frame.h"
+#include "tests/support/patch_test_support.h"
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
 #include "pipelines/gl/patch_geometry.h"

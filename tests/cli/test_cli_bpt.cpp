@@ -5,7 +5,7 @@
 
 #include <sstream>
 
-#include "tests/cli_test_support.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 
