@@ -64,7 +64,7 @@ void summary(Document& d, const json& r) {
   row("floats per joint (skinned scenes)", fromSpread("floatsPerJoint", 3));
   row("load-time conversion [ms]", fromSpread("conversionMs", 3));
   const json& ops = r["opsPerVertex"];
-  for (const char* label : {"rigid", "skinned", "scaled fallback"})
+  for (const char* label : {"rigid", "skinned", "scaled fallback", "bezier patch"})
     for (const char* way : {"counted", "spirv"}) {
       bool any = false;
       for (const json& v : ops.value("variants", json::array())) any = any || v.value("label", "") == label;

@@ -115,3 +115,25 @@ TEST(VertexOps, EveryVariantNamesCountedKernels) {
 }
 
 }  // namespace
+
+namespace {
+
+// Bezier patches (issue 14): the shared evaluation and each pipeline's frame, by hand.
+TEST(VertexOps, PatchKernelsMatchHandDerivedCounts) {
+  auto c = countedByFunction();
+  // Bases 2 x (8/1) + 2 x (6/1); four rows 4 x (21/24); P and dP/du 2 x (12/9); dP/dv 9/15;
+  // two squared lengths 6/4; the relative degenerate test 2 mul (an interior vertex).
+  expectCounts(c["bezierPatch"], {153, 137}, "bezierPatch");
+  // cross 6/3 + three mat4 * vec4 48/36 + handedness 1/0.
+  expectCounts(c["matrixPatchVertex"], {55, 39}, "matrixPatchVertex");
+  // (a): sw_mp 21/18 after the scale 3/0, two sw_md 2 x (18/12), cross 6/3.
+  expectCounts(c["motorPatchVertex"], {66, 45}, "motorPatchVertex");
+  // (a) scaled: three scalings 9/0, sw_mp 21/18, two sw_md 36/24, cross 6/3, mirror = sign of
+  // a product 2/0 + 1 other, mirror * normal 3/0.
+  expectCounts(c["motorScaledPatchVertex"], {77, 45, 0, 0, 1}, "motorScaledPatchVertex");
+  // (b) builds a rotor per vertex: more than (a) whatever branch it takes.
+  const OpCounts b = c["motorPatchVertexRotor"];
+  EXPECT_GT(b.mul + b.add + b.div + b.sqrt + b.other, 66u + 45u);
+}
+
+}  // namespace
