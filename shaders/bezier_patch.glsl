@@ -10,7 +10,7 @@
 // Crack-free edges: along a patch edge every weight of the other rows/columns is exactly 0
 // and the edge's own weights are computed symmetrically in t and 1 - t, and sums pair the
 // ends and the middles, so two patches sharing an edge (either direction, row or column)
-// compute bit-identical positions on the CPU (tests/test_patch_eval.cpp checks the teapot).
+// compute bit-identical positions on the CPU (tests/pipelines/test_patch_eval.cpp checks the teapot).
 
 #ifndef MB_BEZIER_PATCH_GLSL
 #define MB_BEZIER_PATCH_GLSL
@@ -56,7 +56,7 @@ mat2x3 bezierRow(mat4x3 row, vec4 b, vec3 d) {
 // v = 1), and the same for a collapsed column and dP/dv. The test is relative (|dP/du|^2 <=
 // 1e-12 |dP/dv|^2) so scale does not matter; interior vertices never take it.
 // counted: 153 mul, 137 add at an ordinary vertex; +9 mul, +15 add on a degenerate edge
-// (tests/test_patch_eval.cpp)
+// (tests/pipelines/test_patch_eval.cpp)
 mat3 bezierPatch(mat4x3 r0, mat4x3 r1, mat4x3 r2, mat4x3 r3, vec2 uv) {
   vec4 bu = bernstein3(uv.x), bv = bernstein3(uv.y);
   vec3 du = bernstein2d(uv.x), dv = bernstein2d(uv.y);

@@ -67,7 +67,7 @@ vec4 frameRotor(vec3 t, vec3 n) {
 // composed with the world motor's rotor (gp_rr) and decoded (extractNormalTangent), the
 // stored-rotor path of motor_transform.glsl with the rotor built per vertex.
 // counted: 75 mul, 56 add, 3 div, 1 sqrt, 2 inversesqrt where the frame's trace is <= 0;
-// by hand, 71 mul, 54 add, 1 div, 3 inversesqrt where it is > 0 (tests/test_patch_eval.cpp
+// by hand, 71 mul, 54 add, 1 div, 3 inversesqrt where it is > 0 (tests/pipelines/test_patch_eval.cpp
 // counts the first)
 mat3x4 motorPatchVertexRotor(motor toWorld, float scale, mat3 surface) {
   vec4 r = frameRotor(normalize(surface[1]), normalize(cross(surface[1], surface[2])));

@@ -46,7 +46,7 @@ void pushTurn(std::vector<float>& out, float turns) {
 void buildTeapot(GlbBuilder& b) {
   auto parsed = parseBpt(teapotBpt(), "teapot.bpt");
   std::vector<glm::vec3> body, lid;
-  if (parsed)  // the embedded file is checked by tests/test_scene_bpt.cpp
+  if (parsed)  // the embedded file is checked by tests/scene/test_scene_bpt.cpp
     for (size_t i = 0; i < parsed->size(); ++i) {
       size_t patch = i / 16;
       (patch >= size_t(kLidFirst) && patch <= size_t(kLidLast) ? lid : body).push_back((*parsed)[i]);
