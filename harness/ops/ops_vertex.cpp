@@ -146,10 +146,11 @@ VertexOps measureVertexOps() {
     VariantRow row{v, {}, Counts{}, std::nullopt, "", ""};
     for (const std::string& fn : v.kernels)
       for (const KernelRow& k : ops.kernels)
-        if (k.kernel.function == fn && k.kernel.pipeline == v.pipeline) {
+        if (k.kernel.function == fn && k.kernel.pipeline == v.pipeline) {  // once each
           row.counted += k.counted;
           if (row.probes && k.optimised) *row.probes += *k.optimised;
           else row.probes.reset();
+          break;
         }
     if (ops.toolsProblem.empty()) {
       auto expanded = gl::expandShaderFile(v.file, v.defines);
