@@ -112,7 +112,9 @@ std::string variantWhy(const VariantRow& v) {
     add("in main() outside the transform functions: " + outside +
         (d.empty() ? "" : " (" + d + ")"));
   }
-  if (v.shader->intOps > v.probes->intOps) add(v.variant.file.find("patch") != std::string::npos ? "integer ops: control-point texel indexing" : "integer ops: joint palette indexing");
+  if (v.shader->intOps > v.probes->intOps)
+    add(v.variant.file.find("patch") != std::string::npos ? "integer ops: control-point texel indexing"
+                                                           : "integer ops: joint palette indexing");
   return why;
 }
 
