@@ -66,9 +66,9 @@ vec4 frameRotor(vec3 t, vec3 n) {
 // Motor path (b), counted and reported, not drawn: the object-space frame as a tangent rotor,
 // composed with the world motor's rotor (gp_rr) and decoded (extractNormalTangent), the
 // stored-rotor path of motor_transform.glsl with the rotor built per vertex.
-// counted: 75 mul, 56 add, 3 div, 1 sqrt, 2 inversesqrt where the frame's trace is <= 0;
-// by hand, 71 mul, 54 add, 1 div, 3 inversesqrt where it is > 0 (tests/pipelines/test_patch_eval.cpp
-// counts the first)
+// counted: 75 mul, 56 add, 3 div, 1 sqrt, 2 inversesqrt where the frame's trace is <= 0
+// (tests/pipelines/test_patch_eval.cpp); 77 mul, 54 add, 1 div, 3 inversesqrt where it is > 0
+// (tests/ops/test_pga_vertex_ops.cpp, motorbench ops)
 mat3x4 motorPatchVertexRotor(motor toWorld, float scale, mat3 surface) {
   vec4 r = frameRotor(normalize(surface[1]), normalize(cross(surface[1], surface[2])));
   mat2x3 nt = extractNormalTangent(gp_rr(toWorld, motor(r, vec4(0.0))));

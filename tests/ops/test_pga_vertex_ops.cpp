@@ -131,9 +131,13 @@ TEST(VertexOps, PatchKernelsMatchHandDerivedCounts) {
   // (a) scaled: three scalings 9/0, sw_mp 21/18, two sw_md 36/24, cross 6/3, mirror = sign of
   // a product 2/0 + 1 other, mirror * normal 3/0.
   expectCounts(c["motorScaledPatchVertex"], {77, 45, 0, 0, 1}, "motorScaledPatchVertex");
-  // (b) builds a rotor per vertex: more than (a) whatever branch it takes.
+  // (b) at these inputs (frame trace > 0): normalize(dP/du) 6/2 + 1 inversesqrt; cross 6/3
+  // and its normalize 6/2 + 1 inversesqrt; frameRotor: bitangent cross 6/3, trace 0/2,
+  // 0.5 inversesqrt(trace + 1) 1/1 + 1 inversesqrt, three differences times s 3/3, 0.25 / s
+  // 1 div; gp_rr 16/12; extractNormalTangent 9/8; sw_mp 21/18 after the scale 3/0.
   const OpCounts b = c["motorPatchVertexRotor"];
-  EXPECT_GT(b.mul + b.add + b.div + b.sqrt + b.other, 66u + 45u);
+  expectCounts(b, {77, 54, 1, 0, 3}, "motorPatchVertexRotor (b)");
+  EXPECT_GT(b.mul + b.add, 66u + 45u) << "(a) is the cheaper frame, the one drawn";
 }
 
 }  // namespace
