@@ -390,6 +390,9 @@ inline std::vector<ShaderVariant> shaderVariants() {
   const std::string ref = "the Sample Viewer's: skin, then u_ModelMatrix per vertex";
   const std::string world = "joint world * inverse bind; no model matrix per vertex";
   using D = std::vector<std::pair<std::string, std::string>>;
+  const std::string affineMain =
+      "main() normalises normal and tangent for the varyings, as matrix.vs (the position's w is "
+      "1: no divide)";
   return {
       {"matrix", "matrix.vs", {}, "rigid", {"matrixRigidVertex", "matrixWorldToClip"}, matrixMain},
       {"matrix", "matrix.vs", {{"SKINNED", ""}}, "skinned", {"matrixSkinnedVertex", "matrixWorldToClip"},
@@ -417,17 +420,17 @@ inline std::vector<ShaderVariant> shaderVariants() {
        {"motorScaledVertex", "motorWorldToClip"}},
       {"motor", "motor.vs", D{{"MB_SKINNED", ""}, {"MB_SCALE_FALLBACK", ""}}, "skinned+scaled",
        {"motorBlendJoints", "motorScaledVertex", "motorWorldToClip"}},
-      {"affine", "affine.vs", {}, "rigid", {"matrixAffineVertex", "matrixWorldToClip"}, matrixMain},
+      {"affine", "affine.vs", {}, "rigid", {"matrixAffineVertex", "matrixWorldToClip"}, affineMain},
       {"affine", "affine.vs", {{"MB_SKINNED", ""}}, "skinned",
-       {"affineSkinnedVertex", "matrixWorldToClip"}, matrixMain},
+       {"affineSkinnedVertex", "matrixWorldToClip"}, affineMain},
       {"qtangent", "affine.vs", {{"MB_QTANGENT", ""}}, "rigid",
-       {"qtangentRigidVertex", "matrixWorldToClip"}, matrixMain},
+       {"qtangentRigidVertex", "matrixWorldToClip"}, affineMain},
       {"qtangent", "affine.vs", {{"MB_QTANGENT", ""}, {"MB_SKINNED", ""}}, "skinned",
-       {"qtangentSkinnedVertex", "matrixWorldToClip"}, matrixMain},
+       {"qtangentSkinnedVertex", "matrixWorldToClip"}, affineMain},
       {"hybrid", "affine.vs", {{"MB_QTANGENT", ""}}, "rigid",
-       {"qtangentRigidVertex", "matrixWorldToClip"}, matrixMain + "; the GPU side of qtangent"},
+       {"qtangentRigidVertex", "matrixWorldToClip"}, affineMain + "; the GPU side of qtangent"},
       {"hybrid", "affine.vs", {{"MB_QTANGENT", ""}, {"MB_SKINNED", ""}}, "skinned",
-       {"qtangentSkinnedVertex", "matrixWorldToClip"}, matrixMain + "; the GPU side of qtangent"},
+       {"qtangentSkinnedVertex", "matrixWorldToClip"}, affineMain + "; the GPU side of qtangent"},
       {"motor_q", "motor.vs", {{"MB_PROJECT_CONSTANTS", ""}}, "rigid",
        {"motorRigidVertex", "motorWorldToClipConstants"}},
       {"motor_q", "motor.vs", {{"MB_SKINNED", ""}, {"MB_PROJECT_CONSTANTS", ""}}, "skinned",
