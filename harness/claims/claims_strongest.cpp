@@ -61,8 +61,11 @@ Claim judge(const Figure& f) {
     c.verdictText = "not measurable here: " + (f.missing.empty() ? "no value for matrix or motor" : f.missing);
     return c;
   }
+  // Registry order breaks ties: a matrix pipeline before hybrid, motor before motor_q.
   std::string strongest, bestMotor;
-  for (const auto& [p, v] : f.values) {
+  for (const std::string& p : pipelineNames()) {
+    if (!f.values.count(p)) continue;
+    const double v = f.values.at(p);
     if (motorSide(p)) {
       if (bestMotor.empty() || v < f.values.at(bestMotor)) bestMotor = p;
     } else if (!(f.excludeHybrid && p == "hybrid")) {
