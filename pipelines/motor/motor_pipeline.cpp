@@ -101,6 +101,7 @@ Status MotorPipeline::prepare(const Scene& scene) {
   auto interleave = [this](const Primitive& p) {
     motor::VertexStream stream = motor::interleaveVertices(p);
     stats_.zeroScalarFrames += stream.zeroScalarFrames;
+    stats_.biasedFrames += motor::countBiasedFrames(stream.data);
     return std::move(stream.data);
   };
   if (variant_.quantizedFrame) {

@@ -15,6 +15,13 @@ glm::vec4 dequantizeRotor(const int16_t q[4]) {
   return {gl::fromSnorm16(q[0]), gl::fromSnorm16(q[1]), gl::fromSnorm16(q[2]), gl::fromSnorm16(q[3])};
 }
 
+int countBiasedFrames(const std::vector<float>& motorVertices) {
+  int n = 0;
+  for (size_t v = 3; v < motorVertices.size(); v += size_t(kFloatsPerVertex))
+    n += std::abs(motorVertices[v]) == companion::kMinTangentScalar;
+  return n;
+}
+
 std::vector<gl::PackedAttribute> quantizedAttributes() {
   return {{3, GL_FLOAT, false}, {4, GL_SHORT, true}, {2, GL_FLOAT, false}};
 }
@@ -26,10 +33,10 @@ PackedStream interleaveQuantized(const Primitive& p) {
   const size_t stride = size_t(kFloatsPerVertex);
   PackedStream out;
   out.zeroScalarFrames = f.zeroScalarFrames;
+  out.biasedFrames = countBiasedFrames(f.data);
   out.bytes.reserve(p.positions.size() * 28);
   for (size_t v = 0; v + stride <= f.data.size(); v += stride) {
     const float* x = &f.data[v];
-    out.biasedFrames += std::abs(x[3]) == companion::kMinTangentScalar;
     int16_t q[4];
     quantizeRotor({x[3], x[4], x[5], x[6]}, q);
     gl::appendBytes(out.bytes, x, 3);

@@ -28,6 +28,10 @@ void quantizeRotor(const glm::vec4& rotor, int16_t out[4]);
 // What the GPU reads back from quantizeRotor's values (GL's SNORM rule).
 glm::vec4 dequantizeRotor(const int16_t q[4]);
 
+// Frames of motor::interleaveVertices' float stream that the bias rule changed (their scalar
+// is exactly +-1/32767, where companion::encodeTangentRotor puts a clamped one).
+int countBiasedFrames(const std::vector<float>& motorVertices);
+
 // The vertex formats of the stream, in location order.
 std::vector<gl::PackedAttribute> quantizedAttributes();
 

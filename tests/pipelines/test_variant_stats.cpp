@@ -64,6 +64,7 @@ TEST(VariantStats, BiasRuleFramesAreCounted) {
   EXPECT_GT(q.zeroScalarFrames, 0);
   EXPECT_EQ(q.zeroScalarFrames, motor.zeroScalarFrames);
   EXPECT_GE(q.biasedFrames, q.zeroScalarFrames);
+  EXPECT_EQ(q.biasedFrames, motor.biasedFrames);  // the same rule on the float rotors
   EXPECT_GT(render(box, "qtangent").stats.biasedFrames, 0);
   EXPECT_EQ(render(box, "affine").stats.biasedFrames, 0);  // float frames need no bias
 }
