@@ -13,7 +13,7 @@
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
-#include "pipelines/matrix/matrix_vertices.h"
+#include "pipelines/affine/affine_vertices.h"
 
 namespace mb::affine {
 namespace {
@@ -87,7 +87,7 @@ Status AffinePipeline::prepare(const Scene& scene) {
     };
     geometry_.uploadPacked(scene, interleave, qtangentAttributes(), stats_);
   } else {
-    geometry_.upload(scene, matrix::interleaveVertices, {3, 3, 4, 2}, stats_);  // pos, n, t, uv
+    geometry_.upload(scene, interleaveFullFrame, {3, 3, 4, 2}, stats_);  // pos, n, t, uv
   }
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);

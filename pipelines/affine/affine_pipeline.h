@@ -13,7 +13,7 @@ namespace mb {
 namespace affine {
 
 enum class FrameFormat {
-  Float,     // matrix::interleaveVertices: position, normal, tangent, uv (48 bytes)
+  Float,     // interleaveFullFrame: position, normal, tangent, uv (48 bytes)
   QTangent,  // interleaveQTangent: position, int16x4 quaternion, uv (28 bytes)
 };
 

@@ -4,7 +4,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "pipelines/matrix/matrix_vertices.h"
+#include "pipelines/affine/affine_vertices.h"
 
 namespace mb::affine {
 
@@ -32,8 +32,8 @@ std::vector<gl::PackedAttribute> qtangentAttributes() {
 }
 
 PackedStream interleaveQTangent(const Primitive& p) {
-  const std::vector<float> f = matrix::interleaveVertices(p);  // pos 3, normal 3, tangent 4, uv 2
-  const size_t stride = size_t(matrix::kFloatsPerVertex);
+  const std::vector<float> f = interleaveFullFrame(p);  // pos 3, normal 3, tangent 4, uv 2
+  const size_t stride = size_t(kFloatsPerVertex);
   PackedStream out;
   out.bytes.reserve(p.positions.size() * 28);
   for (size_t v = 0; v + stride <= f.size(); v += stride) {

@@ -34,7 +34,7 @@ struct PackedStream {
 std::vector<gl::PackedAttribute> qtangentAttributes();
 
 // `p`'s vertices in the QTangent layout. Absent streams are filled exactly as the matrix
-// pipeline fills them (its interleaving is reused), so both shade the same frames.
+// pipelines fill them (affine_vertices.h), so all shade the same frames.
 PackedStream interleaveQTangent(const Primitive& p);
 
 }  // namespace mb::affine
