@@ -42,6 +42,8 @@ struct PipelineStats {
   int negativeScaleNodes = 0;
   int shearMatrixNodes = 0;
   int zeroScalarFrames = 0;           // tangent rotors whose scalar part was exactly 0
+  int biasedFrames = 0;               // frames whose scalar |s| (rotor) or |w| (quaternion) the
+                                      // bias rule raised to 1/32767 so the handedness survives
 };
 
 // Where a skinned vertex reaches world space (issue 18: compare both pipelines in the same

@@ -1,4 +1,6 @@
 // Name -> factory for every pipeline. One line per pipeline.
+#include "pipelines/affine/affine_pipeline.h"
+#include "pipelines/hybrid/hybrid_pipeline.h"
 #include "pipelines/curved/curved_pipeline.h"
 #include "pipelines/matrix/matrix_pipeline.h"
 #include "pipelines/motor/motor_pipeline.h"
@@ -14,6 +16,10 @@ struct Entry {
 const Entry kPipelines[] = {
     {"matrix", makeMatrixPipeline, Space::Euclidean},
     {"motor", makeMotorPipeline, Space::Euclidean},
+    {"affine", makeAffinePipeline, Space::Euclidean},
+    {"qtangent", makeQtangentPipeline, Space::Euclidean},
+    {"motor_q", makeMotorQPipeline, Space::Euclidean},
+    {"hybrid", makeHybridPipeline, Space::Euclidean},
     {"s3_matrix", makeS3MatrixPipeline, Space::Spherical},
     {"s3_motor", makeS3MotorPipeline, Space::Spherical},
     {"h3_matrix", makeH3MatrixPipeline, Space::Hyperbolic},

@@ -10,6 +10,8 @@
 //   MB_SKIN_REFERENCE with MB_SKINNED: the paper's form, joint motors relative to the mesh
 //                     node and toWorld = gp(u_World, blend) per vertex (issue 18; the default
 //                     palette is in world space and u_World is not used)
+//   MB_PROJECT_CONSTANTS world to clip with per-frame constants u_ProjectionK
+//                     (motorWorldToClipConstants) instead of project()'s per-vertex form
 #include "pga.glsl"
 #include "motor_transform.glsl"
 
@@ -30,6 +32,9 @@ uniform float u_Scale;
 // Per frame: world -> view motor and the projection (near, far, vertical fov, aspect).
 uniform vec4 u_Camera[2];
 uniform vec4 u_Projection;
+#ifdef MB_PROJECT_CONSTANTS
+uniform vec4 u_ProjectionK;  // motorProjectionConstants(near, far, fov, aspect)
+#endif
 
 #ifdef MB_SKINNED
 layout(location = 6) in uvec4 a_joints;
@@ -69,6 +74,10 @@ void main() {
   v_uv0 = a_uv0;
   v_uv1 = a_uv1;
   v_color = a_color;
+#ifdef MB_PROJECT_CONSTANTS
+  gl_Position = motorWorldToClipConstants(motor(u_Camera[0], u_Camera[1]), v[0].xyz, u_ProjectionK);
+#else
   gl_Position = motorWorldToClip(motor(u_Camera[0], u_Camera[1]), v[0].xyz, u_Projection.x,
                                  u_Projection.y, u_Projection.z, u_Projection.w);
+#endif
 }

@@ -85,4 +85,23 @@ vec4 motorWorldToClip(motor camera, vec3 worldPosition, float znear, float zfar,
   return project(znear, zfar, yfov, aspect, sw_mp(camera, worldPosition));
 }
 
+// project()'s constants, evaluated once per frame on the CPU instead of per vertex (the matrix
+// side builds its projection matrix once per frame too): (x scale, y scale, depth offset,
+// depth slope) = (-cot(fov/2) / aspect, cot(fov/2), 2 f n / (n - f), (n + f) / (n - f)).
+// counted: 4 mul, 3 add, 4 div, 1 sin, 1 cos (once per frame)
+vec4 motorProjectionConstants(float znear, float zfar, float yfov, float aspect) {
+  float cthf = cos(0.5 * yfov) / sin(0.5 * yfov);
+  return vec4(-cthf / aspect, cthf, 2.0 * zfar * znear / (znear - zfar),
+              (znear + zfar) / (znear - zfar));
+}
+
+// World to clip with motorProjectionConstants' `k`: the camera sandwich and project()'s
+// per-vertex part only. Same result as motorWorldToClip (the paper's form, which recomputes
+// the constants per vertex; both are counted by `motorbench ops`).
+// counted: 24 mul, 19 add (sw_mp 21/18, projection 3/1)
+vec4 motorWorldToClipConstants(motor camera, vec3 worldPosition, vec4 k) {
+  vec3 p = sw_mp(camera, worldPosition);
+  return vec4(p.xy * k.xy, k.z - k.w * p.z, p.z);
+}
+
 #endif  // MB_MOTOR_TRANSFORM_GLSL

@@ -6,6 +6,7 @@
 //   claims_skinning.cpp  volume kept by motor skinning vs LBS (candy wrapper)
 //   claims_baselines.cpp affine matrix path, full world-to-clip, skinning per vertex
 //   claims_curved.cpp    curved space (issue 15): S3 / H3 matrix vs motor
+//   claims_strongest.cpp the paper's verdicts against the strongest matrix variant measured
 #pragma once
 #include <string>
 #include <vector>
@@ -31,6 +32,8 @@ struct SpeedInputs {
   nlohmann::json frameTimes;
   std::string frameSource;
   std::string missing;         // why some input is absent
+  // {scene id: timing JSON of report_timing.h (every timed pipeline)}, or null.
+  nlohmann::json timings;
 };
 std::vector<Claim> speedClaims(const SpeedInputs& in);
 
@@ -47,5 +50,10 @@ std::vector<Claim> baselineClaims();
 // Curved space (section "Curved space"): floats per instance, ops per vertex, frame time
 // (when `runTiming`, `frames` per pipeline), drift over 10^6 steps. Needs GL.
 std::vector<Claim> curvedClaims(bool runTiming, int frames);
+
+// Every pipeline's bytes per vertex, floats per transform and joint (renders of built-in
+// scenes), ops per vertex (counted and SPIR-V) and time ratios (`timings`: {scene: timing JSON},
+// or null), the motor pipeline judged against the best matrix-side pipeline (issue 16).
+std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource);
 
 }  // namespace mb::claims

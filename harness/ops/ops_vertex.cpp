@@ -193,15 +193,15 @@ std::string formatVertexOps(const VertexOps& ops) {
   }
   out += "\nWhole vertex-shader variants (main(), spirv-opt -O) vs the counted kernels they call\n"
          "(transform + world to clip); 'int' = integer index arithmetic, not in the columns:\n\n";
-  line("%-10s %-30s %-34s %-14s %-14s %4s  %s\n", "shader", "defines", "variant", "counted",
-       "SPIR-V", "int", "difference");
+  line("%-9s %-10s %-30s %-34s %-14s %-14s %4s  %s\n", "pipeline", "shader", "defines", "variant",
+       "counted", "SPIR-V", "int", "difference");
   for (const VariantRow& v : ops.variants) {
-    line("%-10s %-30s %-34s %-14s %-14s %4s  %s\n", v.variant.file.c_str(),
+    line("%-9s %-10s %-30s %-34s %-14s %-14s %4s  %s\n", v.variant.pipeline.c_str(), v.variant.file.c_str(),
          describeDefines(v.variant).c_str(), v.variant.label.c_str(), text(v.counted).c_str(),
          v.shader ? spirv::shortText(*v.shader).c_str() : "-",
          v.shader ? std::to_string(v.shader->intOps).c_str() : "-",
          !v.error.empty() ? v.error.c_str() : v.why.empty() ? "none" : v.why.c_str());
-    if (!v.variant.note.empty()) line("%-10s   note: %s\n", "", v.variant.note.c_str());
+    if (!v.variant.note.empty()) line("%-20s   note: %s\n", "", v.variant.note.c_str());
   }
   return out;
 }

@@ -38,6 +38,7 @@ struct VertexKernel {
 namespace detail {
 
 using MC = MatrixShader<Counted>;
+using AC = AffineShader<Counted>;
 using PC = MotorShader<Counted>;
 using PD = Pga<double>;
 
@@ -45,8 +46,9 @@ using PD = Pga<double>;
 // in double, matrices with arbitrary entries (counting does not depend on the values).
 struct VertexInputs {
   MC::mat4 model, normal, viewProj, j[4], n[4];
-  MC::mat4x3 affine;
-  MC::mat3 affineNormal;
+  MC::mat4x3 affine, affineJoints[4];
+  MC::mat3 affineNormal, affineNormals[4];
+  MC::vec4 qtangent;
   MC::vec3 position, normalV;
   MC::vec4 tangent, weights, world;
   PC::motor toWorld, camera, joints[4];
@@ -64,6 +66,13 @@ struct VertexInputs {
       for (int r = 0; r < 3; ++r) affine[c][r] = Counted(0.3 + 0.4 * c - 0.25 * r);
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r) affineNormal[c][r] = Counted(-0.6 + 0.3 * c + 0.2 * r);
+    for (int i = 0; i < 4; ++i) {
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 3; ++r) affineJoints[i][c][r] = Counted(0.1 * i + 0.3 + 0.4 * c - 0.25 * r);
+      for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) affineNormals[i][c][r] = Counted(-0.1 * i - 0.6 + 0.3 * c + 0.2 * r);
+    }
+    qtangent = MC::vec4(0.5, -0.5, 0.5, -0.5);  // handedness -1
     position = MC::vec3(0.5, -1.25, 2.0), normalV = MC::vec3(0.36, 0.48, 0.8);
     tangent = MC::vec4(0.8, -0.6, 0.1, -1.0), weights = MC::vec4(0.4, 0.3, 0.2, 0.1);
     world = MC::vec4(1.5, 0.25, -3.0, 1.0);
@@ -99,6 +108,11 @@ inline const char* kMotorAttribs =
     "layout(location = 0) out vec4 o_0; layout(location = 1) out vec4 o_1;\n"
     "layout(location = 2) out vec4 o_2;\n";
 inline const char* kStore3 = "o_0 = v[0]; o_1 = v[1]; o_2 = v[2];";
+inline const char* kQTangentAttribs =
+    "layout(location = 0) in vec3 a_position; layout(location = 1) in vec4 a_qtangent;\n"
+    "layout(location = 7) in vec4 a_weights;\n"
+    "layout(location = 0) out vec4 o_0; layout(location = 1) out vec4 o_1;\n"
+    "layout(location = 2) out vec4 o_2;\n";
 
 }  // namespace detail
 
@@ -147,9 +161,14 @@ inline std::vector<VertexKernel> vertexKernels() {
   using namespace detail;
   static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
   static MC M;
+  static AC A;
   static PC P;
   const std::string matrixIncl = "#include \"matrix_transform.glsl\"\n";
   const std::string motorIncl = "#include \"pga.glsl\"\n#include \"motor_transform.glsl\"\n";
+  const std::string affineIncl = "#include \"affine_transform.glsl\"\n";
+  const std::string affineJoints = "uniform mat4x3 u_j[4]; uniform float u_mirror;\n";
+  const auto& aj = in.affineJoints;
+  const auto& an = in.affineNormals;
   const std::string store = kStore3;
   return {
       {"matrix", "rigid vertex with frame", "matrixRigidVertex",
@@ -224,6 +243,55 @@ inline std::vector<VertexKernel> vertexKernels() {
        matrixIncl + kMatrixAttribs +
            "uniform mat4x3 u_model; uniform mat3 u_normal; uniform float u_mirror;\n",
        ""},
+      {"affine", "skinned vertex (4 joints)", "affineSkinnedVertex",
+       [&] {
+         A.affineSkinnedVertex(aj[0], aj[1], aj[2], aj[3], in.weights, 1.0, in.position,
+                               in.normalV, in.tangent);
+       },
+       "mat3x4 v = affineSkinnedVertex(u_j[0], u_j[1], u_j[2], u_j[3], a_weights, u_mirror, "
+       "a_position, a_normal, a_tangent);" + store,
+       affineIncl + kMatrixAttribs + affineJoints,
+       "mat4x3 per joint (joint world * inverse bind, no model matrix after); normal through the "
+       "cofactor of the blended matrix (18 mul, 9 add), cheaper than blending a mat3 normal "
+       "matrix per joint (affineSkinnedNormalsVertex)"},
+      {"affine", "joint blend (4 joints)", "affineBlendJoints",
+       [&] { A.affineBlendJoints(aj[0], aj[1], aj[2], aj[3], in.weights); },
+       "mat4x3 m = affineBlendJoints(u_j[0], u_j[1], u_j[2], u_j[3], a_weights); "
+       "o_0 = vec4(m[0], m[1].x); o_1 = vec4(m[1].yz, m[2].xy); o_2 = vec4(m[2].z, m[3]);",
+       affineIncl + kMatrixAttribs + affineJoints, "part of the skinned vertex"},
+      {"affine", "rigid vertex, cofactor normal (alternative)", "affineAdjugateVertex",
+       [&] { A.affineAdjugateVertex(in.affine, 1.0, in.position, in.normalV, in.tangent); },
+       "mat3x4 v = affineAdjugateVertex(u_model, u_mirror, a_position, a_normal, a_tangent);" + store,
+       affineIncl + kMatrixAttribs + "uniform mat4x3 u_model; uniform float u_mirror;\n",
+       "not used: 12 floats per draw instead of 21, but 18 mul / 9 add more per vertex than the "
+       "uploaded mat3 of matrixAffineVertex"},
+      {"affine", "skinned, mat3 normal per joint (alternative)", "affineSkinnedNormalsVertex",
+       [&] {
+         A.affineSkinnedNormalsVertex(aj[0], aj[1], aj[2], aj[3], an[0], an[1], an[2], an[3],
+                                      in.weights, 1.0, in.position, in.normalV, in.tangent);
+       },
+       "mat3x4 v = affineSkinnedNormalsVertex(u_j[0], u_j[1], u_j[2], u_j[3], u_n[0], u_n[1], "
+       "u_n[2], u_n[3], a_weights, u_mirror, a_position, a_normal, a_tangent);" + store,
+       affineIncl + kMatrixAttribs + affineJoints + "uniform mat3 u_n[4];\n",
+       "not used: 21 floats per joint and more ops than the cofactor of affineSkinnedVertex"},
+      {"qtangent", "frame decode (int16 quaternion)", "qtangentFrame",
+       [&] { A.qtangentFrame(in.qtangent); },
+       "mat2x4 f = qtangentFrame(a_qtangent); o_0 = f[0]; o_1 = f[1];",
+       affineIncl + kQTangentAttribs, "normal and tangent columns of the quaternion's rotation"},
+      {"qtangent", "rigid vertex with frame", "qtangentRigidVertex",
+       [&] { A.qtangentRigidVertex(in.affine, in.affineNormal, 1.0, in.position, in.qtangent); },
+       "mat3x4 v = qtangentRigidVertex(u_model, u_normal, u_mirror, a_position, a_qtangent);" + store,
+       affineIncl + kQTangentAttribs +
+           "uniform mat4x3 u_model; uniform mat3 u_normal; uniform float u_mirror;\n",
+       "qtangentFrame + matrixAffineVertex"},
+      {"qtangent", "skinned vertex (4 joints)", "qtangentSkinnedVertex",
+       [&] {
+         A.qtangentSkinnedVertex(aj[0], aj[1], aj[2], aj[3], in.weights, 1.0, in.position,
+                                 in.qtangent);
+       },
+       "mat3x4 v = qtangentSkinnedVertex(u_j[0], u_j[1], u_j[2], u_j[3], a_weights, u_mirror, "
+       "a_position, a_qtangent);" + store,
+       affineIncl + kQTangentAttribs + affineJoints, "qtangentFrame + affineSkinnedVertex"},
       {"motor", "rigid vertex with frame", "motorRigidVertex",
        [&] { P.motorRigidVertex(in.toWorld, 1.25, in.position, in.rotor); },
        "mat3x4 v = motorRigidVertex(motor(u_world[0], u_world[1]), u_scale, a_position, "
@@ -272,6 +340,16 @@ inline std::vector<VertexKernel> vertexKernels() {
        "project() recomputes its per-draw constants (cot of half the fov, depth terms: 6 mul, "
        "3 add, 4 div, 1 sin, 1 cos) per vertex, in the shim and in the SPIR-V alike; per "
        "vertex proper: sw_mp + 3 mul, 1 add"},
+      {"motor_q", "world to clip (per-frame constants)", "motorWorldToClipConstants",
+       [&] {
+         P.motorWorldToClipConstants(in.camera, PC::vec3(1.5, 0.25, -3.0),
+                                     PC::vec4(-1.2, 1.8, -0.1, -1.001));
+       },
+       "gl_Position = motorWorldToClipConstants(motor(u_camera[0], u_camera[1]), a_world, u_k);",
+       motorIncl + "uniform vec4 u_camera[2]; uniform vec4 u_k;\n"
+                   "layout(location = 0) in vec3 a_world;\n",
+       "project() with its constants computed once per frame (motorProjectionConstants) as the "
+       "matrix side builds its projection matrix once per frame"},
       {"motor", "scaled vertex (fallback)", "motorScaledVertex",
        [&] { P.motorScaledVertex(in.toWorld, PC::vec3(1.0, -2.0, 0.5), in.position, in.rotor); },
        "mat3x4 v = motorScaledVertex(motor(u_world[0], u_world[1]), u_scale3, a_position, "
@@ -312,6 +390,9 @@ inline std::vector<ShaderVariant> shaderVariants() {
   const std::string ref = "the Sample Viewer's: skin, then u_ModelMatrix per vertex";
   const std::string world = "joint world * inverse bind; no model matrix per vertex";
   using D = std::vector<std::pair<std::string, std::string>>;
+  const std::string affineMain =
+      "main() normalises normal and tangent for the varyings, as matrix.vs (the position's w is "
+      "1: no divide)";
   return {
       {"matrix", "matrix.vs", {}, "rigid", {"matrixRigidVertex", "matrixWorldToClip"}, matrixMain},
       {"matrix", "matrix.vs", {{"SKINNED", ""}}, "skinned", {"matrixSkinnedVertex", "matrixWorldToClip"},
@@ -339,6 +420,26 @@ inline std::vector<ShaderVariant> shaderVariants() {
        {"motorScaledVertex", "motorWorldToClip"}},
       {"motor", "motor.vs", D{{"MB_SKINNED", ""}, {"MB_SCALE_FALLBACK", ""}}, "skinned+scaled",
        {"motorBlendJoints", "motorScaledVertex", "motorWorldToClip"}},
+      {"affine", "affine.vs", {}, "rigid", {"matrixAffineVertex", "matrixWorldToClip"}, affineMain},
+      {"affine", "affine.vs", {{"MB_SKINNED", ""}}, "skinned",
+       {"affineSkinnedVertex", "matrixWorldToClip"}, affineMain},
+      {"qtangent", "affine.vs", {{"MB_QTANGENT", ""}}, "rigid",
+       {"qtangentRigidVertex", "matrixWorldToClip"}, affineMain},
+      {"qtangent", "affine.vs", {{"MB_QTANGENT", ""}, {"MB_SKINNED", ""}}, "skinned",
+       {"qtangentSkinnedVertex", "matrixWorldToClip"}, affineMain},
+      {"hybrid", "affine.vs", {{"MB_QTANGENT", ""}}, "rigid",
+       {"qtangentRigidVertex", "matrixWorldToClip"}, affineMain + "; the GPU side of qtangent"},
+      {"hybrid", "affine.vs", {{"MB_QTANGENT", ""}, {"MB_SKINNED", ""}}, "skinned",
+       {"qtangentSkinnedVertex", "matrixWorldToClip"}, affineMain + "; the GPU side of qtangent"},
+      {"motor_q", "motor.vs", {{"MB_PROJECT_CONSTANTS", ""}}, "rigid",
+       {"motorRigidVertex", "motorWorldToClipConstants"}},
+      {"motor_q", "motor.vs", {{"MB_SKINNED", ""}, {"MB_PROJECT_CONSTANTS", ""}}, "skinned",
+       {"motorSkinnedVertex", "motorWorldToClipConstants"}},
+      {"motor_q", "motor.vs", {{"MB_SCALE_FALLBACK", ""}, {"MB_PROJECT_CONSTANTS", ""}},
+       "scaled fallback", {"motorScaledVertex", "motorWorldToClipConstants"}},
+      {"motor_q", "motor.vs",
+       {{"MB_SKINNED", ""}, {"MB_SCALE_FALLBACK", ""}, {"MB_PROJECT_CONSTANTS", ""}},
+       "skinned+scaled", {"motorBlendJoints", "motorScaledVertex", "motorWorldToClipConstants"}},
       {"s3_matrix", "curved_matrix.vs", {{"MB_KAPPA", "1"}}, "S3 instance", {"curvedMatrixVertex"}, curvedMain},
       {"s3_motor", "curved_motor.vs", {{"MB_KAPPA", "1"}}, "S3 instance", {"curvedMotorVertex"}, curvedMain},
       {"h3_matrix", "curved_matrix.vs", {{"MB_KAPPA", "-1"}}, "H3 instance", {"curvedMatrixVertex"}, curvedMain},

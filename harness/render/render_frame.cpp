@@ -91,7 +91,8 @@ nlohmann::json toJson(const PipelineStats& s) {
           {"conversionMs", s.conversionMs}, {"updateMs", s.updateMs},
           {"nonUniformScaleNodes", s.nonUniformScaleNodes},
           {"negativeScaleNodes", s.negativeScaleNodes},
-          {"shearMatrixNodes", s.shearMatrixNodes}, {"zeroScalarFrames", s.zeroScalarFrames}};
+          {"shearMatrixNodes", s.shearMatrixNodes}, {"zeroScalarFrames", s.zeroScalarFrames},
+          {"biasedFrames", s.biasedFrames}};
 }
 
 nlohmann::json toJson(const FrameSettings& s) {

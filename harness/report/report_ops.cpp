@@ -1,6 +1,7 @@
 #include "harness/report/report_ops.h"
 
 #include "harness/ops/ops_vertex.h"
+#include "pipelines/pipeline.h"
 
 namespace mb::report {
 namespace {
@@ -63,7 +64,7 @@ json sceneOpsPerVertex(const json& ops, const json& mix) {
                scaled = mix.value("scaledFallback", 0.0), total = skinned + rigidAll;
   if (total <= 0) return nullptr;
   json out = json::object();
-  for (const std::string pipeline : {"matrix", "motor", "matrix-affine"}) {
+  for (const std::string& pipeline : pipelineNames()) {  // those with shader variants
     const json* rigid = findVariant(ops, pipeline, "rigid");
     const json* skin = findVariant(ops, pipeline, "skinned");
     const json* fb = findVariant(ops, pipeline, "scaled fallback");

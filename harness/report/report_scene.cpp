@@ -53,7 +53,8 @@ json fallbacksJson(const PipelineStats& s) {
   return {{"nonUniformScaleNodes", s.nonUniformScaleNodes},
           {"negativeScaleNodes", s.negativeScaleNodes},
           {"shearMatrixNodes", s.shearMatrixNodes},
-          {"zeroScalarFrames", s.zeroScalarFrames}};
+          {"zeroScalarFrames", s.zeroScalarFrames},
+          {"biasedFrames", s.biasedFrames}};
 }
 
 std::string timeText(float t) {

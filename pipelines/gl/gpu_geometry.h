@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pipelines/gl/gl_api.h"
+#include "pipelines/gl/packed_vertices.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/pipeline.h"
 
@@ -55,6 +56,12 @@ public:
               std::initializer_list<GLint> attributeSizes, PipelineStats& stats);
   // The same with a format chosen per primitive by `format`.
   void upload(const Scene& scene, const Format& format, PipelineStats& stats);
+  // The same for a vertex layout of mixed component types (pipelines/gl/packed_vertices.h):
+  // interleave(p) returns the bytes of p's vertices, `attributes` their formats in order on
+  // locations 0, 1, ... (packed_geometry.cpp).
+  using PackedInterleave = std::function<std::vector<uint8_t>(const Primitive&)>;
+  void uploadPacked(const Scene& scene, const PackedInterleave& interleave,
+                    const std::vector<PackedAttribute>& attributes, PipelineStats& stats);
   const GpuPrimitive& at(const DrawItem& d) const { return meshes_[size_t(d.mesh)][size_t(d.primitive)]; }
   void release();
 

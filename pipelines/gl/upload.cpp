@@ -51,4 +51,10 @@ void uniformMatrix3(GLint loc, int count, const float* columnMajor, uint64_t& co
   counter += size_t(count) * 9 * sizeof(float);
 }
 
+void uniformMatrix4x3(GLint loc, int count, const float* columnMajor, uint64_t& counter) {
+  if (loc < 0) return;
+  glUniformMatrix4x3fv(loc, count, GL_FALSE, columnMajor);
+  counter += size_t(count) * 12 * sizeof(float);
+}
+
 }  // namespace mb::gl

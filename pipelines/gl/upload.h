@@ -33,5 +33,7 @@ void uniform4f(GLint loc, const float* v, uint64_t& counter);   // one vec4
 void uniform4fv(GLint loc, int count, const float* v, uint64_t& counter);
 void uniformMatrix4(GLint loc, int count, const float* columnMajor, uint64_t& counter);
 void uniformMatrix3(GLint loc, int count, const float* columnMajor, uint64_t& counter);
+// GLSL mat4x3 (4 columns of 3 rows: an affine transform), 12 floats each.
+void uniformMatrix4x3(GLint loc, int count, const float* columnMajor, uint64_t& counter);
 
 }  // namespace mb::gl

@@ -20,6 +20,7 @@
 #include "pipelines/gl/upload.h"
 #include "pipelines/motor/motor_camera.h"
 #include "pipelines/motor/motor_rig.h"
+#include "pipelines/motor/motor_q_vertices.h"
 #include "pipelines/motor/motor_vertices.h"
 
 namespace mb {
@@ -42,8 +43,9 @@ DrawScale drawScale(float uniform, const glm::vec3& residual) {
 
 class MotorPipeline final : public Pipeline {
 public:
+  explicit MotorPipeline(const MotorVariant& variant) : variant_(variant) {}
   ~MotorPipeline() override { release(); }
-  std::string name() const override { return "motor"; }
+  std::string name() const override { return variant_.name; }
   void configure(const PipelineOptions& options) override {
     referenceSkin_ = options.skinSpace == SkinSpace::Reference;
   }
@@ -59,6 +61,7 @@ private:
   void uploadPalettes();
   void release();
 
+  MotorVariant variant_;
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][scale fallback]
   bool referenceSkin_ = false;
@@ -83,6 +86,7 @@ Status MotorPipeline::prepare(const Scene& scene) {
       if (skinned) defines.push_back({"MB_SKINNED", ""});
       if (skinned && referenceSkin_) defines.push_back({"MB_SKIN_REFERENCE", ""});
       if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
+      if (variant_.projectionConstants) defines.push_back({"MB_PROJECT_CONSTANTS", ""});
       auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
       if (!program) return Status::fail(program.error());
       programs_[skinned][fallback] = program.take();
@@ -97,9 +101,20 @@ Status MotorPipeline::prepare(const Scene& scene) {
   auto interleave = [this](const Primitive& p) {
     motor::VertexStream stream = motor::interleaveVertices(p);
     stats_.zeroScalarFrames += stream.zeroScalarFrames;
+    stats_.biasedFrames += motor::countBiasedFrames(stream.data);
     return std::move(stream.data);
   };
-  geometry_.upload(scene, interleave, {3, 4, 2}, stats_);  // position, tangent rotor, uv0
+  if (variant_.quantizedFrame) {
+    auto packed = [this](const Primitive& p) {
+      motor::PackedStream stream = motor::interleaveQuantized(p);
+      stats_.zeroScalarFrames += stream.zeroScalarFrames;
+      stats_.biasedFrames += stream.biasedFrames;
+      return std::move(stream.bytes);
+    };
+    geometry_.uploadPacked(scene, packed, motor::quantizedAttributes(), stats_);
+  } else {
+    geometry_.upload(scene, interleave, {3, 4, 2}, stats_);  // position, tangent rotor, uv0
+  }
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
   update(AnimState{});
@@ -138,6 +153,8 @@ void MotorPipeline::render(const View& view) {
   uploadPalettes();
   const motor::CameraMotor camera = motor::cameraFromView(view);
   const float projection[4] = {camera.znear, camera.zfar, camera.yfov, camera.aspect};
+  const MK::vec4 k =  // once per frame, not per vertex as project() does
+      mk().motorProjectionConstants(camera.znear, camera.zfar, camera.yfov, camera.aspect);
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (unused variants
   // upload nothing, so uniformBytesPerFrame counts what a frame needs).
@@ -149,6 +166,8 @@ void MotorPipeline::render(const View& view) {
       frameSet[skinned][fallback] = true;
       gl::uniform4fv(p.uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
       gl::uniform4f(p.uniform("u_Projection"), projection, stats_.uniformBytesPerFrame);
+      if (variant_.projectionConstants)
+        gl::uniform4f(p.uniform("u_ProjectionK"), &k[0], stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
     }
     return p;
@@ -203,6 +222,12 @@ void MotorPipeline::release() {
 
 }  // namespace
 
-std::unique_ptr<Pipeline> makeMotorPipeline() { return std::make_unique<MotorPipeline>(); }
+std::unique_ptr<Pipeline> makeMotorPipeline(const MotorVariant& variant) {
+  return std::make_unique<MotorPipeline>(variant);
+}
+std::unique_ptr<Pipeline> makeMotorPipeline() { return makeMotorPipeline(MotorVariant{}); }
+std::unique_ptr<Pipeline> makeMotorQPipeline() {
+  return makeMotorPipeline(MotorVariant{"motor_q", true, true});
+}
 
 }  // namespace mb

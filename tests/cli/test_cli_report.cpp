@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/cli_test_support.h"
+#include "pipelines/pipeline.h"
 
 namespace {
 
@@ -45,7 +46,7 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
     EXPECT_TRUE(r.contains(key)) << key;
   EXPECT_EQ(r["schema"], "motorbench-report/1");
   for (const char* key : {"cpu", "logicalCores", "gl", "lpNumThreads"}) EXPECT_TRUE(r["machine"].contains(key)) << key;
-  EXPECT_EQ(r["settings"]["pipelines"], json({"matrix", "motor"}));
+  EXPECT_EQ(r["settings"]["pipelines"], json(mb::pipelineNames()));  // every registered one, matrix first
   EXPECT_EQ(r["settings"]["width"], 64);
   ASSERT_EQ(r["scenes"].size(), 2u);
 

@@ -1,0 +1,196 @@
+// The affine pipelines' GL side. Per draw: u_ModelMatrix (mat4x3, 12 floats) and
+// u_NormalMatrix (mat3, 9 floats) for rigid draws (PipelineStats::floatsPerTransform = 21),
+// u_Mirror (sign(det), in uniformBytesPerFrame) for every draw; skinned draws read the joint
+// palette (12 floats per joint, stored as rows) and upload no transform, as glTF ignores a
+// skinned node's own transform. The projection matrix is built once per frame.
+#include "pipelines/affine/affine_pipeline.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "pipelines/affine/qtangent_vertices.h"
+#include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/program.h"
+#include "pipelines/gl/scene_textures.h"
+#include "pipelines/gl/upload.h"
+#include "pipelines/affine/affine_vertices.h"
+
+namespace mb::affine {
+namespace {
+
+class MatrixPoser final : public Poser {
+public:
+  Status prepare(const Scene&) override { return {}; }
+  Pose pose(const Scene& scene, const AnimState& state, PipelineStats&) override {
+    return poseScene(scene, state);
+  }
+};
+
+// A palette as the shader's row_major mat4x3 array reads it: per joint its three rows.
+void appendRows(std::vector<float>& out, const glm::mat4x3& m) {
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) out.push_back(m[c][r]);
+}
+
+class AffinePipeline final : public Pipeline {
+public:
+  AffinePipeline(std::string name, FrameFormat format, std::unique_ptr<Poser> poser)
+      : name_(std::move(name)), format_(format), poser_(std::move(poser)) {}
+  ~AffinePipeline() override { release(); }
+  std::string name() const override { return name_; }
+  Status prepare(const Scene& scene) override;
+  void update(const AnimState& state) override;
+  void render(const View& view) override;
+  PipelineStats stats() const override { return stats_; }
+
+private:
+  void uploadPalettes();
+  void release();
+
+  std::string name_;
+  FrameFormat format_;
+  std::unique_ptr<Poser> poser_;
+  const Scene* scene_ = nullptr;
+  std::unique_ptr<gl::Program> rigid_, skinned_;
+  gl::SceneTextures textures_;
+  gl::SceneGeometry geometry_;
+  gl::PaletteBuffers palettes_;  // one per pose_.palettes entry
+  std::vector<gl::DrawItem> draws_;
+  Pose pose_;
+  PipelineStats stats_;
+};
+
+Status AffinePipeline::prepare(const Scene& scene) {
+  release();
+  scene_ = &scene;
+  stats_ = PipelineStats{};
+  gl::Defines defines;
+  if (format_ == FrameFormat::QTangent) defines.push_back({"MB_QTANGENT", ""});
+  auto rigid = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
+  if (!rigid) return Status::fail(rigid.error());
+  defines.push_back({"MB_SKINNED", ""});
+  auto skinned = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
+  if (!skinned) return Status::fail(skinned.error());
+  rigid_ = rigid.take();
+  skinned_ = skinned.take();
+  skinned_->bindStorageBlock("AffineJoints", 0);
+  if (Status fits = gl::checkPaletteSize(scene, 12 * sizeof(float)); !fits) return fits;
+  if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
+
+  auto t0 = gl::Clock::now();
+  if (Status posed = poser_->prepare(scene); !posed) return posed;
+  if (format_ == FrameFormat::QTangent) {
+    auto interleave = [this](const Primitive& p) {
+      PackedStream s = interleaveQTangent(p);
+      stats_.biasedFrames += s.biasedFrames;
+      return std::move(s.bytes);
+    };
+    geometry_.uploadPacked(scene, interleave, qtangentAttributes(), stats_);
+  } else {
+    geometry_.upload(scene, interleaveFullFrame, {3, 3, 4, 2}, stats_);  // pos, n, t, uv
+  }
+  stats_.conversionMs = gl::msSince(t0);
+  draws_ = gl::buildDrawList(scene);
+  update(AnimState{});
+  GLenum err = glGetError();
+  if (err != GL_NO_ERROR)
+    return Status::fail(scene.source + ": " + name_ + " prepare: " + gl::errorName(err));
+  return {};
+}
+
+void AffinePipeline::update(const AnimState& state) {
+  if (!scene_) return;
+  auto t0 = gl::Clock::now();
+  pose_ = poser_->pose(*scene_, state, stats_);
+  stats_.updateMs = gl::msSince(t0);
+}
+
+void AffinePipeline::uploadPalettes() {
+  stats_.skinBytesPerFrame = 0;
+  uint64_t joints = 0;
+  std::vector<float> rows;
+  for (size_t i = 0; i < pose_.palettes.size(); ++i) {
+    rows.clear();
+    for (const glm::mat4x3& m : pose_.palettes[i].joints) appendRows(rows, m);
+    palettes_.upload(i, rows.data(), rows.size() * sizeof(float), stats_.skinBytesPerFrame);
+    joints += pose_.palettes[i].joints.size();
+  }
+  stats_.floatsPerJoint = gl::floatsPer(stats_.skinBytesPerFrame, joints);
+}
+
+void AffinePipeline::render(const View& view) {
+  if (!scene_) return;
+  stats_.uniformBytesPerFrame = 0;
+  stats_.draws = 0;
+  uploadPalettes();
+  const glm::mat4 viewMatrix = glm::inverse(glm::translate(glm::mat4(1.0f), view.eye) *
+                                            glm::mat4_cast(view.orientation));
+  const glm::mat4 viewProjection =
+      glm::perspective(view.yfov, view.aspect, view.znear, view.zfar) * viewMatrix;
+  gl::beginDraws();
+  for (gl::Program* p : {rigid_.get(), skinned_.get()}) {
+    p->use();
+    gl::uniformMatrix4(p->uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
+                       stats_.uniformBytesPerFrame);
+    gl::setFrameUniforms(*p, view, stats_.uniformBytesPerFrame);
+  }
+  uint64_t transformBytes = 0, transforms = 0;
+  for (const gl::DrawItem& d : draws_) {
+    const gl::GpuPrimitive& g = geometry_.at(d);
+    const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
+    if (!g.indexCount) continue;
+    // A mesh shared by a skinned and an unskinned node is drawn rigidly on the latter.
+    GLuint palette = 0;
+    for (size_t i = 0; g.skinned && i < pose_.palettes.size(); ++i)
+      if (pose_.palettes[i].node == d.node) palette = palettes_[i];
+    const gl::Program& program = palette ? *skinned_ : *rigid_;
+    program.use();
+    const glm::mat4x3& model = pose_.world[size_t(d.node)];
+    const float sign = mirror(model);
+    if (palette) {
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
+    } else {
+      const glm::mat3 normal = normalMatrix(model);
+      gl::uniformMatrix4x3(program.uniform("u_ModelMatrix"), 1, glm::value_ptr(model), transformBytes);
+      gl::uniformMatrix3(program.uniform("u_NormalMatrix"), 1, glm::value_ptr(normal), transformBytes);
+      ++transforms;
+    }
+    gl::uniform1f(program.uniform("u_Mirror"), sign, stats_.uniformBytesPerFrame);
+    textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
+    gl::setWinding(sign < 0.0f);
+    g.draw();
+    ++stats_.draws;
+  }
+  gl::endDraws();
+  stats_.uniformBytesPerFrame += transformBytes;
+  stats_.floatsPerTransform = gl::floatsPer(transformBytes, transforms);
+}
+
+void AffinePipeline::release() {
+  geometry_.release();
+  palettes_.release();
+  textures_.release();
+  rigid_.reset();
+  skinned_.reset();
+  scene_ = nullptr;
+}
+
+}  // namespace
+
+std::unique_ptr<Poser> makeMatrixPoser() { return std::make_unique<MatrixPoser>(); }
+
+std::unique_ptr<Pipeline> makePipeline(const std::string& name, FrameFormat format,
+                                       std::unique_ptr<Poser> poser) {
+  return std::make_unique<AffinePipeline>(name, format, std::move(poser));
+}
+
+}  // namespace mb::affine
+
+namespace mb {
+std::unique_ptr<Pipeline> makeAffinePipeline() {
+  return affine::makePipeline("affine", affine::FrameFormat::Float, affine::makeMatrixPoser());
+}
+std::unique_ptr<Pipeline> makeQtangentPipeline() {
+  return affine::makePipeline("qtangent", affine::FrameFormat::QTangent, affine::makeMatrixPoser());
+}
+}  // namespace mb

@@ -1,0 +1,41 @@
+// The production matrix pipelines (issue 16): `affine` (the matrix pipeline's 48-byte vertex,
+// mat4x3 + mat3 per draw, mat4x3 per joint) and `qtangent` (the same with the frame as an
+// int16x4 quaternion, 28 bytes per vertex). The class is shared with pipelines/hybrid, which
+// supplies its own Poser (motors on the CPU, converted to mat4x3).
+#pragma once
+#include <memory>
+#include <string>
+
+#include "pipelines/affine/affine_pose.h"
+#include "pipelines/pipeline.h"
+
+namespace mb {
+namespace affine {
+
+enum class FrameFormat {
+  Float,     // interleaveFullFrame: position, normal, tangent, uv (48 bytes)
+  QTangent,  // interleaveQTangent: position, int16x4 quaternion, uv (28 bytes)
+};
+
+// Poses a scene for the pipeline; what differs between `affine` and `hybrid`.
+class Poser {
+public:
+  virtual ~Poser() = default;
+  // Load-time conversion (timed as part of PipelineStats::conversionMs).
+  virtual Status prepare(const Scene& scene) = 0;
+  // The pose for `state` (timed as PipelineStats::updateMs); may set the fallback counters.
+  virtual Pose pose(const Scene& scene, const AnimState& state, PipelineStats& stats) = 0;
+};
+
+// The GLM poser (affine::poseScene).
+std::unique_ptr<Poser> makeMatrixPoser();
+
+std::unique_ptr<Pipeline> makePipeline(const std::string& name, FrameFormat format,
+                                       std::unique_ptr<Poser> poser);
+
+}  // namespace affine
+
+std::unique_ptr<Pipeline> makeAffinePipeline();
+std::unique_ptr<Pipeline> makeQtangentPipeline();
+
+}  // namespace mb

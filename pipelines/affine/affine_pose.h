@@ -1,0 +1,33 @@
+// The CPU side of the affine pipelines: world transforms per node and joint palettes as GLSL
+// mat4x3 (the affine 3x4 part of a transform, 12 floats), and the GLM poser of `affine` and
+// `qtangent` (pipelines/hybrid poses the same struct from motors).
+#pragma once
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "pipelines/scene/animation.h"
+#include "pipelines/scene/scene.h"
+
+namespace mb::affine {
+
+struct Palette {
+  int node = -1;                    // the skinned mesh node
+  std::vector<glm::mat4x3> joints;  // joint world * inverse bind (glTF: no mesh-node transform)
+};
+
+struct Pose {
+  std::vector<glm::mat4x3> world;  // per node
+  std::vector<Palette> palettes;   // one per node with a mesh and a skin, in node order
+};
+
+// GLM: samplePose (shared sampling and blending), world matrices, palettes.
+Pose poseScene(const Scene& scene, const AnimState& state);
+
+// The normal matrix of an affine transform's linear part: transpose(inverse(m)).
+glm::mat3 normalMatrix(const glm::mat4x3& m);
+
+// sign(det(linear part)): -1 for a mirroring transform, else +1.
+float mirror(const glm::mat4x3& m);
+
+}  // namespace mb::affine

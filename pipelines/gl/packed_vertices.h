@@ -1,0 +1,44 @@
+// Vertex layouts with mixed component types (float positions and uvs next to int16 SNORM
+// frames): the attribute formats, the SNORM rule and byte appending. Used by the quantized-frame
+// pipelines (qtangent, hybrid, motor_q) through SceneGeometry::uploadPacked.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "pipelines/gl/gl_api.h"
+
+namespace mb::gl {
+
+// One vertex attribute: `size` components of `type`, normalised to -1..1 / 0..1 when
+// `normalized` (GL's SNORM / UNORM), read by the shader as floats.
+struct PackedAttribute {
+  GLint size = 4;
+  GLenum type = GL_FLOAT;
+  bool normalized = false;
+  // Bytes of one attribute value.
+  size_t bytes() const {
+    const size_t c = type == GL_SHORT || type == GL_UNSIGNED_SHORT ? 2
+                   : type == GL_BYTE || type == GL_UNSIGNED_BYTE   ? 1
+                                                                   : 4;
+    return c * size_t(size);
+  }
+};
+
+// float -> int16 SNORM: round(clamp(v, -1, 1) * 32767). The decoder (GL 4.2+ and
+// fromSnorm16) gives max(c / 32767, -1), so +-1/32767 survives exactly and -0 becomes +0.
+inline int16_t snorm16(float v) {
+  return int16_t(std::lround(std::clamp(v, -1.0f, 1.0f) * 32767.0f));
+}
+inline float fromSnorm16(int16_t c) { return std::max(float(c) / 32767.0f, -1.0f); }
+
+// Appends the bytes of `n` values.
+template <class T> void appendBytes(std::vector<uint8_t>& out, const T* v, size_t n) {
+  const size_t at = out.size();
+  out.resize(at + n * sizeof(T));
+  std::memcpy(out.data() + at, v, n * sizeof(T));
+}
+
+}  // namespace mb::gl

@@ -1,0 +1,41 @@
+// motor_q's vertex layout: position float3, the tangent rotor in int16x4 SNORM, TEXCOORD_0
+// float2: 28 bytes per vertex against motor's 36.
+//
+// The paper keeps the handedness in the sign of the rotor's scalar part, relying on IEEE
+// signed zero when that scalar is exactly 0 (axis-aligned frames turned half a turn). An
+// integer has no -0: SNORM16 stores -0 as 0, which decodes as +1. The bias rule
+// (companion::encodeTangentRotor: |s| >= 1/32767, one SNORM16 step) keeps the sign in a
+// non-zero value that survives quantisation; PackedStream counts the frames it changed.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "pipelines/gl/packed_vertices.h"
+#include "pipelines/scene/scene.h"
+
+namespace mb::motor {
+
+struct PackedStream {
+  std::vector<uint8_t> bytes;  // 28 bytes per vertex
+  int zeroScalarFrames = 0;    // rotor scalar exactly 0 before the bias
+  int biasedFrames = 0;        // |s| raised to 1/32767 by the bias rule
+};
+
+// The rotor as int16 SNORM, component order (s, e23, e31, e12).
+void quantizeRotor(const glm::vec4& rotor, int16_t out[4]);
+// What the GPU reads back from quantizeRotor's values (GL's SNORM rule).
+glm::vec4 dequantizeRotor(const int16_t q[4]);
+
+// Frames of motor::interleaveVertices' float stream that the bias rule changed (their scalar
+// is exactly +-1/32767, where companion::encodeTangentRotor puts a clamped one).
+int countBiasedFrames(const std::vector<float>& motorVertices);
+
+// The vertex formats of the stream, in location order.
+std::vector<gl::PackedAttribute> quantizedAttributes();
+
+// `p`'s vertices in motor_q's layout (frames filled as motor::interleaveVertices fills them).
+PackedStream interleaveQuantized(const Primitive& p);
+
+}  // namespace mb::motor

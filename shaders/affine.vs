@@ -1,0 +1,73 @@
+#version 450 core
+// affine.vs: the vertex stage of the production matrix pipelines (pipelines/affine/:
+// `affine`, `qtangent`, `hybrid`). Per draw: the model as mat4x3 (12 floats), the normal matrix
+// as mat3 (9 floats) and the mirror factor sign(det(model)); per frame the view-projection
+// mat4. The transform itself is affine_transform.glsl's (what `motorbench ops` counts).
+//
+// Variants (#define):
+//   MB_SKINNED   linear blend skinning, 4 joints per vertex, one mat4x3 per joint (12 floats,
+//                joint world * inverse bind, stored as three row vec4s), normals through the
+//                cofactor of the blended matrix
+//   MB_QTANGENT  the vertex frame is one quaternion (int16x4 SNORM, read as a vec4 in
+//                -1..1) instead of normal + tangent: 28-byte vertices
+#include "affine_transform.glsl"
+
+layout(location = 0) in vec3 a_position;
+#ifdef MB_QTANGENT
+layout(location = 1) in vec4 a_qtangent;
+layout(location = 2) in vec2 a_uv0;
+#else
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec4 a_tangent;
+layout(location = 3) in vec2 a_uv0;
+#endif
+layout(location = 4) in vec2 a_uv1;    // locations 4..7: pipelines/gl/scene_textures.h
+layout(location = 5) in vec4 a_color;
+
+uniform mat4 u_ViewProjectionMatrix;
+uniform mat4x3 u_ModelMatrix;
+uniform mat3 u_NormalMatrix;
+uniform float u_Mirror;
+
+#ifdef MB_SKINNED
+layout(location = 6) in uvec4 a_joints;
+layout(location = 7) in vec4 a_weights;
+// row_major: a mat4x3 is stored as its three rows (3 x vec4 = 48 bytes, no std430 padding).
+layout(std430, row_major, binding = 0) readonly buffer AffineJoints { mat4x3 u_joints[]; };
+#endif
+
+out vec3 v_worldPosition;
+out vec3 v_worldNormal;
+out vec4 v_worldTangent;
+out vec2 v_uv0;
+out vec2 v_uv1;
+out vec4 v_color;
+
+void main() {
+#ifdef MB_SKINNED
+#ifdef MB_QTANGENT
+  mat3x4 v = qtangentSkinnedVertex(u_joints[a_joints.x], u_joints[a_joints.y],
+                                   u_joints[a_joints.z], u_joints[a_joints.w], a_weights,
+                                   u_Mirror, a_position, a_qtangent);
+#else
+  mat3x4 v = affineSkinnedVertex(u_joints[a_joints.x], u_joints[a_joints.y],
+                                 u_joints[a_joints.z], u_joints[a_joints.w], a_weights, u_Mirror,
+                                 a_position, a_normal, a_tangent);
+#endif
+#else
+#ifdef MB_QTANGENT
+  mat3x4 v = qtangentRigidVertex(u_ModelMatrix, u_NormalMatrix, u_Mirror, a_position, a_qtangent);
+#else
+  mat3x4 v = matrixAffineVertex(u_ModelMatrix, u_NormalMatrix, u_Mirror, a_position, a_normal,
+                                a_tangent);
+#endif
+#endif
+  // As matrix.vs: unit normal and tangent in the varyings.
+  v_worldPosition = v[0].xyz;
+  v_worldNormal = normalize(v[1].xyz);
+  v_worldTangent = vec4(normalize(v[2].xyz), v[2].w);
+  v_uv0 = a_uv0;
+  v_uv1 = a_uv1;
+  v_color = a_color;
+  gl_Position = matrixWorldToClip(u_ViewProjectionMatrix, v[0]);
+}
