@@ -25,6 +25,7 @@ struct PipelineStats {
   uint64_t textureBytes = 0;
   uint64_t uniformBytesPerFrame = 0;  // per-frame + per-draw uniforms of the last render()
   uint64_t skinBytesPerFrame = 0;     // joint palette of the last update()/render()
+  uint64_t patchBytes = 0;            // Bezier patch control points (pipelines/gl/patch_geometry.h)
   uint64_t vertices = 0;              // vertices uploaded
   // Of vertexBytes / vertices: the primitives whose material has a normal texture, so that
   // bytes per vertex split normal-mapped / not (the paper's 12-vs-9 floats is the former).

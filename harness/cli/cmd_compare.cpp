@@ -65,8 +65,10 @@ int runCompare(const std::vector<std::string>& argv) {
   const std::string& dir = cmd->output;
   const Scene& scene = cmd->scene;
   const FrameSettings& settings = cmd->settings;
-  // Default: the pair of the scene's space (matrix,motor; s3_matrix,s3_motor; h3_...).
-  const std::vector<std::string> pair = pipelineNames(scene.curved.space);
+  // Default: the paper's pair in the scene's space (matrix,motor; s3_matrix,s3_motor; h3_...),
+  // the first two registered names (the registry lists the variants after them).
+  std::vector<std::string> pair = pipelineNames(scene.curved.space);
+  pair.resize(2);
   std::vector<std::string> names = args.has("pipelines") ? splitList(args.get("pipelines", "")) : pair;
   if (names.size() != 2) return fail("--pipelines needs exactly two names, e.g. matrix,motor");
   commandNotes("compare", cmd->notes);

@@ -47,6 +47,8 @@ void printFile(const mb::FileStats& f) {
   std::printf("  geometry    %d meshes, %d primitives, %d vertices, %d triangles; %d nodes (%d matrix), "
               "%d mesh nodes drawing %d vertices\n",
               f.meshes, f.primitives, f.vertices, f.triangles, f.nodes, f.matrixNodes, f.meshNodes, f.drawnVertices);
+  if (f.patches > 0)
+    std::printf("  patches     %d bicubic Bezier patches (drawn vertices at the default tessellation level)\n", f.patches);
   std::printf("  materials   %d materials, %d textures, %d images; %d normal-mapped primitives "
               "(%d with authored TANGENT)\n",
               f.materials, f.textures, f.images, f.normalMappedPrimitives, f.authoredTangentPrimitives);

@@ -1,5 +1,5 @@
 // `motorbench time [SCENE|DIR...] [--frames N] [--warmup W] [--size WxH] [--tiny WxH]
-//  [--best-of K] [--lp-threads N] [--json FILE]`: frame time of every registered pipeline on each scene
+//  [--best-of K] [--level N[,M...]] [--lp-threads N] [--json FILE]`: frame time of every registered pipeline on each scene
 // (harness/timing/frame_timing.h), printed as medians with quartiles and as motor/matrix ratios
 // measured in the same run. No SCENE: every built-in scene. A scene that draws at least
 // timing::kVertexBoundVerticesPerPixel vertices per pixel of a tiny viewport (--tiny, default
@@ -15,16 +15,20 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 
 #include "harness/options/args.h"
 #include "harness/process/progress.h"
 #include "harness/cli/command.h"
+#include "harness/ops/patch_memory.h"
 #include "harness/timing/frame_timing.h"
 #include "harness/process/report_workers.h"
 #include "harness/render/frame_options.h"
 #include "harness/render/scene_inputs.h"
 #include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/gl/patch_geometry.h"
 #include "pipelines/scene/loader.h"
+#include "pipelines/scene/scene_stats.h"
 
 namespace mb {
 namespace {
@@ -63,7 +67,8 @@ void printRow(const timing::ConfigTiming& c) {
     return !t || !t->error.empty() ? std::string("-") : cell(t->update, 1000.0);
   };
   const std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
-  std::printf(kRowFormat, c.scene.c_str(), c.config.c_str(), size.c_str(), frame(side[0]).c_str(),
+  const std::string scene = c.patchLevel ? c.scene + " N=" + std::to_string(c.patchLevel) : c.scene;
+  std::printf(kRowFormat, scene.c_str(), c.config.c_str(), size.c_str(), frame(side[0]).c_str(),
               frame(side[1]).c_str(), ratio(c.pairedFrameRatio).c_str(), ratio(c.frameRatio).c_str(),
               ratio(c.pairedCpuRatio).c_str(), update(side[0]).c_str(), update(side[1]).c_str(),
               ratio(c.updateRatio).c_str());
@@ -76,7 +81,7 @@ void printRow(const timing::ConfigTiming& c) {
 // vertices to be vertex-bound there: timing::drawsVertexBoundAt), prints its rows
 // and writes them as a JSON array to `resultPath`. Exit 0, or 2 when anything failed.
 int timeOneScene(const std::string& name, const timing::Settings& normal, const timing::Settings& tiny,
-                 const std::string& resultPath) {
+                 const std::vector<int>& levels, const std::string& resultPath) {
   nlohmann::json rows = nlohmann::json::array();
   int status = 0;
   const Status spec = checkSceneSpec(name);  // a misspelt name lists the built-ins
@@ -86,19 +91,35 @@ int timeOneScene(const std::string& name, const timing::Settings& normal, const 
     rows.push_back({{"scene", name}, {"error", scene.error()}});
     status = 2;
   } else {
-    std::vector<timing::Settings> configs = {normal};
-    if (timing::drawsVertexBoundAt(*scene, tiny.width, tiny.height)) configs.push_back(tiny);
-    for (const timing::Settings& cfg : configs) {
-      auto r = timing::timeScene(*scene, name, cfg);
-      if (!r) {
-        std::fprintf(stderr, "motorbench time: error: %s\n", r.error().c_str());
-        rows.push_back({{"scene", name}, {"config", cfg.config}, {"error", r.error()}});
-        status = 2;
-        continue;
+    // Bezier patch scenes: one pass per refinement level asked for (--level), all in this run.
+    std::vector<int> passes = {scene->patchLevel};
+    if (!levels.empty() && computeFileStats(*scene).patches > 0) passes = levels;
+    for (int level : passes) {
+      scene->patchLevel = level;
+      std::vector<timing::Settings> configs = {normal};
+      if (timing::drawsVertexBoundAt(*scene, tiny.width, tiny.height)) configs.push_back(tiny);
+      for (const timing::Settings& cfg : configs) {
+        auto r = timing::timeScene(*scene, name, cfg);
+        if (!r) {
+          std::fprintf(stderr, "motorbench time: error: %s\n", r.error().c_str());
+          rows.push_back({{"scene", name}, {"config", cfg.config}, {"error", r.error()}});
+          status = 2;
+          continue;
+        }
+        printRow(*r);
+        for (const auto& t : r->pipelines) status = t.error.empty() ? status : 2;
+        rows.push_back(timing::toJson(*r));
       }
-      printRow(*r);
-      for (const auto& t : r->pipelines) status = t.error.empty() ? status : 2;
-      rows.push_back(timing::toJson(*r));
+    }
+    // The bytes each level costs, instanced vs pre-tessellated (measured uploads).
+    if (!levels.empty() && computeFileStats(*scene).patches > 0) {
+      auto memory = opsv::measurePatchMemory(*scene, levels);
+      if (!memory) {
+        std::fprintf(stderr, "motorbench time: error: %s\n", memory.error().c_str());
+        status = 2;
+      } else {
+        std::printf("\n%s\n", opsv::formatPatchMemory(*memory).c_str());
+      }
     }
   }
   std::ofstream out(resultPath);
@@ -114,7 +135,7 @@ int runTime(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "motorbench time: error: %s\n", m.c_str());
     return 2;
   };
-  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker"}, {}, {}});
+  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level"}, {}, {}});
   if (!args.error().empty()) return fail(args.error());
 
   timing::Settings normal, tiny;
@@ -129,6 +150,22 @@ int runTime(const std::vector<std::string>& argv) {
   if (args.has("lp-threads"))
     setenv("LP_NUM_THREADS", std::to_string(args.integer("lp-threads", 0, 0, 1024)).c_str(), 1);
 
+  // --level N[,M...]: refinement levels of Bezier patch scenes (others ignore it), each timed
+  // in the same worker, one after the other.
+  std::vector<int> levels;
+  if (auto list = args.get("level")) {
+    std::string item;
+    std::istringstream in(*list);
+    while (std::getline(in, item, ',')) {
+      if (item.empty() || item.find_first_not_of("0123456789") != std::string::npos || item.size() > 3 ||
+          std::stoi(item) < 1 || std::stoi(item) > gl::kMaxPatchLevel)
+        return fail("--level " + *list + ": expected whole numbers in 1.." + std::to_string(gl::kMaxPatchLevel) +
+                    ", comma-separated");
+      levels.push_back(std::stoi(item));
+    }
+    if (levels.empty()) return fail("--level: expected at least one level");
+  }
+
   std::vector<std::string> warnings;
   std::vector<std::string> names = expandSceneInputs(args.positional(), &warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "motorbench time: warning: %s\n", w.c_str());
@@ -136,7 +173,7 @@ int runTime(const std::vector<std::string>& argv) {
   if (names.empty()) return fail("no scenes to time (the folders given hold no .gltf or .glb files)");
   if (auto file = args.get("worker")) {
     if (names.size() != 1) return fail("--worker times exactly one scene");
-    return timeOneScene(names[0], normal, tiny, *file);
+    return timeOneScene(names[0], normal, tiny, levels, *file);
   }
 
   auto machine = timing::machineInfo();
@@ -163,7 +200,7 @@ int runTime(const std::vector<std::string>& argv) {
   Progress progress("time", "scenes timed", names.size(), false);
   for (const std::string& name : names) {
     std::vector<std::string> child = {"time", name, "--worker", scratch};
-    for (const char* key : {"frames", "warmup", "best-of", "size", "tiny"})
+    for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level"})
       if (auto v = args.get(key)) child.insert(child.end(), {std::string("--") + key, *v});
     std::filesystem::remove(scratch);
     std::fflush(stdout);  // the child prints its rows to the same stdout
@@ -211,7 +248,7 @@ int runTime(const std::vector<std::string>& argv) {
 
 MB_COMMAND(time, "time",
            "[SCENE|DIR...] [--frames N] [--warmup W] [--best-of K] [--size WxH] [--tiny WxH] "
-           "[--lp-threads N] [--json FILE]",
+           "[--level N[,M...]] [--lp-threads N] [--json FILE]",
            "frame time (glFinish wall clock) and CPU update time of every pipeline; motor/matrix "
            "ratios from one interleaved run; scenes with >= 10 drawn vertices per tiny-viewport pixel "
            "(the crowd) also at that viewport (vertex-bound)",

@@ -79,7 +79,7 @@ void summary(Document& d, const json& r) {
   row("load-time conversion [ms]", fromSpread("conversionMs", 3));
   const json& ops = r["opsPerVertex"];
   for (const char* label : {"rigid", "rigid, no tangent", "skinned", "skinned, reference", "skinned, world palette",
-                            "scaled fallback"})
+                            "scaled fallback", "bezier patch"})
     for (const char* way : {"counted", "spirv"}) {
       bool any = false;
       for (const json& v : ops.value("variants", json::array())) any = any || v.value("label", "") == label;

@@ -112,7 +112,9 @@ std::string variantWhy(const VariantRow& v) {
     add("in main() outside the transform functions: " + outside +
         (d.empty() ? "" : " (" + d + ")"));
   }
-  if (v.shader->intOps > v.probes->intOps) add("integer ops: joint palette indexing");
+  if (v.shader->intOps > v.probes->intOps)
+    add(v.variant.file.find("patch") != std::string::npos ? "integer ops: control-point texel indexing"
+                                                           : "integer ops: joint palette indexing");
   return why;
 }
 
@@ -146,10 +148,11 @@ VertexOps measureVertexOps() {
     VariantRow row{v, {}, Counts{}, std::nullopt, "", ""};
     for (const std::string& fn : v.kernels)
       for (const KernelRow& k : ops.kernels)
-        if (k.kernel.function == fn && k.kernel.pipeline == v.pipeline) {
+        if (k.kernel.function == fn && k.kernel.pipeline == v.pipeline) {  // once each
           row.counted += k.counted;
           if (row.probes && k.optimised) *row.probes += *k.optimised;
           else row.probes.reset();
+          break;
         }
     if (ops.toolsProblem.empty()) {
       auto expanded = gl::expandShaderFile(v.file, v.defines);

@@ -18,6 +18,7 @@
 #include "harness/bench/bench_shaders.h"
 #include "harness/ops/spirv_count.h"
 #include "shaders/shim/counted.h"
+#include "shaders/shim/patch.h"
 #include "shaders/shim/pga.h"
 #include "shaders/shim/pga_kappa.h"
 
@@ -41,6 +42,8 @@ using MC = MatrixShader<Counted>;
 using AC = AffineShader<Counted>;
 using PC = MotorShader<Counted>;
 using PD = Pga<double>;
+using TC = PatchShaders<Counted>;
+using TD = PatchShaders<double>;
 
 // Generic inputs: no zero coefficients (no product is skipped by a branch), unit motors built
 // in double, matrices with arbitrary entries (counting does not depend on the values).
@@ -89,7 +92,22 @@ struct VertexInputs {
     joints[2] = motor(-0.6, 0.4, 0.3, 0.2, -0.5, 0.4, 0.0);
     joints[3] = motor(0.9, -0.1, 0.2, 0.3, 0.3, -0.2, 0.1);
     rotor = PC::vec4(-0.5, 0.5, -0.5, 0.5);  // handedness -1
+    // A Bezier patch: a curved 4x4 net with no coincident points, an interior uv; the frame
+    // kernels take the surface it evaluates to.
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c)
+        rows[r][c] = TC::vec3(0.7 * c - 0.1 * r * r, 0.5 * r + 0.05 * c * c, 0.3 * (c - 1.5) * (r - 1.5) + 0.1 * c);
+    uv = TC::vec2(0.3, 0.6);
+    TD::mat4x3 rd[4];
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) rd[r][c] = TD::vec3(rows[r][c].x.v, rows[r][c].y.v, rows[r][c].z.v);
+    TD t;
+    TD::mat3 sd = t.bezierPatch(rd[0], rd[1], rd[2], rd[3], TD::vec2(0.3, 0.6));
+    for (int i = 0; i < 3; ++i) surface[i] = TC::vec3(sd[i].x, sd[i].y, sd[i].z);
   }
+  TC::mat4x3 rows[4];
+  TC::vec2 uv;
+  TC::mat3 surface;
 };
 
 inline const VertexInputs& inputs() {
@@ -113,6 +131,24 @@ inline const char* kQTangentAttribs =
     "layout(location = 7) in vec4 a_weights;\n"
     "layout(location = 0) out vec4 o_0; layout(location = 1) out vec4 o_1;\n"
     "layout(location = 2) out vec4 o_2;\n";
+
+// Probes of the Bezier patch kernels: the control points as uniforms (the real shaders fetch
+// them), the evaluated surface as vertex inputs of the frame kernels.
+inline std::string patchEvalDecls() {
+  return "#include \"bezier_patch.glsl\"\nuniform mat4x3 u_r[4]; layout(location = 0) in vec2 a_uv;\n"
+         "layout(location = 0) out vec4 o_0; layout(location = 1) out vec4 o_1;\n"
+         "layout(location = 2) out vec4 o_2;\n";
+}
+inline std::string patchEvalProbe() {
+  return "mat3 s = bezierPatch(u_r[0], u_r[1], u_r[2], u_r[3], a_uv); o_0 = vec4(s[0], 0.0); "
+         "o_1 = vec4(s[1], 0.0); o_2 = vec4(s[2], 0.0);";
+}
+inline std::string patchFrameDecls() {
+  return "#include \"pga.glsl\"\n#include \"matrix_transform.glsl\"\n#include \"patch_transform.glsl\"\n"
+         "layout(location = 0) in vec3 a_s0; layout(location = 1) in vec3 a_s1; layout(location = 2) in vec3 a_s2;\n"
+         "layout(location = 0) out vec4 o_0; layout(location = 1) out vec4 o_1;\n"
+         "layout(location = 2) out vec4 o_2;\n";
+}
 
 }  // namespace detail
 
@@ -163,6 +199,7 @@ inline std::vector<VertexKernel> vertexKernels() {
   static MC M;
   static AC A;
   static PC P;
+  static TC T;
   const std::string matrixIncl = "#include \"matrix_transform.glsl\"\n";
   const std::string motorIncl = "#include \"pga.glsl\"\n#include \"motor_transform.glsl\"\n";
   const std::string affineIncl = "#include \"affine_transform.glsl\"\n";
@@ -350,6 +387,35 @@ inline std::vector<VertexKernel> vertexKernels() {
                    "layout(location = 0) in vec3 a_world;\n",
        "project() with its constants computed once per frame (motorProjectionConstants) as the "
        "matrix side builds its projection matrix once per frame"},
+      // Bezier patches (issue 14): the evaluation both patch shaders share, then each frame.
+      {"matrix", "patch: bicubic evaluation (P, dP/du, dP/dv)", "bezierPatch",
+       [&] { T.bezierPatch(in.rows[0], in.rows[1], in.rows[2], in.rows[3], in.uv); },
+       patchEvalProbe(), patchEvalDecls(),
+       "shared by matrix_patch.vs and motor_patch.vs (the 16 control points come from texelFetch, "
+       "no arithmetic)"},
+      {"matrix", "patch frame (normal = dP/du x dP/dv)", "matrixPatchVertex",
+       [&] { T.matrixPatchVertex(in.model, in.normal, in.surface); },
+       "mat3x4 v = matrixPatchVertex(u_model, u_normal, mat3(a_s0, a_s1, a_s2));" + store,
+       patchFrameDecls() + "uniform mat4 u_model; uniform mat4 u_normal;\n",
+       "cross 6/3 + the Sample Viewer's three mat4 * vec4 48/36 + handedness 1/0"},
+      {"motor", "patch: bicubic evaluation (P, dP/du, dP/dv)", "bezierPatch",
+       [&] { T.bezierPatch(in.rows[0], in.rows[1], in.rows[2], in.rows[3], in.uv); },
+       patchEvalProbe(), patchEvalDecls(), "the same evaluation as the matrix pipeline's"},
+      {"motor", "patch frame (a): derivatives sandwiched, crossed", "motorPatchVertex",
+       [&] { T.motorPatchVertex(in.toWorld, 1.25, in.surface); },
+       "mat3x4 v = motorPatchVertex(motor(u_world[0], u_world[1]), u_scale, mat3(a_s0, a_s1, a_s2));" + store,
+       patchFrameDecls() + "uniform vec4 u_world[2]; uniform float u_scale;\n",
+       "drawn: sw_mp 21/18 + scale 3/0, two sw_md 36/24, cross 6/3"},
+      {"motor (b)", "patch frame (b): tangent rotor + gp_rr (not drawn)", "motorPatchVertexRotor",
+       [&] { T.motorPatchVertexRotor(in.toWorld, 1.25, in.surface); },
+       "mat3x4 v = motorPatchVertexRotor(motor(u_world[0], u_world[1]), u_scale, mat3(a_s0, a_s1, a_s2));" + store,
+       patchFrameDecls() + "uniform vec4 u_world[2]; uniform float u_scale;\n",
+       "the alternative, counted and not drawn: two normalisations, the rotor of the frame "
+       "(branches: Shepperd), gp_rr, extractNormalTangent"},
+      {"motor", "patch frame (a), scaled fallback", "motorScaledPatchVertex",
+       [&] { T.motorScaledPatchVertex(in.toWorld, TC::vec3(1.0, -2.0, 0.5), in.surface); },
+       "mat3x4 v = motorScaledPatchVertex(motor(u_world[0], u_world[1]), u_scale3, mat3(a_s0, a_s1, a_s2));" + store,
+       patchFrameDecls() + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n", ""},
       {"motor", "scaled vertex (fallback)", "motorScaledVertex",
        [&] { P.motorScaledVertex(in.toWorld, PC::vec3(1.0, -2.0, 0.5), in.position, in.rotor); },
        "mat3x4 v = motorScaledVertex(motor(u_world[0], u_world[1]), u_scale3, a_position, "
@@ -444,6 +510,12 @@ inline std::vector<ShaderVariant> shaderVariants() {
       {"s3_motor", "curved_motor.vs", {{"MB_KAPPA", "1"}}, "S3 instance", {"curvedMotorVertex"}, curvedMain},
       {"h3_matrix", "curved_matrix.vs", {{"MB_KAPPA", "-1"}}, "H3 instance", {"curvedMatrixVertex"}, curvedMain},
       {"h3_motor", "curved_motor.vs", {{"MB_KAPPA", "-1"}}, "H3 instance", {"curvedMotorVertex"}, curvedMain},
+      {"matrix", "matrix_patch.vs", {}, "bezier patch", {"bezierPatch", "matrixPatchVertex", "matrixWorldToClip"},
+       matrixMain + "; the 16 control points are texelFetch (no arithmetic)"},
+      {"motor", "motor_patch.vs", {}, "bezier patch", {"bezierPatch", "motorPatchVertex", "motorWorldToClip"},
+       "the 16 control points are texelFetch (no arithmetic)"},
+      {"motor", "motor_patch.vs", {{"MB_SCALE_FALLBACK", ""}}, "bezier patch, scaled fallback",
+       {"bezierPatch", "motorScaledPatchVertex", "motorWorldToClip"}, "the 16 control points are texelFetch"},
   };
 }
 

@@ -13,6 +13,7 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"PipelineStats", "indexBytes", "bytes", "index buffer bytes"},
       {"PipelineStats", "textureBytes", "bytes", "texture bytes handed to glTexImage2D (RGBA8, level 0; the mipmaps the driver generates are not counted)"},
       {"PipelineStats", "uniformBytesPerFrame", "bytes", "per-frame plus per-draw uniform bytes of the last render (transforms: matrices or motors)"},
+      {"PipelineStats", "patchBytes", "bytes", "Bezier patch control points uploaded (16 x 3 floats per patch, GL_RGB32F buffer texture; 0 without patches)"},
       {"PipelineStats", "skinBytesPerFrame", "bytes", "joint palette bytes of the last update (matrices or motors per joint)"},
       {"PipelineStats", "vertices", "vertices", "vertices uploaded"},
       {"PipelineStats", "floatsPerVertex", "floats", "shading-attribute floats per vertex, from the upload stride"},
@@ -28,6 +29,7 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"PipelineStats", "negativeScaleNodes", "nodes", "motor pipeline: nodes with a negative scale component (mirrored; matrix: det < 0)"},
       {"PipelineStats", "shearMatrixNodes", "nodes", "motor pipeline: authored matrices with shear, replaced by the nearest rotation and mean scale"},
       {"PipelineStats", "zeroScalarFrames", "vertices", "motor pipeline: tangent frames whose rotor scalar was exactly 0 (a 180-degree turn of the basis frame); handedness is kept by the sign bit and |scalar| raised to 1/32767 so it survives packing"},
+      {"PipelineStats", "biasedFrames", "vertices", "int16 frame formats (qtangent, motor_q, hybrid): frames whose scalar |s| (rotor) or |w| (quaternion) the bias rule raised to 1/32767 so the handedness sign survives packing"},
       // LoadStats (pipelines/scene/scene.h): what the loader had to fix; `inspect` lists them.
       {"LoadStats", "flatNormalsGenerated", "primitives", "primitives without NORMAL: flat normals generated"},
       {"LoadStats", "tangentsGenerated", "primitives", "normal-mapped primitives without TANGENT: tangents generated from the uvs"},

@@ -61,17 +61,20 @@ json measureOpsPerVertex() {
 json sceneOpsPerVertex(const json& ops, const json& mix) {
   if (!mix.is_object()) return nullptr;
   const double skinned = mix.value("skinned", 0.0), rigidAll = mix.value("rigid", 0.0),
-               scaled = mix.value("scaledFallback", 0.0), total = skinned + rigidAll;
+               scaled = mix.value("scaledFallback", 0.0), patch = mix.value("bezierPatch", 0.0),
+               total = skinned + rigidAll + patch;
   if (total <= 0) return nullptr;
   json out = json::object();
   for (const std::string& pipeline : pipelineNames()) {  // those with shader variants
     const json* rigid = findVariant(ops, pipeline, "rigid");
     const json* skin = findVariant(ops, pipeline, "skinned");
     const json* fb = findVariant(ops, pipeline, "scaled fallback");
-    if (!rigid || (skinned > 0 && !skin)) continue;
+    const json* bezier = findVariant(ops, pipeline, "bezier patch");
+    if (!rigid || (skinned > 0 && !skin) || (patch > 0 && !bezier)) continue;
     json row;
     for (const char* way : {"counted", "spirv"}) {
-      if ((*rigid)[way].is_null() || (skinned > 0 && (*skin)[way].is_null())) {
+      if ((*rigid)[way].is_null() || (skinned > 0 && (*skin)[way].is_null()) ||
+          (patch > 0 && (*bezier)[way].is_null())) {
         row[way] = nullptr;
         continue;
       }
@@ -81,6 +84,7 @@ json sceneOpsPerVertex(const json& ops, const json& mix) {
         double sum = ops5((*rigid)[way])[c].get<double>() * (rigidAll - nFallback);
         if (nFallback > 0) sum += ops5((*fb)[way])[c].get<double>() * nFallback;
         if (skinned > 0) sum += ops5((*skin)[way])[c].get<double>() * skinned;
+        if (patch > 0) sum += ops5((*bezier)[way])[c].get<double>() * patch;
         mean[c] = sum / total;
       }
       row[way] = mean;

@@ -80,7 +80,7 @@ std::vector<float> imageTimes(const Scene& scene) {
 
 json vertexMix(const Scene& scene) {
   const ScaleReport scale = analyzeScale(scene);
-  long rigid = 0, skinned = 0, scaled = 0;
+  long rigid = 0, skinned = 0, scaled = 0, patch = 0;
   std::set<int> seen;
   std::vector<int> stack(scene.roots.rbegin(), scene.roots.rend());
   while (!stack.empty()) {  // every reachable node once, even in malformed graphs
@@ -93,6 +93,8 @@ json vertexMix(const Scene& scene) {
     const NodeScale& ns = scale.nodes.size() > size_t(n) ? scale.nodes[size_t(n)] : NodeScale{};
     const bool ownFallback = ns.restNonUniform || ns.restClass == ScaleClass::Negative || ns.shear;
     for (const Primitive& p : scene.meshes[size_t(node.mesh)].primitives) {
+      // Bezier patches: (N+1)^2 pattern vertices per patch, through the patch vertex shaders.
+      patch += long(p.patchPoints.size() / 16) * long(scene.patchLevel + 1) * long(scene.patchLevel + 1);
       const long count = long(p.positions.size());
       if (node.skin >= 0 && !p.joints.empty()) skinned += count;
       else {
@@ -101,7 +103,7 @@ json vertexMix(const Scene& scene) {
       }
     }
   }
-  return {{"rigid", rigid}, {"skinned", skinned}, {"scaledFallback", scaled}};
+  return {{"rigid", rigid}, {"skinned", skinned}, {"scaledFallback", scaled}, {"bezierPatch", patch}};
 }
 
 void progress(const SceneJob& job, const std::string& what) {

@@ -32,6 +32,7 @@ std::vector<float> imageTimes(const Scene& scene);
 // for every pipeline, and for the motor pipeline how many rigid ones sit on nodes whose own
 // scale is non-uniform or mirrored ("scaledFallback"; the node's own scale only, parents'
 // scales are not folded in). Used to weight ops per vertex per scene.
+// "bezierPatch": tessellated patch vertices ((N+1)^2 per patch at Scene::patchLevel).
 nlohmann::json vertexMix(const Scene& scene);
 
 // Progress line on stderr: "[3/8] skinned_tube: rendering motor t=0.5".

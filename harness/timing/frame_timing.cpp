@@ -127,6 +127,7 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   ConfigTiming out;
   out.scene = sceneName, out.config = settings.config;
   out.width = settings.width, out.height = settings.height;
+  out.patchLevel = computeFileStats(scene).patches > 0 ? scene.patchLevel : 0;
   std::vector<std::unique_ptr<Pipeline>> live;  // parallel to `slots`
   std::vector<size_t> slots;                    // index into out.pipelines
   for (const std::string& name : pipelineNames(scene.curved.space)) {  // the scene's space's pair
@@ -260,6 +261,7 @@ nlohmann::json toJson(const ConfigTiming& c) {
           {"config", c.config},
           {"width", c.width},
           {"height", c.height},
+          {"patchLevel", c.patchLevel ? nlohmann::json(c.patchLevel) : nlohmann::json()},
           {"pipelines", pipelines},
           {"ratio_motor_over_matrix", num(c.frameRatio)},
           {"paired_ratio_motor_over_matrix", num(c.pairedFrameRatio)},

@@ -70,6 +70,7 @@ struct PipelineTiming {
 struct ConfigTiming {
   std::string scene, config;
   int width = 0, height = 0;
+  int patchLevel = 0;  // Scene::patchLevel when the scene has Bezier patches, else 0
   std::vector<PipelineTiming> pipelines;  // registry order, matrix first
   // motor / matrix, negative when either side is missing. frameRatio: of the frame-time
   // medians; pairedFrameRatio (spread: pairedFrame): the median of the per-frame ratios;

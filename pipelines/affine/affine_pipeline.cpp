@@ -2,7 +2,8 @@
 // u_NormalMatrix (mat3, 9 floats) for rigid draws (PipelineStats::floatsPerTransform = 21),
 // u_Mirror (sign(det), in uniformBytesPerFrame) for every draw; skinned draws read the joint
 // palette (12 floats per joint, stored as rows) and upload no transform, as glTF ignores a
-// skinned node's own transform. The projection matrix is built once per frame.
+// skinned node's own transform. The projection matrix is built once per frame. Bezier patch
+// primitives are drawn rigidly by their node with affine_patch.vs (the same per-draw uniforms).
 #include "pipelines/affine/affine_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -10,6 +11,7 @@
 
 #include "pipelines/affine/qtangent_vertices.h"
 #include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
@@ -52,6 +54,8 @@ private:
   std::unique_ptr<Poser> poser_;
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> rigid_, skinned_;
+  std::unique_ptr<gl::Program> patch_;  // affine_patch.vs, only for scenes with patches
+  gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
   gl::SceneGeometry geometry_;
   gl::PaletteBuffers palettes_;  // one per pose_.palettes entry
@@ -76,6 +80,12 @@ Status AffinePipeline::prepare(const Scene& scene) {
   skinned_->bindStorageBlock("AffineJoints", 0);
   if (Status fits = gl::checkPaletteSize(scene, 12 * sizeof(float)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
+  if (gl::hasPatches(scene)) {
+    auto patch = gl::Program::fromFiles("affine_patch.vs", "forward.fs");
+    if (!patch) return Status::fail(patch.error());
+    patch_ = patch.take();
+    if (Status up = patches_.upload(scene, stats_); !up) return up;
+  }
 
   auto t0 = gl::Clock::now();
   if (Status posed = poser_->prepare(scene); !posed) return posed;
@@ -128,7 +138,8 @@ void AffinePipeline::render(const View& view) {
   const glm::mat4 viewProjection =
       glm::perspective(view.yfov, view.aspect, view.znear, view.zfar) * viewMatrix;
   gl::beginDraws();
-  for (gl::Program* p : {rigid_.get(), skinned_.get()}) {
+  for (gl::Program* p : {rigid_.get(), skinned_.get(), patch_.get()}) {
+    if (!p) continue;
     p->use();
     gl::uniformMatrix4(p->uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
                        stats_.uniformBytesPerFrame);
@@ -138,12 +149,13 @@ void AffinePipeline::render(const View& view) {
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.at(d);
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
-    if (!g.indexCount) continue;
+    const bool patch = patches_.has(d);  // drawn rigidly by its node (never skinned)
+    if (!patch && !g.indexCount) continue;
     // A mesh shared by a skinned and an unskinned node is drawn rigidly on the latter.
     GLuint palette = 0;
-    for (size_t i = 0; g.skinned && i < pose_.palettes.size(); ++i)
+    for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = palettes_[i];
-    const gl::Program& program = palette ? *skinned_ : *rigid_;
+    const gl::Program& program = patch ? *patch_ : palette ? *skinned_ : *rigid_;
     program.use();
     const glm::mat4x3& model = pose_.world[size_t(d.node)];
     const float sign = mirror(model);
@@ -158,7 +170,10 @@ void AffinePipeline::render(const View& view) {
     gl::uniform1f(program.uniform("u_Mirror"), sign, stats_.uniformBytesPerFrame);
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(sign < 0.0f);
-    g.draw();
+    if (patch)
+      patches_.draw(d);
+    else
+      g.draw();
     ++stats_.draws;
   }
   gl::endDraws();
@@ -168,6 +183,8 @@ void AffinePipeline::render(const View& view) {
 
 void AffinePipeline::release() {
   geometry_.release();
+  patches_.release();
+  patch_.reset();
   palettes_.release();
   textures_.release();
   rigid_.reset();

@@ -13,6 +13,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
@@ -44,6 +45,8 @@ private:
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][no tangent]
   bool worldPalette_ = false;
+  std::unique_ptr<gl::Program> patch_;  // matrix_patch.vs, only for scenes with patches
+  gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
   gl::SceneGeometry geometry_;
   gl::PaletteBuffers palettes_;  // one per pose_.palettes entry (same order every update)
@@ -71,6 +74,12 @@ Status MatrixPipeline::prepare(const Scene& scene) {
   if (Status fits = gl::checkPaletteSize(scene, 2 * sizeof(glm::mat4)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
 
+  if (gl::hasPatches(scene)) {
+    auto patch = gl::Program::fromFiles("matrix_patch.vs", "forward.fs");
+    if (!patch) return Status::fail(patch.error());
+    patch_ = patch.take();
+    if (Status up = patches_.upload(scene, stats_); !up) return up;
+  }
   auto t0 = gl::Clock::now();
   geometry_.upload(
       scene,
@@ -122,12 +131,13 @@ void MatrixPipeline::render(const View& view) {
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (unused variants
   // upload nothing, so uniformBytesPerFrame counts what a frame needs).
-  bool frameSet[2][2] = {};
+  // skinned -1: the Bezier patch program (matrix_patch.vs).
+  bool frameSet[3][2] = {};
   auto useProgram = [&](int skinned, int noTangent) -> const gl::Program& {
-    gl::Program& p = *programs_[skinned][noTangent];
+    gl::Program& p = skinned < 0 ? *patch_ : *programs_[skinned][noTangent];
     p.use();
-    if (!frameSet[skinned][noTangent]) {
-      frameSet[skinned][noTangent] = true;
+    if (!frameSet[skinned + 1][noTangent]) {
+      frameSet[skinned + 1][noTangent] = true;
       gl::uniformMatrix4(p.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
                          stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
@@ -138,12 +148,13 @@ void MatrixPipeline::render(const View& view) {
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.at(d);
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
-    if (!g.indexCount) continue;
+    const bool patch = patches_.has(d);  // Bezier patches: drawn rigidly by their node (never skinned)
+    if (!patch && !g.indexCount) continue;
     // A mesh shared by a skinned and an unskinned node is drawn rigidly on the latter.
     GLuint palette = 0;
-    for (size_t i = 0; g.skinned && i < pose_.palettes.size(); ++i)
+    for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = palettes_[i];
-    const gl::Program& program = useProgram(palette ? 1 : 0, g.variant == 1 ? 1 : 0);
+    const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, g.variant == 1 ? 1 : 0);
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
     const glm::mat4& model = pose_.world[size_t(d.node)];
     glm::mat4 normal = matrix::normalMatrix(model);
@@ -151,7 +162,10 @@ void MatrixPipeline::render(const View& view) {
     gl::uniformMatrix4(program.uniform("u_NormalMatrix"), 1, glm::value_ptr(normal), transformBytes);
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(normal[3][3] < 0.0f);  // sign(det(model)) as stored by normalMatrix()
-    g.draw();
+    if (patch)
+      patches_.draw(d);
+    else
+      g.draw();
     ++stats_.draws;
   }
   gl::endDraws();
@@ -162,6 +176,8 @@ void MatrixPipeline::render(const View& view) {
 
 void MatrixPipeline::release() {
   geometry_.release();
+  patches_.release();
+  patch_.reset();
   palettes_.release();
   textures_.release();
   for (auto& row : programs_)

@@ -15,6 +15,7 @@
 #include "pipelines/motor/motor_pipeline.h"
 
 #include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
@@ -65,6 +66,8 @@ private:
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][scale fallback]
   bool referenceSkin_ = false;
+  std::unique_ptr<gl::Program> patchPrograms_[2];  // motor_patch.vs [scale fallback], scenes with patches
+  gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
   gl::SceneGeometry geometry_;
   gl::PaletteBuffers paletteBuffers_;             // one per palettes_ entry
@@ -94,6 +97,16 @@ Status MotorPipeline::prepare(const Scene& scene) {
     }
   if (Status fits = gl::checkPaletteSize(scene, 8 * sizeof(float)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
+  if (gl::hasPatches(scene)) {
+    for (int fallback = 0; fallback < 2; ++fallback) {
+      gl::Defines defines;
+      if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
+      auto program = gl::Program::fromFiles("motor_patch.vs", "forward.fs", defines);
+      if (!program) return Status::fail(program.error());
+      patchPrograms_[fallback] = program.take();
+    }
+    if (Status up = patches_.upload(scene, stats_); !up) return up;
+  }
 
   // Load-time conversion: transforms and inverse binds to motors, frames to rotors.
   auto t0 = gl::Clock::now();
@@ -158,15 +171,16 @@ void MotorPipeline::render(const View& view) {
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (unused variants
   // upload nothing, so uniformBytesPerFrame counts what a frame needs).
-  bool frameSet[2][2] = {};
+  // skinned -1: the Bezier patch program (motor_patch.vs) of that scale form.
+  bool frameSet[3][2] = {};
   auto useProgram = [&](int skinned, int fallback) -> const gl::Program& {
-    gl::Program& p = *programs_[skinned][fallback];
+    gl::Program& p = skinned < 0 ? *patchPrograms_[fallback] : *programs_[skinned][fallback];
     p.use();
-    if (!frameSet[skinned][fallback]) {
-      frameSet[skinned][fallback] = true;
+    if (!frameSet[skinned + 1][fallback]) {
+      frameSet[skinned + 1][fallback] = true;
       gl::uniform4fv(p.uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
       gl::uniform4f(p.uniform("u_Projection"), projection, stats_.uniformBytesPerFrame);
-      if (variant_.projectionConstants)
+      if (variant_.projectionConstants && skinned >= 0)
         gl::uniform4f(p.uniform("u_ProjectionK"), &k[0], stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
     }
@@ -176,16 +190,18 @@ void MotorPipeline::render(const View& view) {
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.at(d);
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
-    if (!g.indexCount) continue;
+    const bool patch = patches_.has(d);  // Bezier patches: drawn rigidly by their node (never skinned)
+    if (!patch && !g.indexCount) continue;
     // A mesh shared by a skinned and an unskinned node is drawn rigidly on the latter.
     const motor::JointPalette* palette = nullptr;
     GLuint paletteBuffer = 0;
-    for (size_t i = 0; g.skinned && i < palettes_.size(); ++i)
+    for (size_t i = 0; !patch && g.skinned && i < palettes_.size(); ++i)
       if (palettes_[i].node == d.node) palette = &palettes_[i], paletteBuffer = paletteBuffers_[i];
     const motor::ScaledMotor& world = world_[size_t(d.node)];
     const DrawScale scale = palette ? drawScale(palette->scale, glm::vec3(1.0f))
                                     : drawScale(world.scale, world.residual);
-    const gl::Program& program = useProgram(palette ? 1 : 0, scale.fallback ? 1 : 0);
+    const gl::Program& program = patch ? useProgram(-1, scale.fallback ? 1 : 0)
+                                       : useProgram(palette ? 1 : 0, scale.fallback ? 1 : 0);
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
     // glTF: a skinned mesh ignores its node's transform, so with a world-space palette only
     // rigid draws upload one; the reference form composes it per vertex.
@@ -202,7 +218,10 @@ void MotorPipeline::render(const View& view) {
     if (!palette || referenceSkin_) transformScaleBytes += scaleBytes;  // draws with a transform
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(scale.mirrored);
-    g.draw();
+    if (patch)
+      patches_.draw(d);
+    else
+      g.draw();
     ++stats_.draws;
   }
   gl::endDraws();
@@ -213,6 +232,8 @@ void MotorPipeline::render(const View& view) {
 
 void MotorPipeline::release() {
   geometry_.release();
+  patches_.release();
+  for (auto& p : patchPrograms_) p.reset();
   paletteBuffers_.release();
   textures_.release();
   for (auto& row : programs_)

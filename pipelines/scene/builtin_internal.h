@@ -13,6 +13,7 @@ void buildTexturedBox(GlbBuilder& b);
 void buildSkinnedTube(GlbBuilder& b);
 void buildScaledHierarchy(GlbBuilder& b);
 void buildCrowd(GlbBuilder& b);
+void buildTeapot(GlbBuilder& b);
 
 // Tangent-space normal map (RGBA8, size x size) of a height field of sin bumps with the given
 // number of periods along u and v; deterministic.

@@ -17,6 +17,7 @@ Builder builderFor(const std::string& name) {
   if (name == "scaled_hierarchy") return &buildScaledHierarchy;
   if (name == "crowd") return &buildCrowd;
   if (name == "dense_torus") return &buildDenseTorus;
+  if (name == "teapot") return &buildTeapot;
   return nullptr;
 }
 
@@ -24,7 +25,7 @@ Builder builderFor(const std::string& name) {
 
 const std::vector<std::string>& builtinSceneNames() {
   static const std::vector<std::string> names = {"normal_torus", "textured_box", "skinned_tube",
-                                                 "scaled_hierarchy", "crowd", "dense_torus"};
+                                                 "scaled_hierarchy", "crowd", "dense_torus", "teapot"};
   return names;
 }
 

@@ -10,7 +10,7 @@
 
 namespace mb {
 
-// "normal_torus", "textured_box", "skinned_tube", "scaled_hierarchy", "crowd".
+// "normal_torus", "textured_box", "skinned_tube", "scaled_hierarchy", "crowd", "teapot".
 const std::vector<std::string>& builtinSceneNames();
 // True for those and for the curved-space scenes (curved_space.h: curvedSceneNames()), which
 // loadScene builds in code; builtinSceneGlb refuses those (glTF has no curved space).

@@ -46,6 +46,8 @@ void addMesh(const Scene& scene, const std::vector<glm::mat4>& world, int n, Bou
     b.padded = true;
   }
   for (const Primitive& p : scene.meshes[size_t(node.mesh)].primitives) {
+    // Bezier patches lie inside the convex hull of their control points: the points bound them.
+    for (const glm::vec3& c : p.patchPoints) b.add(glm::vec3(world[size_t(n)] * glm::vec4(c, 1.0f)));
     bool skinned = skin && !joints.empty() && p.joints.size() == p.positions.size() &&
                    p.weights.size() == p.positions.size();
     for (size_t v = 0; v < p.positions.size(); ++v) {

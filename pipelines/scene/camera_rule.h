@@ -22,8 +22,9 @@ struct View {
 // becomes znear * 1e4; orthographic cameras are rendered as perspective with the default
 // yfov). When no node carries that camera, or cameraIndex < 0: frame the bounding sphere of
 // every posed mesh vertex reachable from Scene::roots (skinned vertices by linear blend
-// skinning, joint origins included, radius padded by 5% for other skinning methods) from a
-// fixed direction: 30 degrees to the +X side of +Z and 20 degrees above, yfov 0.8, the sphere
+// skinning, joint origins included, radius padded by 5% for other skinning methods; Bezier
+// patch primitives by their control points) from a fixed direction: 30 degrees to the +X
+// side of +Z and 20 degrees above, yfov 0.8, the sphere
 // fully inside the frustum, near/far hugging the sphere. An empty scene gives View{}.
 View frameScene(const Scene& scene, const AnimState& state, float aspect, int cameraIndex = -1);
 

@@ -9,6 +9,7 @@
 
 namespace tinygltf {
 class Model;
+struct Primitive;
 }
 
 namespace mb {
@@ -18,6 +19,12 @@ namespace mb {
 // scene.materials (already converted) to decide where tangents are needed.
 Result<Mesh> convertMesh(const tinygltf::Model& model, int index, uint32_t jointCount,
                          Scene& scene);
+
+// The MB_bezier_patches primitive extension (gltf_patches.cpp): a POINTS primitive whose
+// POSITION holds 16 control points per bicubic patch -> a primitive with patchPoints.
+constexpr const char* kBezierPatchesExtension = "MB_bezier_patches";
+Result<Primitive> convertPatchPrimitive(const tinygltf::Model& model,
+                                        const tinygltf::Primitive& primitive, int materialCount);
 
 // All animations (T/R/S channels; weights channels are recorded as unsupported).
 Status convertAnimations(const tinygltf::Model& model, Scene& scene);

@@ -5,10 +5,12 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <set>
 
+#include "pipelines/scene/bpt_reader.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/gltf_convert.h"
 #include "pipelines/scene/image_decode.h"
@@ -75,7 +77,7 @@ std::string firstLines(std::string s) {
 }
 
 void noteExtensions(const tinygltf::Model& m, Scene& scene) {
-  static const std::set<std::string> supported = {"KHR_mesh_quantization"};
+  static const std::set<std::string> supported = {"KHR_mesh_quantization", kBezierPatchesExtension};
   static const std::set<std::string> geometry = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
                                                  "EXT_mesh_gpu_instancing", "KHR_meshopt_compression"};
   std::set<std::string> seen;
@@ -107,6 +109,13 @@ Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadCon
   }
   if (s = convertAnimations(m, scene); !s) return Result<Scene>::fail(name + ": " + s.error());
   return scene;
+}
+
+// ".bpt" in any case: the Bezier patch text format (bpt_reader.h).
+bool hasBptExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".bpt";
 }
 
 }  // namespace
@@ -154,6 +163,7 @@ Result<Scene> loadGltfFile(const std::string& path) {
 
 Result<Scene> loadScene(const std::string& fileOrBuiltinName) {
   if (isCurvedScene(fileOrBuiltinName)) return buildCurvedScene(fileOrBuiltinName);
+  if (hasBptExtension(fileOrBuiltinName)) return loadBptFile(fileOrBuiltinName);
   if (!isBuiltinScene(fileOrBuiltinName)) return loadGltfFile(fileOrBuiltinName);
   auto glb = builtinSceneGlb(fileOrBuiltinName);
   if (!glb) return Result<Scene>::fail(glb.error());

@@ -113,6 +113,12 @@ Result<Mesh> convertMesh(const tinygltf::Model& m, int index, uint32_t jointCoun
       scene.unsupported.push_back(where + ": " + why + " (primitive skipped)");
       ++scene.stats.skippedPrimitives;
     };
+    if (prim.extensions.count(kBezierPatchesExtension)) {
+      auto patches = convertPatchPrimitive(m, prim, int(scene.materials.size()));
+      if (!patches) return R::fail(where + ": " + patches.error());
+      mesh.primitives.push_back(patches.take());
+      continue;
+    }
     if (prim.mode != kTriangles && prim.mode != kStrip && prim.mode != kFan && prim.mode != -1) {
       skip("mode " + std::to_string(prim.mode) + " (points/lines) not supported");
       continue;

@@ -18,7 +18,8 @@ Result<Scene> loadGltfMemory(const std::vector<uint8_t>& bytes, const std::strin
                              const std::string& baseDir = "");
 
 // A file path, or the name of a built-in scene (see builtin_scenes.h), which is generated as
-// .glb bytes and loaded through loadGltfMemory, the same path user files take.
+// .glb bytes and loaded through loadGltfMemory, the same path user files take. Files ending
+// in .bpt (any case) are Bezier patch files (bpt_reader.h); everything else is glTF.
 Result<Scene> loadScene(const std::string& fileOrBuiltinName);
 
 }  // namespace mb

@@ -43,6 +43,11 @@ struct Primitive {
   bool hadTangents = false;           // TANGENT was authored
   bool generatedNormals = false;
   bool generatedTangents = false;
+  // Bicubic Bezier patches (a .bpt file, or a glTF primitive with MB_bezier_patches): 16
+  // control points per patch, row by row (point 4 * row + column; u runs along a row, v across
+  // the rows). Such a primitive has no vertex streams; pipelines tessellate it
+  // (pipelines/scene/bezier.h). Empty for ordinary triangle primitives.
+  std::vector<glm::vec3> patchPoints;
 };
 
 struct Mesh {
@@ -179,6 +184,10 @@ struct Scene {
   std::vector<std::string> unsupported;  // features present but not rendered, one line each
   LoadStats stats;
   CurvedScene curved;  // space != Euclidean: a curved-space scene (no nodes or meshes)
+  // Refinement-pattern level N at which pipelines tessellate patch primitives: a uv grid of
+  // (N+1)^2 vertices and 2 N^2 triangles drawn once per patch. A render setting the caller may
+  // change before prepare() (`motorbench time --level N`).
+  int patchLevel = 16;
 };
 
 }  // namespace mb

@@ -19,13 +19,19 @@ FileStats computeFileStats(const Scene& s) {
     for (const Primitive& p : s.meshes[m].primitives) {
       ++f.primitives;
       meshVertices[m] += int(p.positions.size());
+      if (!p.patchPoints.empty()) {
+        const long long perPatch = (long long)(s.patchLevel + 1) * (s.patchLevel + 1);
+        f.patches += int(p.patchPoints.size() / 16);
+        meshVertices[m] += int(std::min<long long>(perPatch * (long long)(p.patchPoints.size() / 16), 1LL << 30));
+      }
       f.triangles += int(p.indices.size() / 3);
       bool normalMapped = p.material >= 0 && s.materials[size_t(p.material)].normal.texture >= 0;
       f.normalMappedPrimitives += normalMapped;
       f.authoredTangentPrimitives += p.hadTangents;
       f.skinnedPrimitives += !p.joints.empty();
     }
-  for (int v : meshVertices) f.vertices += v;
+  for (size_t m = 0; m < s.meshes.size(); ++m)
+    for (const Primitive& p : s.meshes[m].primitives) f.vertices += int(p.positions.size());
   for (const Node& n : s.nodes) {
     f.matrixNodes += n.hasMatrix;
     if (n.mesh >= 0) {
@@ -85,7 +91,7 @@ nlohmann::json toJson(const FileStats& f) {
   const ScaleReport& r = f.scale;
   j["geometry"] = {{"nodes", f.nodes}, {"matrixNodes", f.matrixNodes}, {"meshes", f.meshes},
                    {"primitives", f.primitives}, {"vertices", f.vertices}, {"triangles", f.triangles},
-                   {"meshNodes", f.meshNodes}, {"drawnVertices", f.drawnVertices}};
+                   {"meshNodes", f.meshNodes}, {"drawnVertices", f.drawnVertices}, {"patches", f.patches}};
   j["materials"] = {{"materials", f.materials}, {"textures", f.textures}, {"images", f.images},
                     {"normalMappedPrimitives", f.normalMappedPrimitives},
                     {"authoredTangentPrimitives", f.authoredTangentPrimitives}};

@@ -17,7 +17,10 @@ struct FileStats {
   std::string error;  // when !loaded
   // Geometry (meshes counted once) and what the nodes draw (instances).
   int nodes = 0, matrixNodes = 0, meshes = 0, primitives = 0, vertices = 0, triangles = 0;
+  // drawnVertices: vertex-shader runs per frame: mesh vertices per instancing node, plus for
+  // Bezier patch primitives (Primitive::patchPoints) (N+1)^2 per patch at N = Scene::patchLevel.
   int meshNodes = 0, drawnVertices = 0;
+  int patches = 0;  // bicubic Bezier patches (meshes counted once)
   int materials = 0, textures = 0, images = 0, cameras = 0;
   int normalMappedPrimitives = 0, authoredTangentPrimitives = 0, skinnedPrimitives = 0;
   int skins = 0, joints = 0, maxJointsPerSkin = 0;

@@ -153,4 +153,26 @@ TEST(VertexOps, BothSkinnedConfigurationsAreVariantsOfBothPipelines) {
     }
 }
 
+// Bezier patches (issue 14): the shared evaluation and each pipeline's frame, by hand.
+TEST(VertexOps, PatchKernelsMatchHandDerivedCounts) {
+  auto c = countedByFunction();
+  // Bases 2 x (8/1) + 2 x (6/1); four rows 4 x (21/24); P and dP/du 2 x (12/9); dP/dv 9/15;
+  // two squared lengths 6/4; the relative degenerate test 2 mul (an interior vertex).
+  expectCounts(c["bezierPatch"], {153, 137}, "bezierPatch");
+  // cross 6/3 + three mat4 * vec4 48/36 + handedness 1/0.
+  expectCounts(c["matrixPatchVertex"], {55, 39}, "matrixPatchVertex");
+  // (a): sw_mp 21/18 after the scale 3/0, two sw_md 2 x (18/12), cross 6/3.
+  expectCounts(c["motorPatchVertex"], {66, 45}, "motorPatchVertex");
+  // (a) scaled: three scalings 9/0, sw_mp 21/18, two sw_md 36/24, cross 6/3, mirror = sign of
+  // a product 2/0 + 1 other, mirror * normal 3/0.
+  expectCounts(c["motorScaledPatchVertex"], {77, 45, 0, 0, 1}, "motorScaledPatchVertex");
+  // (b) at these inputs (frame trace > 0): normalize(dP/du) 6/2 + 1 inversesqrt; cross 6/3
+  // and its normalize 6/2 + 1 inversesqrt; frameRotor: bitangent cross 6/3, trace 0/2,
+  // 0.5 inversesqrt(trace + 1) 1/1 + 1 inversesqrt, three differences times s 3/3, 0.25 / s
+  // 1 div; gp_rr 16/12; extractNormalTangent 9/8; sw_mp 21/18 after the scale 3/0.
+  const OpCounts b = c["motorPatchVertexRotor"];
+  expectCounts(b, {77, 54, 1, 0, 3}, "motorPatchVertexRotor (b)");
+  EXPECT_GT(b.mul + b.add, 66u + 45u) << "(a) is the cheaper frame, the one drawn";
+}
+
 }  // namespace

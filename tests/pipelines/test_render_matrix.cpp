@@ -7,6 +7,7 @@
 #include "harness/render/render_frame.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
+#include "pipelines/scene/scene_stats.h"
 
 using namespace mb;
 
@@ -95,9 +96,21 @@ TEST_P(BuiltinScene, RendersNonEmptyDeterministicWithMeasuredStats) {
   EXPECT_GT(cov, 0.02) << "almost nothing drawn";
   EXPECT_LT(cov, 0.98) << "framing lost the background";
   const PipelineStats& s = a.stats;
-  EXPECT_DOUBLE_EQ(s.floatsPerVertex, 12.0);
+  const FileStats f = computeFileStats(*scene);
+  if (f.patches > 0) {
+    // Bezier patches: the uploaded vertices are one refinement pattern of uv pairs (level N:
+    // (N+1)^2), the control points go to a buffer texture (16 x vec3 per patch).
+    const uint64_t n = uint64_t(scene->patchLevel) + 1;
+    EXPECT_DOUBLE_EQ(s.floatsPerVertex, 2.0);
+    EXPECT_EQ(s.vertices, n * n);
+    EXPECT_EQ(s.vertexBytes, s.vertices * 8);
+    EXPECT_EQ(s.patchBytes, uint64_t(f.patches) * 16 * 12);
+  } else {
+    EXPECT_DOUBLE_EQ(s.floatsPerVertex, 12.0);
+    EXPECT_EQ(s.vertexBytes, s.vertices * 48);
+    EXPECT_EQ(s.patchBytes, 0u);
+  }
   EXPECT_DOUBLE_EQ(s.floatsPerTransform, 32.0);
-  EXPECT_EQ(s.vertexBytes, s.vertices * 48);
   EXPECT_GT(s.draws, 0);
   EXPECT_GT(s.indexBytes, 0u);
   if (!scene->skins.empty()) {

@@ -43,7 +43,7 @@ glm::mat4 world(const mb::Scene& s, const std::vector<mb::TRS>& pose, int node) 
 TEST(SceneBuiltin, NamesAreStable) {
   EXPECT_EQ(mb::builtinSceneNames(),
             (std::vector<std::string>{"normal_torus", "textured_box", "skinned_tube", "scaled_hierarchy", "crowd",
-                                      "dense_torus"}));
+                                      "dense_torus", "teapot"}));
   EXPECT_TRUE(mb::isBuiltinScene("crowd"));
   EXPECT_FALSE(mb::isBuiltinScene("crowd.glb"));
   EXPECT_FALSE(mb::builtinSceneGlb("nope").ok());
