@@ -16,6 +16,9 @@ constexpr float kAutoYfov = 0.8f;
 constexpr float kAutoYaw = glm::radians(30.0f);    // towards +X
 constexpr float kAutoPitch = glm::radians(20.0f);  // camera above, looking down
 constexpr float kSkinPadding = 1.05f;              // other skinning methods may bulge out
+// Points farther out than this do not frame the camera: the squared length of the bounds'
+// diagonal (glm::length) overflows a float from about 1.8e19 per coordinate (fuzz finding F14).
+constexpr float kMaxFramedCoordinate = 1e18f;
 
 struct Bounds {
   glm::vec3 lo{std::numeric_limits<float>::max()};
@@ -23,6 +26,7 @@ struct Bounds {
   bool padded = false;
   void add(glm::vec3 p) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return;
+    if (glm::any(glm::greaterThan(glm::abs(p), glm::vec3(kMaxFramedCoordinate)))) return;
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
