@@ -28,10 +28,15 @@ std::string fmt(const char* f, double v) {
   return b;
 }
 
-// Rotation angle between two unit quaternions, degrees (q and -q are the same rotation).
-double angleDegrees(const glm::dquat& a, const glm::dquat& b) {
-  const double d = std::min(1.0, std::fabs(glm::dot(glm::normalize(a), glm::normalize(b))));
-  return glm::degrees(2.0 * std::acos(d));
+// Rotation angle between two unit quaternions, degrees (q and -q are the same rotation);
+// The quaternions lie b = 2 atan2(|a - b|, |a + b|) apart on the unit sphere (accurate for tiny
+// angles, where acos(dot) is not), and the rotations twice that.
+double angleDegrees(const glm::dquat& a, glm::dquat b) {
+  const glm::dquat x = glm::normalize(a);
+  b = glm::normalize(b);
+  if (glm::dot(x, b) < 0.0) b = -b;
+  const glm::dvec4 d(x.x - b.x, x.y - b.y, x.z - b.z, x.w - b.w), s(x.x + b.x, x.y + b.y, x.z + b.z, x.w + b.w);
+  return glm::degrees(4.0 * std::atan2(glm::length(d), glm::length(s)));
 }
 
 glm::quat keyAt(const Channel& c, size_t k) {
