@@ -228,6 +228,9 @@ std::vector<Claim> skinnedFileVolumeClaims(const std::string& corpusDir) {
   std::string text;
   Range lbsAll, motorAll;
   int measured = 0;
+  // Per file: meshes measured closed / open and the ranges over them (the text; JSON per mesh).
+  struct FileSum { int closed = 0, open = 0; Range lbs, mot; };
+  std::map<std::string, FileSum> byFile;
   for (const std::string& f : files) {
     auto scene = loadScene(f);
     if (!scene || scene->skins.empty() || scene->animations.empty()) continue;
@@ -273,8 +276,9 @@ std::vector<Claim> skinnedFileVolumeClaims(const std::string& corpusDir) {
                                (mesh.primitives.size() > 1 ? "#" + std::to_string(pi) : "");
         per[id] = {{"measure", closed ? "enclosed volume" : "local volume (Jacobian det)"},
                    {"lbs", {{"min", lbs.lo}, {"max", lbs.hi}}}, {"motor", {{"min", mot.lo}, {"max", mot.hi}}}};
-        text += (text.empty() ? "" : "; ") + id + " (" + (closed ? "closed, enclosed volume" : "open, local volume") +
-                ") LBS " + num(lbs.lo) + ".." + num(lbs.hi) + ", motor " + num(mot.lo) + ".." + num(mot.hi);
+        FileSum& fsum = byFile[fs::path(f).filename().string()];
+        (closed ? fsum.closed : fsum.open) += 1;
+        fsum.lbs.add(lbs.lo), fsum.lbs.add(lbs.hi), fsum.mot.add(mot.lo), fsum.mot.add(mot.hi);
         lbsAll.add(lbs.lo), lbsAll.add(lbs.hi), motorAll.add(mot.lo), motorAll.add(mot.hi);
       }
     }
@@ -286,6 +290,12 @@ std::vector<Claim> skinnedFileVolumeClaims(const std::string& corpusDir) {
     c.verdictText = "not measurable here: no animated skinned mesh in " + corpusDir;
     return {c};
   }
+  for (const auto& [file, fsum] : byFile)
+    text += (text.empty() ? "" : "; ") + file + " (" +
+            (fsum.closed ? std::to_string(fsum.closed) + " closed mesh(es): enclosed volume" : std::string()) +
+            (fsum.closed && fsum.open ? ", " : "") +
+            (fsum.open ? std::to_string(fsum.open) + " open mesh(es): local volume" : std::string()) + ") LBS " +
+            num(fsum.lbs.lo) + ".." + num(fsum.lbs.hi) + ", motor " + num(fsum.mot.lo) + ".." + num(fsum.mot.hi);
   c.measured = "volume posed / rest over every time: " + text;
   c.measuredValue = {{"meshes", per}, {"lbs", {{"min", lbsAll.lo}, {"max", lbsAll.hi}}},
                      {"motor", {{"min", motorAll.lo}, {"max", motorAll.hi}}}};
