@@ -124,6 +124,7 @@ std::vector<Claim> sceneGraphClaims(const json& kernelPairs, const json& timings
   c.paperValue = nullptr;
   struct Evidence { std::string what; double cost = -1; std::string detail; };
   std::vector<Evidence> ev;
+  std::string sameClass;  // a note: the kernel's same-class ratio when the fastest side is another class
   // The hierarchy kernel: motor items/s against the fastest other side.
   {
     Evidence e{"hierarchy kernel (motorbench bench pair hierarchy)"};
@@ -134,6 +135,12 @@ std::vector<Claim> sceneGraphClaims(const json& kernelPairs, const json& timings
         if (f.costRatio() > 0) {
           e.cost = f.costRatio();
           e.detail = "fastest motor side " + f.motorSide + ", fastest matrix side " + f.matrixSide + " (nodes/s: " + f.all + ")";
+          // The same implementation class on both sides: the shader sources through the shim.
+          const double m = p.contains("matrix") ? p["matrix"].value("items_per_second", 0.0) : 0.0;
+          const double q = p.contains("motor") ? p["motor"].value("items_per_second", 0.0) : 0.0;
+          if (m > 0 && q > 0 && f.matrixSide != "matrix")
+            sameClass = "the hierarchy kernel with both sides the scalar shim source (motor / matrix) is " + fmt("%.2fx", m / q) +
+                        ": the gap to " + f.matrixSide + " is its implementation, not the algebra";
         }
       }
     if (e.cost < 0) e.detail = "no hierarchy bench pair in this run's kernel data";
@@ -199,6 +206,7 @@ std::vector<Claim> sceneGraphClaims(const json& kernelPairs, const json& timings
     c.verdictText = "inconclusive: gain in " + gain + "; no gain in " + loss + (loss.empty() || tie.empty() ? "" : ", ") + tie;
   }
   if (!missing.empty() && c.verdict != Verdict::NotMeasurable) c.verdictText += "; not measured: " + missing;
+  if (!sameClass.empty() && c.verdict != Verdict::NotMeasurable) c.verdictText += "; note: " + sameClass;
   return {c};
 }
 

@@ -276,3 +276,15 @@ TEST(ClaimsSpeed, KernelEvidenceIsFastestAgainstFastest) {
   // No frame timing: some evidence is missing, so the verdict cannot be "reproduced".
   EXPECT_NE(c.verdict, claims::Verdict::Reproduced);
 }
+
+// When the fastest matrix side is another implementation class (GLM), the verdict names the
+// same-class ratio too (matrix 100 / motor 200 = 0.50x: the shim motor beats the shim matrix).
+TEST(ClaimsSceneGraph, SameClassRatioIsNamedBesideTheFastest) {
+  const json pairs = json::array({{{"kernel", "hierarchy"},
+                                   {"matrix", {{"items_per_second", 100.0}}},
+                                   {"glm", {{"items_per_second", 300.0}}},
+                                   {"motor", {{"items_per_second", 200.0}}}}});
+  const claims::Claim c = only(claims::sceneGraphClaims(pairs, nullptr, "test"), "scene_graph_update");
+  EXPECT_EQ(c.verdict, claims::Verdict::Differs) << c.verdictText;
+  EXPECT_NE(c.verdictText.find("0.50x"), std::string::npos) << c.verdictText;
+}
