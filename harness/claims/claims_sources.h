@@ -7,6 +7,10 @@
 //   claims_baselines.cpp affine matrix path, full world-to-clip, skinning per vertex
 //   claims_curved.cpp    curved space (issue 15): S3 / H3 matrix vs motor
 //   claims_strongest.cpp the paper's verdicts against the strongest matrix variant measured
+//   claims_composition.cpp  gp_mm vs mat4 vs affine composition; the scene-graph update
+//   claims_conversion.cpp   quaternion -> rotor for free; the uniform-scale overhead
+//   claims_handedness.cpp   the paper's tangent-frame handedness rule on the built-in scenes
+//   claims_blending.cpp     motor blending vs slerp over the built-in animations
 #pragma once
 #include <string>
 #include <vector>
@@ -55,5 +59,29 @@ std::vector<Claim> curvedClaims(bool runTiming, int frames);
 // scenes), ops per vertex (counted and SPIR-V) and time ratios (`timings`: {scene: timing JSON},
 // or null), the motor pipeline judged against the best matrix-side pipeline (issue 16).
 std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource);
+
+// Composition, counted (gp_mm, mat4 * mat4, affine mat4x3) and, when `runTiming`, timed side
+// by side (harness/bench/compose_timing.h).
+std::vector<Claim> compositionClaims(bool runTiming);
+
+// Scene-graph update: the hierarchy bench pair (`kernelPairs`, report_bench.h's pairs, or null)
+// and Pipeline::update per scene (`timings`: {scene: timing JSON}, or null), motor against the
+// fastest matrix-side code.
+std::vector<Claim> sceneGraphClaims(const nlohmann::json& kernelPairs, const nlohmann::json& timings,
+                                    const std::string& timingSource);
+
+// Quaternion -> rotor conversion cost and the uniform-scale overhead per vertex (renders
+// normal_torus for the floats per transform; needs GL).
+std::vector<Claim> conversionClaims();
+
+// The paper's handedness load rule on every frame of the built-in scenes.
+std::vector<Claim> handednessClaims();
+
+// Motor blend vs slerp over every rotation channel of the built-in animations.
+std::vector<Claim> blendingClaims();
+
+// Volume kept by motor skinning vs LBS on the skinned files directly in `corpusDir`
+// ("not measurable here" when the folder is absent or has none).
+std::vector<Claim> skinnedFileVolumeClaims(const std::string& corpusDir);
 
 }  // namespace mb::claims

@@ -101,8 +101,8 @@ claims::SpeedInputs speedInputs(const Args& args, json& sources) {
   const bool run = !args.has("no-run");
   if (in.kernelPairs.is_null() && run) {
     const std::string tmp = (fs::temp_directory_path() / ("motorbench-claims-bench-" + std::to_string(getpid()) + ".json")).string();
-    say("running motorbench bench (vertex_frame kernels, short)");
-    Status s = report::runBench(tmp, tmp + ".txt", 0.1, "^vertex_frame/");
+    say("running motorbench bench (vertex_frame and hierarchy kernels, short)");
+    Status s = report::runBench(tmp, tmp + ".txt", 0.1, "^(vertex_frame|hierarchy)/");
     auto j = s ? report::readBenchJson(tmp) : Result<json>::fail(s.error());
     if (j) in.kernelPairs = report::kernelPairs(*j)["pairs"], in.kernelSource = "motorbench bench run by claims (min time 0.1 s)";
     else missing += j.error() + "; ";
@@ -157,14 +157,23 @@ int runClaims(const std::vector<std::string>& argv) {
   std::vector<claims::Claim> all;
   say("counting ops");
   for (auto& c : claims::opClaims()) all.push_back(c);
+  say(args.has("no-run") ? "composition (counted)" : "composition (counted and timed)");
+  for (auto& c : claims::compositionClaims(!args.has("no-run"))) all.push_back(c);
+  say("conversions, handedness rule, blending");
+  for (auto& c : claims::conversionClaims()) all.push_back(c);
+  for (auto& c : claims::handednessClaims()) all.push_back(c);
+  for (auto& c : claims::blendingClaims()) all.push_back(c);
   say("measuring uploads");
   for (auto& c : claims::memoryClaims()) all.push_back(c);
   claims::SpeedInputs speed = speedInputs(args, sources);
   for (auto& c : claims::speedClaims(speed)) all.push_back(c);
+  for (auto& c : claims::sceneGraphClaims(speed.kernelPairs, speed.timings, sources["frameTiming"].get<std::string>()))
+    all.push_back(c);
   say("scene statistics");
   for (auto& c : claims::corpusClaims(corpus)) all.push_back(c);
   say("baselines (counted and SPIR-V)");
   for (auto& c : claims::skinningClaims()) all.push_back(c);
+  for (auto& c : claims::skinnedFileVolumeClaims(corpus)) all.push_back(c);
   for (auto& c : claims::baselineClaims()) all.push_back(c);
   say("curved space (uploads, ops, frame timing, drift)");
   {

@@ -160,7 +160,9 @@ TEST(CliClaims, JsonHoldsEveryClaimWithMeasuredValueAndVerdict) {
                          "sqrt_m", "exp_b", "log_m", "extractNormalTangent", "vertex_frame_motor",
                          "vertex_frame_matrix", "floats_per_vertex", "floats_per_transform", "as_fast_as_matrices",
                          "animated_scale_corpus", "affine_matrix_vertex", "world_to_clip_matrix",
-                         "world_to_clip_motor", "skinned_vertex_matrix", "skinned_vertex_motor"}) {
+                         "world_to_clip_motor", "skinned_vertex_matrix", "skinned_vertex_motor", "composition",
+                         "scene_graph_update", "quaternion_to_rotor", "uniform_scale_overhead", "handedness_rule",
+                         "blend_vs_slerp"}) {
     ASSERT_TRUE(byId.count(id)) << id;
     const json& c = byId[id];
     for (const char* key : {"statement", "paper", "measured", "method", "verdict", "verdictText"})

@@ -1,0 +1,25 @@
+#include "harness/claims/claims_kernels.h"
+
+#include <cstdio>
+
+namespace mb::claims {
+
+FastestSides fastestSides(const nlohmann::json& pair) {
+  FastestSides f;
+  if (!pair.is_object()) return f;
+  for (const auto& [side, fig] : pair.items()) {
+    if (!fig.is_object() || !fig.contains("items_per_second") || !fig["items_per_second"].is_number()) continue;
+    const double ips = fig["items_per_second"].get<double>();
+    char b[64];
+    std::snprintf(b, sizeof b, "%.3g", ips);
+    f.all += (f.all.empty() ? "" : ", ") + side + " " + b;
+    if (side.rfind("motor", 0) == 0) {
+      if (ips > f.motor) f.motor = ips, f.motorSide = side;
+    } else if (ips > f.matrix) {
+      f.matrix = ips, f.matrixSide = side;
+    }
+  }
+  return f;
+}
+
+}  // namespace mb::claims

@@ -1,0 +1,22 @@
+// One kernel pair of report_bench.h's kernelPairs() reduced to the fastest implementation on
+// each side, whatever sides the bench registers: every side named "motor..." is the motor side,
+// every other one ("matrix", "glm", a SIMD variant) the matrix side. Fair in both directions: a
+// faster motor implementation counts as much as a faster matrix one.
+#pragma once
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace mb::claims {
+
+struct FastestSides {
+  double motor = 0, matrix = 0;      // items/s of the fastest side of each kind (0: none)
+  std::string motorSide, matrixSide;  // their names
+  std::string all;                    // "matrix 1.2e+08, glm 3.4e+08, motor 1.1e+08" (items/s)
+  // motor time / fastest matrix time per item (< 1: motor faster); -1 when a side is missing.
+  double costRatio() const { return motor > 0 && matrix > 0 ? matrix / motor : -1.0; }
+};
+
+FastestSides fastestSides(const nlohmann::json& pair);
+
+}  // namespace mb::claims
