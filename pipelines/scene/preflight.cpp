@@ -125,7 +125,7 @@ Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameH
     if (v != asset->end() && v->is_string() && v->get<std::string>().rfind("2.", 0) != 0)
       return Status::fail("unsupported glTF version " + v->get<std::string>() + " (2.0 required)");
     if (mv != asset->end() && mv->is_string() && mv->get<std::string>() != "2.0")
-      return Status::fail("unsupported glTF minVersion " + mv->get<std::string>());
+      return Status::fail("unsupported glTF minVersion " + mv->get<std::string>() + " (this loader reads glTF 2.0)");
   }
   // Valid files tinygltf would refuse (conformance.h): integers first, the checks below read them.
   bool changed = normaliseIntegers(doc);
