@@ -46,6 +46,10 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"LoadStats", "degenerateUvTriangles", "triangles", "tangent generation: triangles with zero uv area (no tangent contribution)"},
       {"LoadStats", "tangentSplitVertices", "vertices", "vertices duplicated because their triangles disagree in tangent handedness"},
       {"LoadStats", "imagesNotDecoded", "images", "images that could not be decoded, sampled as 1x1 white (listed under unsupported)"},
+      {"LoadStats", "accessorBoundsMismatch", "accessors", "invalid file: accessors whose min/max disagree with their data (compared as glTF says: raw values, floats rounded to single precision); the data is drawn, the bounds are not used"},
+      {"LoadStats", "keyframeTimesNotIncreasing", "channels", "invalid file: animation channels whose input times do not strictly increase; keys stably sorted by time, equal times kept (a jump)"},
+      {"LoadStats", "rotationKeysNormalised", "keyframes", "invalid file: rotation keyframes whose length differs from 1 by more than 0.00769 (the glTF validator's tolerance), normalised; zero -> identity"},
+      {"LoadStats", "camerasRepaired", "cameras", "invalid file: cameras with zfar <= znear, a negative znear (perspective: <= 0) or yfov outside (0, pi): zfar made infinite (drawn at znear x 1e4), znear 0.01 (orthographic 0), yfov 0.8"},
       // Image metrics (harness/render/image_metrics.h): compare, report and check.
       {"ImageMetrics", "rmse", "", "root mean square of the channel differences (bytes / 255), RGBA, every pixel"},
       {"ImageMetrics", "psnr", "dB", "20 log10(1 / rmse); null (infinite) when the images are identical"},

@@ -20,14 +20,16 @@ T load(const uint8_t* p) {
 }
 
 double readComponent(const uint8_t* p, int type, bool normalized) {
+  double c = 0.0;
   switch (type) {
-    case kByte: { double c = load<int8_t>(p); return normalized ? std::max(c / 127.0, -1.0) : c; }
-    case kUByte: { double c = load<uint8_t>(p); return normalized ? c / 255.0 : c; }
-    case kShort: { double c = load<int16_t>(p); return normalized ? std::max(c / 32767.0, -1.0) : c; }
-    case kUShort: { double c = load<uint16_t>(p); return normalized ? c / 65535.0 : c; }
-    case kUInt: { double c = load<uint32_t>(p); return normalized ? c / 4294967295.0 : c; }
+    case kByte: c = load<int8_t>(p); break;
+    case kUByte: c = load<uint8_t>(p); break;
+    case kShort: c = load<int16_t>(p); break;
+    case kUShort: c = load<uint16_t>(p); break;
+    case kUInt: c = load<uint32_t>(p); break;
     default: return load<float>(p);
   }
+  return normalized ? normalizedValue(c, type) : c;
 }
 
 // Byte offset of component `c` inside one element. Matrix columns start on 4-byte
@@ -157,6 +159,17 @@ Result<AccessorData<T>> decode(const tinygltf::Model& m, int index, const std::s
 }
 
 }  // namespace
+
+double normalizedValue(double c, int componentType) {
+  switch (componentType) {
+    case kByte: return std::max(c / 127.0, -1.0);
+    case kUByte: return c / 255.0;
+    case kShort: return std::max(c / 32767.0, -1.0);
+    case kUShort: return c / 65535.0;
+    case kUInt: return c / 4294967295.0;
+    default: return c;
+  }
+}
 
 int componentSize(int t) {
   switch (t) {

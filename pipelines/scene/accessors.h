@@ -38,6 +38,10 @@ Result<AccessorData<float>> readAccessorFloat(const tinygltf::Model& model, int 
 Result<AccessorData<uint32_t>> readAccessorUint(const tinygltf::Model& model, int index,
                                                 const std::string& what);
 
+// An integer component `c` of `componentType` as a normalized accessor reads it (glTF 2.0
+// 3.11: unsigned c / (2^n - 1), signed max(c / (2^(n-1) - 1), -1)); floats unchanged.
+double normalizedValue(double c, int componentType);
+
 // Bytes per component of a glTF componentType, 0 when unknown.
 int componentSize(int componentType);
 

@@ -1,12 +1,44 @@
 // Animations: validated T/R/S channels. Morph-weight channels are recorded as unsupported.
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "pipelines/scene/accessors.h"
 #include "pipelines/scene/gltf_convert.h"
 
 namespace mb {
+namespace {
+
+// The glTF validator's unit-length tolerance for quaternions (just above the error of signed
+// 8-bit quantization, which KHR_mesh_quantization allows for rotation outputs).
+constexpr float kUnitQuaternionTolerance = 0.00769f;
+
+// glTF requires strictly increasing input times. Equal times are drawable (a jump: the sampler
+// never interpolates across a zero interval); decreasing ones are sorted, each key moving with
+// its `floatsPerKey` values (stable, so equal times keep their order). Returns 1 when the times
+// did not strictly increase, else 0.
+int sortKeys(Channel& c, size_t floatsPerKey) {
+  bool increasing = true, ordered = true;
+  for (size_t k = 1; k < c.times.size(); ++k) {
+    increasing &= c.times[k] > c.times[k - 1];
+    ordered &= c.times[k] >= c.times[k - 1];
+  }
+  if (ordered) return increasing ? 0 : 1;
+  std::vector<size_t> order(c.times.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return c.times[a] < c.times[b]; });
+  std::vector<float> times(order.size()), values(c.values.size());
+  for (size_t k = 0; k < order.size(); ++k) {
+    times[k] = c.times[order[k]];
+    std::copy_n(c.values.begin() + long(order[k] * floatsPerKey), floatsPerKey, values.begin() + long(k * floatsPerKey));
+  }
+  c.times = std::move(times);
+  c.values = std::move(values);
+  return 1;
+}
+
+}  // namespace
 
 Status convertAnimations(const tinygltf::Model& m, Scene& scene) {
   for (size_t a = 0; a < m.animations.size(); ++a) {
@@ -56,19 +88,18 @@ Status convertAnimations(const tinygltf::Model& m, Scene& scene) {
       if (val->count != in->count * perKey)
         return Status::fail(where + ": " + std::to_string(in->count) + " keyframe times but " +
                             std::to_string(val->count) + " output values");
-      for (size_t k = 0; k < in->count; ++k) {
-        float t = in->values[k];
-        if (!std::isfinite(t) || (k > 0 && t < in->values[k - 1]))
-          return Status::fail(where + ": keyframe times are not finite and non-decreasing");
-      }
+      for (float t : in->values)
+        if (!std::isfinite(t)) return Status::fail(where + ": keyframe time is not finite");
       for (float v : val->values)
         if (!std::isfinite(v)) return Status::fail(where + ": non-finite keyframe value");
       out.times = std::move(in->values);
       out.values = std::move(val->values);
+      scene.stats.keyframeTimesNotIncreasing += sortKeys(out, perKey * size_t(comps));
       if (out.path == AnimPath::Rotation) {  // unit keys (tangents of CUBICSPLINE stay as authored)
         for (size_t k = 0; k < out.times.size(); ++k) {
           float* q = &out.values[(k * perKey + (perKey == 3 ? 1 : 0)) * 4];
           float len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+          scene.stats.rotationKeysNormalised += !(std::fabs(len - 1.0f) <= kUnitQuaternionTolerance);
           if (len > 0.0f) for (int i = 0; i < 4; ++i) q[i] /= len;
           else q[3] = 1.0f;
         }

@@ -32,6 +32,9 @@ Status convertAnimations(const tinygltf::Model& model, Scene& scene);
 // Materials, textures, samplers and images (decoded to RGBA8).
 Status convertMaterials(const tinygltf::Model& model, Scene& scene);
 
+// Counts accessors whose declared min/max disagree with their data (accessor_bounds.cpp).
+void countAccessorBoundsMismatches(const tinygltf::Model& model, Scene& scene);
+
 // Nodes (hierarchy validated: indices in range, one parent each, no cycles), skins, cameras,
 // default scene roots.
 Status convertNodes(const tinygltf::Model& model, Scene& scene);

@@ -23,13 +23,18 @@ constexpr uint64_t kMaxFileBytes = uint64_t(2) << 30;  // tinygltf takes an unsi
 
 struct LoadContext {
   bool allowFiles = false;
+  std::string baseDir;
   std::vector<std::string> imageNotes;
 };
 
 // Filesystem callbacks: the defaults, except that in-memory loads without a base directory
-// must not resolve relative URIs against the working directory.
+// must not resolve relative URIs against the working directory, and that a URI with a scheme
+// (http://..., an undecodable data: URI) is never looked up as a file (conformance.h notes it).
 bool fsExists(const std::string& path, void* user) {
-  return static_cast<LoadContext*>(user)->allowFiles && tinygltf::FileExists(path, nullptr);
+  const auto* ctx = static_cast<LoadContext*>(user);
+  std::string rel = path.rfind(ctx->baseDir, 0) == 0 ? path.substr(ctx->baseDir.size()) : path;
+  while (!rel.empty() && rel.front() == '/') rel.erase(0, 1);
+  return ctx->allowFiles && uriScheme(rel).empty() && tinygltf::FileExists(path, nullptr);
 }
 std::string fsExpand(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
 bool fsRead(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
@@ -89,9 +94,11 @@ void noteExtensions(const tinygltf::Model& m, Scene& scene) {
     }
 }
 
-Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadContext& ctx) {
+Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadContext& ctx,
+                      const ConformedGltf& conformed) {
   Scene scene;
   scene.source = name;
+  for (const auto& note : conformed.notes) scene.unsupported.push_back(note);
   noteExtensions(m, scene);
   Status s = convertNodes(m, scene);
   if (s) s = convertMaterials(m, scene);
@@ -108,6 +115,7 @@ Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadCon
     scene.meshes.push_back(mesh.take());
   }
   if (s = convertAnimations(m, scene); !s) return Result<Scene>::fail(name + ": " + s.error());
+  countAccessorBoundsMismatches(m, scene);
   return scene;
 }
 
@@ -120,14 +128,18 @@ bool hasBptExtension(const std::string& path) {
 
 }  // namespace
 
-Result<Scene> loadGltfMemory(const std::vector<uint8_t>& bytes, const std::string& name,
+Result<Scene> loadGltfMemory(const std::vector<uint8_t>& original, const std::string& name,
                              const std::string& baseDir) {
   try {
     bool glb = false;
-    if (bytes.size() >= kMaxFileBytes) return Result<Scene>::fail(name + ": file too large");
-    if (Status s = preflightGltf(bytes, name, &glb); !s) return Result<Scene>::fail(name + ": " + s.error());
+    if (original.size() >= kMaxFileBytes) return Result<Scene>::fail(name + ": file too large");
+    ConformedGltf conformed;
+    if (Status s = preflightGltf(original, name, &glb, &conformed); !s) return Result<Scene>::fail(name + ": " + s.error());
+    const std::vector<uint8_t>& bytes = conformed.bytes.empty() ? original : conformed.bytes;
+    if (bytes.size() >= kMaxFileBytes) return Result<Scene>::fail(name + ": file too large (after re-encoding data: URIs)");
     LoadContext ctx;
     ctx.allowFiles = !baseDir.empty();
+    ctx.baseDir = baseDir;
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({&fsExists, &fsExpand, &fsRead, &fsWrite, &ctx});
     loader.SetImageLoader(&loadImage, &ctx);
@@ -141,7 +153,8 @@ Result<Scene> loadGltfMemory(const std::vector<uint8_t>& bytes, const std::strin
       return Result<Scene>::fail(name + ": " + (why.empty() ? "tinygltf refused the file without saying why" : why));
     }
     if (!ok) return Result<Scene>::fail(name + ": " + firstLines(err));
-    return convert(model, name, ctx);
+    applyConformance(conformed, model);
+    return convert(model, name, ctx, conformed);
   } catch (const std::exception& e) {
     return Result<Scene>::fail(name + ": " + e.what());
   }

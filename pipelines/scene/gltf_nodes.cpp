@@ -53,6 +53,19 @@ Status convertNode(const tinygltf::Model& m, size_t i, Node* out) {
   return {};
 }
 
+// glTF 2.0 camera constraints (perspective: znear > 0, zfar > znear when given, 0 < yfov;
+// orthographic: znear >= 0, zfar > znear) made to hold; Camera (scene.h) says how. Returns 1
+// when something was repaired.
+int repairCamera(Camera& c) {
+  bool repaired = false;
+  if (c.perspective && !(c.znear > 0.0f)) c.znear = 0.01f, repaired = true;
+  if (!c.perspective && c.znear < 0.0f) c.znear = 0.0f, repaired = true;
+  if (c.perspective && !(c.yfov > 0.0f && c.yfov < 3.14159265f)) c.yfov = 0.8f, repaired = true;
+  const bool farGiven = !c.perspective || c.zfar != 0.0f;  // perspective zfar 0: absent (infinite)
+  if (farGiven && !(c.zfar > c.znear)) c.zfar = 0.0f, repaired = true;
+  return repaired ? 1 : 0;
+}
+
 }  // namespace
 
 Status convertNodes(const tinygltf::Model& m, Scene& scene) {
@@ -137,6 +150,7 @@ Status convertNodes(const tinygltf::Model& m, Scene& scene) {
       cam.znear = float(c.orthographic.znear);
       cam.zfar = float(c.orthographic.zfar);
     }
+    scene.stats.camerasRepaired += repairCamera(cam);
     scene.cameras.push_back(cam);
   }
 

@@ -21,8 +21,10 @@ bool endsWith(const std::string& s, const std::string& suffix) {
   return true;
 }
 
-// GLB layout (glTF 2.0 section 4.4): 12-byte header, JSON chunk, optional BIN chunk.
-Status checkGlb(const std::vector<uint8_t>& b, size_t* jsonBegin, size_t* jsonLength) {
+// GLB layout (glTF 2.0 section 4.4): 12-byte header, JSON chunk, optional BIN chunk. *restBegin
+// .. *restEnd: the chunks after the JSON chunk (empty: no BIN chunk).
+Status checkGlb(const std::vector<uint8_t>& b, size_t* jsonBegin, size_t* jsonLength, size_t* restBegin = nullptr,
+                size_t* restEnd = nullptr) {
   if (b.size() < 12) return Status::fail("truncated GLB: " + std::to_string(b.size()) + " bytes, header needs 12");
   if (u32(b, 4) != 2) return Status::fail("unsupported GLB version " + std::to_string(u32(b, 4)));
   uint64_t length = u32(b, 8);
@@ -41,6 +43,8 @@ Status checkGlb(const std::vector<uint8_t>& b, size_t* jsonBegin, size_t* jsonLe
   }
   *jsonBegin = 20;
   *jsonLength = size_t(jsonLen);
+  if (restBegin) *restBegin = size_t(std::min(at, length));
+  if (restEnd) *restEnd = size_t(length);
   return {};
 }
 
@@ -96,11 +100,12 @@ std::string printable(const std::string& s) {
 
 }  // namespace
 
-Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb) {
+Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb,
+                     ConformedGltf* conformed) {
   *isGlb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-  size_t begin = 0, length = bytes.size();
+  size_t begin = 0, length = bytes.size(), restBegin = 0, restEnd = 0;
   if (*isGlb) {
-    if (Status s = checkGlb(bytes, &begin, &length); !s) return s;
+    if (Status s = checkGlb(bytes, &begin, &length, &restBegin, &restEnd); !s) return s;
   } else if (endsWith(nameHint, ".glb")) {
     return Status::fail("bad GLB magic (expected 'glTF')");
   }
@@ -120,8 +125,10 @@ Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameH
     if (v != asset->end() && v->is_string() && v->get<std::string>().rfind("2.", 0) != 0)
       return Status::fail("unsupported glTF version " + v->get<std::string>() + " (2.0 required)");
     if (mv != asset->end() && mv->is_string() && mv->get<std::string>() != "2.0")
-      return Status::fail("unsupported glTF minVersion " + mv->get<std::string>());
+      return Status::fail("unsupported glTF minVersion " + mv->get<std::string>() + " (this loader reads glTF 2.0)");
   }
+  // Valid files tinygltf would refuse (conformance.h): integers first, the checks below read them.
+  bool changed = normaliseIntegers(doc);
   auto arr = [&](const char* key) {
     auto it = doc.find(key);
     return it != doc.end() && it->is_array() ? *it : nlohmann::json::array();
@@ -155,6 +162,10 @@ Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameH
       return Status::fail(who + " (byteOffset " + std::to_string(off) + ", byteLength " + std::to_string(len) +
                           ") exceeds buffer " + std::to_string(buf) + " (" + std::to_string(blen) + " bytes)");
   }
+  ConformedGltf unused;
+  if (!conformed) conformed = &unused;
+  if (Status s = conformDocument(doc, *isGlb, restBegin < restEnd, conformed, &changed); !s) return s;
+  if (changed) conformed->bytes = serialiseDocument(doc, *isGlb, bytes, restBegin, restEnd);
   return {};
 }
 

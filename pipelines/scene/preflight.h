@@ -8,12 +8,16 @@
 #include <vector>
 
 #include "pipelines/result.h"
+#include "pipelines/scene/conformance.h"
 
 namespace mb {
 
 // Returns an error (without file name) or success; *isGlb tells which container it is.
 // `nameHint` (the file name) turns a non-GLB file named *.glb into "bad GLB magic".
-Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb);
+// `conformed` (optional) receives the rewrite of a valid document tinygltf 2.7 would refuse
+// (conformance.h): its bytes (empty when none is needed) and what to restore after parsing.
+Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb,
+                     ConformedGltf* conformed = nullptr);
 
 // Why tinygltf 2.7 refused a document that passed preflightGltf without saying why: the first
 // property the glTF 2.0 schema requires that is missing (e.g. "skin 0 has 'jointNames' but no

@@ -116,6 +116,9 @@ struct Animation {
   float duration = 0.0f;  // max input time
 };
 
+// Loaded values are the repaired ones (LoadStats::camerasRepaired): perspective znear <= 0 ->
+// 0.01, yfov outside (0, pi) -> 0.8, a zfar <= znear -> 0 (infinite); orthographic znear < 0 ->
+// 0, zfar <= znear -> 0.
 struct Camera {
   std::string name;
   bool perspective = true;
@@ -141,6 +144,11 @@ struct LoadStats {
   int degenerateUvTriangles = 0;      // tangent generation: triangles with zero uv area
   int tangentSplitVertices = 0;       // vertices duplicated because corners disagree in w
   int imagesNotDecoded = 0;           // images replaced by 1x1 white (listed in unsupported)
+  // Invalid but drawable (glTF 2.0 forbids them; drawn with the repair the glossary states).
+  int accessorBoundsMismatch = 0;     // accessors whose min/max disagree with their data (ignored)
+  int keyframeTimesNotIncreasing = 0; // channels whose input times do not strictly increase (sorted)
+  int rotationKeysNormalised = 0;     // rotation keyframes off unit length by > 0.00769 (normalised)
+  int camerasRepaired = 0;            // cameras with zfar <= znear, bad znear or yfov (Camera)
 };
 
 // Curved space (issue 15): spherical S3 and hyperbolic H3 scenes, built in code (glTF has no

@@ -79,7 +79,9 @@ nlohmann::json toJson(const LoadStats& s) {
           {"skippedPrimitives", s.skippedPrimitives}, {"normalsRenormalised", s.normalsRenormalised},
           {"jointsOutOfRange", s.jointsOutOfRange}, {"stripsFansConverted", s.stripsFansConverted},
           {"degenerateUvTriangles", s.degenerateUvTriangles}, {"tangentSplitVertices", s.tangentSplitVertices},
-          {"imagesNotDecoded", s.imagesNotDecoded}};
+          {"imagesNotDecoded", s.imagesNotDecoded}, {"accessorBoundsMismatch", s.accessorBoundsMismatch},
+          {"keyframeTimesNotIncreasing", s.keyframeTimesNotIncreasing},
+          {"rotationKeysNormalised", s.rotationKeysNormalised}, {"camerasRepaired", s.camerasRepaired}};
 }
 
 nlohmann::json toJson(const FileStats& f) {

@@ -55,7 +55,9 @@ std::string counterName(int mb::LoadStats::*c) {
       {&S::weightsRenormalised, "weightsRenormalised"},   {&S::weightsZeroSum, "weightsZeroSum"},
       {&S::influencesTruncated, "influencesTruncated"},   {&S::nonFinitePositions, "nonFinitePositions"},
       {&S::skippedPrimitives, "skippedPrimitives"},       {&S::jointsOutOfRange, "jointsOutOfRange"},
-      {&S::imagesNotDecoded, "imagesNotDecoded"}};
+      {&S::imagesNotDecoded, "imagesNotDecoded"},         {&S::accessorBoundsMismatch, "accessorBoundsMismatch"},
+      {&S::keyframeTimesNotIncreasing, "keyframeTimesNotIncreasing"}, {&S::rotationKeysNormalised, "rotationKeysNormalised"},
+      {&S::camerasRepaired, "camerasRepaired"}};
   for (const auto& [p, n] : names)
     if (p == c) return n;
   return "";
