@@ -122,9 +122,11 @@ void summary(Document& d, const json& r) {
   };
   for (size_t i = 1; i < pipes.size(); ++i) {
     const json& im = at(sum, {"images"})[pipes[i]];
-    lines.push_back(pipes[i] + " vs " + pipes[0] + " (frames where both should agree): " + imageLine(im) + ".");
     const json& sm = at(sum, {"skinningMethodImages"}).is_object() ? at(sum, {"skinningMethodImages"})[pipes[i]] : json();
-    if (sm.is_object() && sm.value("comparedFrames", 0) > 0)
+    const bool method = sm.is_object() && sm.value("comparedFrames", 0) > 0;
+    if (!method || im.value("comparedFrames", 0) > 0)
+      lines.push_back(pipes[i] + " vs " + pipes[0] + " (frames where both should agree): " + imageLine(im) + ".");
+    if (method)
       lines.push_back(pipes[i] + " vs " + pipes[0] + ", skinned scenes where one blends joints with linear blend "
                       "skinning and the other with motors: the methods' expected difference (measured, not an "
                       "error of either): " + imageLine(sm) + ".");

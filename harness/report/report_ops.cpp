@@ -62,8 +62,8 @@ json sceneOpsPerVertex(const json& ops, const json& mix) {
   if (!mix.is_object()) return nullptr;
   if (mix.value("curvedInstance", 0.0) > 0) {  // one variant draws every vertex of a curved scene
     json out = json::object();
+    const std::string label = mix.value("curvedSpace", "") + " instance";
     for (const std::string& pipeline : allPipelineNames())
-      for (const char* label : {"S3 instance", "H3 instance"})
         if (const json* v = findVariant(ops, pipeline, label))
           out[pipeline] = {{"counted", v->at("counted").is_null() ? json() : ops5(v->at("counted"))},
                            {"spirv", v->at("spirv").is_null() ? json() : ops5(v->at("spirv"))}};

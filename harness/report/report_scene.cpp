@@ -108,8 +108,10 @@ json vertexMix(const Scene& scene) {
   }
   // Curved scenes (issue 15): every instance draws the shared triangle list.
   const long curved = long(scene.curved.positions.size()) * long(scene.curved.instances.size());
-  return {{"rigid", rigid}, {"skinned", skinned}, {"scaledFallback", scaled}, {"bezierPatch", patch},
-          {"curvedInstance", curved}};
+  json mix = {{"rigid", rigid}, {"skinned", skinned}, {"scaledFallback", scaled}, {"bezierPatch", patch},
+              {"curvedInstance", curved}};
+  if (curved > 0) mix["curvedSpace"] = scene.curved.space == Space::Spherical ? "S3" : "H3";
+  return mix;
 }
 
 void progress(const SceneJob& job, const std::string& what) {
