@@ -39,7 +39,9 @@ json animatedComparisons(const Scene& scene, const SceneJob& job, const std::str
   settings.width = job.width, settings.height = job.height;
   settings.anim.anim = anim;
   const std::string& base = job.pipelines.front();
-  const std::string what = scene.animations[size_t(anim)].name + ", " + std::to_string(kAnimationFrames) + " frames";
+  const std::string& name = scene.animations[size_t(anim)].name;
+  const std::string what = (name.empty() ? "animation " + std::to_string(anim) : name) + ", " +
+                           std::to_string(kAnimationFrames) + " frames";
   progress(job, "animating " + base + " (" + what + ")");
   auto baseFrames = renderFrames(scene, base, settings, times);
   json out = json::object();
