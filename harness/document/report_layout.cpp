@@ -59,7 +59,7 @@ void header(Document& d, const json& r) {
   }
   d.paragraph("Pipelines " + pipes + " (diffs against " + str(s["baseline"]) + ")" + curved + "; images " +
               str(s["width"]) + "x" + str(s["height"]) + " at up to three times of each animation shown (" +
-              (s["anim"].is_string() ? "--anim " + s["anim"].get<std::string>() + "; other scenes: " : std::string()) +
+              (at(s, {"anim"}).is_string() ? "--anim " + s["anim"].get<std::string>() + "; other scenes: " : std::string()) +
               "the first animation); " +
               str(s["frames"]) + " timed frames per pipeline and scene; " + str(s["jobs"]) +
               " parallel scene job(s). Every figure below comes from this run; report.json holds them all.");
@@ -273,17 +273,17 @@ void curvedSection(Document& d, const json& r) {
            "images vs matrix side", "frame time motor/matrix", "vertex-bound motor/matrix"},
           table);
   const json& drift = at(r, {"curved", "drift"});
-  if (drift.is_object() && drift["spaces"].is_array()) {
+  if (at(drift, {"spaces"}).is_array()) {
     std::vector<std::vector<Cell>> dr;
     for (const json& sp : drift["spaces"])
       for (const char* side : {"matrix", "motor"})
         dr.push_back({{str(sp["space"])}, {side}, {fmt(at(sp, {side, "raw"}), 3)}, {fmt(at(sp, {side, "renormalised"}), 3)},
                       {opsText(at(sp, {side, "renormOps"}))}, {str(at(sp, {side, "renormalisation"}), "")}});
-    d.paragraph("Camera drift after " + str(drift["steps"]) + " accumulated float steps (" + str(drift["step"], "") +
+    d.paragraph("Camera drift after " + str(at(drift, {"steps"})) + " accumulated float steps (" + str(at(drift, {"step"}), "") +
                 "): distance from the group, matrix max|M^T eta M - eta|, motor max|M~M - 1| (S3 pair: "
                 "||L|^2 - 1|, ||R|^2 - 1|), without renormalisation and renormalised after every step (`motorbench drift`).");
     d.table({"space", "side", "raw", "renormalised", "one renormalisation", "method"}, dr);
-  } else if (drift.is_object() && drift["error"].is_string()) {
+  } else if (at(drift, {"error"}).is_string()) {
     d.paragraph("Camera drift not measured: " + drift["error"].get<std::string>());
   }
 }
@@ -300,13 +300,14 @@ void statisticsSection(Document& d, const json& r) {
               "show a fraction below 1/N.");
   auto frac = [](const json& a, const char* n) {
     const int loaded = a.value("loaded", 0);
-    return str(a[n], "0") + (loaded ? " (" + percent(json(double(a.value(n, 0)) / loaded), 1) + ")" : "");
+    return str(a.value(n, json()), "0") + (loaded ? " (" + percent(json(double(a.value(n, 0)) / loaded), 1) + ")" : "");
   };
   std::vector<std::vector<Cell>> rows;
-  const json& b = st["builtIn"];
-  const json& f = st["files"];
-  rows.push_back({{"loaded (failed)"}, {str(b["loaded"], "0") + " (" + str(b["failed"], "0") + ")"},
-                  {str(f["loaded"], "0") + " (" + str(f["failed"], "0") + ")"}});
+  const json& b = at(st, {"builtIn"});
+  const json& f = at(st, {"files"});
+  if (!b.is_object() || !f.is_object()) return;
+  rows.push_back({{"loaded (failed)"}, {str(b.value("loaded", json()), "0") + " (" + str(b.value("failed", json()), "0") + ")"},
+                  {str(f.value("loaded", json()), "0") + " (" + str(f.value("failed", json()), "0") + ")"}});
   for (const auto& [label, key] : std::vector<std::pair<std::string, const char*>>{
            {"skinned", "filesSkinned"}, {"normal-mapped", "filesNormalMapped"},
            {"animated scale", "filesWithAnimatedScale"}, {"non-uniform scale", "filesWithNonUniformScale"},
@@ -315,7 +316,7 @@ void statisticsSection(Document& d, const json& r) {
            {"unsupported features", "filesWithUnsupported"}})
     rows.push_back({{label}, {frac(b, key)}, {frac(f, key)}});
   for (const char* k : {"vertices", "triangles", "primitives", "joints", "channels"})
-    rows.push_back({{k}, {str(b[k], "0")}, {str(f[k], "0")}});
+    rows.push_back({{k}, {str(b.value(k, json()), "0")}, {str(f.value(k, json()), "0")}});
   d.table({"scenes with ...", "built-in (synthetic)", "files (real)"}, rows);
 }
 
@@ -417,7 +418,7 @@ void sceneSection(Document& d, const json& r, const json& s) {
   for (const json& loop : loops)
     for (const auto& [p, a] : loop.items()) {
       const bool method = std::find(methodDiffers.begin(), methodDiffers.end(), p) != methodDiffers.end();
-      const std::string which = a.contains("name") ? "animation " + str(a["animation"]) + " '" + str(a["name"]) + "'" : "animation 0";
+      const std::string which = a.contains("name") ? "animation " + str(a.value("animation", json())) + " '" + str(a["name"]) + "'" : "animation 0";
       if (a.contains("file"))
         d.figure(a["file"].get<std::string>(), "Animated (" + which + "): " + pipes[0] + " | " + p + " | diff",
                  "One loop of " + which + " (" + fixed(a["duration"], 2) + " s) in " + str(a["frames"]) + " frames at " +

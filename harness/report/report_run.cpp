@@ -143,19 +143,24 @@ int runReport(const Options& o) {
   std::vector<Input> inputs;
   json shard = {{"index", o.shard.index}, {"count", o.shard.count}, {"inputs", json::array()}};
   for (const Input& in : all) shard["inputs"].push_back({{"spec", in.spec}, {"id", in.id}});
-  for (size_t k : shardPositions(specs, o.shard)) inputs.push_back(all[k]);
-  const int total = int(inputs.size());
-  // --anim is checked against the scenes before anything is measured (a typo stops the run).
-  std::vector<std::vector<int>> anims(inputs.size());
+  // --anim is checked against the whole list (so every shard decides alike) before anything is
+  // measured: a typo stops the run.
+  std::vector<std::vector<int>> allAnims(all.size());
   if (!o.anim.empty()) {
-    auto resolved = resolveAnimations(o.anim, inputs);
+    auto resolved = resolveAnimations(o.anim, all);
     if (!resolved) {
       std::fprintf(stderr, "motorbench report: error: %s\n", resolved.error().c_str());
       fs::remove_all(work, ec);
       return 2;
     }
-    anims = *resolved;
+    allAnims = *resolved;
   }
+  std::vector<std::vector<int>> anims;
+  for (size_t k : shardPositions(specs, o.shard)) {
+    inputs.push_back(all[k]);
+    anims.push_back(allAnims[k]);
+  }
+  const int total = int(inputs.size());
   if (o.shard.count > 1)
     say("shard " + std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count) + ": " +
         std::to_string(total) + " of " + std::to_string(all.size()) + " scene(s)");
@@ -204,9 +209,9 @@ int runReport(const Options& o) {
   // Phase 4: kernel throughput.
   json kernelJson = kernels(o);
 
-  json curved = json::object();  // the pipelines of the curved scenes, per space
+  json curved = json::object();  // the curved scenes' pipelines per space (whole list: alike in every shard)
   if (o.pipelines.empty())
-    for (const Input& in : inputs)
+    for (const Input& in : all)
       if (Space sp = curvedSceneSpace(in.spec); sp != Space::Euclidean) curved[spaceName(sp)] = pipelineNames(sp);
   const std::vector<std::string> pipelines = runPipelines(o);
   json settings = {{"pipelines", pipelines}, {"baseline", pipelines.front()}, {"curvedPipelines", curved},
