@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/report/report_sources.h"
+#include "pipelines/pipeline.h"
 #include "tests/support/cli_test_support.h"
 
 namespace {
@@ -144,6 +146,19 @@ TEST(CliReportSources, StatisticsKeepBuiltInScenesApartFromFiles) {
   EXPECT_EQ(f["vertices"], 24);  // the box: 6 faces x 4 corners
   EXPECT_NE(readText(dir / "out" / "report.md").find("Scene statistics by origin"), std::string::npos);
   fs::remove_all(dir);
+}
+
+TEST(ReportSources, EveryGltfPipelineNamesHowItBlendsJoints) {
+  // From the vertex shaders: matrix.vs and affine.vs (affine, qtangent, hybrid) blend a matrix
+  // palette, motor.vs (motor, motor_q) joint motors. A new glTF pipeline must be entered.
+  for (const std::string& p : mb::pipelineNames()) EXPECT_FALSE(mb::report::skinBlendOf(p).empty()) << p;
+  for (const char* p : {"matrix", "affine", "qtangent", "hybrid"})
+    EXPECT_EQ(mb::report::skinBlendOf(p), "linear blend skinning") << p;
+  for (const char* p : {"motor", "motor_q"}) EXPECT_EQ(mb::report::skinBlendOf(p), "motor blending") << p;
+  for (const std::string& p : mb::pipelineNames(mb::Space::Spherical)) EXPECT_EQ(mb::report::skinBlendOf(p), "") << p;
+  EXPECT_EQ(mb::report::sceneOrigin("skinned_tube"), "built-in");
+  EXPECT_EQ(mb::report::sceneOrigin("s3_tiling"), "built-in");
+  EXPECT_EQ(mb::report::sceneOrigin("/some/where/barrel.glb"), "file");
 }
 
 TEST(CliTimeJson, BezierBytesTableIsInTheJson) {
