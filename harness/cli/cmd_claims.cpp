@@ -54,10 +54,14 @@ json frameRow(const std::string& scene, const json& timing) {
   return row;
 }
 
-// Frame-time ratios of report.json's scenes.
+// Frame-time ratios of report.json's Euclidean scenes (the curved ones, issue 15, have their
+// own pipelines and their own claims rows).
+bool euclidean(const json& scene) { return scene.value("space", "Euclidean") == "Euclidean"; }
+
 json frameTimesOf(const json& report) {
   json out = json::array();
-  for (const json& s : report.value("scenes", json::array()))
+  for (const json& s : report.value("scenes", json::array())) {
+    if (!euclidean(s)) continue;
     if (json row = frameRow(s.value("id", ""), s.value("timing", json())); !row.is_null()) {
       // report.json before issue 18 timed each pipeline in its default skinning configuration.
       const json mix = s.value("vertexMix", json::object());
@@ -68,6 +72,7 @@ json frameTimesOf(const json& report) {
                                                         : json("pipeline defaults (matrix reference, motor world palette)");
       out.push_back(row);
     }
+  }
   return out;
 }
 
@@ -89,7 +94,7 @@ claims::SpeedInputs speedInputs(const Args& args, json& sources) {
       in.frameTimes = frameTimesOf(report);
       in.timings = json::object();
       for (const json& s : report.value("scenes", json::array()))
-        if (s.value("timing", json()).is_object()) in.timings[s.value("id", "")] = s["timing"];
+        if (euclidean(s) && s.value("timing", json()).is_object()) in.timings[s.value("id", "")] = s["timing"];
       in.frameSource = *r + " (" + std::to_string(in.frameTimes.size()) + " scenes)";
     }
   }

@@ -3,7 +3,6 @@
 // (4x4 products) vs motor (S3: quaternion pairs, H3: motors), without renormalisation and
 // renormalised after every step with each side's cheapest method; op counts of one step and
 // one renormalisation, counted by execution.
-#include <chrono>
 #include <cstdio>
 #include <optional>
 #include <fstream>
@@ -12,22 +11,17 @@
 
 #include "harness/cli/command.h"
 #include "harness/options/args.h"
-#include "harness/render/render_frame.h"
-#include "pipelines/curved/curved_drift.h"
+#include "harness/render/frame_options.h"
+#include "harness/report/report_drift.h"
 
 namespace mb {
 namespace {
 
-nlohmann::json opsJson(const OpCounts& c) {
-  return {{"mul", c.mul}, {"add", c.add}, {"div", c.div}, {"sqrt", c.sqrt}, {"other", c.other},
-          {"other_calls", c.otherCalls()}};
-}
-
-std::string opsText(const OpCounts& c) {
-  std::string s = std::to_string(c.mul) + " mul, " + std::to_string(c.add) + " add";
-  if (c.div) s += ", " + std::to_string(c.div) + " div";
-  if (c.sqrt) s += ", " + std::to_string(c.sqrt) + " sqrt";
-  if (c.other) s += ", " + c.otherCalls();
+std::string opsText(const nlohmann::json& c) {
+  std::string s = std::to_string(c.value("mul", 0)) + " mul, " + std::to_string(c.value("add", 0)) + " add";
+  if (c.value("div", 0)) s += ", " + std::to_string(c.value("div", 0)) + " div";
+  if (c.value("sqrt", 0)) s += ", " + std::to_string(c.value("sqrt", 0)) + " sqrt";
+  if (c.value("other", 0)) s += ", " + c.value("other_calls", std::string());
   return s;
 }
 
@@ -37,36 +31,24 @@ int runDrift(const std::vector<std::string>& argv) {
   if (!args.error().empty()) return fail(args.error());
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
   const std::optional<double> steps = double(args.integer("steps", 1000000, 1, 1000000000));
-  nlohmann::json spaces = nlohmann::json::array();
+  const nlohmann::json j = report::driftJson(int64_t(*steps));
   std::printf("Camera drift after %.0f steps (turn 2e-3 rad + move 1e-3 per step, float):\n"
               "distance from the group: matrix max|M^T eta M - eta|, motor max(|M~M - 1|) "
               "(S3 pair: max ||L|^2 - 1|, ||R|^2 - 1|)\n\n", *steps);
   std::printf("%-4s %-7s %-13s %-13s %-34s %s\n", "", "side", "raw", "renormalised", "one step",
               "one renormalisation");
-  for (int k : {1, -1}) {
-    const curved::DriftResult r = curved::measureDrift(k, int64_t(*steps));
-    const char* space = k > 0 ? "S3" : "H3";
-    for (auto [side, d] : {std::pair{"matrix", &r.matrix}, std::pair{"motor", &r.motor}}) {
-      std::printf("%-4s %-7s %-13.3g %-13.3g %-34s %s\n", space, side, d->raw, d->renormalised,
-                  opsText(d->stepOps).c_str(), opsText(d->renormOps).c_str());
+  for (const nlohmann::json& sp : j["spaces"])
+    for (const char* side : {"matrix", "motor"}) {
+      const nlohmann::json& d = sp[side];
+      std::printf("%-4s %-7s %-13.3g %-13.3g %-34s %s\n", sp["space"].get<std::string>().c_str(), side,
+                  d["raw"].get<double>(), d["renormalised"].get<double>(), opsText(d["stepOps"]).c_str(),
+                  opsText(d["renormOps"]).c_str());
     }
-    auto side = [](const curved::DriftSide& d, const char* renorm) {
-      return nlohmann::json{{"raw", d.raw}, {"renormalised", d.renormalised},
-                            {"stepOps", opsJson(d.stepOps)}, {"renormOps", opsJson(d.renormOps)},
-                            {"renormalisation", renorm}};
-    };
-    spaces.push_back({{"space", space},
-                      {"kappa", k},
-                      {"matrix", side(r.matrix, "Gram-Schmidt of the columns in the space's form")},
-                      {"motor", side(r.motor, k > 0 ? "normalize_pair" : "normalize_m_k")}});
-  }
   if (const auto path = args.get("json")) {
-    nlohmann::json j = {{"tool", "motorbench drift"},
-                        {"steps", int64_t(*steps)},
-                        {"step", "turn 2e-3 rad (x-z plane) then move 1e-3 forward, composed in double, rounded to float once"},
-                        {"spaces", spaces}};
-    std::ofstream out(*path);
-    if (!out || !(out << j.dump(2) << "\n")) return fail("cannot write " + *path);
+    nlohmann::json out = j;
+    out["tool"] = "motorbench drift";
+    std::ofstream file(*path);
+    if (!file || !(file << out.dump(2) << "\n")) return fail("cannot write " + *path);
   }
   return 0;
 }

@@ -1,5 +1,5 @@
 // `motorbench report [SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N]
-//   [--no-bench | --bench-json FILE] [...]`: images, diffs, metrics, memory, ops per vertex,
+//   [--no-bench | --bench-json FILE] [--anim ITEMS] [...]`: images, diffs, metrics, memory, ops per vertex,
 // frame timing, kernel ratios, conversion cost, fallbacks and statistics of every scene and
 // pipeline -> DIR/report.json, report.md, report.html, images/, plots/ (harness/report/, harness/document/).
 // The same command with --worker measures one scene for the parent run (report_workers.h).
@@ -36,7 +36,8 @@ int runWorker(const Args& args, const report::Options& o) {
   job.total = std::atoi(args.get("worker-total", "1").c_str());
   job.outDir = o.outDir;
   job.width = o.width, job.height = o.height;
-  job.pipelines = o.pipelines;
+  job.pipelines = report::scenePipelines(o, job.input.spec);  // the parent passes each scene's
+  for (const std::string& a : splitList(args.get("worker-anims", ""))) job.animations.push_back(std::atoi(a.c_str()));
   json result;
   const std::string mode = args.get("worker", "");
   if (mode == "render") {
@@ -49,7 +50,7 @@ int runWorker(const Args& args, const report::Options& o) {
     // pipeline's default.
     PipelineOptions options;
     if (scene && !scene->skins.empty()) options.skinSpace = SkinSpace::Reference;
-    result = scene ? report::timeScene(*scene, o.pipelines, o.frames, o.timeWidth, o.timeHeight, options)
+    result = scene ? report::timeScene(*scene, job.pipelines, o.frames, o.timeWidth, o.timeHeight, options)
                    : json{{"error", scene.error()}};
     if (scene && !scene->skins.empty()) result["skinSpace"] = "reference (every pipeline)";
   } else {
@@ -64,21 +65,24 @@ int runWorker(const Args& args, const report::Options& o) {
 int runReportCommand(const std::vector<std::string>& argv) {
   const Args args(argv, {{"o", "output", "jobs", "size", "frames", "bench-json", "bench-min-time", "pipelines",
                           "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
-                          "worker-index", "worker-total", "shard"},
+                          "worker-index", "worker-total", "shard", "anim", "worker-anims"},
                          {"no-bench", "no-plots"},
-                         {}});
+                         {},
+                         {"anim"}});
   if (!args.error().empty()) return fail(args.error());
   report::Options o;
   o.scenes = args.positional();
   o.outDir = args.get("o", args.get("output", ""));
   if (o.outDir.empty()) return fail("missing -o DIR");
+  // Without --pipelines each scene gets its space's pipelines (curved scenes: s3_* / h3_*).
   o.pipelines = splitList(args.get("pipelines", ""));
-  if (o.pipelines.empty()) o.pipelines = pipelineNames();
   for (const std::string& p : o.pipelines) {
     bool registered = false;
-    for (const std::string& n : pipelineNames()) registered = registered || n == p;
-    if (!registered) return fail("--pipelines: unknown pipeline '" + p + "' (registered: " + joinNames(pipelineNames()) + ")");
+    for (const std::string& n : allPipelineNames()) registered = registered || n == p;
+    if (!registered) return fail("--pipelines: unknown pipeline '" + p + "' (registered: " + joinNames(allPipelineNames()) + ")");
   }
+  o.anim = args.get("anim", "");
+  if (args.has("anim") && o.anim.empty()) return fail("--anim: expected NAME, INDEX, all or SCENE:NAME");
   std::tie(o.width, o.height) = args.size("size", o.width, o.height);
   std::tie(o.timeWidth, o.timeHeight) = args.size("time-size", o.timeWidth, o.timeHeight);
   o.jobs = int(args.integer("jobs", 1, 1, 256));
@@ -119,7 +123,8 @@ int runReportCommand(const std::vector<std::string>& argv) {
 
 MB_COMMAND(report, "report",
            "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--no-bench | "
-           "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--time-size WxH] [--no-plots] [--shard I/N]",
-           "measure scenes with every pipeline: images, diffs, memory, ops, timing, kernel ratios "
-           "-> report.json/.md/.html",
+           "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--anim [SCENE:]NAME|INDEX|all,...] "
+           "[--time-size WxH] [--no-plots] [--shard I/N]",
+           "measure scenes with every pipeline of their space: images, diffs, memory, ops, timing, kernel "
+           "ratios -> report.json/.md/.html",
            mb::runReportCommand);

@@ -78,11 +78,12 @@ void printRow(const timing::ConfigTiming& c) {
 }
 
 // Child side: loads and times one scene (also at the tiny viewport when the scene draws enough
-// vertices to be vertex-bound there: timing::drawsVertexBoundAt), prints its rows
-// and writes them as a JSON array to `resultPath`. Exit 0, or 2 when anything failed.
+// vertices to be vertex-bound there: timing::drawsVertexBoundAt), prints its rows and writes
+// {"rows": [...], "patchMemory": [...] or null} to `resultPath` (patchMemory: the bytes table of
+// a Bezier patch scene timed with --level). Exit 0, or 2 when anything failed.
 int timeOneScene(const std::string& name, const timing::Settings& normal, const timing::Settings& tiny,
                  const std::vector<int>& levels, const std::string& resultPath) {
-  nlohmann::json rows = nlohmann::json::array();
+  nlohmann::json rows = nlohmann::json::array(), patchMemory = nullptr;
   int status = 0;
   const Status spec = checkSceneSpec(name);  // a misspelt name lists the built-ins
   auto scene = spec ? loadScene(name) : Result<Scene>::fail(spec.error());
@@ -119,11 +120,12 @@ int timeOneScene(const std::string& name, const timing::Settings& normal, const 
         status = 2;
       } else {
         std::printf("\n%s\n", opsv::formatPatchMemory(*memory).c_str());
+        patchMemory = opsv::toJson(*memory);
       }
     }
   }
   std::ofstream out(resultPath);
-  if (!out || !(out << rows.dump() << "\n")) {
+  if (!out || !(out << nlohmann::json{{"rows", rows}, {"patchMemory", patchMemory}}.dump() << "\n")) {
     std::fprintf(stderr, "motorbench time: error: cannot write %s\n", resultPath.c_str());
     return 2;
   }
@@ -193,7 +195,7 @@ int runTime(const std::vector<std::string>& argv) {
               "motor/", "of", "CPU", "matrix update us", "motor update us", "update");
   std::printf(kRowFormat, "", "", "", "", "", "matrix", "medians", "time", "", "", "ratio");
 
-  nlohmann::json results = nlohmann::json::array();
+  nlohmann::json results = nlohmann::json::array(), patchMemory = nlohmann::json::array();
   int status = 0;
   const std::string scratch = (std::filesystem::temp_directory_path() /
                                ("motorbench-time-" + std::to_string(::getpid()) + ".json")).string();
@@ -206,7 +208,8 @@ int runTime(const std::vector<std::string>& argv) {
     std::fflush(stdout);  // the child prints its rows to the same stdout
     const std::string how = report::runSelf(child, "", kWorkerTimeoutS);
     std::ifstream in(scratch);
-    nlohmann::json rows = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    const nlohmann::json worker = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+    nlohmann::json rows = worker.is_object() ? worker.value("rows", nlohmann::json()) : nlohmann::json();
     if (!rows.is_array()) {
       const std::string why = how.empty() ? "the worker wrote no result" : "the worker ended: " + how;
       std::fprintf(stderr, "motorbench time: error: %s: %s\n", name.c_str(), why.c_str());
@@ -218,6 +221,8 @@ int runTime(const std::vector<std::string>& argv) {
     progress.done(name);
     if (!how.empty()) status = 2;
     for (auto& r : rows) results.push_back(std::move(r));
+    if (const nlohmann::json m = worker.value("patchMemory", nlohmann::json()); m.is_array())
+      patchMemory.push_back({{"scene", name}, {"rows", m}});
   }
   std::filesystem::remove(scratch);
   std::printf("\nmotor/matrix: median of the per-frame ratios (both pipelines render the same "
@@ -236,7 +241,10 @@ int runTime(const std::vector<std::string>& argv) {
           {"method", "pipelines interleaved frame by frame in alternating order; frame = clear + "
                      "render + glFinish (steady_clock), fastest of best_of renders; also process "
                      "CPU time; update = Pipeline::update per call"}}},
-        {"results", results}};
+        {"results", results},
+        // Bezier patch scenes timed with --level: bytes uploaded per pipeline and level, instanced
+        // (control points + one refinement pattern) vs the same surface pre-tessellated.
+        {"patchMemory", patchMemory}};
     std::ofstream out(*path);
     if (!out || !(out << j.dump(2) << "\n")) return fail("cannot write " + *path);
   }

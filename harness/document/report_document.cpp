@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "harness/document/report_format.h"
+
 namespace mb::report {
 namespace {
 
@@ -47,11 +49,14 @@ json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
           {"floatsPerJoint", spread(fpj)}, {"conversionMs", spread(conv)}};
 }
 
-// Image agreement of `p` with the baseline over every scene and time.
-json imageSummary(const std::vector<json>& scenes, const std::string& p) {
+// Image agreement of `p` with the baseline over the frames of `scenes` for which
+// methodDifference(scene) is `method`.
+template <class Pred>
+json imageSummary(const std::vector<json>& scenes, const std::string& p, Pred methodDifference, bool method) {
   std::vector<double> psnr, over1, maxErr;
   int identical = 0, compared = 0;
-  for (const json& s : scenes)
+  for (const json& s : scenes) {
+    if (methodDifference(s) != method) continue;
     for (const json& f : s.value("frames", json::array())) {
       if (!f.contains("metrics") || !f["metrics"].contains(p)) continue;
       const json& m = f["metrics"][p];
@@ -61,8 +66,37 @@ json imageSummary(const std::vector<json>& scenes, const std::string& p) {
       push(over1, number(m, {"fractionOver1"}));
       push(maxErr, number(m, {"maxError"}));
     }
+  }
   return {{"comparedFrames", compared}, {"identicalFrames", identical}, {"psnr", spread(psnr)},
           {"fractionOver1", spread(over1)}, {"maxError", spread(maxErr)}};
+}
+
+// A curved scene's figures side by side (issue 15): its space's pipelines, floats per instance
+// as uploaded, ops per vertex, worst PSNR against the matrix side, frame-time ratios.
+json curvedRow(const json& s) {
+  json row = {{"id", s.value("id", "")}, {"space", s.value("space", "")}, {"status", s.value("status", "")},
+              {"pipelines", s.value("pipelineOrder", json::array())}, {"floatsPerInstance", json::object()},
+              {"opsPerVertex", s.value("opsPerVertex", json())}};
+  const json& pipelines = at(s, {"pipelines"});
+  if (pipelines.is_object())
+    for (const auto& [p, pj] : pipelines.items())
+      row["floatsPerInstance"][p] = pj.is_object() ? at(pj, {"memory", "floatsPerTransform"}) : json();
+  std::vector<double> psnr;
+  int identical = 0, compared = 0;
+  for (const json& f : s.value("frames", json::array())) {
+    const json& metrics = at(f, {"metrics"});
+    if (!metrics.is_object()) continue;
+    for (const auto& [p, m] : metrics.items()) {
+      ++compared;
+      if (m.value("identical", false)) ++identical;
+      else push(psnr, number(m, {"psnr"}));
+    }
+  }
+  row["images"] = {{"comparedFrames", compared}, {"identicalFrames", identical}, {"psnr", spread(psnr)}};
+  const json& t = s.value("timing", json::object());
+  row["frameTimeRatio"] = {{"normal", at(t, {"paired_ratio_motor_matrix"})},
+                           {"vertexBound", at(t, {"vertexBound", "paired_ratio_motor_matrix"})}};
+  return row;
 }
 
 }  // namespace
@@ -75,6 +109,18 @@ json spread(std::vector<double> v) {
   return {{"n", n}, {"min", v.front()}, {"median", median}, {"max", v.back()}};
 }
 
+bool isEuclidean(const json& scene) { return scene.value("space", "Euclidean") == "Euclidean"; }
+
+bool skinningMethodsDiffer(const json& scene, const std::string& p, const std::string& baseline) {
+  const json& mix = scene.value("vertexMix", json::object());
+  if (!mix.is_object() || !(mix.value("skinned", 0.0) > 0)) return false;
+  const json& ps = scene.value("pipelines", json::object());
+  auto blend = [&](const std::string& q) {
+    return ps.contains(q) && ps[q].is_object() ? ps[q].value("skinBlend", "") : std::string();
+  };
+  return !blend(p).empty() && !blend(baseline).empty() && blend(p) != blend(baseline);
+}
+
 json assembleReport(json machine, json settings, std::vector<json> scenes, json ops, json kernels) {
   const std::vector<std::string> pipelines = settings["pipelines"].get<std::vector<std::string>>();
   for (const json& s : scenes)
@@ -82,9 +128,26 @@ json assembleReport(json machine, json settings, std::vector<json> scenes, json 
   json summary = {{"scenes", scenes.size()}, {"ok", 0}, {"partial", 0}, {"failed", 0}};
   for (const json& s : scenes) summary[s.value("status", "failed")] = summary.value(s.value("status", "failed"), 0) + 1;
   for (const std::string& p : pipelines) summary["pipelines"][p] = pipelineSummary(scenes, p);
-  for (size_t i = 1; i < pipelines.size(); ++i) summary["images"][pipelines[i]] = imageSummary(scenes, pipelines[i]);
+  // Skinned scenes whose two pipelines blend joints differently (LBS vs motor blending) are
+  // summed apart: their difference is the methods' expected one, not an equivalence error.
+  for (size_t i = 1; i < pipelines.size(); ++i) {
+    auto differ = [&](const json& s) { return skinningMethodsDiffer(s, pipelines[i], pipelines[0]); };
+    summary["images"][pipelines[i]] = imageSummary(scenes, pipelines[i], differ, false);
+    summary["skinningMethodImages"][pipelines[i]] = imageSummary(scenes, pipelines[i], differ, true);
+  }
   std::vector<double> frameRatio;
-  for (const json& s : scenes) push(frameRatio, number(s, {"timing", "ratio_motor_matrix"}));
+  json curved = json::array(), origins = {{"built-in", 0}, {"file", 0}};
+  for (const json& s : scenes) {
+    const std::string origin = s.value("origin", "");
+    if (origins.contains(origin)) origins[origin] = origins[origin].get<int>() + 1;
+    if (!isEuclidean(s)) {
+      curved.push_back(curvedRow(s));
+      continue;
+    }
+    push(frameRatio, number(s, {"timing", "ratio_motor_matrix"}));
+  }
+  summary["curved"] = curved;
+  summary["origins"] = origins;
   summary["frameTimeRatio"] = spread(frameRatio);
   json kr = json::object();
   for (const json& p : kernels.value("pairs", json::array()))

@@ -65,7 +65,10 @@ Args::Args(const std::vector<std::string>& args, const OptionSpec& spec) {
       problem("unknown option " + written);
       continue;
     }
-    if (auto it = options_.find(key); it != options_.end()) {
+    if (auto it = options_.find(key); it != options_.end() && spec.lists.count(key)) {
+      it->second += "," + value;  // a list option: repeats add to the list
+      continue;
+    } else if (it != options_.end()) {
       std::string m = "option " + written + " given twice";
       if (!spec.flags.count(key)) m += " ('" + it->second + "', '" + value + "')";
       auto hint = spec.repeatHints.find(key);

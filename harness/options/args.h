@@ -19,6 +19,9 @@ struct OptionSpec {
   std::set<std::string> flags;   // options that take none
   // Added to the "given twice" error of an option (why it is one value only, what to do).
   std::map<std::string, std::string> repeatHints;
+  // Value options that may be given more than once: the values are joined with ',' (so
+  // "--anim a --anim b" reads as "--anim a,b"; splitList takes them apart).
+  std::set<std::string> lists;
 };
 
 // A bad option value: what() is a message for the user that names the option, e.g.
@@ -34,7 +37,7 @@ public:
   //   "option --size needs a value (found -o ...)"   (never swallows the next option)
   //   "option --size needs a value"                  (at the end of the line)
   //   "option --update takes no value"               (--flag=value)
-  //   "option --time given twice ('0.5', '1'); ..."  (every option is given at most once)
+  //   "option --time given twice ('0.5', '1'); ..."  (every option but spec.lists at most once)
   // A word starting with '-' followed by a digit or '.' (e.g. -1, -.5) is a value or a
   // positional, never an option, so a negative value reaches the range check that rejects it;
   // a value that itself starts with '-' and a letter is written --key=value.

@@ -28,17 +28,21 @@ RgbaImage sideBySide(const RgbaImage& a, const RgbaImage& b, const RgbaImage& c)
 
 }  // namespace
 
-json animatedComparisons(const Scene& scene, const SceneJob& job, const std::string& rel) {
-  if (scene.animations.empty() || !(scene.animations[0].duration > 0.0f) || job.pipelines.size() < 2)
+json animatedComparisons(const Scene& scene, const SceneJob& job, const std::string& rel, int anim) {
+  if (anim < 0 || size_t(anim) >= scene.animations.size() || !(scene.animations[size_t(anim)].duration > 0.0f) ||
+      job.pipelines.size() < 2)
     return nullptr;
-  const float duration = scene.animations[0].duration;
+  const float duration = scene.animations[size_t(anim)].duration;
   std::vector<float> times;  // one loop: the end equals the start, so it is left out
   for (int k = 0; k < kAnimationFrames; ++k) times.push_back(duration * float(k) / float(kAnimationFrames));
   FrameSettings settings;
   settings.width = job.width, settings.height = job.height;
-  settings.anim.anim = 0;
+  settings.anim.anim = anim;
   const std::string& base = job.pipelines.front();
-  progress(job, "animating " + base + " (" + std::to_string(kAnimationFrames) + " frames)");
+  const std::string& name = scene.animations[size_t(anim)].name;
+  const std::string what = (name.empty() ? "animation " + std::to_string(anim) : name) + ", " +
+                           std::to_string(kAnimationFrames) + " frames";
+  progress(job, "animating " + base + " (" + what + ")");
   auto baseFrames = renderFrames(scene, base, settings, times);
   json out = json::object();
   for (size_t i = 1; i < job.pipelines.size(); ++i) {
@@ -47,7 +51,7 @@ json animatedComparisons(const Scene& scene, const SceneJob& job, const std::str
       out[p] = {{"error", baseFrames.error()}};
       continue;
     }
-    progress(job, "animating " + p + " (" + std::to_string(kAnimationFrames) + " frames)");
+    progress(job, "animating " + p + " (" + what + ")");
     auto frames = renderFrames(scene, p, settings, times);
     if (!frames) {
       out[p] = {{"error", frames.error()}};
@@ -61,13 +65,14 @@ json animatedComparisons(const Scene& scene, const SceneJob& job, const std::str
       if (auto m = compareImages(a, b)) worst = std::max(worst, m->fractionOver2);
       strip.push_back(sideBySide(a, b, diffHeatmap(a, b)));
     }
-    const std::string file = rel + "animation_" + p + ".gif";
+    const std::string file = rel + (anim == 0 ? "animation_" : "animation" + std::to_string(anim) + "_") + p + ".gif";
     Status written = writeAnimation((fs::path(job.outDir) / file).string(), strip, kAnimationFps);
     if (!written) {
       out[p] = {{"error", written.error()}};
       continue;
     }
     out[p] = {{"file", file}, {"frames", kAnimationFrames}, {"fps", kAnimationFps}, {"duration", duration},
+              {"animation", anim}, {"name", scene.animations[size_t(anim)].name},
               {"baseline", base}, {"maxPixelsOver2", worst}};
   }
   return out;

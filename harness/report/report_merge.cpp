@@ -8,6 +8,7 @@
 #include "harness/options/shard.h"
 
 #include "harness/document/report_document.h"
+#include "harness/report/report_sources.h"
 
 namespace mb::report {
 namespace {
@@ -101,6 +102,12 @@ int mergeReports(const std::vector<std::string>& dirs, const Options& o) {
   settings["shard"].erase("index");
   settings["shard"]["merged"] = dirs;
   json report = assembleReport(first["machine"], settings, std::move(scenes), first["opsPerVertex"], kernels);
+  report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files
+  for (const ShardRun& r : runs)  // the curved drift: measured by every shard with a curved scene, alike
+    if (r.report.contains("curved")) {
+      report["curved"] = r.report["curved"];
+      break;
+    }
   std::fprintf(stderr, "merge: %d shard(s), %zu scene(s) -> %s\n", count, report["scenes"].size(), o.outDir.c_str());
   return writeReportFolder(std::move(report), o);
 }

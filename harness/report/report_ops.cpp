@@ -60,6 +60,15 @@ json measureOpsPerVertex() {
 
 json sceneOpsPerVertex(const json& ops, const json& mix) {
   if (!mix.is_object()) return nullptr;
+  if (mix.value("curvedInstance", 0.0) > 0) {  // one variant draws every vertex of a curved scene
+    json out = json::object();
+    const std::string label = mix.value("curvedSpace", "") + " instance";
+    for (const std::string& pipeline : allPipelineNames())
+        if (const json* v = findVariant(ops, pipeline, label))
+          out[pipeline] = {{"counted", v->at("counted").is_null() ? json() : ops5(v->at("counted"))},
+                           {"spirv", v->at("spirv").is_null() ? json() : ops5(v->at("spirv"))}};
+    return out;
+  }
   const double skinned = mix.value("skinned", 0.0), rigidAll = mix.value("rigid", 0.0),
                scaled = mix.value("scaledFallback", 0.0), patch = mix.value("bezierPatch", 0.0),
                total = skinned + rigidAll + patch;

@@ -15,7 +15,9 @@ nlohmann::json measureOpsPerVertex();
 // Per pipeline, the mean ops of one drawn vertex of a scene with `mix` ({"rigid", "skinned",
 // "scaledFallback"} vertex counts): {"matrix": {"counted": {...}, "spirv": {...}}, ...}. The
 // motor pipeline's scaled-fallback vertices use its "scaled fallback" variant; other pipelines
-// have none and use "rigid". null when the scene draws nothing.
+// have none and use "rigid". A curved scene ("curvedInstance" > 0): the "<curvedSpace>
+// instance" variant ("S3 instance", "H3 instance") of each pipeline that has it. null when the
+// scene draws nothing.
 nlohmann::json sceneOpsPerVertex(const nlohmann::json& ops, const nlohmann::json& mix);
 
 }  // namespace mb::report

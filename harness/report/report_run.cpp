@@ -11,6 +11,7 @@
 
 #include "harness/bench/report_bench.h"
 #include "harness/document/report_document.h"
+#include "harness/report/report_sources.h"
 #include "harness/document/report_format.h"
 #include "harness/report/report_inputs.h"
 #include "harness/report/report_machine.h"
@@ -18,6 +19,11 @@
 #include "harness/report/report_ops.h"
 #include "harness/document/report_plots.h"
 #include "harness/process/report_workers.h"
+#include "harness/report/report_anim_select.h"
+#include "harness/report/report_drift.h"
+#include "pipelines/pipeline.h"
+#include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/scene/curved_space.h"
 
 namespace mb::report {
 namespace {
@@ -36,15 +42,23 @@ std::string joined(const std::vector<std::string>& v) {
   return s;
 }
 
-// The worker command line shared by the render and time phases.
+// The worker command line shared by the render and time phases. `anims`: the scene's resolved
+// --anim indices (empty: the default).
 std::vector<std::string> workerArgs(const Options& o, const Input& in, int index, int total,
-                                    const std::string& mode, const std::string& resultPath) {
-  return {"report", "--worker", mode, "--worker-out", resultPath, "--worker-id", in.id,
-          "--worker-index", std::to_string(index), "--worker-total", std::to_string(total),
-          "-o", o.outDir, "--size", std::to_string(o.width) + "x" + std::to_string(o.height),
-          "--frames", std::to_string(o.frames), "--time-size",
-          std::to_string(o.timeWidth) + "x" + std::to_string(o.timeHeight), "--pipelines",
-          joined(o.pipelines), in.spec};
+                                    const std::string& mode, const std::string& resultPath,
+                                    const std::vector<int>& anims) {
+  std::vector<std::string> args = {
+      "report", "--worker", mode, "--worker-out", resultPath, "--worker-id", in.id,
+      "--worker-index", std::to_string(index), "--worker-total", std::to_string(total),
+      "-o", o.outDir, "--size", std::to_string(o.width) + "x" + std::to_string(o.height),
+      "--frames", std::to_string(o.frames), "--time-size",
+      std::to_string(o.timeWidth) + "x" + std::to_string(o.timeHeight), "--pipelines",
+      joined(scenePipelines(o, in.spec))};
+  std::string a;
+  for (int i : anims) a += (a.empty() ? "" : ",") + std::to_string(i);
+  if (!a.empty()) args.insert(args.end(), {"--worker-anims", a});
+  args.push_back(in.spec);
+  return args;
 }
 
 Status writeText(const fs::path& path, const std::string& text) {
@@ -94,6 +108,14 @@ json kernels(const Options& o) {
 
 }  // namespace
 
+std::vector<std::string> scenePipelines(const Options& o, const std::string& spec) {
+  return o.pipelines.empty() ? pipelineNames(curvedSceneSpace(spec)) : o.pipelines;
+}
+
+std::vector<std::string> runPipelines(const Options& o) {
+  return o.pipelines.empty() ? pipelineNames() : o.pipelines;
+}
+
 int runReport(const Options& o) {
   std::error_code ec;
   fs::create_directories(o.outDir, ec);
@@ -109,18 +131,40 @@ int runReport(const Options& o) {
   }
   const fs::path work = tmpl;
   // Ids are made over the whole list, so every shard names a scene (and its image folder) alike.
-  const std::vector<Input> all = expandInputs(o.scenes);
+  // No scene named: every built-in scene, the curved ones (issue 15) last.
+  std::vector<std::string> named = o.scenes;
+  if (named.empty()) {
+    named = builtinSceneNames();
+    named.insert(named.end(), curvedSceneNames().begin(), curvedSceneNames().end());
+  }
+  const std::vector<Input> all = expandInputs(named);
   std::vector<std::string> specs;
   for (const Input& in : all) specs.push_back(in.spec);
   std::vector<Input> inputs;
   json shard = {{"index", o.shard.index}, {"count", o.shard.count}, {"inputs", json::array()}};
   for (const Input& in : all) shard["inputs"].push_back({{"spec", in.spec}, {"id", in.id}});
-  for (size_t k : shardPositions(specs, o.shard)) inputs.push_back(all[k]);
+  // --anim is checked against the whole list (so every shard decides alike) before anything is
+  // measured: a typo stops the run.
+  std::vector<std::vector<int>> allAnims(all.size());
+  if (!o.anim.empty()) {
+    auto resolved = resolveAnimations(o.anim, all);
+    if (!resolved) {
+      std::fprintf(stderr, "motorbench report: error: %s\n", resolved.error().c_str());
+      fs::remove_all(work, ec);
+      return 2;
+    }
+    allAnims = *resolved;
+  }
+  std::vector<std::vector<int>> anims;
+  for (size_t k : shardPositions(specs, o.shard)) {
+    inputs.push_back(all[k]);
+    anims.push_back(allAnims[k]);
+  }
   const int total = int(inputs.size());
   if (o.shard.count > 1)
     say("shard " + std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count) + ": " +
         std::to_string(total) + " of " + std::to_string(all.size()) + " scene(s)");
-  say(std::to_string(total) + " scene(s), pipelines " + joined(o.pipelines) + ", " +
+  say(std::to_string(total) + " scene(s), pipelines " + joined(runPipelines(o)) + ", " +
       std::to_string(o.jobs) + " job(s), images " + std::to_string(o.width) + "x" +
       std::to_string(o.height) + " -> " + o.outDir);
 
@@ -128,7 +172,7 @@ int runReport(const Options& o) {
   std::vector<WorkerTask> tasks;
   for (int i = 0; i < total; ++i) {
     const std::string result = (work / (inputs[size_t(i)].id + ".render.json")).string();
-    tasks.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "render", result), result,
+    tasks.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "render", result, anims[size_t(i)]), result,
                      {{"id", inputs[size_t(i)].id}, {"spec", inputs[size_t(i)].spec}}});
   }
   std::vector<json> scenes = runWorkers(tasks, o.jobs, o.timeoutS, "scenes measured");
@@ -140,7 +184,7 @@ int runReport(const Options& o) {
     for (int i = 0; i < total; ++i) {
       if (scenes[size_t(i)].value("status", "failed") == "failed") continue;
       const std::string result = (work / (inputs[size_t(i)].id + ".time.json")).string();
-      timing.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "time", result), result,
+      timing.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "time", result, anims[size_t(i)]), result,
                         {{"id", inputs[size_t(i)].id}}});
       which.push_back(size_t(i));
     }
@@ -153,15 +197,32 @@ int runReport(const Options& o) {
   json ops = measureOpsPerVertex();
   for (json& s : scenes) s["opsPerVertex"] = sceneOpsPerVertex(ops, s.value("vertexMix", json()));
 
+  // Phase 3b: the curved spaces' camera drift (about a second), when the run has a curved scene.
+  json curvedExtra = json::object();
+  bool anyCurved = false;
+  for (const Input& in : inputs) anyCurved = anyCurved || curvedSceneSpace(in.spec) != Space::Euclidean;
+  if (anyCurved) {
+    say("measuring the curved camera drift (" + std::to_string(kReportDriftSteps) + " steps per space)");
+    curvedExtra["drift"] = driftJson(kReportDriftSteps);
+  }
+
   // Phase 4: kernel throughput.
   json kernelJson = kernels(o);
 
-  json settings = {{"pipelines", o.pipelines}, {"baseline", o.pipelines.front()},
+  json curved = json::object();  // the curved scenes' pipelines per space (whole list: alike in every shard)
+  if (o.pipelines.empty())
+    for (const Input& in : all)
+      if (Space sp = curvedSceneSpace(in.spec); sp != Space::Euclidean) curved[spaceName(sp)] = pipelineNames(sp);
+  const std::vector<std::string> pipelines = runPipelines(o);
+  json settings = {{"pipelines", pipelines}, {"baseline", pipelines.front()}, {"curvedPipelines", curved},
+                   {"anim", o.anim.empty() ? json(nullptr) : json(o.anim)},
                    {"width", o.width}, {"height", o.height}, {"frames", o.frames},
                    {"timeWidth", o.timeWidth}, {"timeHeight", o.timeHeight},
                    {"jobs", o.jobs}, {"arguments", o.scenes}, {"shard", shard}};
   json report = assembleReport(machineJson(), settings, std::move(scenes), std::move(ops),
                                std::move(kernelJson));
+  report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files
+  if (anyCurved) report["curved"] = curvedExtra;
   const int status = writeReportFolder(std::move(report), o);
   fs::remove_all(work, ec);
   return status;

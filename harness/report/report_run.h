@@ -2,6 +2,7 @@
 // --jobs), frame timing scene by scene, ops per vertex, kernel throughput (bench), then
 // report.json, the plots (scripts/plot.py) and report.md / report.html.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -12,9 +13,12 @@
 namespace mb::report {
 
 struct Options {
-  std::vector<std::string> scenes;  // SCENE|FILE|DIR arguments; empty: the built-in scenes
+  std::vector<std::string> scenes;  // SCENE|FILE|DIR arguments; empty: the built-in scenes, then
+                                    // the curved ones (s3_tiling, h3_tiling)
   std::string outDir;
-  std::vector<std::string> pipelines;  // first = baseline of the diffs
+  std::vector<std::string> pipelines;  // first = baseline of the diffs; empty: each scene's space's
+                                       // pipelines (pipelineNames(Space), matrix side first)
+  std::string anim;                    // --anim items (report_anim_select.h); "": first animation
   int jobs = 1;
   int width = 256, height = 192;
   int frames = 30;                   // timed frames per pipeline and scene; 0: no timing
@@ -28,6 +32,16 @@ struct Options {
   double timeoutS = 900;             // per worker process
   Shard shard;                       // --shard I/N: this run's part of the input list
 };
+
+// Camera steps of the curved-space drift the report measures when it has a curved scene (the
+// issue's 10^6, as `motorbench drift`).
+inline constexpr int64_t kReportDriftSteps = 1000000;
+
+// The pipelines scene `spec` is measured with: options.pipelines when given, else those of the
+// scene's space (a curved built-in: its s3_/h3_ pair; anything else: the Euclidean ones).
+std::vector<std::string> scenePipelines(const Options& options, const std::string& spec);
+// The Euclidean (glTF) pipelines of the run: options.pipelines, else pipelineNames().
+std::vector<std::string> runPipelines(const Options& options);
 
 // Runs every phase; a failing scene is recorded and the run goes on. Returns 0 when the run
 // completed (whatever the scenes did), 2 when the output could not be written.

@@ -9,7 +9,9 @@
 
 #include "harness/render/image_metrics.h"
 #include "harness/report/report_animation.h"
+#include "harness/report/report_sources.h"
 #include "harness/render/render_frame.h"
+#include "pipelines/scene/curved_space.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scale_analysis.h"
 #include "pipelines/scene/scene_stats.h"
@@ -72,9 +74,10 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-std::vector<float> imageTimes(const Scene& scene) {
-  if (scene.animations.empty() || !(scene.animations[0].duration > 0.0f)) return {0.0f};
-  const float d = scene.animations[0].duration;
+std::vector<float> imageTimes(const Scene& scene, int anim) {
+  if (anim < 0 || size_t(anim) >= scene.animations.size() || !(scene.animations[size_t(anim)].duration > 0.0f))
+    return {0.0f};
+  const float d = scene.animations[size_t(anim)].duration;
   return {0.0f, d / 3.0f, 2.0f * d / 3.0f};
 }
 
@@ -103,7 +106,12 @@ json vertexMix(const Scene& scene) {
       }
     }
   }
-  return {{"rigid", rigid}, {"skinned", skinned}, {"scaledFallback", scaled}, {"bezierPatch", patch}};
+  // Curved scenes (issue 15): every instance draws the shared triangle list.
+  const long curved = long(scene.curved.positions.size()) * long(scene.curved.instances.size());
+  json mix = {{"rigid", rigid}, {"skinned", skinned}, {"scaledFallback", scaled}, {"bezierPatch", patch},
+              {"curvedInstance", curved}};
+  if (curved > 0) mix["curvedSpace"] = scene.curved.space == Space::Spherical ? "S3" : "H3";
+  return mix;
 }
 
 void progress(const SceneJob& job, const std::string& what) {
@@ -112,7 +120,7 @@ void progress(const SceneJob& job, const std::string& what) {
 }
 
 json measureScene(const SceneJob& job) {
-  json out = {{"id", job.input.id}, {"spec", job.input.spec}, {"status", "failed"},
+  json out = {{"id", job.input.id}, {"spec", job.input.spec}, {"origin", sceneOrigin(job.input.spec)}, {"status", "failed"},
               {"error", nullptr}, {"frames", json::array()}, {"pipelines", json::object()}};
   progress(job, "loading " + job.input.spec);
   auto scene = loadScene(job.input.spec);
@@ -125,12 +133,29 @@ json measureScene(const SceneJob& job) {
   out["source"] = scene->source;
   out["stats"] = toJson(computeFileStats(*scene));
   out["vertexMix"] = vertexMix(*scene);
-  const std::vector<float> times = imageTimes(*scene);
-  out["animation"] = scene->animations.empty()
-                         ? json(nullptr)
-                         : json{{"index", 0}, {"name", scene->animations[0].name},
-                                {"duration", scene->animations[0].duration}};
-  out["times"] = times;
+  // The animations shown: --anim's choice, else the first (none: the rest pose, anim -1).
+  std::vector<int> anims = job.animations;
+  const bool chosen = !anims.empty();
+  if (anims.empty()) anims.push_back(scene->animations.empty() ? -1 : 0);
+  struct Shot {
+    int anim;
+    float time;
+  };
+  std::vector<Shot> shots;
+  json animations = json::array();
+  for (int a : anims) {
+    for (float t : imageTimes(*scene, a)) shots.push_back({a, t});
+    if (a < 0) continue;
+    const Animation& an = scene->animations[size_t(a)];
+    animations.push_back({{"index", a}, {"name", an.name}, {"duration", an.duration}, {"times", imageTimes(*scene, a)}});
+  }
+  out["animation"] = animations.empty() ? json(nullptr) : json{{"index", animations[0]["index"]},
+                                                               {"name", animations[0]["name"]},
+                                                               {"duration", animations[0]["duration"]}};
+  out["animations"] = animations;
+  out["times"] = anims.front() < 0 ? json::array({0.0}) : animations[0]["times"];
+  out["space"] = spaceName(scene->curved.space);
+  out["pipelineOrder"] = job.pipelines;
 
   const std::string rel = "images/" + job.input.id + "/";
   std::error_code ec;
@@ -142,17 +167,22 @@ json measureScene(const SceneJob& job) {
   std::map<std::string, std::vector<double>> conversion;
   std::map<std::string, std::string> pipelineError;
   int framesOk = 0, framesTried = 0;
-  for (size_t k = 0; k < times.size(); ++k) {
+  for (size_t k = 0; k < shots.size(); ++k) {
     FrameSettings settings;
     settings.width = job.width, settings.height = job.height;
-    if (times.size() > 1) settings.anim.anim = 0;
-    settings.anim.time = times[k];
-    json frame = {{"time", times[k]}, {"images", json::object()}, {"diffs", json::object()},
+    // A zero-length animation is drawn as the rest pose unless --anim chose it.
+    const int a = shots[k].anim;
+    if (a >= 0 && (chosen || scene->animations[size_t(a)].duration > 0.0f)) settings.anim.anim = a;
+    settings.anim.time = shots[k].time;
+    const std::string when = timeText(shots[k].time) + (a >= 0 && (chosen || anims.size() > 1)
+                                                             ? " (" + scene->animations[size_t(a)].name + ")" : "");
+    json frame = {{"time", shots[k].time}, {"animation", a >= 0 ? json(a) : json(nullptr)},
+                  {"images", json::object()}, {"diffs", json::object()},
                   {"metrics", json::object()}, {"errors", json::object()}};
     std::map<std::string, RgbaImage> images;
     for (const std::string& p : job.pipelines) {
       ++framesTried;
-      progress(job, "rendering " + p + " t=" + timeText(times[k]));
+      progress(job, "rendering " + p + " t=" + when);
       auto f = renderFrame(*scene, p, settings);
       if (!f) {
         frame["errors"][p] = f.error();
@@ -176,6 +206,7 @@ json measureScene(const SceneJob& job) {
         pj["fallbacks"] = fallbacksJson(f->stats);
         pj["stats"] = toJson(f->stats);
         pj["draws"] = f->stats.draws;
+        pj["skinBlend"] = skinBlendOf(p);
         if (!out.contains("gl"))
           out["gl"] = {{"renderer", f->glRenderer}, {"version", f->glVersion}, {"backend", f->glBackend}};
       }
@@ -209,7 +240,9 @@ json measureScene(const SceneJob& job) {
                             {"samples", c}};
     }
   }
-  out["animated"] = animatedComparisons(*scene, job, rel);
+  // One loop per animation shown; "animated" keeps the first's (the schema before --anim).
+  for (json& an : out["animations"]) an["animated"] = animatedComparisons(*scene, job, rel, an["index"].get<int>());
+  out["animated"] = out["animations"].empty() ? json(nullptr) : out["animations"][0]["animated"];
   out["status"] = framesOk == framesTried ? "ok" : framesOk > 0 ? "partial" : "failed";
   if (framesOk < framesTried && !pipelineError.empty())
     out["error"] = pipelineError.begin()->second;

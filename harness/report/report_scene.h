@@ -21,24 +21,28 @@ struct SceneJob {
   std::string outDir;                   // report folder; images go to images/<id>/
   int width = 256, height = 192;
   std::vector<std::string> pipelines;   // first = baseline of the diffs
+  std::vector<int> animations;          // --anim, resolved (report_anim_select.h); empty: the first
 };
 
-// Animation times the images are taken at: the first animation at 0, 1/3 and 2/3 of its
-// duration (not the end, which equals the start for looping clips); one time (0, rest pose)
-// for a scene without animation or with a zero-length one.
-std::vector<float> imageTimes(const Scene& scene);
+// Animation times the images are taken at: animation `anim` at 0, 1/3 and 2/3 of its
+// duration (not the end, which equals the start for looping clips); one time (0) for a scene
+// without that animation or with a zero-length one.
+std::vector<float> imageTimes(const Scene& scene, int anim = 0);
 
 // Drawn vertices by the vertex-shader variant that transforms them: "rigid" and "skinned"
 // for every pipeline, and for the motor pipeline how many rigid ones sit on nodes whose own
 // scale is non-uniform or mirrored ("scaledFallback"; the node's own scale only, parents'
 // scales are not folded in). Used to weight ops per vertex per scene.
 // "bezierPatch": tessellated patch vertices ((N+1)^2 per patch at Scene::patchLevel).
+// "curvedInstance": a curved scene's vertices times its instances (the s3_/h3_ vertex shaders).
 nlohmann::json vertexMix(const Scene& scene);
 
 // Progress line on stderr: "[3/8] skinned_tube: rendering motor t=0.5".
 void progress(const SceneJob& job, const std::string& what);
 
-// The "render" part of the scene's report.json entry (see README, section Report).
+// The "render" part of the scene's report.json entry (see README, section Report): images of
+// every animation in job.animations (default: the first), each at imageTimes(), and one
+// animated comparison per animation.
 nlohmann::json measureScene(const SceneJob& job);
 
 }  // namespace mb::report

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "harness/options/args.h"
+#include "harness/render/frame_options.h"
 #include "harness/render/image_metrics.h"
 #include "tests/support/cli_issue_support.h"
 
@@ -47,6 +48,16 @@ TEST(CliArgs, NegativeNumbersAreValuesThatReachTheRangeCheck) {
 TEST(CliArgs, RepeatedOptionIsAnErrorNamingBothValues) {
   mb::Args a({"--time", "0.5", "--time", "1"}, {{"time"}, {}, {{"time", "one frame per run"}}});
   EXPECT_EQ(a.error(), "option --time given twice ('0.5', '1'); one frame per run");
+}
+
+TEST(CliArgs, ListOptionsCollectRepeatsOthersStillRefuseThem) {
+  // `report --anim a,b --anim c`: a list option joins its repeats with ','.
+  mb::Args a({"--anim", "candy_wrapper,0", "--time", "1", "--anim=twist"}, {{"anim", "time"}, {}, {}, {"anim"}});
+  EXPECT_EQ(a.error(), "");
+  EXPECT_EQ(a.get("anim", ""), "candy_wrapper,0,twist");
+  EXPECT_EQ(mb::splitList(a.get("anim", "")), (std::vector<std::string>{"candy_wrapper", "0", "twist"}));
+  mb::Args b({"--anim", "a", "--time", "1", "--time", "2"}, {{"anim", "time"}, {}, {}, {"anim"}});
+  EXPECT_EQ(b.error(), "option --time given twice ('1', '2'); give it once");
 }
 
 TEST(CliArgs, FlagsTakeNoValueAndKeyValueFormWorks) {
