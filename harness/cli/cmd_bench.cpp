@@ -6,7 +6,10 @@
 // After the run, a summary prints motor/matrix (and glm/matrix) throughput ratios per pair.
 #include <benchmark/benchmark.h>
 
+#include <unistd.h>
+
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <vector>
@@ -20,14 +23,43 @@ namespace {
 
 constexpr const char* kDefaultMinTime = "0.2";
 
+// The console options Google Benchmark would give its own reporter: a reporter passed to
+// RunSpecifiedBenchmarks is constructed by us and would otherwise keep ConsoleReporter's
+// default (colour on), ignoring --benchmark_color (results/bench.txt had escape codes).
+// Colour: --benchmark_color=true|yes|1|on, or auto (the default) on a terminal; tabular
+// counters always (the layout bench.txt has always had).
+benchmark::ConsoleReporter::OutputOptions consoleOptions(const std::vector<std::string>& flags) {
+  std::string color = "auto";
+  for (const std::string& f : flags) {
+    if (f.rfind("--benchmark_color=", 0) == 0) color = f.substr(18);
+    else if (f == "--benchmark_color") color = "true";
+  }
+  bool on = color == "true" || color == "yes" || color == "1" || color == "on";
+  if (color == "auto") {
+    const char* term = std::getenv("TERM");
+    on = isatty(STDOUT_FILENO) && term && std::string(term) != "dumb";
+  }
+  return on ? benchmark::ConsoleReporter::OO_ColorTabular : benchmark::ConsoleReporter::OO_Tabular;
+}
+
 // The console reporter plus a record of every result for the ratio summary.
 class SummaryReporter : public benchmark::ConsoleReporter {
 public:
+  using benchmark::ConsoleReporter::ConsoleReporter;
   struct Result {
     double itemsPerSecond = 0, bwFraction = -1;
   };
   void ReportRuns(const std::vector<Run>& runs) override {
-    benchmark::ConsoleReporter::ReportRuns(runs);
+    // bw_fraction is a Google Benchmark rate counter (bytes per iteration / probe bandwidth,
+    // divided by the time per iteration): its value is the plain fraction, but the console
+    // would print it with a "/s" suffix. Shown without the rate flag; the JSON file reporter
+    // gets the runs unchanged (it prints values without units).
+    std::vector<Run> shown = runs;
+    for (Run& r : shown) {
+      auto it = r.counters.find("bw_fraction");
+      if (it != r.counters.end()) it->second.flags = benchmark::Counter::kDefaults;
+    }
+    benchmark::ConsoleReporter::ReportRuns(shown);
     for (const Run& r : runs) {
       if (r.error_occurred) continue;
       // One figure per benchmark: the median aggregate when there are repetitions.
@@ -140,7 +172,7 @@ int runBench(const std::vector<std::string>& args) {
   bench::registerAnimationBenchmarks();
   bench::registerTangentBenchmarks();
 
-  SummaryReporter reporter;
+  SummaryReporter reporter(consoleOptions(flags));
   const size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   if (ran == 0) {
