@@ -7,6 +7,8 @@
 //  - matrix and motor both execute the shader source compiled through the shim with float
 //    (harness/bench/bench_shaders.h), built with the same flags: SIMD on both or neither;
 //  - "glm" is GLM's own operators on the matrix side, an extra labelled baseline;
+//  - "simd_matrix" / "simd_motor" are kernels/simd's hand-vectorised forms of the same math,
+//    the same care on both sides (kernels/simd/README.md);
 //  - per-vertex kernels process the same number of vertices on each side (items/s compare
 //    directly) and count the bytes each side actually reads and writes (bytes/s).
 #pragma once
@@ -30,6 +32,15 @@ using PS = MotorShader<float>;
 inline const char* const kMatrix = "matrix";
 inline const char* const kMotor = "motor";
 inline const char* const kGlm = "glm";
+// kernels/simd (Highway, runtime dispatch): the matrix and motor math hand-vectorised over
+// structure-of-arrays batches; simd_affine: the mat4x3 form where it differs from simd_matrix.
+inline const char* const kSimdMatrix = "simd_matrix";
+inline const char* const kSimdAffine = "simd_affine";
+inline const char* const kSimdMotor = "simd_motor";
+
+// Which side of a pair a name is: a matrix implementation (matrix, glm, simd_matrix,
+// simd_affine), a motor one (motor, simd_motor), or neither ("").
+const char* sideKind(const std::string& side);
 
 // Working-set classes of the per-vertex kernels.
 enum class Size { InCache, OutOfCache };
@@ -65,6 +76,9 @@ void registerKernel(const std::string& name, std::function<void(benchmark::State
 // Sets items/s and bytes/s for `items` items and `bytes` bytes per iteration; for out-of-cache
 // kernels also "bw_fraction" (bytes/s over the bandwidth probe's best) and "probe_GBps".
 void setThroughput(benchmark::State& state, size_t items, size_t bytes, Size size);
+
+// Labels the run with the Highway target the simd kernels dispatch to ("AVX3", "AVX2", ...).
+void setSimdLabel(benchmark::State& state);
 
 // Deterministic data.
 struct Rng {
