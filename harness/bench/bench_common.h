@@ -70,6 +70,12 @@ template <class T> T& perSize(Size s, size_t n) {
   return big;
 }
 
+// Planar (structure-of-arrays) batches of n items: the distance between two component planes,
+// in floats. Rounded up to 1024 floats and then shifted by one cache line, so that planes do
+// not start at the same 4 KiB offset (with a power-of-two distance every plane's item i falls
+// in the same cache set and the ~20 streams of a vertex kernel evict each other).
+inline size_t planeStride(size_t n) { return (n + 1023) / 1024 * 1024 + 16; }
+
 // Registers `fn` as benchmark "name" (time in ns, items/s and bytes/s set by the kernel).
 void registerKernel(const std::string& name, std::function<void(benchmark::State&)> fn);
 

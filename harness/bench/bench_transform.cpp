@@ -200,10 +200,10 @@ void composeSimdMotor(benchmark::State& state) {
 
 // Planar copies of the vec3 arrays (3 planes in, 3 out).
 struct Vec3Planes {
-  size_t n;
+  size_t n, stride;
   std::vector<float> in, out;
-  explicit Vec3Planes(const Vec3Arrays& a) : n(a.in.size()), in(3 * n), out(3 * n) {
-    for (size_t i = 0; i < n; ++i) in[i] = a.in[i].x, in[n + i] = a.in[i].y, in[2 * n + i] = a.in[i].z;
+  explicit Vec3Planes(const Vec3Arrays& a) : n(a.in.size()), stride(planeStride(n)), in(3 * stride), out(3 * stride) {
+    for (size_t i = 0; i < n; ++i) in[i] = a.in[i].x, in[stride + i] = a.in[i].y, in[2 * stride + i] = a.in[i].z;
   }
 };
 
@@ -223,8 +223,8 @@ template <Kind K> void vec3Simd(benchmark::State& state, Size s, bool motor) {
     for (int r = 0; r < 4; ++r) m16[c * 4 + r] = pd.m[c][r];
   for (int k = 0; k < 4; ++k) m8[k] = pd.motor[0][k], m8[4 + k] = pd.motor[1][k];
   Vec3Planes& p = vec3Planes(s);
-  const simd::ConstPlanes in{p.in.data(), p.n};
-  const simd::Planes out{p.out.data(), p.n};
+  const simd::ConstPlanes in{p.in.data(), p.stride};
+  const simd::Planes out{p.out.data(), p.stride};
   for (auto _ : state) {
     if (K == Kind::Point) motor ? simd::pointsMotor(m8, in, out, p.n) : simd::pointsMatrix(m16, in, out, p.n);
     else motor ? simd::directionsMotor(m8, in, out, p.n) : simd::directionsMatrix(m16, in, out, p.n);

@@ -218,21 +218,22 @@ void skinGlm(benchmark::State& state, Size s) {
 // ---- simd sides: planar copies of the same vertices and palettes -----------------------------
 
 struct SoaArrays {
-  size_t n;
+  size_t n, stride;
   std::vector<float> matrix, motor, weights, out;  // 10, 7, 4, 10 planes of n
   std::vector<uint16_t> joints;                    // 4 planes of n
   std::vector<float> paletteAffine, paletteMotor;  // 12, 8 planes of kJoints
   explicit SoaArrays(const Arrays& a)
-      : n(a.out.size()), matrix(10 * n), motor(7 * n), weights(4 * n), out(10 * n), joints(4 * n),
+      : n(a.out.size()), stride(planeStride(n)), matrix(10 * stride), motor(7 * stride), weights(4 * stride),
+        out(10 * stride), joints(4 * stride),
         paletteAffine(12 * kJoints), paletteMotor(8 * kJoints) {
     for (size_t i = 0; i < n; ++i) {
       const MatrixVertex& m = a.matrix[i];
       const MotorVertex& p = a.motor[i];
       for (size_t c = 0; c < 3; ++c)
-        matrix[c * n + i] = m.p[c], matrix[(3 + c) * n + i] = m.n[c], motor[c * n + i] = p.p[c];
+        matrix[c * stride + i] = m.p[c], matrix[(3 + c) * stride + i] = m.n[c], motor[c * stride + i] = p.p[c];
       for (size_t c = 0; c < 4; ++c)
-        matrix[(6 + c) * n + i] = m.t[c], motor[(3 + c) * n + i] = p.r[c],
-                               weights[c * n + i] = a.skin[i].w[c], joints[c * n + i] = a.skin[i].j[c];
+        matrix[(6 + c) * stride + i] = m.t[c], motor[(3 + c) * stride + i] = p.r[c],
+                                    weights[c * stride + i] = a.skin[i].w[c], joints[c * stride + i] = a.skin[i].j[c];
     }
     const Draw& d = draw();
     for (size_t j = 0; j < size_t(kJoints); ++j) {
@@ -243,8 +244,8 @@ struct SoaArrays {
                      paletteMotor[size_t(4 + k) * kJoints + j] = d.jointMotor[j][1][k];
     }
   }
-  simd::ConstPlanes in(const std::vector<float>& v) const { return {v.data(), n}; }
-  simd::Planes outPlanes() { return {out.data(), n}; }
+  simd::ConstPlanes in(const std::vector<float>& v) const { return {v.data(), stride}; }
+  simd::Planes outPlanes() { return {out.data(), stride}; }
 };
 
 SoaArrays& soaArrays(Size s) {
@@ -289,14 +290,14 @@ void frameSimdMotor(benchmark::State& state, Size s) {
 void skinSimdMatrix(benchmark::State& state, Size s) {
   runSimd(state, s, kSkinMatrixBytes, [&](SoaArrays& a) {
     simd::skinnedVertexMatrix({a.paletteAffine.data(), size_t(kJoints)}, draw().normal[3][3], a.in(a.matrix),
-                              {a.joints.data(), a.n}, a.in(a.weights), a.outPlanes(), a.n);
+                              {a.joints.data(), a.stride}, a.in(a.weights), a.outPlanes(), a.n);
   });
 }
 
 void skinSimdMotor(benchmark::State& state, Size s) {
   runSimd(state, s, kSkinMotorBytes, [&](SoaArrays& a) {
     simd::skinnedVertexMotor({a.paletteMotor.data(), size_t(kJoints)}, draw().scale, a.in(a.motor),
-                             {a.joints.data(), a.n}, a.in(a.weights), a.outPlanes(), a.n);
+                             {a.joints.data(), a.stride}, a.in(a.weights), a.outPlanes(), a.n);
   });
 }
 

@@ -53,7 +53,11 @@ std::vector<Claim> curvedClaims(bool runTiming, int frames);
 
 // Every pipeline's bytes per vertex, floats per transform and joint (renders of built-in
 // scenes), ops per vertex (counted and SPIR-V) and time ratios (`timings`: {scene: timing JSON},
-// or null), the motor pipeline judged against the best matrix-side pipeline (issue 16).
-std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource);
+// or null), the motor pipeline judged against the best matrix-side pipeline (issue 16); and the
+// CPU kernels vertex_frame / skinned_vertex, the fastest motor implementation against the
+// fastest matrix implementation measured (`kernelPairs`: report_bench's pairs, or null; issue 13).
+std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource,
+                                           const nlohmann::json& kernelPairs = nullptr,
+                                           const std::string& kernelSource = "");
 
 }  // namespace mb::claims

@@ -172,7 +172,8 @@ int runClaims(const std::vector<std::string>& argv) {
     for (auto& c : claims::curvedClaims(!args.has("no-run"), frames)) all.push_back(c);
   }
   say("against the strongest baseline (every pipeline)");
-  for (auto& c : claims::strongestBaselineClaims(speed.timings, sources["frameTiming"].get<std::string>()))
+  for (auto& c : claims::strongestBaselineClaims(speed.timings, sources["frameTiming"].get<std::string>(),
+                                                 speed.kernelPairs, speed.kernelSource))
     all.push_back(c);
 
   const json j = claims::claimsJson(all, report::machineJson(), sources);

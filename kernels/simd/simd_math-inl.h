@@ -16,9 +16,9 @@ HWY_BEFORE_NAMESPACE();
 namespace mb::simd::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// Input planes are prefetched this many floats ahead (2 KiB per plane: enough to cover the
-// memory latency at one core's bandwidth with ~20 planes in flight).
-constexpr size_t kPrefetchAhead = 512;
+// Input planes are prefetched this many floats ahead (1 KiB per plane: enough to cover the
+// memory latency at one core's bandwidth; 20 planes x 1 KiB stay well inside L1).
+constexpr size_t kPrefetchAhead = 256;
 
 // Runs range(d, begin, end) over [0, n): full vectors of the target's width, then the tail one
 // lane at a time, so every kernel handles any n with one body.
