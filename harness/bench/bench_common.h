@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <new>
 #include <random>
 #include <string>
 #include <vector>
@@ -69,6 +70,18 @@ template <class T> T& perSize(Size s, size_t n) {
   static T big(n);
   return big;
 }
+
+// 64-byte aligned storage for the planar batches of the simd sides (kernels/simd streams its
+// stores only to aligned planes).
+template <class T> struct Aligned64 {
+  using value_type = T;
+  Aligned64() = default;
+  template <class U> Aligned64(const Aligned64<U>&) {}  // NOLINT: rebinding
+  T* allocate(size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(64))); }
+  void deallocate(T* p, size_t) { ::operator delete(p, std::align_val_t(64)); }
+  template <class U> bool operator==(const Aligned64<U>&) const { return true; }
+};
+template <class T> using AlignedVector = std::vector<T, Aligned64<T>>;
 
 // Planar (structure-of-arrays) batches of n items: the distance between two component planes,
 // in floats. Rounded up to 1024 floats and then shifted by one cache line, so that planes do

@@ -201,7 +201,7 @@ void composeSimdMotor(benchmark::State& state) {
 // Planar copies of the vec3 arrays (3 planes in, 3 out).
 struct Vec3Planes {
   size_t n, stride;
-  std::vector<float> in, out;
+  AlignedVector<float> in, out;
   explicit Vec3Planes(const Vec3Arrays& a) : n(a.in.size()), stride(planeStride(n)), in(3 * stride), out(3 * stride) {
     for (size_t i = 0; i < n; ++i) in[i] = a.in[i].x, in[stride + i] = a.in[i].y, in[2 * stride + i] = a.in[i].z;
   }

@@ -219,8 +219,8 @@ void skinGlm(benchmark::State& state, Size s) {
 
 struct SoaArrays {
   size_t n, stride;
-  std::vector<float> matrix, motor, weights, out;  // 10, 7, 4, 10 planes of n
-  std::vector<uint16_t> joints;                    // 4 planes of n
+  AlignedVector<float> matrix, motor, weights, out;  // 10, 7, 4, 10 planes of n
+  AlignedVector<uint16_t> joints;                    // 4 planes of n
   std::vector<float> paletteAffine, paletteMotor;  // 12, 8 planes of kJoints
   explicit SoaArrays(const Arrays& a)
       : n(a.out.size()), stride(planeStride(n)), matrix(10 * stride), motor(7 * stride), weights(4 * stride),
@@ -244,7 +244,7 @@ struct SoaArrays {
                      paletteMotor[size_t(4 + k) * kJoints + j] = d.jointMotor[j][1][k];
     }
   }
-  simd::ConstPlanes in(const std::vector<float>& v) const { return {v.data(), stride}; }
+  simd::ConstPlanes in(const AlignedVector<float>& v) const { return {v.data(), stride}; }
   simd::Planes outPlanes() { return {out.data(), stride}; }
 };
 

@@ -8,6 +8,8 @@
 #define MB_SIMD_MATH_INL_H_
 #endif
 
+#include <cstdint>
+
 #include "hwy/cache_control.h"
 #include "hwy/highway.h"
 #include "kernels/simd/simd_kernels.h"
@@ -20,13 +22,29 @@ namespace hn = hwy::HWY_NAMESPACE;
 // memory latency at one core's bandwidth; 20 planes x 1 KiB stay well inside L1).
 constexpr size_t kPrefetchAhead = 256;
 
-// Runs range(d, begin, end) over [0, n): full vectors of the target's width, then the tail one
-// lane at a time, so every kernel handles any n with one body.
-template <class Range> HWY_INLINE void forEachBatch(size_t n, const Range& range) {
+// Output bytes from which a kernel writes with non-temporal (streaming) stores: far beyond the
+// L2 and most last-level caches, where a normal store first reads the line it overwrites
+// (write-allocate) and so moves twice the bytes it writes. The same rule for every kernel.
+constexpr size_t kStreamBytes = size_t(64) << 20;
+
+// Whether a call writing `count` planes of n floats streams: large, and every plane aligned to
+// the widest vector (64 bytes; then the full-vector stores of the main loop are aligned).
+HWY_INLINE bool streamOutput(Planes out, size_t count, size_t n) {
+  if (n * count * sizeof(float) < kStreamBytes) return false;
+  for (size_t c = 0; c < count; ++c)
+    if (reinterpret_cast<uintptr_t>(out[c]) % 64) return false;
+  return true;
+}
+
+// Runs range(d, begin, end, main) over [0, n): full vectors of the target's width (main =
+// true: prefetch, streaming stores allowed), then the tail one lane at a time, so every kernel
+// handles any n with one body. `stream`: the kernel streamed its stores (fenced at the end).
+template <class Range> HWY_INLINE void forEachBatch(size_t n, bool stream, const Range& range) {
   const hn::ScalableTag<float> d;
   const size_t full = n / hn::Lanes(d) * hn::Lanes(d);
   range(d, size_t(0), full, true);
   range(hn::CappedTag<float, 1>(), full, n, false);
+  if (stream) hwy::FlushStream();
 }
 
 // Prefetches `count` planes of `p` at item i + kPrefetchAhead.
@@ -37,8 +55,13 @@ HWY_INLINE void prefetchPlanes(ConstPlanes p, size_t count, size_t i) {
 template <class D, size_t C> HWY_INLINE void loadPlanes(D d, ConstPlanes p, size_t i, hn::Vec<D> (&v)[C]) {
   for (size_t c = 0; c < C; ++c) v[c] = hn::LoadU(d, p[c] + i);
 }
-template <class D, size_t C> HWY_INLINE void storePlanes(D d, Planes p, size_t i, const hn::Vec<D> (&v)[C]) {
-  for (size_t c = 0; c < C; ++c) hn::StoreU(v[c], d, p[c] + i);
+template <class D, size_t C>
+HWY_INLINE void storePlanes(D d, Planes p, size_t i, const hn::Vec<D> (&v)[C], bool stream) {
+  if (stream) {
+    for (size_t c = 0; c < C; ++c) hn::Stream(v[c], d, p[c] + i);
+  } else {
+    for (size_t c = 0; c < C; ++c) hn::StoreU(v[c], d, p[c] + i);
+  }
 }
 // Per-draw uniforms broadcast to every lane.
 template <class D, size_t C> HWY_INLINE void broadcast(D d, const float* u, hn::Vec<D> (&v)[C]) {

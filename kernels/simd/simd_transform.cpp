@@ -16,61 +16,65 @@ namespace mb::simd::HWY_NAMESPACE {
 // planes prefetched; matrix 9 multiply-adds per item (rows 0..2 of the affine mat4), motor
 // sw_mp 18 / sw_md 18 fused ops.
 void PointsMatrix(const float* model, ConstPlanes in, Planes out, size_t n) {
-  forEachBatch(n, [&](auto d, size_t b, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 3, n);
+  forEachBatch(n, nt, [&](auto d, size_t b, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     V m[16], p[3], o[3];
     broadcast(d, model, m);
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
-      if (prefetch) prefetchPlanes(in, 3, i);
+      if (main) prefetchPlanes(in, 3, i);
       loadPlanes(d, in, i, p);
       affinePoint(m, 4, p[0], p[1], p[2], o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }
 
 void PointsMotor(const float* motor, ConstPlanes in, Planes out, size_t n) {
   const float c3[3] = {motor[7] * motor[1], motor[7] * motor[2], motor[7] * motor[3]};
-  forEachBatch(n, [&](auto d, size_t b, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 3, n);
+  forEachBatch(n, nt, [&](auto d, size_t b, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     V m[8], c[3], p[3], o[3];
     broadcast(d, motor, m);
     broadcast(d, c3, c);
     const V two = hn::Set(d, 2.0f);
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
-      if (prefetch) prefetchPlanes(in, 3, i);
+      if (main) prefetchPlanes(in, 3, i);
       loadPlanes(d, in, i, p);
       motorPoint(m, c, p[0], p[1], p[2], two, o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }
 
 void DirectionsMatrix(const float* model, ConstPlanes in, Planes out, size_t n) {
-  forEachBatch(n, [&](auto d, size_t b, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 3, n);
+  forEachBatch(n, nt, [&](auto d, size_t b, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     V m[16], p[3], o[3];
     broadcast(d, model, m);
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
-      if (prefetch) prefetchPlanes(in, 3, i);
+      if (main) prefetchPlanes(in, 3, i);
       loadPlanes(d, in, i, p);
       linearDirection(m, 4, p[0], p[1], p[2], o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }
 
 void DirectionsMotor(const float* motor, ConstPlanes in, Planes out, size_t n) {
-  forEachBatch(n, [&](auto d, size_t b, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 3, n);
+  forEachBatch(n, nt, [&](auto d, size_t b, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     V m[8], p[3], o[3];
     broadcast(d, motor, m);
     const V two = hn::Set(d, 2.0f);
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
-      if (prefetch) prefetchPlanes(in, 3, i);
+      if (main) prefetchPlanes(in, 3, i);
       loadPlanes(d, in, i, p);
       motorDirection(m, p[0], p[1], p[2], two, o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }
@@ -78,46 +82,49 @@ void DirectionsMotor(const float* motor, ConstPlanes in, Planes out, size_t n) {
 // Pair compose (mat4 / affine / motor): both operands and the result planar, every input plane
 // prefetched, one product per lane: mat4 16 mul + 48 fused, affine 36 fused, gp_mm 48 fused.
 void ComposeMat4(ConstPlanes a, ConstPlanes b, Planes out, size_t n) {
-  forEachBatch(n, [&](auto d, size_t s, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 16, n);
+  forEachBatch(n, nt, [&](auto d, size_t s, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     V x[16], y[16], o[16];
     for (size_t i = s; i < e; i += hn::Lanes(d)) {
-      if (prefetch) prefetchPlanes(a, 16, i), prefetchPlanes(b, 16, i);
+      if (main) prefetchPlanes(a, 16, i), prefetchPlanes(b, 16, i);
       loadPlanes(d, a, i, x);
       loadPlanes(d, b, i, y);
       for (size_t j = 0; j < 4; ++j)
         for (size_t r = 0; r < 4; ++r)
           o[4 * j + r] = hn::MulAdd(x[r], y[4 * j], hn::MulAdd(x[4 + r], y[4 * j + 1],
                          hn::MulAdd(x[8 + r], y[4 * j + 2], hn::Mul(x[12 + r], y[4 * j + 3]))));
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }
 
 void ComposeAffine(ConstPlanes a, ConstPlanes b, Planes out, size_t n) {
-  forEachBatch(n, [&](auto d, size_t s, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 12, n);
+  forEachBatch(n, nt, [&](auto d, size_t s, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     V x[12], y[12], o[12];
     for (size_t i = s; i < e; i += hn::Lanes(d)) {
-      if (prefetch) prefetchPlanes(a, 12, i), prefetchPlanes(b, 12, i);
+      if (main) prefetchPlanes(a, 12, i), prefetchPlanes(b, 12, i);
       loadPlanes(d, a, i, x);
       loadPlanes(d, b, i, y);
       affineProduct(x, y, o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }
 
 void ComposeMotor(ConstPlanes a, ConstPlanes b, Planes out, size_t n) {
-  forEachBatch(n, [&](auto d, size_t s, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 8, n);
+  forEachBatch(n, nt, [&](auto d, size_t s, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     V x[8], y[8], o[8];
     for (size_t i = s; i < e; i += hn::Lanes(d)) {
-      if (prefetch) prefetchPlanes(a, 8, i), prefetchPlanes(b, 8, i);
+      if (main) prefetchPlanes(a, 8, i), prefetchPlanes(b, 8, i);
       loadPlanes(d, a, i, x);
       loadPlanes(d, b, i, y);
       motorProduct(x, y, o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }
@@ -125,31 +132,33 @@ void ComposeMotor(ConstPlanes a, ConstPlanes b, Planes out, size_t n) {
 // Pair palette (affine / motor): the joint's node world gathered per component (12 / 8
 // GatherIndex), the inverse bind loaded and prefetched, then the product as in compose.
 void PaletteAffine(ConstPlanes world, const int32_t* node, ConstPlanes inverseBind, Planes out, size_t n) {
-  forEachBatch(n, [&](auto d, size_t s, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 12, n);
+  forEachBatch(n, nt, [&](auto d, size_t s, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     const hn::RebindToSigned<decltype(d)> di;
     V x[12], y[12], o[12];
     for (size_t i = s; i < e; i += hn::Lanes(d)) {
-      if (prefetch) prefetchPlanes(inverseBind, 12, i);
+      if (main) prefetchPlanes(inverseBind, 12, i);
       gatherPlanes(d, world, hn::LoadU(di, node + i), x);
       loadPlanes(d, inverseBind, i, y);
       affineProduct(x, y, o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }
 
 void PaletteMotor(ConstPlanes world, const int32_t* node, ConstPlanes inverseBind, Planes out, size_t n) {
-  forEachBatch(n, [&](auto d, size_t s, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 8, n);
+  forEachBatch(n, nt, [&](auto d, size_t s, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     const hn::RebindToSigned<decltype(d)> di;
     V x[8], y[8], o[8];
     for (size_t i = s; i < e; i += hn::Lanes(d)) {
-      if (prefetch) prefetchPlanes(inverseBind, 8, i);
+      if (main) prefetchPlanes(inverseBind, 8, i);
       gatherPlanes(d, world, hn::LoadU(di, node + i), x);
       loadPlanes(d, inverseBind, i, y);
       motorProduct(x, y, o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }

@@ -16,34 +16,36 @@ namespace mb::simd::HWY_NAMESPACE {
 // 3 mul + 18 (sw_mp) + 16 (gp_rr) + 13 (frame) + 1 sign = 51 (motorRigidVertex).
 void VertexFrameMatrix(const float* model, const float* normal, float mirror, ConstPlanes in, Planes out,
                        size_t n) {
-  forEachBatch(n, [&](auto d, size_t b, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 10, n);
+  forEachBatch(n, nt, [&](auto d, size_t b, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     V m[12], nm[9], v[10], o[10];
     broadcast(d, model, m);
     broadcast(d, normal, nm);
     const V mir = hn::Set(d, mirror);
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
-      if (prefetch) prefetchPlanes(in, 10, i);
+      if (main) prefetchPlanes(in, 10, i);
       loadPlanes(d, in, i, v);
       affineVertex(m, nm, mir, v, v + 3, v + 6, o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }
 
 void VertexFrameMotor(const float* motor, float scale, ConstPlanes in, Planes out, size_t n) {
   const float c3[3] = {motor[7] * motor[1], motor[7] * motor[2], motor[7] * motor[3]};
-  forEachBatch(n, [&](auto d, size_t b, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 10, n);
+  forEachBatch(n, nt, [&](auto d, size_t b, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     V m[8], c[3], v[7], o[10];
     broadcast(d, motor, m);
     broadcast(d, c3, c);
     const V s = hn::Set(d, scale), two = hn::Set(d, 2.0f), half = hn::Set(d, 0.5f), one = hn::Set(d, 1.0f);
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
-      if (prefetch) prefetchPlanes(in, 7, i);
+      if (main) prefetchPlanes(in, 7, i);
       loadPlanes(d, in, i, v);
       motorVertex(m, c, s, v, v + 3, two, half, one, o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }
@@ -56,12 +58,13 @@ void VertexFrameMotor(const float* motor, float scale, ConstPlanes in, Planes ou
 // estimate + Newton step for inversesqrt, then motorRigidVertex 51 (motorSkinnedVertex).
 void SkinnedVertexMatrix(ConstPlanes palette, float mirror, ConstPlanes in, JointPlanes joints, ConstPlanes weights,
                          Planes out, size_t n) {
-  forEachBatch(n, [&](auto d, size_t b, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 10, n);
+  forEachBatch(n, nt, [&](auto d, size_t b, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     const V mir = hn::Set(d, mirror);
     V v[10], w[4], skin[12], j[12], cof[9], o[10];
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
-      if (prefetch) {
+      if (main) {
         prefetchPlanes(in, 10, i), prefetchPlanes(weights, 4, i);
         for (size_t k = 0; k < 4; ++k) hwy::Prefetch(joints[k] + i + kPrefetchAhead);
       }
@@ -75,20 +78,21 @@ void SkinnedVertexMatrix(ConstPlanes palette, float mirror, ConstPlanes in, Join
       }
       cofactor(skin, cof);
       affineVertex(skin, cof, mir, v, v + 3, v + 6, o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }
 
 void SkinnedVertexMotor(ConstPlanes palette, float scale, ConstPlanes in, JointPlanes joints, ConstPlanes weights,
                         Planes out, size_t n) {
-  forEachBatch(n, [&](auto d, size_t b, size_t e, bool prefetch) {
+  const bool nt = streamOutput(out, 10, n);
+  forEachBatch(n, nt, [&](auto d, size_t b, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     const V s = hn::Set(d, scale), two = hn::Set(d, 2.0f), half = hn::Set(d, 0.5f), one = hn::Set(d, 1.0f);
     const V zero = hn::Zero(d);
     V v[7], w[4], r[8], j[8], c[3], o[10];
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
-      if (prefetch) {
+      if (main) {
         prefetchPlanes(in, 7, i), prefetchPlanes(weights, 4, i);
         for (size_t k = 0; k < 4; ++k) hwy::Prefetch(joints[k] + i + kPrefetchAhead);
       }
@@ -106,7 +110,7 @@ void SkinnedVertexMotor(ConstPlanes palette, float scale, ConstPlanes in, JointP
       motorNormalize(d, r);
       c[0] = hn::Mul(r[7], r[1]), c[1] = hn::Mul(r[7], r[2]), c[2] = hn::Mul(r[7], r[3]);
       motorVertex(r, c, s, v, v + 3, two, half, one, o);
-      storePlanes(d, out, i, o);
+      storePlanes(d, out, i, o, main && nt);
     }
   });
 }

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <new>
 #include <random>
 #include <string>
 #include <vector>
@@ -383,6 +385,56 @@ TEST(SimdKernels, ComposeAndPaletteMatchTheShader) {
     }
     EXPECT_LE(pa.err, kTol) << "palette affine " << pa.where;
     EXPECT_LE(pm.err, kTol) << "palette motor " << pm.where;
+  });
+}
+
+}  // namespace
+
+namespace {
+
+// Batches writing >= 64 MiB to 64-byte aligned planes take the streaming-store path
+// (simd_math-inl.h): the same results as the shader there too.
+TEST(SimdKernels, LargeAlignedBatchesStreamWithTheSameResults) {
+  constexpr size_t kBig = (size_t(64) << 20) / (3 * sizeof(float)) + 4097;  // 3 output planes > 64 MiB; odd
+  constexpr size_t kStride = kBig + 10;                                      // a multiple of 16 floats
+  static_assert(kStride % 16 == 0);
+  struct Free {
+    void operator()(float* p) const { ::operator delete(p, std::align_val_t(64)); }
+  };
+  auto alloc = [](size_t floats) {
+    return std::unique_ptr<float, Free>(static_cast<float*>(::operator new(floats * sizeof(float), std::align_val_t(64))));
+  };
+  auto in = alloc(3 * kStride), out = alloc(3 * kStride);
+  Rng r;
+  for (size_t c = 0; c < 3; ++c)
+    for (size_t i = 0; i < kBig; ++i) in.get()[c * kStride + i] = r.u(-10, 10);
+  float m16[16], mm[8];
+  const PS::motor motor = r.motor(m16);
+  put(motor, mm);
+  MS S;
+  PS P;
+  forEachTarget([&](const std::string&) {
+    for (const bool isMotor : {false, true}) {
+      if (isMotor) mb::simd::pointsMotor(mm, {in.get(), kStride}, {out.get(), kStride}, kBig);
+      else mb::simd::pointsMatrix(m16, {in.get(), kStride}, {out.get(), kStride}, kBig);
+      Worst w;
+      auto check = [&](size_t i) {
+        const float* x = in.get();
+        float ref[3], got[3];
+        if (isMotor) {
+          const PS::vec3 e = P.sw_mp(motor, PS::vec3(x[i], x[kStride + i], x[2 * kStride + i]));
+          ref[0] = e.x, ref[1] = e.y, ref[2] = e.z;
+        } else {
+          const MS::vec4 e = S.matrixTransformPoint(mat4Of(m16), MS::vec3(x[i], x[kStride + i], x[2 * kStride + i]));
+          ref[0] = e.x, ref[1] = e.y, ref[2] = e.z;
+        }
+        for (size_t c = 0; c < 3; ++c) got[c] = out.get()[c * kStride + i];
+        w.vec(got, ref, 3, "point", i);
+      };
+      for (size_t i = 0; i < kBig; i += 7) check(i);  // every lane position of the streamed loop
+      check(kBig - 1);                                // the one-lane tail (ordinary stores)
+      EXPECT_LE(w.err, kTol) << (isMotor ? "motor " : "matrix ") << w.where;
+    }
   });
 }
 
