@@ -92,4 +92,17 @@ void paletteAffine(ConstPlanes world, const int32_t* node, ConstPlanes inverseBi
 void paletteMotor(ConstPlanes world, const int32_t* node, ConstPlanes inverseBind, Planes out,
                   size_t n);
 
+// ---- hierarchy update: world = parent world * local, parents first -----------------------
+// Nodes are grouped by depth: level k holds nodes [levelEnd[k-1], levelEnd[k]) (levelEnd[-1] =
+// 0), every parent in an earlier level; level 0 holds the roots (parent < 0). Within a level
+// the nodes are independent and run as one SIMD batch (the parents' world gathered per
+// component): wide hierarchies vectorise, chains run one lane at a time.
+// `trs`: 8 planes, quaternion x, y, z, w (unit), translation xyz, uniform scale.
+// Affine: local = T R S as a mat4x3 (the bench's trsMatrix), world = matrixCompose(parent,
+// local) on its first three rows; `world` 12 planes.
+// Motor: local = gp_tr(T, R) with the parent's uniform scale applied to its e0 half, world =
+// gp_mm(parent, local), world scale = parent scale * scale; `world` 9 planes (motor, scale).
+void hierarchyAffine(ConstPlanes trs, const int32_t* parent, const uint32_t* levelEnd, size_t levels, Planes world);
+void hierarchyMotor(ConstPlanes trs, const int32_t* parent, const uint32_t* levelEnd, size_t levels, Planes world);
+
 }  // namespace mb::simd

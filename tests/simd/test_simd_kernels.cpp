@@ -5,6 +5,7 @@
 // refine inversesqrt by a Newton step where the shim rounds every operation.
 #include <gtest/gtest.h>
 
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -435,6 +436,91 @@ TEST(SimdKernels, LargeAlignedBatchesStreamWithTheSameResults) {
       check(kBig - 1);                                // the one-lane tail (ordinary stores)
       EXPECT_LE(w.err, kTol) << (isMotor ? "motor " : "matrix ") << w.where;
     }
+  });
+}
+
+}  // namespace
+
+namespace {
+
+// Hierarchy update, level by level, against the shader products node by node: matrixCompose of
+// the T R S matrices, and gp_mm of gp_tr(T, R) with the parent's scale on the e0 half.
+TEST(SimdKernels, HierarchyMatchesTheShaderProducts) {
+  constexpr size_t kNodes = 30011;
+  Rng r;
+  // A random forest, parents before children; then grouped by depth (the kernels' order).
+  std::vector<int> parent0(kNodes), depth(kNodes);
+  for (size_t i = 0; i < kNodes; ++i) {
+    parent0[i] = i < 7 ? -1 : std::uniform_int_distribution<int>(0, int(i) - 1)(r.g);
+    depth[i] = parent0[i] < 0 ? 0 : depth[size_t(parent0[i])] + 1;
+  }
+  std::vector<size_t> order(kNodes), slot(kNodes);
+  for (size_t i = 0; i < kNodes; ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return depth[a] < depth[b]; });
+  for (size_t k = 0; k < kNodes; ++k) slot[order[k]] = k;
+  std::vector<int32_t> parent(kNodes);
+  std::vector<uint32_t> levelEnd;
+  Planar trs(kNodes, 8);
+  for (size_t k = 0; k < kNodes; ++k) {
+    const size_t i = order[k];
+    parent[k] = parent0[i] < 0 ? -1 : int32_t(slot[size_t(parent0[i])]);
+    if (k + 1 == kNodes || depth[order[k + 1]] != depth[i]) levelEnd.push_back(uint32_t(k + 1));
+    const PS::vec4 q = r.quat();
+    for (size_t c = 0; c < 4; ++c) trs.at(c, k) = q[int(c)];
+    for (size_t c = 4; c < 7; ++c) trs.at(c, k) = r.u(-1, 1);
+    trs.at(7, k) = r.u(0.9f, 1.1f);
+  }
+  ASSERT_GT(levelEnd.size(), 3u);
+  MS S;
+  PS P;
+  // Scalar references in level order (parents first).
+  std::vector<MS::mat4> refM(kNodes);
+  std::vector<PS::motor> refP(kNodes);
+  std::vector<float> refS(kNodes);
+  for (size_t k = 0; k < kNodes; ++k) {
+    const float x = trs.at(0, k), y = trs.at(1, k), z = trs.at(2, k), w = trs.at(3, k), s = trs.at(7, k);
+    const float x2 = x + x, y2 = y + y, z2 = z + z;
+    const float xx = x * x2, yy = y * y2, zz = z * z2, xy = x * y2, xz = x * z2, yz = y * z2, wx = w * x2,
+                wy = w * y2, wz = w * z2;
+    const MS::mat4 local(MS::vec4(MS::vec3(1.0f - (yy + zz), xy + wz, xz - wy) * s, 0.0f),
+                         MS::vec4(MS::vec3(xy - wz, 1.0f - (xx + zz), yz + wx) * s, 0.0f),
+                         MS::vec4(MS::vec3(xz + wy, yz - wx, 1.0f - (xx + yy)) * s, 0.0f),
+                         MS::vec4(trs.at(4, k), trs.at(5, k), trs.at(6, k), 1.0f));
+    const PS::motor T(PS::vec4(1, 0, 0, 0), PS::vec4(-0.5f * trs.at(4, k), -0.5f * trs.at(5, k), -0.5f * trs.at(6, k), 0.0f));
+    const PS::motor lm = P.gp_tr(T, PS::motor(PS::vec4(w, -x, -y, -z), PS::vec4(0.0f)));
+    const int p = parent[k];
+    if (p < 0) {
+      refM[k] = local, refP[k] = lm, refS[k] = s;
+      continue;
+    }
+    ASSERT_LT(size_t(p), k);
+    refM[k] = S.matrixCompose(refM[size_t(p)], local);
+    refP[k] = P.gp_mm(refP[size_t(p)], PS::motor(lm[0], lm[1] * refS[size_t(p)]));
+    refS[k] = refS[size_t(p)] * s;
+  }
+  Planar wm(kNodes, 12), wp(kNodes, 9);
+  forEachTarget([&](const std::string&) {
+    mb::simd::hierarchyAffine(trs.cplanes(), parent.data(), levelEnd.data(), levelEnd.size(), wm.planes());
+    mb::simd::hierarchyMotor(trs.cplanes(), parent.data(), levelEnd.data(), levelEnd.size(), wp.planes());
+    Worst a, m;
+    for (size_t k = 0; k < kNodes; ++k) {
+      for (int c = 0; c < 4; ++c) {
+        const float ref[3] = {refM[k][c].x, refM[k][c].y, refM[k][c].z};
+        float got[3];
+        for (int q = 0; q < 3; ++q) got[q] = wm.at(size_t(c * 3 + q), k);
+        a.vec(got, ref, 3, "column " + std::to_string(c), k);
+      }
+      for (int h = 0; h < 2; ++h) {
+        const float ref[4] = {refP[k][h].x, refP[k][h].y, refP[k][h].z, refP[k][h].w};
+        float got[4];
+        for (int q = 0; q < 4; ++q) got[q] = wp.at(size_t(4 * h + q), k);
+        m.vec(got, ref, 4, "half " + std::to_string(h), k);
+      }
+      const float rs[1] = {refS[k]}, gs[1] = {wp.at(8, k)};
+      m.vec(gs, rs, 1, "scale", k);
+    }
+    EXPECT_LE(a.err, kTol) << "hierarchy affine " << a.where;
+    EXPECT_LE(m.err, kTol) << "hierarchy motor " << m.where;
   });
 }
 
