@@ -56,6 +56,19 @@ void VertexFrameMotor(const float* motor, float scale, ConstPlanes in, Planes ou
 // 12 mul + 36 fused, cofactor 18, matrixAffineVertex 28 (affineSkinnedVertex). Motor: blend
 // with the hemisphere rule 8 mul + 3 x (4 fused, 1 select, 8 fused), normalize_m ~22 with an
 // estimate + Newton step for inversesqrt, then motorRigidVertex 51 (motorSkinnedVertex).
+// Prefetches (main loop) and loads item i's vertex planes and weights; the joint planes are
+// prefetched too (their indices are loaded at the gathers).
+template <class D, size_t C>
+HWY_INLINE void loadSkinned(D d, bool main, ConstPlanes in, ConstPlanes weights, JointPlanes joints, size_t i,
+                            hn::Vec<D> (&v)[C], hn::Vec<D> (&w)[4]) {
+  if (main) {
+    prefetchPlanes(in, C, i), prefetchPlanes(weights, 4, i);
+    for (size_t k = 0; k < 4; ++k) hwy::Prefetch(joints[k] + i + kPrefetchAhead);
+  }
+  loadPlanes(d, in, i, v);
+  loadPlanes(d, weights, i, w);
+}
+
 void SkinnedVertexMatrix(ConstPlanes palette, float mirror, ConstPlanes in, JointPlanes joints, ConstPlanes weights,
                          Planes out, size_t n) {
   const bool nt = streamOutput(out, 10, n);
@@ -64,12 +77,7 @@ void SkinnedVertexMatrix(ConstPlanes palette, float mirror, ConstPlanes in, Join
     const V mir = hn::Set(d, mirror);
     V v[10], w[4], skin[12], j[12], cof[9], o[10];
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
-      if (main) {
-        prefetchPlanes(in, 10, i), prefetchPlanes(weights, 4, i);
-        for (size_t k = 0; k < 4; ++k) hwy::Prefetch(joints[k] + i + kPrefetchAhead);
-      }
-      loadPlanes(d, in, i, v);
-      loadPlanes(d, weights, i, w);
+      loadSkinned(d, main, in, weights, joints, i, v, w);
       gatherPlanes(d, palette, jointIndices(d, joints, 0, i), j);
       for (size_t c = 0; c < 12; ++c) skin[c] = hn::Mul(w[0], j[c]);
       for (size_t k = 1; k < 4; ++k) {
@@ -92,12 +100,7 @@ void SkinnedVertexMotor(ConstPlanes palette, float scale, ConstPlanes in, JointP
     const V zero = hn::Zero(d);
     V v[7], w[4], r[8], j[8], c[3], o[10];
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
-      if (main) {
-        prefetchPlanes(in, 7, i), prefetchPlanes(weights, 4, i);
-        for (size_t k = 0; k < 4; ++k) hwy::Prefetch(joints[k] + i + kPrefetchAhead);
-      }
-      loadPlanes(d, in, i, v);
-      loadPlanes(d, weights, i, w);
+      loadSkinned(d, main, in, weights, joints, i, v, w);
       gatherPlanes(d, palette, jointIndices(d, joints, 0, i), j);
       for (size_t k = 0; k < 8; ++k) r[k] = hn::Mul(j[k], w[0]);
       for (size_t k = 1; k < 4; ++k) {

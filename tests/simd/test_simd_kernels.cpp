@@ -50,6 +50,15 @@ struct Worst {
     const double e = d / std::max(1.0, std::sqrt(len));
     if (!(e <= err)) err = std::isnan(e) ? 1e30 : e, where = what + " item " + std::to_string(i);
   }
+  // Item i of a 10-plane output vertex against a shader's mat3x4 (position, normal, tangent + w).
+  template <class P, class M> void vertex(const P& out, size_t i, const M& e) {
+    float got[10];
+    for (size_t c = 0; c < 10; ++c) got[c] = out.at(c, i);
+    for (int k = 0; k < 3; ++k) {
+      const float ref[4] = {e[k].x, e[k].y, e[k].z, e[k].w};
+      vec(got + 3 * k, ref, k == 2 ? 4 : 3, "column " + std::to_string(k), i);
+    }
+  }
 };
 
 struct Rng {
@@ -202,13 +211,8 @@ TEST(SimdKernels, VertexFrameMatchesTheShader) {
       const AS::mat3x4 b = AS().matrixAffineVertex(mat4x3Of(m12), AS::mat3(n9[0], n9[1], n9[2], n9[3], n9[4], n9[5],
                                                                          n9[6], n9[7], n9[8]),
                                                    mirror, p, n, t);
-      float got[10];
-      for (int c = 0; c < 10; ++c) got[c] = out.at(size_t(c), i);
-      for (int k = 0; k < 3; ++k) {
-        const float ra[4] = {a[k].x, a[k].y, a[k].z, a[k].w}, rb[4] = {b[k].x, b[k].y, b[k].z, b[k].w};
-        wRigid.vec(got + 3 * k, ra, k == 2 ? 4 : 3, "column " + std::to_string(k), i);
-        wAffine.vec(got + 3 * k, rb, k == 2 ? 4 : 3, "column " + std::to_string(k), i);
-      }
+      wRigid.vertex(out, i, a);
+      wAffine.vertex(out, i, b);
     }
     EXPECT_LE(wRigid.err, kTol) << "matrixRigidVertex " << wRigid.where;
     EXPECT_LE(wAffine.err, kTol) << "matrixAffineVertex " << wAffine.where;
@@ -220,13 +224,8 @@ TEST(SimdKernels, VertexFrameMatchesTheShader) {
       const PS::mat3x4 e = P.motorRigidVertex(
           motor, 1.5f, PS::vec3(v.motor.at(0, i), v.motor.at(1, i), v.motor.at(2, i)),
           PS::vec4(v.motor.at(3, i), v.motor.at(4, i), v.motor.at(5, i), v.motor.at(6, i)));
-      float got[10];
-      for (int c = 0; c < 10; ++c) got[c] = out.at(size_t(c), i);
-      for (int k = 0; k < 3; ++k) {
-        const float ref[4] = {e[k].x, e[k].y, e[k].z, e[k].w};
-        wm.vec(got + 3 * k, ref, k == 2 ? 4 : 3, "column " + std::to_string(k), i);
-      }
-      handedness += got[9] == e[2].w;
+      wm.vertex(out, i, e);
+      handedness += out.at(9, i) == e[2].w;
     }
     EXPECT_LE(wm.err, kTol) << "motorRigidVertex " << wm.where;
     EXPECT_EQ(handedness, kItems);  // exact: a sign
@@ -269,12 +268,7 @@ TEST(SimdKernels, SkinnedVertexMatchesTheShader) {
           AS::vec3(v.matrix.at(0, i), v.matrix.at(1, i), v.matrix.at(2, i)),
           AS::vec3(v.matrix.at(3, i), v.matrix.at(4, i), v.matrix.at(5, i)),
           AS::vec4(v.matrix.at(6, i), v.matrix.at(7, i), v.matrix.at(8, i), v.matrix.at(9, i)));
-      float got[10];
-      for (int c = 0; c < 10; ++c) got[c] = out.at(size_t(c), i);
-      for (int k = 0; k < 3; ++k) {
-        const float ref[4] = {e[k].x, e[k].y, e[k].z, e[k].w};
-        wa.vec(got + 3 * k, ref, k == 2 ? 4 : 3, "column " + std::to_string(k), i);
-      }
+      wa.vertex(out, i, e);
     }
     EXPECT_LE(wa.err, kTol) << "affineSkinnedVertex " << wa.where;
 
@@ -286,12 +280,7 @@ TEST(SimdKernels, SkinnedVertexMatchesTheShader) {
           J(0), J(1), J(2), J(3), PS::vec4(weights.at(0, i), weights.at(1, i), weights.at(2, i), weights.at(3, i)), 1.25f,
           PS::vec3(v.motor.at(0, i), v.motor.at(1, i), v.motor.at(2, i)),
           PS::vec4(v.motor.at(3, i), v.motor.at(4, i), v.motor.at(5, i), v.motor.at(6, i)));
-      float got[10];
-      for (int c = 0; c < 10; ++c) got[c] = out.at(size_t(c), i);
-      for (int k = 0; k < 3; ++k) {
-        const float ref[4] = {e[k].x, e[k].y, e[k].z, e[k].w};
-        wm.vec(got + 3 * k, ref, k == 2 ? 4 : 3, "column " + std::to_string(k), i);
-      }
+      wm.vertex(out, i, e);
     }
     EXPECT_LE(wm.err, kTol) << "motorSkinnedVertex " << wm.where;
   });
