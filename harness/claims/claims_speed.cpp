@@ -94,7 +94,7 @@ std::vector<Claim> speedClaims(const SpeedInputs& in) {
         worst.push_back(cost);
         detail += (detail.empty() ? "" : "; ") + (p["size"].is_string() ? p["size"].get<std::string>() : std::string("?")) +
                   ": fastest motor " + fmo + " / fastest matrix " + fm + " time " + x2(cost) +
-                  (shimMotor > 0 && fastestMatrix > 0 ? " (shim motor " + x2(fastestMatrix / shimMotor) + ")" : "");
+                  (shimMotor > 0 && fastestMatrix > 0 ? " (the shim motor: time " + x2(fastestMatrix / shimMotor) + " of the fastest matrix)" : "");
       }
     Evidence e{std::string("CPU kernel ") + kernel + " vs the fastest matrix code measured", detail, -1, ""};
     if (!worst.empty()) e.costRatio = *std::max_element(worst.begin(), worst.end());
