@@ -22,7 +22,7 @@ import sys
 SOURCE_SUFFIXES = (".h", ".cpp", ".inl", ".inc", ".glsl", ".vs", ".fs")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 RULE = re.compile(r"^May include:\s*(.*)$", re.MULTILINE)
-CHECKED_TOPS = ("harness", "pipelines", "shaders")
+CHECKED_TOPS = ("harness", "kernels", "pipelines", "shaders")
 
 
 def read_rooms(root):

@@ -11,6 +11,7 @@ PACKAGES=(
   libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
   libopenimageio-dev openimageio-tools
   libbenchmark-dev libgtest-dev libgmock-dev
+  libhwy-dev                        # Google Highway: SIMD kernels with runtime dispatch (kernels/simd)
   glslang-tools spirv-tools
   python3 python3-matplotlib
   parallel python3-yaml              # sharded runs (motorbench --shard, tests/cli, README examples)

@@ -1,7 +1,9 @@
 #include "harness/bench/bandwidth_probe.h"
 
+#include <emmintrin.h>  // SSE2 (every x86-64): _mm_stream_pd
 #include <unistd.h>
 
+#include <cstdint>
 #include <algorithm>
 #include <ctime>
 #include <fstream>
@@ -46,6 +48,14 @@ struct Arrays {
 [[gnu::noinline]] void copy(double* __restrict c, const double* __restrict a, size_t n) {
   for (size_t i = 0; i < n; ++i) c[i] = a[i];
 }
+// c = a with non-temporal stores (16 bytes each), then a store fence.
+[[gnu::noinline]] void copyStreaming(double* __restrict c, const double* __restrict a, size_t n) {
+  size_t i = 0;
+  for (; i < n && (reinterpret_cast<uintptr_t>(c + i) & 15); ++i) c[i] = a[i];
+  for (; i + 2 <= n; i += 2) _mm_stream_pd(c + i, _mm_loadu_pd(a + i));
+  for (; i < n; ++i) c[i] = a[i];
+  _mm_sfence();
+}
 [[gnu::noinline]] void triad(double* __restrict a, const double* __restrict b,
                              const double* __restrict c, double s, size_t n) {
   for (size_t i = 0; i < n; ++i) a[i] = b[i] + s * c[i];
@@ -85,13 +95,15 @@ Bandwidth measureBandwidth(size_t arrayBytes, int passes) {
   Arrays& arr = own ? *own : sharedArrays();
   Bandwidth bw;
   bw.arrayBytes = arr.n * sizeof(double);
-  double bestCopy = 1e30, bestTriad = 1e30;
+  double bestCopy = 1e30, bestTriad = 1e30, bestStreaming = 1e30;
   for (int p = 0; p < passes; ++p) {
     bestCopy = std::min(bestCopy, seconds([&] { copy(arr.c.get(), arr.a.get(), arr.n); }));
+    bestStreaming = std::min(bestStreaming, seconds([&] { copyStreaming(arr.c.get(), arr.a.get(), arr.n); }));
     bestTriad = std::min(bestTriad, seconds([&] { triad(arr.a.get(), arr.b.get(), arr.c.get(), 3.0, arr.n); }));
   }
   bw.copyBytesPerSecond = double(2 * bw.arrayBytes) / bestCopy;
   bw.triadBytesPerSecond = double(3 * bw.arrayBytes) / bestTriad;
+  bw.copyStreamingBytesPerSecond = double(2 * bw.arrayBytes) / bestStreaming;
   return bw;
 }
 
@@ -105,6 +117,16 @@ void registerBandwidthBenchmarks() {
     Arrays& arr = sharedArrays();
     for (auto _ : state) {
       copy(arr.c.get(), arr.a.get(), arr.n);
+      benchmark::ClobberMemory();
+    }
+    state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(2 * arr.n * sizeof(double)));
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(arr.n));
+    state.counters["array_bytes"] = double(arr.n * sizeof(double));
+  });
+  registerKernel("stream/copy_nt", [](benchmark::State& state) {
+    Arrays& arr = sharedArrays();
+    for (auto _ : state) {
+      copyStreaming(arr.c.get(), arr.a.get(), arr.n);
       benchmark::ClobberMemory();
     }
     state.SetBytesProcessed(int64_t(state.iterations()) * int64_t(2 * arr.n * sizeof(double)));

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "harness/bench/bandwidth_probe.h"
+#include "kernels/simd/simd_targets.h"
 
 namespace mb::bench {
 
@@ -10,6 +11,14 @@ void registerKernel(const std::string& name, std::function<void(benchmark::State
   benchmark::RegisterBenchmark(name.c_str(), [fn](benchmark::State& s) { fn(s); })
       ->Unit(benchmark::kMicrosecond);
 }
+
+const char* sideKind(const std::string& side) {
+  if (side == kMatrix || side == kGlm || side == kSimdMatrix || side == kSimdAffine) return "matrix";
+  if (side == kMotor || side == kSimdMotor) return "motor";
+  return "";
+}
+
+void setSimdLabel(benchmark::State& state) { state.SetLabel(simd::currentTarget().name); }
 
 void setThroughput(benchmark::State& state, size_t items, size_t bytes, Size size) {
   const auto iters = int64_t(state.iterations());
@@ -19,7 +28,8 @@ void setThroughput(benchmark::State& state, size_t items, size_t bytes, Size siz
     state.counters["working_set_bytes"] = double(bytes);
   }
   if (size == Size::OutOfCache && bytes) {
-    // Rate counters divide by the measured time: (bytes / probe) per second = fraction.
+    // Rate counters divide by the measured time: (bytes / probe) per second = fraction (the
+    // console shows it without a rate suffix: harness/cli/cmd_bench.cpp).
     const double probe = referenceBandwidth().best();
     state.counters["bw_fraction"] =
         benchmark::Counter(double(bytes) / probe, benchmark::Counter::kIsIterationInvariantRate);

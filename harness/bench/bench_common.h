@@ -7,6 +7,8 @@
 //  - matrix and motor both execute the shader source compiled through the shim with float
 //    (harness/bench/bench_shaders.h), built with the same flags: SIMD on both or neither;
 //  - "glm" is GLM's own operators on the matrix side, an extra labelled baseline;
+//  - "simd_matrix" / "simd_motor" are kernels/simd's hand-vectorised forms of the same math,
+//    the same care on both sides (kernels/simd/README.md);
 //  - per-vertex kernels process the same number of vertices on each side (items/s compare
 //    directly) and count the bytes each side actually reads and writes (bytes/s).
 #pragma once
@@ -15,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <new>
 #include <random>
 #include <string>
 #include <vector>
@@ -30,6 +33,15 @@ using PS = MotorShader<float>;
 inline const char* const kMatrix = "matrix";
 inline const char* const kMotor = "motor";
 inline const char* const kGlm = "glm";
+// kernels/simd (Highway, runtime dispatch): the matrix and motor math hand-vectorised over
+// structure-of-arrays batches; simd_affine: the mat4x3 form where it differs from simd_matrix.
+inline const char* const kSimdMatrix = "simd_matrix";
+inline const char* const kSimdAffine = "simd_affine";
+inline const char* const kSimdMotor = "simd_motor";
+
+// Which side of a pair a name is: a matrix implementation (matrix, glm, simd_matrix,
+// simd_affine), a motor one (motor, simd_motor), or neither ("").
+const char* sideKind(const std::string& side);
 
 // Working-set classes of the per-vertex kernels.
 enum class Size { InCache, OutOfCache };
@@ -59,12 +71,33 @@ template <class T> T& perSize(Size s, size_t n) {
   return big;
 }
 
+// 64-byte aligned storage for the planar batches of the simd sides (kernels/simd streams its
+// stores only to aligned planes).
+template <class T> struct Aligned64 {
+  using value_type = T;
+  Aligned64() = default;
+  template <class U> Aligned64(const Aligned64<U>&) {}  // NOLINT: rebinding
+  T* allocate(size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(64))); }
+  void deallocate(T* p, size_t) { ::operator delete(p, std::align_val_t(64)); }
+  template <class U> bool operator==(const Aligned64<U>&) const { return true; }
+};
+template <class T> using AlignedVector = std::vector<T, Aligned64<T>>;
+
+// Planar (structure-of-arrays) batches of n items: the distance between two component planes,
+// in floats. Rounded up to 1024 floats and then shifted by one cache line, so that planes do
+// not start at the same 4 KiB offset (with a power-of-two distance every plane's item i falls
+// in the same cache set and the ~20 streams of a vertex kernel evict each other).
+inline size_t planeStride(size_t n) { return (n + 1023) / 1024 * 1024 + 16; }
+
 // Registers `fn` as benchmark "name" (time in ns, items/s and bytes/s set by the kernel).
 void registerKernel(const std::string& name, std::function<void(benchmark::State&)> fn);
 
 // Sets items/s and bytes/s for `items` items and `bytes` bytes per iteration; for out-of-cache
 // kernels also "bw_fraction" (bytes/s over the bandwidth probe's best) and "probe_GBps".
 void setThroughput(benchmark::State& state, size_t items, size_t bytes, Size size);
+
+// Labels the run with the Highway target the simd kernels dispatch to ("AVX3", "AVX2", ...).
+void setSimdLabel(benchmark::State& state);
 
 // Deterministic data.
 struct Rng {

@@ -5,6 +5,9 @@
 // mat4 product the Sample Viewer's GLM code does). Motor: T R as gp_tr of pga.glsl, uniform
 // scale tracked as one float (the parent's scale scales the local translation), gp_mm.
 // glm: mat4_cast + scale + translation, GLM's mat4 product.
+// simd_matrix / simd_motor: kernels/simd's hierarchy update (the same TRS, locals and products,
+// mat4x3 for the matrix side) level by level: the nodes of one depth are one SIMD batch, so
+// this chain-heavy hierarchy (about one node per level) runs mostly one lane at a time.
 #include <algorithm>
 
 #include <glm/glm.hpp>
@@ -12,6 +15,7 @@
 
 #include "harness/bench/bench_common.h"
 #include "harness/bench/bench_kernels.h"
+#include "kernels/simd/simd_kernels.h"
 
 namespace mb::bench {
 namespace {
@@ -109,12 +113,55 @@ void hierarchyGlm(benchmark::State& state) {
   });
 }
 
+
+// The hierarchy grouped by depth (parents first), as planes for kernels/simd.
+struct LevelOrder {
+  size_t stride = planeStride(kNodes);
+  std::vector<int32_t> parent;
+  std::vector<uint32_t> levelEnd;
+  AlignedVector<float> trs, world;  // 8 planes; 12 (affine) or 9 (motor + scale) planes
+  LevelOrder() : parent(kNodes), trs(8 * stride), world(12 * stride) {
+    const Hierarchy& h = hierarchy();
+    std::vector<int> depth(kNodes);
+    std::vector<size_t> order(kNodes), slot(kNodes);
+    for (size_t i = 0; i < size_t(kNodes); ++i) {
+      depth[i] = h.parent[i] < 0 ? 0 : depth[size_t(h.parent[i])] + 1;
+      order[i] = i;
+    }
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return depth[a] < depth[b]; });
+    for (size_t k = 0; k < size_t(kNodes); ++k) slot[order[k]] = k;
+    for (size_t k = 0; k < size_t(kNodes); ++k) {
+      const size_t i = order[k];
+      parent[k] = h.parent[i] < 0 ? -1 : int32_t(slot[size_t(h.parent[i])]);
+      if (k + 1 == size_t(kNodes) || depth[order[k + 1]] != depth[i]) levelEnd.push_back(uint32_t(k + 1));
+      const float v[8] = {h.q[i].x, h.q[i].y, h.q[i].z, h.q[i].w, h.t[i].x, h.t[i].y, h.t[i].z, h.s[i]};
+      for (size_t c = 0; c < 8; ++c) trs[c * stride + k] = v[c];
+    }
+  }
+};
+
+template <bool kMotor> void hierarchySimd(benchmark::State& state) {
+  static LevelOrder l;
+  const simd::ConstPlanes trs{l.trs.data(), l.stride};
+  const simd::Planes world{l.world.data(), l.stride};
+  for (auto _ : state) {
+    if (kMotor) simd::hierarchyMotor(trs, l.parent.data(), l.levelEnd.data(), l.levelEnd.size(), world);
+    else simd::hierarchyAffine(trs, l.parent.data(), l.levelEnd.data(), l.levelEnd.size(), world);
+    benchmark::ClobberMemory();
+  }
+  setSimdLabel(state);
+  setThroughput(state, kNodes, 0, Size::InCache);
+  state.counters["depth"] = hierarchy().depth;
+}
+
 }  // namespace
 
 void registerHierarchyBenchmarks() {
   registerKernel("hierarchy/matrix", hierarchyMatrix);
   registerKernel("hierarchy/motor", hierarchyMotor);
   registerKernel("hierarchy/glm", hierarchyGlm);
+  registerKernel(std::string("hierarchy/") + kSimdMatrix, hierarchySimd<false>);
+  registerKernel(std::string("hierarchy/") + kSimdMotor, hierarchySimd<true>);
 }
 
 }  // namespace mb::bench

@@ -1,10 +1,14 @@
 // compose, point, direction: the building blocks. Matrix side: matrix_transform.glsl's
 // matrixCompose / matrixTransformPoint / matrixTransformDirection (full mat4, the Sample
 // Viewer's); motor side: pga.glsl's gp_mm / sw_mp / sw_md; glm: GLM's mat4 operators.
+// simd_*: kernels/simd on planar copies of the same data: point / direction rows 0..2 of the
+// affine mat4 vs sw_mp / sw_md; compose mat4 (matrixCompose), affine (mat4x3, the same product
+// on affine operands) and gp_mm.
 #include <glm/glm.hpp>
 
 #include "harness/bench/bench_common.h"
 #include "harness/bench/bench_kernels.h"
+#include "kernels/simd/simd_kernels.h"
 
 namespace mb::bench {
 namespace {
@@ -147,23 +151,114 @@ template <Kind K> void vec3Glm(benchmark::State& state, Size s) {
   });
 }
 
+
+// ---- simd sides --------------------------------------------------------------------------
+
+// Planar copies of the compose pairs: mat4 (16 planes), mat4x3 (12), motor (8).
+struct ComposePlanes {
+  std::vector<float> a16, b16, a12, b12, a8, b8, out;
+  ComposePlanes() : a16(16 * kComposePairs), b16(16 * kComposePairs), a12(12 * kComposePairs),
+                    b12(12 * kComposePairs), a8(8 * kComposePairs), b8(8 * kComposePairs), out(16 * kComposePairs) {
+    const ComposeData& d = composeData();
+    const size_t n = kComposePairs;
+    for (size_t i = 0; i < n; ++i)
+      for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) a16[size_t(c * 4 + r) * n + i] = d.ma[i][c][r], b16[size_t(c * 4 + r) * n + i] = d.mb[i][c][r];
+        for (int r = 0; r < 3; ++r) a12[size_t(c * 3 + r) * n + i] = d.ma[i][c][r], b12[size_t(c * 3 + r) * n + i] = d.mb[i][c][r];
+        if (c < 2)
+          for (int r = 0; r < 4; ++r) a8[size_t(c * 4 + r) * n + i] = d.pa[i][c][r], b8[size_t(c * 4 + r) * n + i] = d.pb[i][c][r];
+      }
+  }
+};
+
+template <class K> void composeSimd(benchmark::State& state, size_t floats, K kernel) {
+  static ComposePlanes p;
+  for (auto _ : state) {
+    kernel(p);
+    benchmark::DoNotOptimize(p.out.data());
+    benchmark::ClobberMemory();
+  }
+  setSimdLabel(state);
+  setThroughput(state, kComposePairs, kComposePairs * 3 * floats * sizeof(float), Size::InCache);
+}
+
+void composeSimdMat4(benchmark::State& state) {
+  composeSimd(state, 16, [](ComposePlanes& p) {
+    simd::composeMat4({p.a16.data(), kComposePairs}, {p.b16.data(), kComposePairs}, {p.out.data(), kComposePairs}, kComposePairs);
+  });
+}
+void composeSimdAffine(benchmark::State& state) {
+  composeSimd(state, 12, [](ComposePlanes& p) {
+    simd::composeAffine({p.a12.data(), kComposePairs}, {p.b12.data(), kComposePairs}, {p.out.data(), kComposePairs}, kComposePairs);
+  });
+}
+void composeSimdMotor(benchmark::State& state) {
+  composeSimd(state, 8, [](ComposePlanes& p) {
+    simd::composeMotor({p.a8.data(), kComposePairs}, {p.b8.data(), kComposePairs}, {p.out.data(), kComposePairs}, kComposePairs);
+  });
+}
+
+// Planar copies of the vec3 arrays (3 planes in, 3 out).
+struct Vec3Planes {
+  size_t n, stride;
+  AlignedVector<float> in, out;
+  explicit Vec3Planes(const Vec3Arrays& a) : n(a.in.size()), stride(planeStride(n)), in(3 * stride), out(3 * stride) {
+    for (size_t i = 0; i < n; ++i) in[i] = a.in[i].x, in[stride + i] = a.in[i].y, in[2 * stride + i] = a.in[i].z;
+  }
+};
+
+Vec3Planes& vec3Planes(Size s) {
+  if (s == Size::InCache) {
+    static Vec3Planes small(vec3Arrays(s));
+    return small;
+  }
+  static Vec3Planes big(vec3Arrays(s));
+  return big;
+}
+
+template <Kind K> void vec3Simd(benchmark::State& state, Size s, bool motor) {
+  const PerDraw pd;
+  float m16[16], m8[8];
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) m16[c * 4 + r] = pd.m[c][r];
+  for (int k = 0; k < 4; ++k) m8[k] = pd.motor[0][k], m8[4 + k] = pd.motor[1][k];
+  Vec3Planes& p = vec3Planes(s);
+  const simd::ConstPlanes in{p.in.data(), p.stride};
+  const simd::Planes out{p.out.data(), p.stride};
+  for (auto _ : state) {
+    if (K == Kind::Point) motor ? simd::pointsMotor(m8, in, out, p.n) : simd::pointsMatrix(m16, in, out, p.n);
+    else motor ? simd::directionsMotor(m8, in, out, p.n) : simd::directionsMatrix(m16, in, out, p.n);
+    benchmark::DoNotOptimize(p.out.data());
+    benchmark::ClobberMemory();
+  }
+  setSimdLabel(state);
+  setThroughput(state, p.n, p.n * kVec3Bytes, s);
+}
+
 }  // namespace
 
 void registerTransformBenchmarks() {
   registerKernel("compose/matrix", composeMatrix);
   registerKernel("compose/motor", composeMotor);
   registerKernel("compose/glm", composeGlm);
+  registerKernel(std::string("compose/") + kSimdMatrix, composeSimdMat4);
+  registerKernel(std::string("compose/") + kSimdAffine, composeSimdAffine);
+  registerKernel(std::string("compose/") + kSimdMotor, composeSimdMotor);
   for (Size s : {Size::InCache, Size::OutOfCache}) {
     const std::string p = std::string("point/") + sizeName(s) + "/";
     registerKernel(p + kMatrix, [s](benchmark::State& st) { vec3Matrix<Kind::Point>(st, s); });
     registerKernel(p + kMotor, [s](benchmark::State& st) { vec3Motor<Kind::Point>(st, s); });
     registerKernel(p + kGlm, [s](benchmark::State& st) { vec3Glm<Kind::Point>(st, s); });
+    registerKernel(p + kSimdMatrix, [s](benchmark::State& st) { vec3Simd<Kind::Point>(st, s, false); });
+    registerKernel(p + kSimdMotor, [s](benchmark::State& st) { vec3Simd<Kind::Point>(st, s, true); });
   }
   for (Size s : {Size::InCache, Size::OutOfCache}) {
     const std::string p = std::string("direction/") + sizeName(s) + "/";
     registerKernel(p + kMatrix, [s](benchmark::State& st) { vec3Matrix<Kind::Direction>(st, s); });
     registerKernel(p + kMotor, [s](benchmark::State& st) { vec3Motor<Kind::Direction>(st, s); });
     registerKernel(p + kGlm, [s](benchmark::State& st) { vec3Glm<Kind::Direction>(st, s); });
+    registerKernel(p + kSimdMatrix, [s](benchmark::State& st) { vec3Simd<Kind::Direction>(st, s, false); });
+    registerKernel(p + kSimdMotor, [s](benchmark::State& st) { vec3Simd<Kind::Direction>(st, s, true); });
   }
 }
 

@@ -6,12 +6,18 @@
 // Inputs are the vertex layouts the pipelines upload: matrix position + normal + tangent
 // (10 floats), motor position + tangent rotor (7 floats), skin joints (4 x u16) + weights.
 // Both sides write the same 10-float world vertex (position, normal, tangent + handedness).
+// simd_matrix / simd_motor: the hand-vectorised kernels of kernels/simd on structure-of-arrays
+// copies of the same vertices and palettes (same bytes per vertex): vertex_frame
+// matrixAffineVertex (the same products as matrixRigidVertex for these affine uniforms) vs
+// motorRigidVertex; skinned_vertex affineSkinnedVertex (mat4x3 joints, cofactor normals: the
+// cheapest matrix LBS of the shaders, 12 floats gathered per joint) vs motorSkinnedVertex.
 #include <cstdint>
 
 #include <glm/glm.hpp>
 
 #include "harness/bench/bench_common.h"
 #include "harness/bench/bench_kernels.h"
+#include "kernels/simd/simd_kernels.h"
 
 namespace mb::bench {
 namespace {
@@ -208,21 +214,110 @@ void skinGlm(benchmark::State& state, Size s) {
   });
 }
 
+
+// ---- simd sides: planar copies of the same vertices and palettes -----------------------------
+
+struct SoaArrays {
+  size_t n, stride;
+  AlignedVector<float> matrix, motor, weights, out;  // 10, 7, 4, 10 planes of n
+  AlignedVector<uint16_t> joints;                    // 4 planes of n
+  std::vector<float> paletteAffine, paletteMotor;  // 12, 8 planes of kJoints
+  explicit SoaArrays(const Arrays& a)
+      : n(a.out.size()), stride(planeStride(n)), matrix(10 * stride), motor(7 * stride), weights(4 * stride),
+        out(10 * stride), joints(4 * stride),
+        paletteAffine(12 * kJoints), paletteMotor(8 * kJoints) {
+    for (size_t i = 0; i < n; ++i) {
+      const MatrixVertex& m = a.matrix[i];
+      const MotorVertex& p = a.motor[i];
+      for (size_t c = 0; c < 3; ++c)
+        matrix[c * stride + i] = m.p[c], matrix[(3 + c) * stride + i] = m.n[c], motor[c * stride + i] = p.p[c];
+      for (size_t c = 0; c < 4; ++c)
+        matrix[(6 + c) * stride + i] = m.t[c], motor[(3 + c) * stride + i] = p.r[c],
+                                    weights[c * stride + i] = a.skin[i].w[c], joints[c * stride + i] = a.skin[i].j[c];
+    }
+    const Draw& d = draw();
+    for (size_t j = 0; j < size_t(kJoints); ++j) {
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 3; ++r) paletteAffine[size_t(c * 3 + r) * kJoints + j] = d.joint[j][c][r];
+      for (int k = 0; k < 4; ++k)
+        paletteMotor[size_t(k) * kJoints + j] = d.jointMotor[j][0][k],
+                     paletteMotor[size_t(4 + k) * kJoints + j] = d.jointMotor[j][1][k];
+    }
+  }
+  simd::ConstPlanes in(const AlignedVector<float>& v) const { return {v.data(), stride}; }
+  simd::Planes outPlanes() { return {out.data(), stride}; }
+};
+
+SoaArrays& soaArrays(Size s) {
+  if (s == Size::InCache) {
+    static SoaArrays small(arrays(s));
+    return small;
+  }
+  static SoaArrays big(arrays(s));
+  return big;
+}
+
+// One call of `kernel` per iteration over the whole batch.
+template <class F> void runSimd(benchmark::State& state, Size s, size_t bytesPerItem, F kernel) {
+  SoaArrays& a = soaArrays(s);
+  for (auto _ : state) {
+    kernel(a);
+    benchmark::DoNotOptimize(a.out.data());
+    benchmark::ClobberMemory();
+  }
+  setSimdLabel(state);
+  setThroughput(state, a.n, a.n * bytesPerItem, s);
+}
+
+void frameSimdMatrix(benchmark::State& state, Size s) {
+  float model[16], normal[16], m12[12], n9[9], mirror;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) model[c * 4 + r] = draw().model[c][r], normal[c * 4 + r] = draw().normal[c][r];
+  simd::mat4ToAffine(model, normal, m12, n9, &mirror);
+  runSimd(state, s, kFrameMatrixBytes, [&](SoaArrays& a) {
+    simd::vertexFrameMatrix(m12, n9, mirror, a.in(a.matrix), a.outPlanes(), a.n);
+  });
+}
+
+void frameSimdMotor(benchmark::State& state, Size s) {
+  float m[8];
+  for (int k = 0; k < 4; ++k) m[k] = draw().motor[0][k], m[4 + k] = draw().motor[1][k];
+  runSimd(state, s, kFrameMotorBytes, [&](SoaArrays& a) {
+    simd::vertexFrameMotor(m, draw().scale, a.in(a.motor), a.outPlanes(), a.n);
+  });
+}
+
+void skinSimdMatrix(benchmark::State& state, Size s) {
+  runSimd(state, s, kSkinMatrixBytes, [&](SoaArrays& a) {
+    simd::skinnedVertexMatrix({a.paletteAffine.data(), size_t(kJoints)}, draw().normal[3][3], a.in(a.matrix),
+                              {a.joints.data(), a.stride}, a.in(a.weights), a.outPlanes(), a.n);
+  });
+}
+
+void skinSimdMotor(benchmark::State& state, Size s) {
+  runSimd(state, s, kSkinMotorBytes, [&](SoaArrays& a) {
+    simd::skinnedVertexMotor({a.paletteMotor.data(), size_t(kJoints)}, draw().scale, a.in(a.motor),
+                             {a.joints.data(), a.stride}, a.in(a.weights), a.outPlanes(), a.n);
+  });
+}
+
 }  // namespace
 
 void registerVertexBenchmarks() {
   using Fn = void (*)(benchmark::State&, Size);
   const struct {
     const char* name;
-    Fn matrix, motor, glm;
-  } families[] = {{"vertex_frame", frameMatrix, frameMotor, frameGlm},
-                  {"skinned_vertex", skinMatrix, skinMotor, skinGlm}};
+    Fn matrix, motor, glm, simdMatrix, simdMotor;
+  } families[] = {{"vertex_frame", frameMatrix, frameMotor, frameGlm, frameSimdMatrix, frameSimdMotor},
+                  {"skinned_vertex", skinMatrix, skinMotor, skinGlm, skinSimdMatrix, skinSimdMotor}};
   for (const auto& f : families)
     for (Size s : {Size::InCache, Size::OutOfCache}) {
       const std::string prefix = std::string(f.name) + "/" + sizeName(s) + "/";
       registerKernel(prefix + kMatrix, [s, fn = f.matrix](benchmark::State& st) { fn(st, s); });
       registerKernel(prefix + kMotor, [s, fn = f.motor](benchmark::State& st) { fn(st, s); });
       registerKernel(prefix + kGlm, [s, fn = f.glm](benchmark::State& st) { fn(st, s); });
+      registerKernel(prefix + kSimdMatrix, [s, fn = f.simdMatrix](benchmark::State& st) { fn(st, s); });
+      registerKernel(prefix + kSimdMotor, [s, fn = f.simdMotor](benchmark::State& st) { fn(st, s); });
     }
 }
 

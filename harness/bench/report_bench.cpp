@@ -4,6 +4,7 @@
 #include <fstream>
 #include <map>
 
+#include "harness/bench/bench_common.h"
 #include "harness/process/report_workers.h"
 
 namespace mb::report {
@@ -11,7 +12,7 @@ namespace {
 
 using json = nlohmann::json;
 
-bool isSide(const std::string& s) { return s == "matrix" || s == "motor" || s == "glm"; }
+bool isSide(const std::string& s) { return *bench::sideKind(s) != 0; }
 
 json sideFigures(const json& b) {
   json s = {{"items_per_second", b.value("items_per_second", 0.0)},
@@ -19,6 +20,7 @@ json sideFigures(const json& b) {
             {"real_time", b.value("real_time", 0.0)}, {"time_unit", b.value("time_unit", "ns")}};
   if (b.contains("bw_fraction")) s["bw_fraction"] = b["bw_fraction"];
   if (b.contains("probe_GBps")) s["probe_GBps"] = b["probe_GBps"];
+  if (b.contains("label")) s["label"] = b["label"];
   return s;
 }
 
@@ -83,12 +85,26 @@ json kernelPairs(const json& bench) {
     pairs[pairIndex[prefix]][side] = sideFigures(b);
   }
   for (json& p : pairs) {
-    auto ips = [&](const char* side) {
+    auto ips = [&](const std::string& side) {
       return p.contains(side) ? p[side].value("items_per_second", 0.0) : 0.0;
     };
     const double m = ips("matrix"), mo = ips("motor"), g = ips("glm");
     p["ratio_motor_matrix"] = m > 0 && mo > 0 ? json(mo / m) : json(nullptr);
     p["ratio_glm_matrix"] = m > 0 && g > 0 ? json(g / m) : json(nullptr);
+    const double sm = ips(bench::kSimdMatrix), smo = ips(bench::kSimdMotor);
+    p["ratio_simd_motor_matrix"] = sm > 0 && smo > 0 ? json(smo / sm) : json(nullptr);
+    // The fastest implementation on each side, whatever its source.
+    std::string fastest[2];
+    for (const auto& [side, fig] : p.items()) {
+      const std::string kind = bench::sideKind(side);
+      if (kind.empty() || !(ips(side) > 0)) continue;
+      std::string& f = fastest[kind == "motor"];
+      if (f.empty() || ips(side) > ips(f)) f = side;
+    }
+    p["fastest_matrix"] = fastest[0].empty() ? json(nullptr) : json(fastest[0]);
+    p["fastest_motor"] = fastest[1].empty() ? json(nullptr) : json(fastest[1]);
+    p["ratio_motor_fastest_matrix"] =
+        fastest[0].empty() || fastest[1].empty() ? json(nullptr) : json(ips(fastest[1]) / ips(fastest[0]));
   }
   return {{"context", bench.value("context", json::object())}, {"pairs", pairs}, {"probe", probe}};
 }

@@ -19,10 +19,14 @@ Status runBench(const std::string& outJson, const std::string& logPath, double m
 Result<nlohmann::json> readBenchJson(const std::string& path);
 
 // Google Benchmark JSON -> {"context": {...}, "pairs": [...], "probe": [...]}. Names are
-// "<kernel>[/<size>]/<side>" with side matrix|motor|glm; one figure per benchmark (the median
-// aggregate when repeated). Each pair: kernel, size (in_cache | out_of_cache | null), per side
-// items_per_second, bytes_per_second, bw_fraction (out of cache: bytes/s over the STREAM
-// probe), and ratio_motor_matrix / ratio_glm_matrix of items/s (> 1: faster than matrix).
+// "<kernel>[/<size>]/<side>" with side matrix|motor|glm|simd_matrix|simd_affine|simd_motor; one
+// figure per benchmark (the median aggregate when repeated). Each pair: kernel, size (in_cache |
+// out_of_cache | null), per side items_per_second, bytes_per_second, bw_fraction (out of
+// cache: bytes/s over the STREAM probe), label (simd: the Highway target); ratios of items/s
+// (> 1: the first faster): ratio_motor_matrix and ratio_glm_matrix (to the shim matrix),
+// ratio_simd_motor_matrix (simd_motor / simd_matrix), and fastest_matrix / fastest_motor (the
+// side with the most items/s of each kind) with ratio_motor_fastest_matrix (fastest motor /
+// fastest matrix).
 nlohmann::json kernelPairs(const nlohmann::json& bench);
 
 }  // namespace mb::report

@@ -57,8 +57,12 @@ std::vector<Claim> curvedClaims(bool runTiming, int frames);
 
 // Every pipeline's bytes per vertex, floats per transform and joint (renders of built-in
 // scenes), ops per vertex (counted and SPIR-V) and time ratios (`timings`: {scene: timing JSON},
-// or null), the motor pipeline judged against the best matrix-side pipeline (issue 16).
-std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource);
+// or null), the motor pipeline judged against the best matrix-side pipeline (issue 16); and the
+// CPU kernels vertex_frame / skinned_vertex, the fastest motor implementation against the
+// fastest matrix implementation measured (`kernelPairs`: report_bench's pairs, or null; issue 13).
+std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource,
+                                           const nlohmann::json& kernelPairs = nullptr,
+                                           const std::string& kernelSource = "");
 
 // Composition, counted (gp_mm, mat4 * mat4, affine mat4x3) and, when `runTiming`, timed side
 // by side (harness/bench/compose_timing.h).

@@ -6,13 +6,17 @@
 // After the run, a summary prints motor/matrix (and glm/matrix) throughput ratios per pair.
 #include <benchmark/benchmark.h>
 
+#include <unistd.h>
+
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "harness/bench/bandwidth_probe.h"
 #include "harness/bench/bench_kernels.h"
+#include "harness/bench/report_bench.h"
 #include "harness/cli/command.h"
 
 namespace mb {
@@ -20,81 +24,113 @@ namespace {
 
 constexpr const char* kDefaultMinTime = "0.2";
 
-// The console reporter plus a record of every result for the ratio summary.
+// The console options Google Benchmark would give its own reporter: a reporter passed to
+// RunSpecifiedBenchmarks is constructed by us and would otherwise keep ConsoleReporter's
+// default (colour on), ignoring --benchmark_color (results/bench.txt had escape codes).
+// Colour: --benchmark_color=true|yes|1|on, or auto (the default) on a terminal; tabular
+// counters always (the layout bench.txt has always had).
+benchmark::ConsoleReporter::OutputOptions consoleOptions(const std::vector<std::string>& flags) {
+  std::string color = "auto";
+  for (const std::string& f : flags) {
+    if (f.rfind("--benchmark_color=", 0) == 0) color = f.substr(18);
+    else if (f == "--benchmark_color") color = "true";
+  }
+  bool on = color == "true" || color == "yes" || color == "1" || color == "on";
+  if (color == "auto") {
+    const char* term = std::getenv("TERM");
+    on = isatty(STDOUT_FILENO) && term && std::string(term) != "dumb";
+  }
+  return on ? benchmark::ConsoleReporter::OO_ColorTabular : benchmark::ConsoleReporter::OO_Tabular;
+}
+
+// The console reporter plus a record of every result (as Google Benchmark's JSON reporter
+// writes it) for the summary, which report_bench's kernelPairs reduces.
 class SummaryReporter : public benchmark::ConsoleReporter {
 public:
-  struct Result {
-    double itemsPerSecond = 0, bwFraction = -1;
-  };
+  using benchmark::ConsoleReporter::ConsoleReporter;
   void ReportRuns(const std::vector<Run>& runs) override {
-    benchmark::ConsoleReporter::ReportRuns(runs);
+    // bw_fraction is a Google Benchmark rate counter (bytes per iteration / probe bandwidth,
+    // divided by the time per iteration): its value is the plain fraction, but the console
+    // would print it with a "/s" suffix. Shown without the rate flag; the JSON file reporter
+    // gets the runs unchanged (it prints values without units).
+    std::vector<Run> shown = runs;
+    for (Run& r : shown) {
+      auto it = r.counters.find("bw_fraction");
+      if (it != r.counters.end()) it->second.flags = benchmark::Counter::kDefaults;
+    }
+    benchmark::ConsoleReporter::ReportRuns(shown);
     for (const Run& r : runs) {
       if (r.error_occurred) continue;
-      // One figure per benchmark: the median aggregate when there are repetitions.
-      const bool aggregate = r.run_type == Run::RT_Aggregate;
-      if (aggregate && r.aggregate_name != "median") continue;
-      if (!aggregate && r.repetitions > 1) continue;
-      Result res;
-      auto it = r.counters.find("items_per_second");
-      if (it != r.counters.end()) res.itemsPerSecond = it->second.value;
-      it = r.counters.find("bw_fraction");
-      if (it != r.counters.end()) res.bwFraction = it->second.value;
-      results[r.run_name.function_name] = res;
+      nlohmann::json b = {{"name", r.benchmark_name()}, {"run_name", r.run_name.str()},
+                          {"run_type", r.run_type == Run::RT_Aggregate ? "aggregate" : "iteration"},
+                          {"aggregate_name", r.aggregate_name}, {"label", r.report_label}};
+      for (const auto& [key, c] : r.counters) b[key] = c.value;
+      if (b.value("label", "").empty()) b.erase("label");
+      benchmarks.push_back(b);
+      outOfCache = outOfCache || r.counters.count("bw_fraction");
     }
   }
-  std::map<std::string, Result> results;
+  nlohmann::json benchmarks = nlohmann::json::array();
+  bool outOfCache = false;
 };
 
-// withProbe: print the bandwidth probe (only measured when an out-of-cache kernel ran).
+std::string num(const nlohmann::json& v, const char* fmt = "%.4g") {
+  if (!v.is_number() || !(v.get<double>() > 0)) return "-";
+  char b[32];
+  std::snprintf(b, sizeof b, fmt, v.get<double>());
+  return b;
+}
+
+// The five implementations per pair (and simd_affine where measured), motor against the
+// shim matrix and against the fastest matrix implementation; out of cache, the fraction of the
+// probe's bandwidth each side moves. withProbe: print the probe (measured when an out-of-cache
+// kernel ran).
 void printSummary(const SummaryReporter& rep, bool withProbe) {
-  // Pairs: names "<kernel>[/<size>]/<side>"; the prefix identifies the pair.
-  std::map<std::string, std::map<std::string, SummaryReporter::Result>> pairs;
-  std::vector<std::string> order;
-  for (const auto& [name, res] : rep.results) {
-    const size_t slash = name.rfind('/');
-    if (slash == std::string::npos) continue;
-    const std::string prefix = name.substr(0, slash), side = name.substr(slash + 1);
-    if (side != "matrix" && side != "motor" && side != "glm") continue;
-    if (!pairs.count(prefix)) order.push_back(prefix);
-    pairs[prefix][side] = res;
-  }
+  const nlohmann::json pairs = report::kernelPairs({{"benchmarks", rep.benchmarks}})["pairs"];
   if (pairs.empty()) return;
-  std::printf("\nThroughput ratios (items/s; > 1 means faster than matrix; the median of the "
-              "repetitions where repeated):\n");
-  std::printf("%-28s %14s %14s %14s %12s %10s %9s %9s\n", "kernel", "matrix items/s",
-              "motor items/s", "glm items/s", "motor/matrix", "glm/matrix", "bw matrix",
-              "bw motor");
-  auto num = [](double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, v > 0 ? "%.4g" : "-", v);
-    return std::string(b);
+  const char* sides[] = {"matrix", "motor", "glm", "simd_matrix", "simd_motor", "simd_affine"};
+  auto ips = [](const nlohmann::json& p, const char* side) {
+    return p.contains(side) ? num(p[side].value("items_per_second", nlohmann::json())) : std::string("-");
   };
-  for (const std::string& p : order) {
-    auto& sides = pairs[p];
-    const double m = sides.count("matrix") ? sides["matrix"].itemsPerSecond : 0;
-    const double mo = sides.count("motor") ? sides["motor"].itemsPerSecond : 0;
-    const double g = sides.count("glm") ? sides["glm"].itemsPerSecond : 0;
-    auto frac = [&](const char* side) {
-      if (!sides.count(side) || sides[side].bwFraction < 0) return std::string("-");
-      char b[32];
-      std::snprintf(b, sizeof b, "%.2f", sides[side].bwFraction);
-      return std::string(b);
-    };
-    std::printf("%-28s %14s %14s %14s %12s %10s %9s %9s\n", p.c_str(), num(m).c_str(),
-                num(mo).c_str(), num(g).c_str(), m > 0 && mo > 0 ? num(mo / m).c_str() : "-",
-                m > 0 && g > 0 ? num(g / m).c_str() : "-", frac("matrix").c_str(),
-                frac("motor").c_str());
+  std::printf("\nThroughput (items/s; the median of the repetitions where repeated). matrix, motor: the "
+              "shader source through the shim; glm: GLM's operators; simd_*: kernels/simd (Highway, "
+              "target in the label); motor/matrix: the shim pair; best motor / fastest matrix: each kind's "
+              "fastest implementation, named (> 1: the motor is faster):\n");
+  std::printf("%-28s %11s %11s %11s %11s %11s %11s %9s %28s\n", "kernel", "matrix", "motor", "glm",
+              "simd_matrix", "simd_motor", "simd_affine", "motor/mat", "best motor / fastest matrix");
+  for (const nlohmann::json& p : pairs) {
+    std::printf("%-28s", p.value("pair", "").c_str());
+    for (const char* s : sides) std::printf(" %11s", ips(p, s).c_str());
+    std::string best = "-";
+    if (p["ratio_motor_fastest_matrix"].is_number())
+      best = num(p["ratio_motor_fastest_matrix"], "%.3g") + " (" + p["fastest_motor"].get<std::string>() + " / " +
+             p["fastest_matrix"].get<std::string>() + ")";
+    std::printf(" %9s %28s\n", num(p["ratio_motor_matrix"], "%.3g").c_str(), best.c_str());
   }
-  std::printf("matrix and motor: the shader source (matrix_transform.glsl, pga.glsl, "
-              "motor_transform.glsl) compiled through the shim with float, same flags; glm: "
-              "GLM's own mat4 operators. load_frames: matrix converts nothing at load (a copy of "
-              "normal + tangent), motor encodes tangent rotors, glm does the same with "
-              "glm::quat_cast.\n");
+  std::printf("load_frames: matrix converts nothing at load (a copy of normal + tangent), motor encodes "
+              "tangent rotors, glm does the same with glm::quat_cast.\n");
   if (!withProbe) return;
+  std::printf("\nOut of cache: bytes/s and bw = bytes/s over the bandwidth probe (a fraction):\n");
+  std::printf("%-28s", "kernel");
+  for (const char* s : sides) std::printf(" %18s", s);
+  std::printf("\n");
+  for (const nlohmann::json& p : pairs) {
+    if (p.value("size", nlohmann::json()) != "out_of_cache") continue;
+    std::printf("%-28s", p.value("pair", "").c_str());
+    for (const char* s : sides) {
+      std::string cell = "-";
+      if (p.contains(s))
+        cell = num(p[s].value("bytes_per_second", nlohmann::json())) + "B/s " +
+               num(p[s].value("bw_fraction", nlohmann::json()), "%.2f");
+      std::printf(" %18s", cell.c_str());
+    }
+    std::printf("\n");
+  }
   const bench::Bandwidth& bw = bench::referenceBandwidth();
-  std::printf("bandwidth probe (one core, %zu MiB arrays): copy %.2f GB/s, triad %.2f GB/s; "
-              "bw = out-of-cache bytes/s over the better of the two\n",
-              bw.arrayBytes >> 20, bw.copyBytesPerSecond / 1e9, bw.triadBytesPerSecond / 1e9);
+  std::printf("bandwidth probe (one core, %zu MiB arrays): copy %.2f GB/s, copy with streaming stores "
+              "%.2f GB/s, triad %.2f GB/s; bw = out-of-cache bytes/s over the best of the three\n",
+              bw.arrayBytes >> 20, bw.copyBytesPerSecond / 1e9, bw.copyStreamingBytesPerSecond / 1e9,
+              bw.triadBytesPerSecond / 1e9);
 }
 
 int runBench(const std::vector<std::string>& args) {
@@ -140,16 +176,14 @@ int runBench(const std::vector<std::string>& args) {
   bench::registerAnimationBenchmarks();
   bench::registerTangentBenchmarks();
 
-  SummaryReporter reporter;
+  SummaryReporter reporter(consoleOptions(flags));
   const size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   if (ran == 0) {
     std::fprintf(stderr, "motorbench bench: no benchmark matched the filter\n");
     return 2;
   }
-  bool outOfCache = false;
-  for (const auto& [name, res] : reporter.results) outOfCache = outOfCache || res.bwFraction >= 0;
-  printSummary(reporter, outOfCache);
+  printSummary(reporter, reporter.outOfCache);
   return 0;
 }
 

@@ -106,8 +106,8 @@ claims::SpeedInputs speedInputs(const Args& args, json& sources) {
   const bool run = !args.has("no-run");
   if (in.kernelPairs.is_null() && run) {
     const std::string tmp = (fs::temp_directory_path() / ("motorbench-claims-bench-" + std::to_string(getpid()) + ".json")).string();
-    say("running motorbench bench (vertex_frame and hierarchy kernels, short)");
-    Status s = report::runBench(tmp, tmp + ".txt", 0.1, "^(vertex_frame|hierarchy)/");
+    say("running motorbench bench (vertex_frame, skinned_vertex and hierarchy kernels, short)");
+    Status s = report::runBench(tmp, tmp + ".txt", 0.1, "^(vertex_frame|skinned_vertex|hierarchy)/");
     auto j = s ? report::readBenchJson(tmp) : Result<json>::fail(s.error());
     if (j) in.kernelPairs = report::kernelPairs(*j)["pairs"], in.kernelSource = "motorbench bench run by claims (min time 0.1 s)";
     else missing += j.error() + "; ";
@@ -186,7 +186,8 @@ int runClaims(const std::vector<std::string>& argv) {
     for (auto& c : claims::curvedClaims(!args.has("no-run"), frames)) all.push_back(c);
   }
   say("against the strongest baseline (every pipeline)");
-  for (auto& c : claims::strongestBaselineClaims(speed.timings, sources["frameTiming"].get<std::string>()))
+  for (auto& c : claims::strongestBaselineClaims(speed.timings, sources["frameTiming"].get<std::string>(),
+                                                 speed.kernelPairs, speed.kernelSource))
     all.push_back(c);
 
   const json j = claims::claimsJson(all, report::machineJson(), sources);

@@ -500,18 +500,25 @@ void kernelSection(Document& d, const json& r) {
   }
   d.paragraph("motorbench bench (" + std::string(k.value("source", "") == "run" ? "run by this report" : "read from " + str(k["file"])) +
               "): matrix and motor kernels compiled from the same shader source through the shim with "
-              "float; glm = GLM's own operators (extra baseline). Out of cache = arrays of at least 256 MiB; "
+              "float; glm = GLM's own operators (extra baseline); simd_matrix / simd_motor = kernels/simd, the same math "
+              "hand-vectorised with Highway (compose also has simd_affine, the mat4x3 product). Out of cache = arrays "
+              "of at least 256 MiB; "
               "bw = bytes/s over the STREAM probe. Ratios of items/s: > 1 means faster than matrix.");
   std::vector<std::vector<Cell>> rows;
   for (const json& p : k.value("pairs", json::array())) {
     auto ips = [&](const char* side) { return fmt(at(p, {side, "items_per_second"}), 4); };
     auto bw = [&](const char* side) { return fixed(at(p, {side, "bw_fraction"}), 2); };
+    const std::string best = p["ratio_motor_fastest_matrix"].is_number()
+                                 ? ratio(p["ratio_motor_fastest_matrix"]) + " (" + str(p["fastest_motor"]) + " / " +
+                                       str(p["fastest_matrix"]) + ")"
+                                 : "-";
     rows.push_back({{str(p["kernel"])}, {str(p["size"], "-")}, {ips("matrix")}, {ips("motor")}, {ips("glm")},
-                    {ratio(p["ratio_motor_matrix"])}, {ratio(p["ratio_glm_matrix"])},
-                    {bw("matrix") + " / " + bw("motor")}});
+                    {ips("simd_matrix")}, {ips("simd_motor")}, {ratio(p["ratio_motor_matrix"])}, {best},
+                    {bw("matrix") + " / " + bw("motor") + " / " + bw("simd_matrix") + " / " + bw("simd_motor")}});
   }
-  d.table({"kernel", "working set", "matrix items/s", "motor items/s", "glm items/s", "motor/matrix", "glm/matrix",
-           "bw fraction matrix / motor"},
+  d.table({"kernel", "working set", "matrix items/s", "motor items/s", "glm items/s", "simd_matrix items/s",
+           "simd_motor items/s", "motor/matrix", "best motor / fastest matrix",
+           "bw fraction matrix / motor / simd_matrix / simd_motor"},
           rows);
   std::string probe;
   for (const json& p : k.value("probe", json::array()))

@@ -5,8 +5,10 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -41,12 +43,24 @@ TEST(CliBench, OneCheapKernelWritesJsonWithItemsPerSecond) {
     EXPECT_TRUE(b.contains("items_per_second")) << b.dump();
     EXPECT_GT(b["items_per_second"].get<double>(), 0.0);
   }
-  // The pair side by side under one name, plus the GLM baseline.
-  EXPECT_TRUE(names.count("compose/matrix"));
-  EXPECT_TRUE(names.count("compose/motor"));
-  EXPECT_TRUE(names.count("compose/glm"));
+  // The pair side by side under one name, plus the GLM baseline and the SIMD kernels.
+  for (const char* side : {"matrix", "motor", "glm", "simd_matrix", "simd_affine", "simd_motor"})
+    EXPECT_TRUE(names.count(std::string("compose/") + side)) << side;
+  for (const auto& b : j["benchmarks"])  // the simd sides name the Highway target they ran on
+    if (b["name"].get<std::string>().find("simd_") != std::string::npos) EXPECT_FALSE(b.value("label", "").empty()) << b.dump();
   EXPECT_NE(log.find("motor/matrix"), std::string::npos) << log;
+  EXPECT_NE(log.find("best motor / fastest matrix"), std::string::npos) << log;
   fs::remove(out);
+}
+
+// --benchmark_color=false reaches the console reporter: no escape codes (issue 13; the
+// reporter motorbench passes used to keep colour on whatever the flag said).
+TEST(CliBench, ColorFalseWritesNoEscapeCodes) {
+  std::string log;
+  ASSERT_EQ(runCommand(exe() + "bench --benchmark_filter='^compose/motor$' --benchmark_min_time=0.01 "
+                               "--benchmark_color=false", &log), 0) << log;
+  EXPECT_NE(log.find("compose/motor"), std::string::npos) << log;
+  EXPECT_EQ(log.find('\x1b'), std::string::npos) << log;
 }
 
 TEST(CliBench, OutOfCacheKernelReportsBandwidthFraction) {
@@ -63,6 +77,30 @@ TEST(CliBench, OutOfCacheKernelReportsBandwidthFraction) {
   ASSERT_TRUE(b.contains("bw_fraction"));
   EXPECT_GT(b["bw_fraction"].get<double>(), 0.0);
   EXPECT_GE(b["working_set_bytes"].get<double>(), 256.0 * 1024 * 1024);
+  // The console prints the fraction as a plain number, not as a rate ("0.32", not "0.32/s"):
+  // the bw_fraction column's cell of the kernel's row.
+  std::vector<std::string> header, row;
+  std::istringstream lines(log);
+  auto words = [](const std::string& line) {
+    std::istringstream in(line);
+    std::vector<std::string> w;
+    for (std::string x; in >> x;) w.push_back(x);
+    return w;
+  };
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("Benchmark", 0) == 0) header = words(line);
+    if (line.rfind("direction/out_of_cache/motor", 0) == 0) row = words(line);
+  }
+  // Header: Benchmark Time CPU Iterations <counters...>; row: name, time, unit, cpu, unit,
+  // iterations, <counters...>.
+  const auto col = std::find(header.begin(), header.end(), "bw_fraction");
+  ASSERT_NE(col, header.end()) << log;
+  const size_t cell = size_t(col - header.begin()) - 4 + 6;
+  ASSERT_LT(cell, row.size()) << log;
+  size_t used = 0;
+  const double shown = std::stod(row[cell], &used);
+  EXPECT_EQ(used, row[cell].size()) << "bw_fraction printed as '" << row[cell] << "'";
+  EXPECT_NEAR(shown, b["bw_fraction"].get<double>(), 0.01);
   fs::remove(out);
 }
 

@@ -1,0 +1,108 @@
+// Batch CPU kernels hand-vectorised with Google Highway (runtime dispatch: the best target the
+// CPU has among those compiled, SSSE3/SSE4/AVX2/AVX-512; simd_targets.h lists and forces them).
+// Every kernel computes the same math as a shader function of shaders/*.glsl (named at each
+// function; tests/simd checks them against the shim-compiled functions), over
+// structure-of-arrays batches: component c of item i is at `planes.base[c * stride + i]`.
+//
+// Fairness between the matrix and the motor kernel of a pair (one comment per pair below says
+// what is shared): the same planar layout, the same loop (one full vector per step, a one-lane
+// tail), the same software prefetch of every input plane, the same per-draw uniforms broadcast
+// once before the loop, fused multiply-add wherever the math has a product plus a sum, and the
+// same gathers (one GatherIndex per palette component) for joint palettes, and the same store
+// rule: non-temporal (streaming) stores when a call writes >= 64 MiB to planes aligned to 64
+// bytes (no write-allocate read of the lines it overwrites), ordinary stores otherwise.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+namespace mb::simd {
+
+// `components` planes of `stride` floats each (stride >= the item count).
+struct Planes {
+  float* base = nullptr;
+  size_t stride = 0;
+  float* operator[](size_t c) const { return base + c * stride; }
+};
+struct ConstPlanes {
+  const float* base = nullptr;
+  size_t stride = 0;
+  ConstPlanes() = default;
+  ConstPlanes(const float* b, size_t s) : base(b), stride(s) {}
+  ConstPlanes(Planes p) : base(p.base), stride(p.stride) {}  // NOLINT: a read view
+  const float* operator[](size_t c) const { return base + c * stride; }
+};
+// Four joint-index planes (uint16, as the pipelines upload JOINTS_0).
+struct JointPlanes {
+  const uint16_t* base = nullptr;
+  size_t stride = 0;
+  const uint16_t* operator[](size_t c) const { return base + c * stride; }
+};
+
+// Uniform layouts (column-major like GLSL): mat4 16 floats; mat4x3 (affine, 4 columns of 3
+// rows) 12 floats; mat3 9 floats; motor 8 floats [s, e23, e31, e12, e01, e02, e03, e0123].
+
+// ---- point and direction (pair: 3 planes in, 3 planes out) ---------------------------------
+// Matrix: xyz of matrixTransformPoint / matrixTransformDirection (matrix_transform.glsl) for an
+// affine `model` (its last row (0, 0, 0, 1) is not read: 9 multiply-adds per item).
+// Motor: sw_mp / sw_md of pga.glsl, `motor` normalised.
+void pointsMatrix(const float model[16], ConstPlanes in, Planes out, size_t n);
+void pointsMotor(const float motor[8], ConstPlanes in, Planes out, size_t n);
+void directionsMatrix(const float model[16], ConstPlanes in, Planes out, size_t n);
+void directionsMotor(const float motor[8], ConstPlanes in, Planes out, size_t n);
+
+// ---- vertex frame (pair: the output is 10 planes, position xyz, normal xyz, tangent xyzw) ---
+// Matrix: matrixAffineVertex (matrix_transform.glsl): `model` mat4x3, `normal` mat3, `mirror`
+// = sign(det(model)); in: position xyz, normal xyz, tangent xyzw (10 planes). For an affine
+// model it also equals xyz of matrixRigidVertex with the mat4 model and normal matrix (whose
+// [3][3] is the mirror): mat4ToAffine below gives the arguments.
+// Motor: motorRigidVertex (motor_transform.glsl): unit `motor`, uniform `scale` > 0; in:
+// position xyz, tangent rotor (s, e23, e31, e12) (7 planes).
+void vertexFrameMatrix(const float model[12], const float normal[9], float mirror, ConstPlanes in,
+                       Planes out, size_t n);
+void vertexFrameMotor(const float motor[8], float scale, ConstPlanes in, Planes out, size_t n);
+// mat4 model + mat4 normal matrix -> mat4x3 model, mat3 normal matrix, mirror ([3][3]).
+void mat4ToAffine(const float model[16], const float normal[16], float model12[12], float normal9[9],
+                  float* mirror);
+
+// ---- skinned vertex, 4 joints, world-space palette (output as vertex frame) ---------------
+// Matrix: affineSkinnedVertex (affine_transform.glsl): linear blend of four mat4x3 joints,
+// normal through the cofactor of the blended linear part; `palette`: 12 planes of `joints`
+// floats (component c of joint j at palette[c][j]).
+// Motor: motorSkinnedVertex (motor_transform.glsl): blend of four joint motors with the
+// hemisphere rule, normalize_m, motorRigidVertex; `palette`: 8 planes.
+// Both: `joints` 4 planes of indices < the palette size, `weights` 4 planes summing to 1.
+void skinnedVertexMatrix(ConstPlanes palette, float mirror, ConstPlanes in, JointPlanes joints,
+                         ConstPlanes weights, Planes out, size_t n);
+void skinnedVertexMotor(ConstPlanes palette, float scale, ConstPlanes in, JointPlanes joints,
+                        ConstPlanes weights, Planes out, size_t n);
+
+// ---- compose: out[i] = a[i] b[i] ----------------------------------------------------------
+// mat4: matrixCompose (16 planes each). Affine: the same product for mat4x3 operands (12 planes
+// each; equals matrixCompose's first three rows when both last rows are (0, 0, 0, 1)).
+// Motor: gp_mm of pga.glsl (8 planes each).
+void composeMat4(ConstPlanes a, ConstPlanes b, Planes out, size_t n);
+void composeAffine(ConstPlanes a, ConstPlanes b, Planes out, size_t n);
+void composeMotor(ConstPlanes a, ConstPlanes b, Planes out, size_t n);
+
+// ---- skin palette: out[j] = world[node[j]] inverseBind[j] ---------------------------------
+// Affine (12 planes; `world` indexed by `node`, gathered) and motor (8 planes; gp_mm). `node`
+// holds `n` indices into `world`'s planes.
+void paletteAffine(ConstPlanes world, const int32_t* node, ConstPlanes inverseBind, Planes out,
+                   size_t n);
+void paletteMotor(ConstPlanes world, const int32_t* node, ConstPlanes inverseBind, Planes out,
+                  size_t n);
+
+// ---- hierarchy update: world = parent world * local, parents first -----------------------
+// Nodes are grouped by depth: level k holds nodes [levelEnd[k-1], levelEnd[k]) (levelEnd[-1] =
+// 0), every parent in an earlier level; level 0 holds the roots (parent < 0). Within a level
+// the nodes are independent and run as one SIMD batch (the parents' world gathered per
+// component): wide hierarchies vectorise, chains run one lane at a time.
+// `trs`: 8 planes, quaternion x, y, z, w (unit), translation xyz, uniform scale.
+// Affine: local = T R S as a mat4x3 (the bench's trsMatrix), world = matrixCompose(parent,
+// local) on its first three rows; `world` 12 planes.
+// Motor: local = gp_tr(T, R) with the parent's uniform scale applied to its e0 half, world =
+// gp_mm(parent, local), world scale = parent scale * scale; `world` 9 planes (motor, scale).
+void hierarchyAffine(ConstPlanes trs, const int32_t* parent, const uint32_t* levelEnd, size_t levels, Planes world);
+void hierarchyMotor(ConstPlanes trs, const int32_t* parent, const uint32_t* levelEnd, size_t levels, Planes world);
+
+}  // namespace mb::simd

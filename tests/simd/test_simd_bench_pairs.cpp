@@ -1,0 +1,36 @@
+// report_bench's kernelPairs with the simd sides (issue 13): the fastest implementation of each
+// kind is named, whatever its source, and the motor is stated against the fastest matrix one.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/bench/report_bench.h"
+
+namespace {
+
+using json = nlohmann::json;
+
+json run(const std::string& name, double ips) { return {{"name", name}, {"run_type", "iteration"}, {"items_per_second", ips}}; }
+
+TEST(SimdBenchPairs, FastestOfEachKindIsNamedAndCompared) {
+  const json bench = {{"benchmarks",
+                       {run("vertex_frame/in_cache/matrix", 10), run("vertex_frame/in_cache/motor", 12),
+                        run("vertex_frame/in_cache/glm", 40), run("vertex_frame/in_cache/simd_matrix", 30),
+                        run("vertex_frame/in_cache/simd_motor", 36), run("compose/matrix", 5),
+                        run("compose/motor", 6), run("compose/simd_affine", 50), run("compose/simd_motor", 25)}}};
+  const json pairs = mb::report::kernelPairs(bench)["pairs"];
+  ASSERT_EQ(pairs.size(), 2u) << pairs.dump(2);
+  const json& v = pairs[0];
+  EXPECT_EQ(v["kernel"], "vertex_frame");
+  EXPECT_EQ(v["fastest_matrix"], "glm");  // GLM beats the SIMD matrix here
+  EXPECT_EQ(v["fastest_motor"], "simd_motor");
+  EXPECT_DOUBLE_EQ(v["ratio_motor_fastest_matrix"].get<double>(), 36.0 / 40.0);
+  EXPECT_DOUBLE_EQ(v["ratio_motor_matrix"].get<double>(), 12.0 / 10.0);
+  EXPECT_DOUBLE_EQ(v["ratio_simd_motor_matrix"].get<double>(), 36.0 / 30.0);
+  const json& c = pairs[1];
+  EXPECT_EQ(c["fastest_matrix"], "simd_affine");
+  EXPECT_DOUBLE_EQ(c["ratio_motor_fastest_matrix"].get<double>(), 25.0 / 50.0);
+  EXPECT_TRUE(c["ratio_simd_motor_matrix"].is_null());  // no simd_matrix side
+}
+
+}  // namespace
