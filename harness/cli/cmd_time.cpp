@@ -74,6 +74,18 @@ void printRow(const timing::ConfigTiming& c) {
               ratio(c.updateRatio).c_str());
   for (const auto& t : c.pipelines)
     if (!t.error.empty()) std::printf("    %s: %s\n", t.pipeline.c_str(), t.error.c_str());
+  // The update phase by phase, every pipeline (medians, us per call).
+  std::string phases;
+  for (const auto& t : c.pipelines) {
+    if (!t.error.empty()) continue;
+    char b[160];
+    std::snprintf(b, sizeof b, "%s%s %.2f/%.2f/%.2f/%.2f/%.2f", phases.empty() ? "" : "; ", t.pipeline.c_str(),
+                  1e3 * t.phases[0].median, 1e3 * t.phases[1].median, 1e3 * t.phases[2].median,
+                  1e3 * t.phases[3].median, 1e3 * t.phases[4].median);
+    phases += b;
+  }
+  if (!phases.empty())
+    std::printf("    update phases us (sampling/blending/conversion/hierarchy/palette): %s\n", phases.c_str());
   std::fflush(stdout);
 }
 
@@ -235,7 +247,8 @@ int runTime(const std::vector<std::string>& argv) {
           {"vertex_bound_size", {tiny.width, tiny.height}},
           {"method", "pipelines interleaved frame by frame in alternating order; frame = clear + "
                      "render + glFinish (steady_clock), fastest of best_of renders; also process "
-                     "CPU time; update = Pipeline::update per call"}}},
+                     "CPU time; update = Pipeline::update per call; update_phases_ms = a further "
+                     "block of update calls with the phase clock on, per call"}}},
         {"results", results}};
     std::ofstream out(*path);
     if (!out || !(out << j.dump(2) << "\n")) return fail("cannot write " + *path);

@@ -23,8 +23,8 @@ namespace {
 class MatrixPoser final : public Poser {
 public:
   Status prepare(const Scene&) override { return {}; }
-  Pose pose(const Scene& scene, const AnimState& state, PipelineStats&) override {
-    return poseScene(scene, state);
+  Pose pose(const Scene& scene, const AnimState& state, PipelineStats&, PhaseClock& clock) override {
+    return poseScene(scene, state, clock);
   }
 };
 
@@ -42,6 +42,7 @@ public:
   std::string name() const override { return name_; }
   Status prepare(const Scene& scene) override;
   void update(const AnimState& state) override;
+  void timeUpdatePhases(bool on) override { timePhases_ = on; }
   void render(const View& view) override;
   PipelineStats stats() const override { return stats_; }
 
@@ -61,6 +62,7 @@ private:
   gl::PaletteBuffers palettes_;  // one per pose_.palettes entry
   std::vector<gl::DrawItem> draws_;
   Pose pose_;
+  bool timePhases_ = false;
   PipelineStats stats_;
 };
 
@@ -111,7 +113,8 @@ Status AffinePipeline::prepare(const Scene& scene) {
 void AffinePipeline::update(const AnimState& state) {
   if (!scene_) return;
   auto t0 = gl::Clock::now();
-  pose_ = poser_->pose(*scene_, state, stats_);
+  PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
+  pose_ = poser_->pose(*scene_, state, stats_, clock);
   stats_.updateMs = gl::msSince(t0);
 }
 

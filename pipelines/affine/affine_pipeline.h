@@ -24,7 +24,7 @@ public:
   // Load-time conversion (timed as part of PipelineStats::conversionMs).
   virtual Status prepare(const Scene& scene) = 0;
   // The pose for `state` (timed as PipelineStats::updateMs); may set the fallback counters.
-  virtual Pose pose(const Scene& scene, const AnimState& state, PipelineStats& stats) = 0;
+  virtual Pose pose(const Scene& scene, const AnimState& state, PipelineStats& stats, PhaseClock& clock) = 0;
 };
 
 // The GLM poser (affine::poseScene).

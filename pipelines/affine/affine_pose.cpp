@@ -9,9 +9,24 @@ glm::mat3 normalMatrix(const glm::mat4x3& m) { return glm::transpose(glm::invers
 float mirror(const glm::mat4x3& m) { return glm::determinant(glm::mat3(m)) < 0.0f ? -1.0f : 1.0f; }
 
 Pose poseScene(const Scene& scene, const AnimState& state) {
-  const std::vector<glm::mat4> world = worldMatrices(scene, samplePose(scene, state));
+  PhaseClock off(nullptr);
+  return poseScene(scene, state, off);
+}
+
+Pose poseScene(const Scene& scene, const AnimState& state, PhaseClock& clock) {
+  std::vector<TRS> trs = sampleAnimation(scene, state.anim, state.time);  // samplePose, lapped
+  clock.lap(&UpdatePhases::samplingMs);
+  if (state.anim2 >= 0) {
+    const std::vector<TRS> second = sampleAnimation(scene, state.anim2, state.time2);
+    clock.lap(&UpdatePhases::samplingMs);
+    trs = blendPoses(trs, second, state.blend);
+    clock.lap(&UpdatePhases::blendingMs);
+  }
+  const std::vector<glm::mat4> world = worldMatrices(scene, trs);
+  clock.lap(&UpdatePhases::hierarchyMs);
   Pose pose;
   pose.world.assign(world.begin(), world.end());
+  clock.lap(&UpdatePhases::conversionMs);
   for (size_t n = 0; n < scene.nodes.size(); ++n) {
     const Node& node = scene.nodes[n];
     if (node.mesh < 0 || node.skin < 0 || size_t(node.skin) >= scene.skins.size()) continue;
@@ -27,6 +42,7 @@ Pose poseScene(const Scene& scene, const AnimState& state) {
     }
     pose.palettes.push_back(std::move(palette));
   }
+  clock.lap(&UpdatePhases::paletteMs);
   return pose;
 }
 

@@ -8,6 +8,7 @@
 
 #include "pipelines/scene/animation.h"
 #include "pipelines/scene/scene.h"
+#include "pipelines/update_phases.h"
 
 namespace mb::affine {
 
@@ -23,6 +24,8 @@ struct Pose {
 
 // GLM: samplePose (shared sampling and blending), world matrices, palettes.
 Pose poseScene(const Scene& scene, const AnimState& state);
+// The same with its phases lapped into `clock` (the mat4 -> mat4x3 copy as conversion).
+Pose poseScene(const Scene& scene, const AnimState& state, PhaseClock& clock);
 
 // The normal matrix of an affine transform's linear part: transpose(inverse(m)).
 glm::mat3 normalMatrix(const glm::mat4x3& m);

@@ -25,11 +25,13 @@ public:
     return {};
   }
 
-  affine::Pose pose(const Scene& scene, const AnimState& state, PipelineStats& stats) override {
+  affine::Pose pose(const Scene& scene, const AnimState& state, PipelineStats& stats, PhaseClock& clock) override {
     motor::RigCounts counts = rig_.bindCounts;
     const std::vector<motor::ScaledMotor> world =
-        motor::worldPose(scene, motor::localForState(scene, rig_, state, &counts));
+        motor::worldPose(scene, motor::localForState(scene, rig_, state, &counts, clock));
+    clock.lap(&UpdatePhases::hierarchyMs);
     const std::vector<motor::JointPalette> palettes = motor::jointPalettes(scene, rig_, world);
+    clock.lap(&UpdatePhases::paletteMs);
     stats.nonUniformScaleNodes = counts.nonUniformScaleNodes;
     stats.negativeScaleNodes = counts.negativeScaleNodes;
     stats.shearMatrixNodes = counts.shearMatrixNodes;
@@ -48,6 +50,7 @@ public:
       }
       pose.palettes.push_back(std::move(out));
     }
+    clock.lap(&UpdatePhases::conversionMs);
     return pose;
   }
 

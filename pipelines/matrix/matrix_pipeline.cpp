@@ -35,6 +35,7 @@ public:
   }
   Status prepare(const Scene& scene) override;
   void update(const AnimState& state) override;
+  void timeUpdatePhases(bool on) override { timePhases_ = on; }
   void render(const View& view) override;
   PipelineStats stats() const override { return stats_; }
 
@@ -52,6 +53,7 @@ private:
   gl::PaletteBuffers palettes_;  // one per pose_.palettes entry (same order every update)
   std::vector<gl::DrawItem> draws_;
   matrix::Pose pose_;
+  bool timePhases_ = false;
   PipelineStats stats_;
 };
 
@@ -103,7 +105,8 @@ Status MatrixPipeline::prepare(const Scene& scene) {
 void MatrixPipeline::update(const AnimState& state) {
   if (!scene_) return;
   auto t0 = gl::Clock::now();
-  pose_ = matrix::poseScene(*scene_, state, worldPalette_);
+  PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
+  pose_ = matrix::poseScene(*scene_, state, worldPalette_, clock);
   stats_.updateMs = gl::msSince(t0);
 }
 

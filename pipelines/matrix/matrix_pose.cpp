@@ -11,8 +11,22 @@ glm::mat4 normalMatrix(const glm::mat4& m) {
 }
 
 Pose poseScene(const Scene& scene, const AnimState& state, bool worldPalette) {
+  PhaseClock off(nullptr);
+  return poseScene(scene, state, worldPalette, off);
+}
+
+Pose poseScene(const Scene& scene, const AnimState& state, bool worldPalette, PhaseClock& clock) {
   Pose pose;
-  pose.world = worldMatrices(scene, samplePose(scene, state));
+  std::vector<TRS> trs = sampleAnimation(scene, state.anim, state.time);  // samplePose, lapped
+  clock.lap(&UpdatePhases::samplingMs);
+  if (state.anim2 >= 0) {
+    const std::vector<TRS> second = sampleAnimation(scene, state.anim2, state.time2);
+    clock.lap(&UpdatePhases::samplingMs);
+    trs = blendPoses(trs, second, state.blend);
+    clock.lap(&UpdatePhases::blendingMs);
+  }
+  pose.world = worldMatrices(scene, trs);
+  clock.lap(&UpdatePhases::hierarchyMs);
   for (size_t n = 0; n < scene.nodes.size(); ++n) {
     const Node& node = scene.nodes[n];
     if (node.mesh < 0 || node.skin < 0 || size_t(node.skin) >= scene.skins.size()) continue;
@@ -31,6 +45,7 @@ Pose poseScene(const Scene& scene, const AnimState& state, bool worldPalette) {
     }
     pose.palettes.push_back(std::move(palette));
   }
+  clock.lap(&UpdatePhases::paletteMs);
   return pose;
 }
 

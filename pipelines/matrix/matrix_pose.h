@@ -7,6 +7,7 @@
 
 #include "pipelines/scene/animation.h"
 #include "pipelines/scene/scene.h"
+#include "pipelines/update_phases.h"
 
 namespace mb::matrix {
 
@@ -27,6 +28,9 @@ struct Pose {
 // matrices, then a palette for every node that has both a mesh and a skin; `worldPalette`:
 // the palette without inverse(mesh node world) (SkinSpace::WorldPalette).
 Pose poseScene(const Scene& scene, const AnimState& state, bool worldPalette = false);
+// The same with its phases lapped into `clock` (sampling, blending, hierarchy with the TRS ->
+// matrix conversion inside it, palette).
+Pose poseScene(const Scene& scene, const AnimState& state, bool worldPalette, PhaseClock& clock);
 
 // transpose(inverse(m)) with the [3][3] entry set to sign(det(upper 3x3 of m)): matrix.vs
 // transforms directions with w = 0 and reads the handedness flip from that free entry.

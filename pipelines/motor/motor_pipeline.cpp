@@ -55,6 +55,7 @@ public:
   }
   Status prepare(const Scene& scene) override;
   void update(const AnimState& state) override;
+  void timeUpdatePhases(bool on) override { timePhases_ = on; }
   void render(const View& view) override;
   PipelineStats stats() const override { return stats_; }
 
@@ -75,6 +76,7 @@ private:
   motor::Rig rig_;
   std::vector<motor::ScaledMotor> world_;         // per node, last update()
   std::vector<motor::JointPalette> palettes_;
+  bool timePhases_ = false;
   PipelineStats stats_;
 };
 
@@ -140,8 +142,11 @@ void MotorPipeline::update(const AnimState& state) {
   if (!scene_) return;
   auto t0 = gl::Clock::now();
   motor::RigCounts counts = rig_.bindCounts;
-  world_ = motor::worldPose(*scene_, motor::localForState(*scene_, rig_, state, &counts));
+  PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
+  world_ = motor::worldPose(*scene_, motor::localForState(*scene_, rig_, state, &counts, clock));
+  clock.lap(&UpdatePhases::hierarchyMs);
   palettes_ = motor::jointPalettes(*scene_, rig_, world_, referenceSkin_);
+  clock.lap(&UpdatePhases::paletteMs);
   stats_.updateMs = gl::msSince(t0);
   stats_.nonUniformScaleNodes = counts.nonUniformScaleNodes;
   stats_.negativeScaleNodes = counts.negativeScaleNodes;

@@ -76,10 +76,24 @@ std::vector<ScaledMotor> blendLocal(const std::vector<ScaledMotor>& a,
 
 std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const AnimState& state,
                                        RigCounts* counts) {
-  std::vector<ScaledMotor> a = localPose(rig, sampleAnimation(scene, state.anim, state.time), counts);
+  PhaseClock off(nullptr);
+  return localForState(scene, rig, state, counts, off);
+}
+
+std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const AnimState& state,
+                                       RigCounts* counts, PhaseClock& clock) {
+  const std::vector<TRS> first = sampleAnimation(scene, state.anim, state.time);
+  clock.lap(&UpdatePhases::samplingMs);
+  std::vector<ScaledMotor> a = localPose(rig, first, counts);
+  clock.lap(&UpdatePhases::conversionMs);
   if (state.anim2 < 0) return a;
-  std::vector<ScaledMotor> b = localPose(rig, sampleAnimation(scene, state.anim2, state.time2));
-  return blendLocal(a, b, state.blend);
+  const std::vector<TRS> second = sampleAnimation(scene, state.anim2, state.time2);
+  clock.lap(&UpdatePhases::samplingMs);
+  std::vector<ScaledMotor> b = localPose(rig, second);
+  clock.lap(&UpdatePhases::conversionMs);
+  std::vector<ScaledMotor> blended = blendLocal(a, b, state.blend);
+  clock.lap(&UpdatePhases::blendingMs);
+  return blended;
 }
 
 std::vector<ScaledMotor> worldPose(const Scene& scene, const std::vector<ScaledMotor>& local) {

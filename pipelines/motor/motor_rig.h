@@ -9,6 +9,7 @@
 #include "pipelines/motor/scaled_motor.h"
 #include "pipelines/scene/animation.h"
 #include "pipelines/scene/scene.h"
+#include "pipelines/update_phases.h"
 
 namespace mb::motor {
 
@@ -47,6 +48,9 @@ std::vector<ScaledMotor> blendLocal(const std::vector<ScaledMotor>& a,
 // `counts` receives the node fallbacks of the first animation's pose.
 std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const AnimState& state,
                                        RigCounts* counts = nullptr);
+// The same with its phases lapped into `clock` (sampling, conversion, blending).
+std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const AnimState& state,
+                                       RigCounts* counts, PhaseClock& clock);
 
 // World transform of every node: parent world composed with local (compose()). Nodes not
 // reachable from a root get the chain up to their topmost ancestor.
