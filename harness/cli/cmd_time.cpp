@@ -235,7 +235,9 @@ int runTime(const std::vector<std::string>& argv) {
   std::printf("\nmotor/matrix: median of the per-frame ratios (both pipelines render the same "
               "frame back to back); of medians: ratio of the two medians; CPU time: the paired "
               "ratio of process CPU time per frame (llvmpipe threads included); update ratio: "
-              "paired, per update call. < 1: motor faster.\n");
+              "paired, per update call; update phases: medians per call of a separate block of "
+              "updates timed with the phase clock on (pipelines/update_phases.h). < 1: motor "
+              "faster.\n");
 
   if (auto path = args.get("json")) {
     const nlohmann::json j = {

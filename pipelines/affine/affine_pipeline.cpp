@@ -22,10 +22,16 @@ namespace {
 
 class MatrixPoser final : public Poser {
 public:
-  Status prepare(const Scene&) override { return {}; }
-  Pose pose(const Scene& scene, const AnimState& state, PipelineStats&, PhaseClock& clock) override {
-    return poseScene(scene, state, clock);
+  Status prepare(const Scene& scene) override {
+    prepareMatrixPose(scene, work_);
+    return {};
   }
+  void pose(const Scene& scene, const AnimState& state, Pose& out, PipelineStats&, PhaseClock& clock) override {
+    poseScene(scene, state, work_, out, clock);
+  }
+
+private:
+  MatrixPoseWork work_;
 };
 
 // A palette as the shader's row_major mat4x3 array reads it: per joint its three rows.
@@ -114,7 +120,7 @@ void AffinePipeline::update(const AnimState& state) {
   if (!scene_) return;
   auto t0 = gl::Clock::now();
   PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
-  pose_ = poser_->pose(*scene_, state, stats_, clock);
+  poser_->pose(*scene_, state, pose_, stats_, clock);
   stats_.updateMs = gl::msSince(t0);
 }
 

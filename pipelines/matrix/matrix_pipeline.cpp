@@ -52,6 +52,7 @@ private:
   gl::SceneGeometry geometry_;
   gl::PaletteBuffers palettes_;  // one per pose_.palettes entry (same order every update)
   std::vector<gl::DrawItem> draws_;
+  MatrixPoseWork work_;  // per-frame buffers and the hierarchy order
   matrix::Pose pose_;
   bool timePhases_ = false;
   PipelineStats stats_;
@@ -96,6 +97,7 @@ Status MatrixPipeline::prepare(const Scene& scene) {
       stats_);
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
+  prepareMatrixPose(scene, work_);
   update(AnimState{});
   GLenum err = glGetError();
   if (err != GL_NO_ERROR) return Status::fail(scene.source + ": matrix prepare: " + gl::errorName(err));
@@ -106,7 +108,7 @@ void MatrixPipeline::update(const AnimState& state) {
   if (!scene_) return;
   auto t0 = gl::Clock::now();
   PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
-  pose_ = matrix::poseScene(*scene_, state, worldPalette_, clock);
+  matrix::poseScene(*scene_, state, worldPalette_, work_, pose_, clock);
   stats_.updateMs = gl::msSince(t0);
 }
 

@@ -22,7 +22,7 @@
 namespace mb::motor {
 
 struct ScaledMotor {
-  Motor motor{1.0f};           // unit motor (identity by default)
+  Motor motor = identityMotor();  // unit motor (identity by default)
   float scale = 1.0f;          // signed uniform scale, applied before the motor
   glm::vec3 residual{1.0f};    // non-uniform leaf scale (fallback), applied first
 };
@@ -51,11 +51,18 @@ ScaledMotor fromMatrix(const glm::mat4& m, const TRS& approx, bool leaf,
 
 // Multiplies the dual (translation) half of `m` by s: the motor that moves s-scaled space the
 // way `m` moves unscaled space (s M = M' s with M' = scaleDual(M, s)).
-Motor scaleDual(const Motor& m, float s);
+inline Motor scaleDual(const Motor& m, float s) { return Motor(m[0], m[1] * s); }
 
 // Parent then child: the child's transform expressed in the parent's space. Contract: the
-// parent's residual is (1,1,1) (residuals live on leaves only).
-ScaledMotor compose(const ScaledMotor& parent, const ScaledMotor& child);
+// parent's residual is (1,1,1) (residuals live on leaves only). Inline, so that the per-frame
+// loops (hierarchy, palettes) inline it as they inline GLM's matrix product.
+inline ScaledMotor compose(const ScaledMotor& parent, const ScaledMotor& child) {
+  ScaledMotor out;
+  out.motor = mk().gp_mm(parent.motor, scaleDual(child.motor, parent.scale));
+  out.scale = parent.scale * child.scale;
+  out.residual = child.residual;
+  return out;
+}
 
 // Shortest-arc blend of two node transforms: (1-w) a + w (+-b) on the motors (b negated when
 // its rotor half points away from a's), renormalised with normalize_m; scale and residual lerp.
