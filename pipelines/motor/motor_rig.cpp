@@ -109,7 +109,10 @@ std::vector<ScaledMotor> worldPose(const Scene& scene, const std::vector<ScaledM
   for (size_t i = 0; i < order.nodes.size(); ++i) {
     const size_t n = size_t(order.nodes[i]);
     const int parent = order.parents[i];
-    world[n] = parent >= 0 ? compose(world[size_t(parent)], local[n]) : local[n];
+    if (parent >= 0)
+      composeInto(world[size_t(parent)], local[n], world[n]);
+    else
+      world[n] = local[n];
   }
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <random>
 
 #include "pipelines/gl/context.h"
 #include "pipelines/matrix/matrix_pose.h"
@@ -109,5 +110,22 @@ TEST(UpdatePhases, MeasuredOnlyWhenAsked) {
     for (double v : {single.samplingMs, single.conversionMs, single.hierarchyMs, single.paletteMs}) EXPECT_GE(v, 0.0);
     p->update(blended(0.5f));
     EXPECT_GT(p->stats().updatePhases.total(), 0.0);
+  }
+}
+
+// The scalar gp_mm of the per-frame loops is the shader's gp_mm, bit for bit.
+TEST(UpdatePhases, ScalarProductIsTheShadersBitForBit) {
+  std::mt19937 g(13);
+  std::uniform_real_distribution<float> u(-2.0f, 2.0f);
+  auto random = [&] {
+    Motor m;
+    for (int c = 0; c < 2; ++c)
+      for (int r = 0; r < 4; ++r) m[c][r] = u(g);
+    return m;
+  };
+  for (int i = 0; i < 100000; ++i) {
+    const Motor a = random(), b = random();
+    const Motor fast = motor::gpMotors(a, b), shader = mk().gp_mm(a, b);
+    ASSERT_EQ(std::memcmp(&fast, &shader, sizeof(Motor)), 0) << "sample " << i;
   }
 }
