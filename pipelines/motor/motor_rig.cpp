@@ -7,12 +7,33 @@
 namespace mb::motor {
 namespace {
 
-void count(const ConversionFlags& f, RigCounts* c) {
+void count(const ConversionFlags& f, RigCounts* c, int sign = 1) {
   if (!c) return;
-  c->nonUniformScaleNodes += f.nonUniform;
-  c->nonUniformInnerNodes += f.nonUniformInner;
-  c->negativeScaleNodes += f.negative;
-  c->shearMatrixNodes += f.shear;
+  c->nonUniformScaleNodes += sign * f.nonUniform;
+  c->nonUniformInnerNodes += sign * f.nonUniformInner;
+  c->negativeScaleNodes += sign * f.negative;
+  c->shearMatrixNodes += sign * f.shear;
+}
+
+// localPose for one unblended animation: the rest motors, the driven nodes converted.
+void animatedLocalPose(const Rig& rig, const std::vector<TRS>& pose, int anim, std::vector<ScaledMotor>& local,
+                       RigCounts* counts) {
+  local = rig.rest;
+  if (counts) {
+    counts->nonUniformScaleNodes += rig.restCounts.nonUniformScaleNodes;
+    counts->nonUniformInnerNodes += rig.restCounts.nonUniformInnerNodes;
+    counts->negativeScaleNodes += rig.restCounts.negativeScaleNodes;
+    counts->shearMatrixNodes += rig.restCounts.shearMatrixNodes;
+  }
+  if (anim < 0 || size_t(anim) >= rig.animated.size()) return;
+  for (int i : rig.animated[size_t(anim)]) {
+    const size_t n = size_t(i);
+    if (rig.matrixNode[n] || n >= pose.size()) continue;
+    ConversionFlags f = rig.restFlags[n];
+    local[n] = fromTRS(pose[n], rig.leaf[n], &f);
+    count(rig.restFlags[n], counts, -1);
+    count(f, counts);
+  }
 }
 
 bool nodeIndexOk(const Scene& scene, int n) { return n >= 0 && size_t(n) < scene.nodes.size(); }
@@ -54,6 +75,8 @@ Rig buildRig(const Scene& scene) {
     rig.inverseBind.push_back(std::move(binds));
   }
   rig.order = hierarchyOrder(scene);
+  rig.animated = animatedNodes(scene);
+  for (const ConversionFlags& f : rig.restFlags) count(f, &rig.restCounts);
   return rig;
 }
 
@@ -158,7 +181,10 @@ void poseScene(const Scene& scene, const Rig& rig, const AnimState& state, bool 
                PoseWork& work, RigCounts* counts, PhaseClock& clock) {
   sampleAnimation(scene, state.anim, state.time, work.pose);
   clock.lap(&UpdatePhases::samplingMs);
-  localPose(rig, work.pose, work.local, counts);
+  if (state.anim2 >= 0)
+    localPose(rig, work.pose, work.local, counts);
+  else
+    animatedLocalPose(rig, work.pose, state.anim, work.local, counts);
   clock.lap(&UpdatePhases::conversionMs);
   if (state.anim2 >= 0) {
     sampleAnimation(scene, state.anim2, state.time2, work.second);

@@ -31,6 +31,8 @@ struct Rig {
   std::vector<std::vector<ScaledMotor>> inverseBind;  // [skin][joint]
   RigCounts bindCounts;             // fallbacks taken by the inverse binds
   HierarchyOrder order;             // hierarchyOrder(scene): the per-frame composition order
+  std::vector<std::vector<int>> animated;  // animatedNodes(scene)
+  RigCounts restCounts;             // the fallbacks of every rest transform together
 };
 
 // Converts every node transform and every inverse-bind matrix. Pure CPU.
@@ -92,7 +94,8 @@ struct PoseWork {
   std::vector<JointPalette> palettes;           // the result: jointPalettes
 };
 
-// One update: sampleAnimation, localPose (and for a blend the second animation, then
+// One update: sampleAnimation, localPose (unblended: the rest motors, converting only the
+// nodes the animation drives; the same values and counts) (and for a blend the second animation, then
 // blendLocal), worldPose in rig.order, jointPalettes; results in work.world / work.palettes,
 // the phases lapped into `clock`. `counts` receives the first animation's node fallbacks.
 void poseScene(const Scene& scene, const Rig& rig, const AnimState& state, bool relativeToNode,

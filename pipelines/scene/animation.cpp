@@ -115,6 +115,20 @@ void blendPoses(const std::vector<TRS>& a, const std::vector<TRS>& b, float w, s
   }
 }
 
+std::vector<std::vector<int>> animatedNodes(const Scene& scene) {
+  std::vector<std::vector<int>> out;
+  for (const Animation& a : scene.animations) {
+    std::vector<char> driven(scene.nodes.size(), 0);
+    for (const Channel& c : a.channels)
+      if (c.node >= 0 && size_t(c.node) < driven.size() && !c.times.empty()) driven[size_t(c.node)] = 1;
+    std::vector<int> nodes;
+    for (size_t n = 0; n < driven.size(); ++n)
+      if (driven[n]) nodes.push_back(int(n));
+    out.push_back(std::move(nodes));
+  }
+  return out;
+}
+
 std::vector<TRS> samplePose(const Scene& scene, const AnimState& state) {
   std::vector<TRS> a = sampleAnimation(scene, state.anim, state.time);
   if (state.anim2 < 0) return a;

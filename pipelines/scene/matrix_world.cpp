@@ -5,7 +5,13 @@
 
 namespace mb {
 
-void prepareMatrixPose(const Scene& scene, MatrixPoseWork& work) { work.order = hierarchyOrder(scene); }
+void prepareMatrixPose(const Scene& scene, MatrixPoseWork& work) {
+  work.order = hierarchyOrder(scene);
+  work.animated = animatedNodes(scene);
+  std::vector<TRS> rest;
+  sampleAnimation(scene, -1, 0.0f, rest);
+  localMatrices(scene, rest, work.restLocal);
+}
 
 // flatten: GLM's operators inlined into the loop (the motor side gets the same, motor_rig.cpp).
 [[gnu::flatten]] void localMatrices(const Scene& scene, const std::vector<TRS>& pose,
@@ -16,6 +22,21 @@ void prepareMatrixPose(const Scene& scene, MatrixPoseWork& work) { work.order = 
     local[n] = node.hasMatrix ? node.matrix : trsMatrix(n < pose.size() ? pose[n] : node.local);
   }
 }
+
+namespace {
+
+// localMatrices for one unblended animation: rest matrices, the driven nodes converted.
+[[gnu::flatten]] void animatedLocalMatrices(const Scene& scene, const std::vector<TRS>& pose,
+                                            const MatrixPoseWork& work, int anim, std::vector<glm::mat4>& local) {
+  local = work.restLocal;
+  if (anim < 0 || size_t(anim) >= work.animated.size()) return;
+  for (int n : work.animated[size_t(anim)]) {
+    const Node& node = scene.nodes[size_t(n)];
+    local[size_t(n)] = node.hasMatrix ? node.matrix : trsMatrix(pose[size_t(n)]);
+  }
+}
+
+}  // namespace
 
 [[gnu::flatten]] void composeWorld(const HierarchyOrder& order, const std::vector<glm::mat4>& local,
                                    std::vector<glm::mat4>& world) {
@@ -37,7 +58,10 @@ void poseWorldMatrices(const Scene& scene, const AnimState& state, MatrixPoseWor
   } else {
     clock.lap(&UpdatePhases::samplingMs);
   }
-  localMatrices(scene, work.pose, work.local);
+  if (state.anim2 >= 0 || work.restLocal.size() != scene.nodes.size())
+    localMatrices(scene, work.pose, work.local);
+  else
+    animatedLocalMatrices(scene, work.pose, work, state.anim, work.local);
   clock.lap(&UpdatePhases::conversionMs);
   composeWorld(work.order, work.local, work.world);
   clock.lap(&UpdatePhases::hierarchyMs);

@@ -16,6 +16,8 @@ namespace mb {
 struct MatrixPoseWork {
   HierarchyOrder order;              // hierarchyOrder(scene), set by prepareMatrixPose
   std::vector<TRS> pose, second;     // sampled TRS (second: the animation blended in)
+  std::vector<glm::mat4> restLocal;  // per node: localMatrices of the rest pose
+  std::vector<std::vector<int>> animated;  // animatedNodes(scene)
   std::vector<glm::mat4> local;      // per node
   std::vector<glm::mat4> world;      // per node: the result
 };
@@ -31,7 +33,8 @@ void composeWorld(const HierarchyOrder& order, const std::vector<glm::mat4>& loc
                   std::vector<glm::mat4>& world);
 
 // work.world for `state`: sampleAnimation (and blendPoses when the state blends), then
-// localMatrices and composeWorld; the phases lap into `clock`.
+// localMatrices (unblended: the rest matrices, converting only the nodes the animation drives;
+// the same values) and composeWorld; the phases lap into `clock`.
 void poseWorldMatrices(const Scene& scene, const AnimState& state, MatrixPoseWork& work, PhaseClock& clock);
 
 }  // namespace mb

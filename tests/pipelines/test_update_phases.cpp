@@ -11,6 +11,7 @@
 #include "pipelines/motor/motor_camera.h"
 #include "pipelines/motor/motor_rig.h"
 #include "pipelines/pipeline.h"
+#include "pipelines/scene/camera_rule.h"
 #include "pipelines/scene/loader.h"
 
 using namespace mb;
@@ -127,5 +128,37 @@ TEST(UpdatePhases, ScalarProductIsTheShadersBitForBit) {
     const Motor a = random(), b = random();
     const Motor fast = motor::gpMotors(a, b), shader = mk().gp_mm(a, b);
     ASSERT_EQ(std::memcmp(&fast, &shader, sizeof(Motor)), 0) << "sample " << i;
+  }
+}
+
+// Posing one animation unblended converts only the nodes it drives (the rest from the
+// load-time conversion): the same worlds and fallback counts as converting every node.
+TEST(UpdatePhases, OnlyDrivenNodesConvertedGivesTheFullPose) {
+  PhaseClock off(nullptr);
+  for (const char* name : {"scaled_hierarchy", "skinned_tube", "teapot", "crowd"}) {
+    SCOPED_TRACE(name);
+    const Scene scene = load(name);
+    for (int anim = -1; anim < int(scene.animations.size()); ++anim) {
+      const AnimState state{anim, 0.7f};
+      MatrixPoseWork work;
+      prepareMatrixPose(scene, work);
+      matrix::Pose pose;
+      matrix::poseScene(scene, state, false, work, pose, off);
+      EXPECT_TRUE(sameBytes(pose.world, worldMatrices(scene, sampleAnimation(scene, anim, 0.7f))));
+      const motor::Rig rig = motor::buildRig(scene);
+      motor::PoseWork mwork;
+      motor::RigCounts fast, full;
+      motor::poseScene(scene, rig, state, false, mwork, &fast, off);
+      const auto world = motor::worldPose(scene, motor::localPose(rig, sampleAnimation(scene, anim, 0.7f), &full));
+      ASSERT_EQ(mwork.world.size(), world.size());
+      for (size_t n = 0; n < world.size(); ++n) {
+        EXPECT_TRUE(mwork.world[n].motor == world[n].motor) << n;
+        EXPECT_EQ(mwork.world[n].scale, world[n].scale) << n;
+      }
+      EXPECT_EQ(fast.nonUniformScaleNodes, full.nonUniformScaleNodes);
+      EXPECT_EQ(fast.nonUniformInnerNodes, full.nonUniformInnerNodes);
+      EXPECT_EQ(fast.negativeScaleNodes, full.negativeScaleNodes);
+      EXPECT_EQ(fast.shearMatrixNodes, full.shearMatrixNodes);
+    }
   }
 }
