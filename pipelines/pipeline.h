@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pipelines/result.h"
+#include "pipelines/update_phases.h"
 #include "pipelines/scene/animation.h"
 #include "pipelines/scene/camera_rule.h"
 #include "pipelines/scene/scene.h"
@@ -38,6 +39,8 @@ struct PipelineStats {
   int draws = 0;                      // draw calls of the last render()
   double conversionMs = 0;            // load-time conversion inside prepare()
   double updateMs = 0;                // last update() (hierarchy, animation, palette)
+  // The last update() phase by phase (update_phases.h); all 0 unless timeUpdatePhases(true).
+  UpdatePhases updatePhases;
   // Fallbacks taken (counted per node / vertex as named).
   int nonUniformScaleNodes = 0;       // handled by a per-leaf fallback
   int negativeScaleNodes = 0;
@@ -74,6 +77,10 @@ public:
   virtual Status prepare(const Scene& scene) = 0;
   // Poses the scene on the CPU for `state` (sampling, hierarchy, skin palette).
   virtual void update(const AnimState& state) = 0;
+  // on: every later update() also times its phases into PipelineStats::updatePhases (a clock
+  // read per phase, so the timing harness times whole updates with it off). Default: a
+  // pipeline without phases (the curved ones) ignores it.
+  virtual void timeUpdatePhases(bool on) { (void)on; }
   // Draws the posed scene into the bound framebuffer.
   virtual void render(const View& view) = 0;
   virtual PipelineStats stats() const = 0;

@@ -74,6 +74,18 @@ void printRow(const timing::ConfigTiming& c) {
               ratio(c.updateRatio).c_str());
   for (const auto& t : c.pipelines)
     if (!t.error.empty()) std::printf("    %s: %s\n", t.pipeline.c_str(), t.error.c_str());
+  // The update phase by phase, every pipeline (medians, us per call).
+  std::string phases;
+  for (const auto& t : c.pipelines) {
+    if (!t.error.empty()) continue;
+    char b[160];
+    std::snprintf(b, sizeof b, "%s%s %.2f/%.2f/%.2f/%.2f/%.2f", phases.empty() ? "" : "; ", t.pipeline.c_str(),
+                  1e3 * t.phases[0].median, 1e3 * t.phases[1].median, 1e3 * t.phases[2].median,
+                  1e3 * t.phases[3].median, 1e3 * t.phases[4].median);
+    phases += b;
+  }
+  if (!phases.empty())
+    std::printf("    update phases us (sampling/blending/conversion/hierarchy/palette): %s\n", phases.c_str());
   std::fflush(stdout);
 }
 
@@ -228,7 +240,9 @@ int runTime(const std::vector<std::string>& argv) {
   std::printf("\nmotor/matrix: median of the per-frame ratios (both pipelines render the same "
               "frame back to back); of medians: ratio of the two medians; CPU time: the paired "
               "ratio of process CPU time per frame (llvmpipe threads included); update ratio: "
-              "paired, per update call. < 1: motor faster.\n");
+              "paired, per update call; update phases: medians per call of a separate block of "
+              "updates timed with the phase clock on (pipelines/update_phases.h). < 1: motor "
+              "faster.\n");
 
   if (auto path = args.get("json")) {
     const nlohmann::json j = {
@@ -240,7 +254,8 @@ int runTime(const std::vector<std::string>& argv) {
           {"vertex_bound_size", {tiny.width, tiny.height}},
           {"method", "pipelines interleaved frame by frame in alternating order; frame = clear + "
                      "render + glFinish (steady_clock), fastest of best_of renders; also process "
-                     "CPU time; update = Pipeline::update per call"}}},
+                     "CPU time; update = Pipeline::update per call; update_phases_ms = a further "
+                     "block of update calls with the phase clock on, per call"}}},
         {"results", results},
         // Bezier patch scenes timed with --level: bytes uploaded per pipeline and level, instanced
         // (control points + one refinement pattern) vs the same surface pre-tessellated.

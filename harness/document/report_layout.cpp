@@ -454,6 +454,26 @@ void sceneSection(Document& d, const json& r, const json& s) {
              "conversion ms (median)", "fallbacks", "ops/vertex (counted, mean)", "frame ms median (min..max)",
              "CPU update ms", "error"},
             prow);
+  // The CPU update phase by phase (harness/timing: a block of updates with the phase clock on).
+  std::vector<std::vector<Cell>> urow;
+  for (const std::string& p : pipes) {
+    const json& t = at(s, {"timing", "pipelines"}).is_object() && s["timing"]["pipelines"].contains(p) ? s["timing"]["pipelines"][p] : json();
+    const json& ph = t.is_object() ? t.value("updatePhasesMedianMs", json()) : json();
+    if (!ph.is_object()) continue;
+    std::vector<Cell> row{{p}};
+    for (const char* k : {"sampling", "blending", "conversion", "hierarchy", "palette"})
+      row.push_back({ph.contains(k) && ph[k].is_number() ? fixed(json(1e3 * ph[k].get<double>()), 2) : "-"});
+    row.push_back({t.contains("updateMedianMs") && t["updateMedianMs"].is_number() ? fixed(json(1e3 * t["updateMedianMs"].get<double>()), 2) : "-"});
+    urow.push_back(row);
+  }
+  if (!urow.empty()) {
+    d.paragraph("CPU update by phase: microseconds per update call, medians over the timed frames, from a block "
+                "of updates timed with the pipelines' phase clock on (apart from the whole-update timing, whose "
+                "median is the last column; the phases include their clock reads).");
+    d.table({"pipeline", "sampling us", "blending us", "conversion us", "hierarchy us", "palette us",
+             "whole update us"},
+            urow);
+  }
   const json& timing = s.value("timing", json());
   if (timing.is_object()) {
     if (timing["error"].is_string()) d.paragraph("Frame timing: " + timing["error"].get<std::string>());

@@ -169,6 +169,15 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
         const double u = ms(t0, Clock::now()) / t.updateRepeats;
         updateMs = rep ? std::min(updateMs, u) : u;
       }
+      // The phases: one more block of R calls with the phase clock on, per call.
+      double phases[kUpdatePhaseCount] = {};
+      p.timeUpdatePhases(true);
+      for (int r = 0; r < t.updateRepeats; ++r) {
+        p.update(st);
+        const UpdatePhases ph = p.stats().updatePhases;
+        for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) phases[k2] += ph.*kUpdatePhases[k2].field;
+      }
+      p.timeUpdatePhases(false);
       double frameMs = 0, cpuMs = 0, gpuMs = 0;
       for (int rep = 0; rep < std::max(1, settings.bestOf); ++rep) {
         const auto r0 = Clock::now();
@@ -192,6 +201,7 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
         continue;
       }
       t.updateMs.push_back(updateMs);
+      for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) t.phaseMs[k2].push_back(phases[k2] / t.updateRepeats);
       t.frameMs.push_back(frameMs);
       t.cpuMs.push_back(cpuMs);
       if (query && i > 0) t.gpuMs.push_back(gpuMs);  // frame 0's queries dropped
@@ -205,6 +215,7 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
     PipelineTiming& t = out.pipelines[slots[k]];
     t.frame = spreadOf(t.frameMs), t.update = spreadOf(t.updateMs), t.gpu = spreadOf(t.gpuMs);
     t.cpu = spreadOf(t.cpuMs);
+    for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) t.phases[k2] = spreadOf(t.phaseMs[k2]);
     t.stats = live[k]->stats();
   }
   const PipelineTiming* matrix = nullptr;
@@ -232,6 +243,17 @@ nlohmann::json toJson(const Spread& s) {
           {"min", s.min}, {"max", s.max}, {"n", s.n}};
 }
 
+nlohmann::json updatePhasesJson(const PipelineTiming& t) {
+  nlohmann::json j = nlohmann::json::object();
+  double total = 0;
+  for (int k = 0; k < kUpdatePhaseCount; ++k) {
+    j[kUpdatePhases[k].key] = toJson(t.phases[k]);
+    total += t.phases[k].median;
+  }
+  j["sum_of_medians"] = total;
+  return j;
+}
+
 nlohmann::json toJson(const MachineInfo& m) {
   return {{"cpu_model", m.cpuModel}, {"cores", m.cores}, {"GL_RENDERER", m.glRenderer},
           {"GL_VERSION", m.glVersion}, {"gl_backend", m.glBackend},
@@ -247,6 +269,7 @@ nlohmann::json toJson(const ConfigTiming& c) {
       j["frame_cpu_ms"] = toJson(t.cpu);
       j["update_ms"] = toJson(t.update);
       j["update_calls_per_block"] = t.updateRepeats;
+      j["update_phases_ms"] = updatePhasesJson(t);
       j["frame_samples_ms"] = t.frameMs;
       j["frame_cpu_samples_ms"] = t.cpuMs;
       j["update_samples_ms"] = t.updateMs;

@@ -4,6 +4,9 @@
 //    on its own (R back-to-back calls, R chosen in the warm-up so that a block lasts at least
 //    kMinUpdateBlockMs: tiny scenes update in microseconds, below the clock's noise; the
 //    fastest of Settings::bestOf blocks), then
+//    one more block of R calls with the pipeline's phase clock on (Pipeline::timeUpdatePhases:
+//    sampling, blending, conversion, hierarchy, palette, pipelines/update_phases.h), per call,
+//    kept apart from the timed blocks so that their clock reads never weigh on the update time;
 //    clear + render + glFinish timed by the wall clock and, beside it, by the process's CPU
 //    time (llvmpipe's worker threads included: what the frame cost the machine, insensitive to
 //    other processes taking the cores meanwhile); each frame rendered Settings::bestOf times,
@@ -57,11 +60,26 @@ struct Settings {
 
 inline constexpr double kMinUpdateBlockMs = 0.25;
 
+// The update's phases (pipelines/update_phases.h) in the order they are reported.
+struct UpdatePhaseName {
+  const char* key;  // JSON key ("sampling", ...)
+  double UpdatePhases::*field;
+};
+inline constexpr UpdatePhaseName kUpdatePhases[] = {
+    {"sampling", &UpdatePhases::samplingMs},     {"blending", &UpdatePhases::blendingMs},
+    {"conversion", &UpdatePhases::conversionMs}, {"hierarchy", &UpdatePhases::hierarchyMs},
+    {"palette", &UpdatePhases::paletteMs}};
+inline constexpr int kUpdatePhaseCount = int(sizeof kUpdatePhases / sizeof kUpdatePhases[0]);
+
 struct PipelineTiming {
   std::string pipeline;
   // Per measured frame: wall clock, process CPU time, CPU update (per call), GPU timer query.
   std::vector<double> frameMs, cpuMs, updateMs, gpuMs;
   Spread frame, cpu, update, gpu;
+  // Per measured frame and phase (kUpdatePhases order): ms per update call, from the block
+  // timed with the phase clock on; their spreads.
+  std::vector<double> phaseMs[kUpdatePhaseCount];
+  Spread phases[kUpdatePhaseCount];
   int updateRepeats = 1;  // R: update calls per timed block
   PipelineStats stats;
   std::string error;  // non-empty: this pipeline could not run (no samples)
@@ -97,6 +115,8 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
 
 nlohmann::json toJson(const Spread& s);
 nlohmann::json toJson(const MachineInfo& m);
+// {phase: Spread (ms per update call)} in kUpdatePhases order, plus "sum_of_medians".
+nlohmann::json updatePhasesJson(const PipelineTiming& t);
 nlohmann::json toJson(const ConfigTiming& c);
 
 }  // namespace mb::timing

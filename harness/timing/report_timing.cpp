@@ -27,6 +27,9 @@ json configJson(const timing::ConfigTiming& c, const std::vector<std::string>& p
                                     {"madMs", t.frame.mad}, {"minMs", t.frame.min}, {"maxMs", t.frame.max},
                                     {"frames", t.frame.n}, {"cpuMedianMs", t.cpu.median},
                                     {"updateMedianMs", t.update.median}};
+    json phases = json::object();  // the update's phases, median ms per call
+    for (int k = 0; k < timing::kUpdatePhaseCount; ++k) phases[timing::kUpdatePhases[k].key] = t.phases[k].median;
+    out["pipelines"][t.pipeline]["updatePhasesMedianMs"] = phases;
   }
   auto num = [](double r) { return r > 0 ? json(r) : json(); };
   out["ratio_motor_matrix"] = num(c.frameRatio);

@@ -22,10 +22,16 @@ namespace {
 
 class MatrixPoser final : public Poser {
 public:
-  Status prepare(const Scene&) override { return {}; }
-  Pose pose(const Scene& scene, const AnimState& state, PipelineStats&) override {
-    return poseScene(scene, state);
+  Status prepare(const Scene& scene) override {
+    prepareMatrixPose(scene, work_);
+    return {};
   }
+  void pose(const Scene& scene, const AnimState& state, Pose& out, PipelineStats&, PhaseClock& clock) override {
+    poseScene(scene, state, work_, out, clock);
+  }
+
+private:
+  MatrixPoseWork work_;
 };
 
 // A palette as the shader's row_major mat4x3 array reads it: per joint its three rows.
@@ -42,6 +48,7 @@ public:
   std::string name() const override { return name_; }
   Status prepare(const Scene& scene) override;
   void update(const AnimState& state) override;
+  void timeUpdatePhases(bool on) override { timePhases_ = on; }
   void render(const View& view) override;
   PipelineStats stats() const override { return stats_; }
 
@@ -61,6 +68,7 @@ private:
   gl::PaletteBuffers palettes_;  // one per pose_.palettes entry
   std::vector<gl::DrawItem> draws_;
   Pose pose_;
+  bool timePhases_ = false;
   PipelineStats stats_;
 };
 
@@ -111,7 +119,8 @@ Status AffinePipeline::prepare(const Scene& scene) {
 void AffinePipeline::update(const AnimState& state) {
   if (!scene_) return;
   auto t0 = gl::Clock::now();
-  pose_ = poser_->pose(*scene_, state, stats_);
+  PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
+  poser_->pose(*scene_, state, pose_, stats_, clock);
   stats_.updateMs = gl::msSince(t0);
 }
 

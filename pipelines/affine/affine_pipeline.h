@@ -23,8 +23,10 @@ public:
   virtual ~Poser() = default;
   // Load-time conversion (timed as part of PipelineStats::conversionMs).
   virtual Status prepare(const Scene& scene) = 0;
-  // The pose for `state` (timed as PipelineStats::updateMs); may set the fallback counters.
-  virtual Pose pose(const Scene& scene, const AnimState& state, PipelineStats& stats) = 0;
+  // The pose for `state` into `out` (its storage reused; timed as PipelineStats::updateMs),
+  // the phases lapped into `clock`; may set the fallback counters.
+  virtual void pose(const Scene& scene, const AnimState& state, Pose& out, PipelineStats& stats,
+                    PhaseClock& clock) = 0;
 };
 
 // The GLM poser (affine::poseScene).

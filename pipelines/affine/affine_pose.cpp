@@ -1,6 +1,5 @@
 #include "pipelines/affine/affine_pose.h"
 
-#include "pipelines/scene/camera_rule.h"
 
 namespace mb::affine {
 
@@ -9,25 +8,46 @@ glm::mat3 normalMatrix(const glm::mat4x3& m) { return glm::transpose(glm::invers
 float mirror(const glm::mat4x3& m) { return glm::determinant(glm::mat3(m)) < 0.0f ? -1.0f : 1.0f; }
 
 Pose poseScene(const Scene& scene, const AnimState& state) {
-  const std::vector<glm::mat4> world = worldMatrices(scene, samplePose(scene, state));
+  MatrixPoseWork work;
+  prepareMatrixPose(scene, work);
   Pose pose;
-  pose.world.assign(world.begin(), world.end());
+  PhaseClock off(nullptr);
+  poseScene(scene, state, work, pose, off);
+  return pose;
+}
+
+namespace {
+
+// flatten: GLM's products inlined into the loop, as on the other pipelines.
+[[gnu::flatten]] void skinPalettes(const Scene& scene, const std::vector<glm::mat4>& world,
+                                   std::vector<Palette>& palettes) {
+  size_t count = 0;
   for (size_t n = 0; n < scene.nodes.size(); ++n) {
     const Node& node = scene.nodes[n];
     if (node.mesh < 0 || node.skin < 0 || size_t(node.skin) >= scene.skins.size()) continue;
     const Skin& skin = scene.skins[size_t(node.skin)];
-    Palette palette;
+    if (palettes.size() <= count) palettes.emplace_back();
+    Palette& palette = palettes[count++];
     palette.node = int(n);
-    palette.joints.reserve(skin.joints.size());
+    palette.joints.resize(skin.joints.size());
     for (size_t j = 0; j < skin.joints.size(); ++j) {
       const int jn = skin.joints[j];
       const glm::mat4 joint = jn >= 0 && size_t(jn) < world.size() ? world[size_t(jn)] : glm::mat4(1.0f);
       const glm::mat4 bind = j < skin.inverseBind.size() ? skin.inverseBind[j] : glm::mat4(1.0f);
-      palette.joints.emplace_back(joint * bind);
+      palette.joints[j] = glm::mat4x3(joint * bind);
     }
-    pose.palettes.push_back(std::move(palette));
   }
-  return pose;
+  palettes.resize(count);
+}
+
+}  // namespace
+
+void poseScene(const Scene& scene, const AnimState& state, MatrixPoseWork& work, Pose& pose, PhaseClock& clock) {
+  poseWorldMatrices(scene, state, work, clock);
+  pose.world.assign(work.world.begin(), work.world.end());
+  clock.lap(&UpdatePhases::conversionMs);
+  skinPalettes(scene, work.world, pose.palettes);
+  clock.lap(&UpdatePhases::paletteMs);
 }
 
 }  // namespace mb::affine

@@ -7,7 +7,9 @@
 #include <glm/glm.hpp>
 
 #include "pipelines/scene/animation.h"
+#include "pipelines/scene/matrix_world.h"
 #include "pipelines/scene/scene.h"
+#include "pipelines/update_phases.h"
 
 namespace mb::affine {
 
@@ -23,6 +25,9 @@ struct Pose {
 
 // GLM: samplePose (shared sampling and blending), world matrices, palettes.
 Pose poseScene(const Scene& scene, const AnimState& state);
+// The same, per frame: into `pose` (storage reused), with `work` from prepareMatrixPose; the
+// mat4 -> mat4x3 copy of the world matrices laps as conversion.
+void poseScene(const Scene& scene, const AnimState& state, MatrixPoseWork& work, Pose& pose, PhaseClock& clock);
 
 // The normal matrix of an affine transform's linear part: transpose(inverse(m)).
 glm::mat3 normalMatrix(const glm::mat4x3& m);

@@ -17,6 +17,27 @@ glm::mat4x3 toMatrix(const mb::Motor& m, const glm::vec3& scale) {
 
 namespace {
 
+// World and joint motors -> mat4x3 (storage of `out` reused). flatten: motorToMatrix's sandwich
+// products inlined.
+[[gnu::flatten]] void toMatrices(const motor::PoseWork& work, affine::Pose& out) {
+  out.world.resize(work.world.size());
+  for (size_t n = 0; n < work.world.size(); ++n)
+    out.world[n] = toMatrix(work.world[n].motor, work.world[n].scale * work.world[n].residual);
+  out.palettes.resize(work.palettes.size());
+  for (size_t i = 0; i < work.palettes.size(); ++i) {
+    const motor::JointPalette& p = work.palettes[i];
+    affine::Palette& palette = out.palettes[i];
+    palette.node = p.node;
+    palette.joints.resize(p.motors.size() / 8);
+    const glm::vec3 scale(p.scale);
+    for (size_t j = 0; j < palette.joints.size(); ++j) {
+      const float* f = &p.motors[8 * j];
+      const mb::Motor m(companion::Vec4(f[0], f[1], f[2], f[3]), companion::Vec4(f[4], f[5], f[6], f[7]));
+      palette.joints[j] = toMatrix(m, scale);
+    }
+  }
+}
+
 // The motor pipeline's CPU work, then one conversion per node and per joint.
 class MotorPoser final : public affine::Poser {
 public:
@@ -25,34 +46,20 @@ public:
     return {};
   }
 
-  affine::Pose pose(const Scene& scene, const AnimState& state, PipelineStats& stats) override {
+  void pose(const Scene& scene, const AnimState& state, affine::Pose& out, PipelineStats& stats,
+            PhaseClock& clock) override {
     motor::RigCounts counts = rig_.bindCounts;
-    const std::vector<motor::ScaledMotor> world =
-        motor::worldPose(scene, motor::localForState(scene, rig_, state, &counts));
-    const std::vector<motor::JointPalette> palettes = motor::jointPalettes(scene, rig_, world);
+    motor::poseScene(scene, rig_, state, false, work_, &counts, clock);
     stats.nonUniformScaleNodes = counts.nonUniformScaleNodes;
     stats.negativeScaleNodes = counts.negativeScaleNodes;
     stats.shearMatrixNodes = counts.shearMatrixNodes;
-    affine::Pose pose;
-    pose.world.reserve(world.size());
-    for (const motor::ScaledMotor& w : world) pose.world.push_back(toMatrix(w.motor, w.scale * w.residual));
-    for (const motor::JointPalette& p : palettes) {
-      affine::Palette out;
-      out.node = p.node;
-      const glm::vec3 scale(p.scale);
-      for (size_t j = 0; j + 8 <= p.motors.size(); j += 8) {
-        const float* f = &p.motors[j];
-        const mb::Motor m(companion::Vec4(f[0], f[1], f[2], f[3]),
-                             companion::Vec4(f[4], f[5], f[6], f[7]));
-        out.joints.push_back(toMatrix(m, scale));
-      }
-      pose.palettes.push_back(std::move(out));
-    }
-    return pose;
+    toMatrices(work_, out);
+    clock.lap(&UpdatePhases::conversionMs);
   }
 
 private:
   motor::Rig rig_;
+  motor::PoseWork work_;
 };
 
 }  // namespace

@@ -35,6 +35,7 @@ public:
   }
   Status prepare(const Scene& scene) override;
   void update(const AnimState& state) override;
+  void timeUpdatePhases(bool on) override { timePhases_ = on; }
   void render(const View& view) override;
   PipelineStats stats() const override { return stats_; }
 
@@ -51,7 +52,9 @@ private:
   gl::SceneGeometry geometry_;
   gl::PaletteBuffers palettes_;  // one per pose_.palettes entry (same order every update)
   std::vector<gl::DrawItem> draws_;
+  MatrixPoseWork work_;  // per-frame buffers and the hierarchy order
   matrix::Pose pose_;
+  bool timePhases_ = false;
   PipelineStats stats_;
 };
 
@@ -94,6 +97,7 @@ Status MatrixPipeline::prepare(const Scene& scene) {
       stats_);
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
+  prepareMatrixPose(scene, work_);
   update(AnimState{});
   GLenum err = glGetError();
   if (err != GL_NO_ERROR) return Status::fail(scene.source + ": matrix prepare: " + gl::errorName(err));
@@ -103,7 +107,8 @@ Status MatrixPipeline::prepare(const Scene& scene) {
 void MatrixPipeline::update(const AnimState& state) {
   if (!scene_) return;
   auto t0 = gl::Clock::now();
-  pose_ = matrix::poseScene(*scene_, state, worldPalette_);
+  PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
+  matrix::poseScene(*scene_, state, worldPalette_, work_, pose_, clock);
   stats_.updateMs = gl::msSince(t0);
 }
 

@@ -1,8 +1,35 @@
 #include "pipelines/matrix/matrix_pose.h"
 
-#include "pipelines/scene/camera_rule.h"
-
 namespace mb::matrix {
+namespace {
+
+// The palettes of every skinned mesh node into `palettes` (storage reused). flatten: GLM's
+// inverse and products inlined into the loop (the motor palette gets the same).
+[[gnu::flatten]] void skinPalettes(const Scene& scene, const std::vector<glm::mat4>& world, bool worldPalette,
+                                   std::vector<SkinPalette>& palettes) {
+  size_t count = 0;
+  for (size_t n = 0; n < scene.nodes.size(); ++n) {
+    const Node& node = scene.nodes[n];
+    if (node.mesh < 0 || node.skin < 0 || size_t(node.skin) >= scene.skins.size()) continue;
+    const Skin& skin = scene.skins[size_t(node.skin)];
+    if (palettes.size() <= count) palettes.emplace_back();
+    SkinPalette& palette = palettes[count++];
+    palette.node = int(n);
+    palette.matrices.resize(2 * skin.joints.size());
+    const glm::mat4 toMesh = worldPalette ? glm::mat4(1.0f) : glm::inverse(world[n]);
+    for (size_t j = 0; j < skin.joints.size(); ++j) {
+      int jn = skin.joints[j];
+      glm::mat4 joint = jn >= 0 && size_t(jn) < world.size() ? world[size_t(jn)] : glm::mat4(1.0f);
+      glm::mat4 bind = j < skin.inverseBind.size() ? skin.inverseBind[j] : glm::mat4(1.0f);
+      glm::mat4 m = toMesh * joint * bind;
+      palette.matrices[2 * j] = m;
+      palette.matrices[2 * j + 1] = glm::transpose(glm::inverse(m));
+    }
+  }
+  palettes.resize(count);
+}
+
+}  // namespace
 
 glm::mat4 normalMatrix(const glm::mat4& m) {
   glm::mat4 n = glm::transpose(glm::inverse(m));
@@ -11,27 +38,20 @@ glm::mat4 normalMatrix(const glm::mat4& m) {
 }
 
 Pose poseScene(const Scene& scene, const AnimState& state, bool worldPalette) {
+  MatrixPoseWork work;
+  prepareMatrixPose(scene, work);
   Pose pose;
-  pose.world = worldMatrices(scene, samplePose(scene, state));
-  for (size_t n = 0; n < scene.nodes.size(); ++n) {
-    const Node& node = scene.nodes[n];
-    if (node.mesh < 0 || node.skin < 0 || size_t(node.skin) >= scene.skins.size()) continue;
-    const Skin& skin = scene.skins[size_t(node.skin)];
-    SkinPalette palette;
-    palette.node = int(n);
-    const glm::mat4 toMesh = worldPalette ? glm::mat4(1.0f) : glm::inverse(pose.world[n]);
-    for (size_t j = 0; j < skin.joints.size(); ++j) {
-      int jn = skin.joints[j];
-      glm::mat4 joint = jn >= 0 && size_t(jn) < pose.world.size() ? pose.world[size_t(jn)]
-                                                                  : glm::mat4(1.0f);
-      glm::mat4 bind = j < skin.inverseBind.size() ? skin.inverseBind[j] : glm::mat4(1.0f);
-      glm::mat4 m = toMesh * joint * bind;
-      palette.matrices.push_back(m);
-      palette.matrices.push_back(glm::transpose(glm::inverse(m)));
-    }
-    pose.palettes.push_back(std::move(palette));
-  }
+  PhaseClock off(nullptr);
+  poseScene(scene, state, worldPalette, work, pose, off);
   return pose;
+}
+
+void poseScene(const Scene& scene, const AnimState& state, bool worldPalette, MatrixPoseWork& work,
+               Pose& pose, PhaseClock& clock) {
+  poseWorldMatrices(scene, state, work, clock);
+  pose.world.swap(work.world);  // the pipeline keeps the result, work keeps last frame's storage
+  skinPalettes(scene, pose.world, worldPalette, pose.palettes);
+  clock.lap(&UpdatePhases::paletteMs);
 }
 
 }  // namespace mb::matrix

@@ -6,7 +6,9 @@
 #include <glm/glm.hpp>
 
 #include "pipelines/scene/animation.h"
+#include "pipelines/scene/matrix_world.h"
 #include "pipelines/scene/scene.h"
+#include "pipelines/update_phases.h"
 
 namespace mb::matrix {
 
@@ -27,6 +29,11 @@ struct Pose {
 // matrices, then a palette for every node that has both a mesh and a skin; `worldPalette`:
 // the palette without inverse(mesh node world) (SkinSpace::WorldPalette).
 Pose poseScene(const Scene& scene, const AnimState& state, bool worldPalette = false);
+
+// The same, per frame: into `pose` (its storage reused), with `work` from prepareMatrixPose,
+// the phases lapped into `clock`.
+void poseScene(const Scene& scene, const AnimState& state, bool worldPalette, MatrixPoseWork& work,
+               Pose& pose, PhaseClock& clock);
 
 // transpose(inverse(m)) with the [3][3] entry set to sign(det(upper 3x3 of m)): matrix.vs
 // transforms directions with w = 0 and reads the handedness flip from that free entry.

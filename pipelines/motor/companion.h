@@ -29,6 +29,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "pipelines/motor/motor_kernels.h"
 #include "shaders/shim/pga.h"
 
 namespace mb::companion {
@@ -45,7 +46,7 @@ inline constexpr float kMinTangentScalar = 1.0f / 32767.0f;
 
 inline Vec3 toVec3(const glm::vec3& v) { return Vec3(v.x, v.y, v.z); }
 inline glm::vec3 toGlm(const Vec3& v) { return glm::vec3(v.x, v.y, v.z); }
-inline Motor identityMotor() { return Motor(Vec4(1.0f, 0.0f, 0.0f, 0.0f), Vec4(0.0f)); }
+using mb::identityMotor;  // motor_kernels.h (the same glsl::mat2x4 type)
 
 // ---- glTF TRS -------------------------------------------------------------------------------
 

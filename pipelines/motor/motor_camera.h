@@ -10,7 +10,7 @@ struct CameraMotor {
   // World -> view space of project(): camera looking down +z with x mirrored, i.e. GL's view
   // space (looking down -z) turned half a turn about y. With it, project() equals
   // glm::perspective(yfov, aspect, znear, zfar) * viewMatrix, GL depth range -1..1 included.
-  Motor worldToView{1.0f};
+  Motor worldToView = identityMotor();
   float znear = 0.05f, zfar = 100.0f, yfov = 0.8f, aspect = 1.0f;
 };
 

@@ -21,4 +21,8 @@ using Motor = MK::motor;  // [[s, e23, e31, e12], [e01, e02, e03, e0123]]
 // The shared float instance (its members are non-const, as GLSL functions are).
 inline MK& mk() { return motorKernels<float>; }
 
+// The identity motor [1, 0, 0, 0, 0, 0, 0, 0]. Not Motor(1.0f): GLSL's mat2x4(1.0) puts 1 on the
+// diagonal, which for a motor also sets e02 (a translation along y).
+inline Motor identityMotor() { return Motor(MK::vec4(1.0f, 0.0f, 0.0f, 0.0f), MK::vec4(0.0f)); }
+
 }  // namespace mb

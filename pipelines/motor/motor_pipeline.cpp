@@ -55,6 +55,7 @@ public:
   }
   Status prepare(const Scene& scene) override;
   void update(const AnimState& state) override;
+  void timeUpdatePhases(bool on) override { timePhases_ = on; }
   void render(const View& view) override;
   PipelineStats stats() const override { return stats_; }
 
@@ -70,11 +71,11 @@ private:
   gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
   gl::SceneGeometry geometry_;
-  gl::PaletteBuffers paletteBuffers_;             // one per palettes_ entry
+  gl::PaletteBuffers paletteBuffers_;             // one per pose_.palettes entry
   std::vector<gl::DrawItem> draws_;
   motor::Rig rig_;
-  std::vector<motor::ScaledMotor> world_;         // per node, last update()
-  std::vector<motor::JointPalette> palettes_;
+  motor::PoseWork pose_;  // per-frame buffers; world and palettes of the last update()
+  bool timePhases_ = false;
   PipelineStats stats_;
 };
 
@@ -140,8 +141,8 @@ void MotorPipeline::update(const AnimState& state) {
   if (!scene_) return;
   auto t0 = gl::Clock::now();
   motor::RigCounts counts = rig_.bindCounts;
-  world_ = motor::worldPose(*scene_, motor::localForState(*scene_, rig_, state, &counts));
-  palettes_ = motor::jointPalettes(*scene_, rig_, world_, referenceSkin_);
+  PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
+  motor::poseScene(*scene_, rig_, state, referenceSkin_, pose_, &counts, clock);
   stats_.updateMs = gl::msSince(t0);
   stats_.nonUniformScaleNodes = counts.nonUniformScaleNodes;
   stats_.negativeScaleNodes = counts.negativeScaleNodes;
@@ -151,10 +152,10 @@ void MotorPipeline::update(const AnimState& state) {
 void MotorPipeline::uploadPalettes() {
   stats_.skinBytesPerFrame = 0;
   uint64_t joints = 0;
-  for (size_t i = 0; i < palettes_.size(); ++i) {
-    const std::vector<float>& m = palettes_[i].motors;
+  for (size_t i = 0; i < pose_.palettes.size(); ++i) {
+    const std::vector<float>& m = pose_.palettes[i].motors;
     paletteBuffers_.upload(i, m.data(), m.size() * sizeof(float), stats_.skinBytesPerFrame);
-    joints += scene_->skins[size_t(palettes_[i].skin)].joints.size();
+    joints += scene_->skins[size_t(pose_.palettes[i].skin)].joints.size();
   }
   stats_.floatsPerJoint = gl::floatsPer(stats_.skinBytesPerFrame, joints);
 }
@@ -195,9 +196,9 @@ void MotorPipeline::render(const View& view) {
     // A mesh shared by a skinned and an unskinned node is drawn rigidly on the latter.
     const motor::JointPalette* palette = nullptr;
     GLuint paletteBuffer = 0;
-    for (size_t i = 0; !patch && g.skinned && i < palettes_.size(); ++i)
-      if (palettes_[i].node == d.node) palette = &palettes_[i], paletteBuffer = paletteBuffers_[i];
-    const motor::ScaledMotor& world = world_[size_t(d.node)];
+    for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
+      if (pose_.palettes[i].node == d.node) palette = &pose_.palettes[i], paletteBuffer = paletteBuffers_[i];
+    const motor::ScaledMotor& world = pose_.world[size_t(d.node)];
     const DrawScale scale = palette ? drawScale(palette->scale, glm::vec3(1.0f))
                                     : drawScale(world.scale, world.residual);
     const gl::Program& program = patch ? useProgram(-1, scale.fallback ? 1 : 0)

@@ -7,12 +7,33 @@
 namespace mb::motor {
 namespace {
 
-void count(const ConversionFlags& f, RigCounts* c) {
+void count(const ConversionFlags& f, RigCounts* c, int sign = 1) {
   if (!c) return;
-  c->nonUniformScaleNodes += f.nonUniform;
-  c->nonUniformInnerNodes += f.nonUniformInner;
-  c->negativeScaleNodes += f.negative;
-  c->shearMatrixNodes += f.shear;
+  c->nonUniformScaleNodes += sign * f.nonUniform;
+  c->nonUniformInnerNodes += sign * f.nonUniformInner;
+  c->negativeScaleNodes += sign * f.negative;
+  c->shearMatrixNodes += sign * f.shear;
+}
+
+// localPose for one unblended animation: the rest motors, the driven nodes converted.
+void animatedLocalPose(const Rig& rig, const std::vector<TRS>& pose, int anim, std::vector<ScaledMotor>& local,
+                       RigCounts* counts) {
+  local = rig.rest;
+  if (counts) {
+    counts->nonUniformScaleNodes += rig.restCounts.nonUniformScaleNodes;
+    counts->nonUniformInnerNodes += rig.restCounts.nonUniformInnerNodes;
+    counts->negativeScaleNodes += rig.restCounts.negativeScaleNodes;
+    counts->shearMatrixNodes += rig.restCounts.shearMatrixNodes;
+  }
+  if (anim < 0 || size_t(anim) >= rig.animated.size()) return;
+  for (int i : rig.animated[size_t(anim)]) {
+    const size_t n = size_t(i);
+    if (rig.matrixNode[n] || n >= pose.size()) continue;
+    ConversionFlags f = rig.restFlags[n];
+    local[n] = fromTRS(pose[n], rig.leaf[n], &f);
+    count(rig.restFlags[n], counts, -1);
+    count(f, counts);
+  }
 }
 
 bool nodeIndexOk(const Scene& scene, int n) { return n >= 0 && size_t(n) < scene.nodes.size(); }
@@ -53,25 +74,40 @@ Rig buildRig(const Scene& scene) {
     }
     rig.inverseBind.push_back(std::move(binds));
   }
+  rig.order = hierarchyOrder(scene);
+  rig.animated = animatedNodes(scene);
+  for (const ConversionFlags& f : rig.restFlags) count(f, &rig.restCounts);
   return rig;
 }
 
 std::vector<ScaledMotor> localPose(const Rig& rig, const std::vector<TRS>& pose,
                                    RigCounts* counts) {
-  std::vector<ScaledMotor> local(rig.rest);
+  std::vector<ScaledMotor> local;
+  localPose(rig, pose, local, counts);
+  return local;
+}
+
+void localPose(const Rig& rig, const std::vector<TRS>& pose, std::vector<ScaledMotor>& local,
+               RigCounts* counts) {
+  local.resize(rig.rest.size());
   for (size_t n = 0; n < local.size(); ++n) {
     ConversionFlags f = rig.restFlags[n];
-    if (!rig.matrixNode[n] && n < pose.size()) local[n] = fromTRS(pose[n], rig.leaf[n], &f);
+    local[n] = !rig.matrixNode[n] && n < pose.size() ? fromTRS(pose[n], rig.leaf[n], &f) : rig.rest[n];
     count(f, counts);
   }
-  return local;
 }
 
 std::vector<ScaledMotor> blendLocal(const std::vector<ScaledMotor>& a,
                                     const std::vector<ScaledMotor>& b, float w) {
-  std::vector<ScaledMotor> out(a);
-  for (size_t n = 0; n < out.size() && n < b.size(); ++n) out[n] = blend(a[n], b[n], w);
+  std::vector<ScaledMotor> out;
+  blendLocal(a, b, w, out);
   return out;
+}
+
+void blendLocal(const std::vector<ScaledMotor>& a, const std::vector<ScaledMotor>& b, float w,
+                std::vector<ScaledMotor>& out) {
+  if (&out != &a) out = a;
+  for (size_t n = 0; n < out.size() && n < b.size(); ++n) out[n] = blend(out[n], b[n], w);
 }
 
 std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const AnimState& state,
@@ -83,41 +119,48 @@ std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const
 }
 
 std::vector<ScaledMotor> worldPose(const Scene& scene, const std::vector<ScaledMotor>& local) {
-  const size_t count_ = scene.nodes.size();
-  std::vector<ScaledMotor> world(count_);
-  std::vector<char> state(count_, 0);  // 0 todo, 1 on the current chain (cycle guard), 2 done
-  for (size_t start = 0; start < count_; ++start) {
-    // Walk up to the first finished ancestor, then compose the chain top-down.
-    std::vector<size_t> chain;
-    for (size_t n = start; state[n] == 0;) {
-      state[n] = 1;
-      chain.push_back(n);
-      const int parent = scene.nodes[n].parent;
-      if (!nodeIndexOk(scene, parent)) break;
-      n = size_t(parent);
-    }
-    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
-      const int parent = scene.nodes[*it].parent;
-      const bool hasParent = nodeIndexOk(scene, parent) && state[size_t(parent)] == 2;
-      world[*it] = hasParent ? compose(world[size_t(parent)], local[*it]) : local[*it];
-      state[*it] = 2;
-    }
-  }
+  std::vector<ScaledMotor> world;
+  worldPose(hierarchyOrder(scene), local, world);
   return world;
+}
+
+// flatten: compose's geometric product inlined into the loop (the GLM side gets the same,
+// pipelines/scene/matrix_world.cpp).
+[[gnu::flatten]] void worldPose(const HierarchyOrder& order, const std::vector<ScaledMotor>& local,
+                                std::vector<ScaledMotor>& world) {
+  world.resize(local.size());
+  for (size_t i = 0; i < order.nodes.size(); ++i) {
+    const size_t n = size_t(order.nodes[i]);
+    const int parent = order.parents[i];
+    if (parent >= 0)
+      composeInto(world[size_t(parent)], local[n], world[n]);
+    else
+      world[n] = local[n];
+  }
 }
 
 std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
                                         const std::vector<ScaledMotor>& world,
                                         bool relativeToNode) {
   std::vector<JointPalette> out;
+  jointPalettes(scene, rig, world, relativeToNode, out);
+  return out;
+}
+
+[[gnu::flatten]] void jointPalettes(const Scene& scene, const Rig& rig, const std::vector<ScaledMotor>& world,
+                                    bool relativeToNode, std::vector<JointPalette>& palettes) {
+  size_t count = 0;
   for (size_t n = 0; n < scene.nodes.size(); ++n) {
     const Node& node = scene.nodes[n];
     if (node.mesh < 0 || node.skin < 0 || size_t(node.skin) >= scene.skins.size()) continue;
     const Skin& skin = scene.skins[size_t(node.skin)];
-    JointPalette p;
+    if (palettes.size() <= count) palettes.emplace_back();
+    JointPalette& p = palettes[count++];
     p.node = int(n);
     p.skin = node.skin;
-    p.motors.reserve(skin.joints.size() * 8);
+    p.scale = 1.0f;
+    p.uniform = true;
+    p.motors.resize(skin.joints.size() * 8);
     const Motor toNode = relativeToNode ? mk().reverse_m(world[n].motor) : Motor();
     for (size_t j = 0; j < skin.joints.size(); ++j) {
       const int jn = skin.joints[j];
@@ -126,12 +169,35 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
       if (relativeToNode) m.motor = mk().gp_mm(toNode, m.motor);
       if (j == 0) p.scale = m.scale;
       else if (std::fabs(m.scale - p.scale) > 1e-4f * std::fabs(p.scale)) p.uniform = false;
+      float* out = &p.motors[8 * j];
       for (int c = 0; c < 2; ++c)
-        for (int r = 0; r < 4; ++r) p.motors.push_back(m.motor[c][r]);
+        for (int r = 0; r < 4; ++r) out[4 * c + r] = m.motor[c][r];
     }
-    out.push_back(std::move(p));
   }
-  return out;
+  palettes.resize(count);
+}
+
+void poseScene(const Scene& scene, const Rig& rig, const AnimState& state, bool relativeToNode,
+               PoseWork& work, RigCounts* counts, PhaseClock& clock) {
+  sampleAnimation(scene, state.anim, state.time, work.pose);
+  clock.lap(&UpdatePhases::samplingMs);
+  if (state.anim2 >= 0)
+    localPose(rig, work.pose, work.local, counts);
+  else
+    animatedLocalPose(rig, work.pose, state.anim, work.local, counts);
+  clock.lap(&UpdatePhases::conversionMs);
+  if (state.anim2 >= 0) {
+    sampleAnimation(scene, state.anim2, state.time2, work.second);
+    clock.lap(&UpdatePhases::samplingMs);
+    localPose(rig, work.second, work.localSecond);
+    clock.lap(&UpdatePhases::conversionMs);
+    blendLocal(work.local, work.localSecond, state.blend, work.local);
+    clock.lap(&UpdatePhases::blendingMs);
+  }
+  worldPose(rig.order, work.local, work.world);
+  clock.lap(&UpdatePhases::hierarchyMs);
+  jointPalettes(scene, rig, work.world, relativeToNode, work.palettes);
+  clock.lap(&UpdatePhases::paletteMs);
 }
 
 }  // namespace mb::motor

@@ -8,7 +8,9 @@
 
 #include "pipelines/motor/scaled_motor.h"
 #include "pipelines/scene/animation.h"
+#include "pipelines/scene/hierarchy.h"
 #include "pipelines/scene/scene.h"
+#include "pipelines/update_phases.h"
 
 namespace mb::motor {
 
@@ -28,6 +30,9 @@ struct Rig {
   std::vector<ConversionFlags> restFlags;  // what converting each rest transform took
   std::vector<std::vector<ScaledMotor>> inverseBind;  // [skin][joint]
   RigCounts bindCounts;             // fallbacks taken by the inverse binds
+  HierarchyOrder order;             // hierarchyOrder(scene): the per-frame composition order
+  std::vector<std::vector<int>> animated;  // animatedNodes(scene)
+  RigCounts restCounts;             // the fallbacks of every rest transform together
 };
 
 // Converts every node transform and every inverse-bind matrix. Pure CPU.
@@ -37,11 +42,17 @@ Rig buildRig(const Scene& scene);
 // keep their load-time conversion. `counts` (optional) receives the fallbacks of every node.
 std::vector<ScaledMotor> localPose(const Rig& rig, const std::vector<TRS>& pose,
                                    RigCounts* counts = nullptr);
+// The same into `local` (resized; storage reused). Counts are added to `counts`.
+void localPose(const Rig& rig, const std::vector<TRS>& pose, std::vector<ScaledMotor>& local,
+               RigCounts* counts = nullptr);
 
 // Animation blending by blending motors: per node shortest-arc blend + normalize_m, scales
 // lerped (scaled_motor.h blend). w = weight of b.
 std::vector<ScaledMotor> blendLocal(const std::vector<ScaledMotor>& a,
                                     const std::vector<ScaledMotor>& b, float w);
+// The same into `out` (which may be `a`).
+void blendLocal(const std::vector<ScaledMotor>& a, const std::vector<ScaledMotor>& b, float w,
+                std::vector<ScaledMotor>& out);
 
 // The local transforms for `state`: sampleAnimation of anim (and anim2, blended by motors).
 // `counts` receives the node fallbacks of the first animation's pose.
@@ -51,6 +62,9 @@ std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const
 // World transform of every node: parent world composed with local (compose()). Nodes not
 // reachable from a root get the chain up to their topmost ancestor.
 std::vector<ScaledMotor> worldPose(const Scene& scene, const std::vector<ScaledMotor>& local);
+// The same in a precomputed `order` (Rig::order), into `world` (storage reused).
+void worldPose(const HierarchyOrder& order, const std::vector<ScaledMotor>& local,
+               std::vector<ScaledMotor>& world);
 
 // A skin's joint palette for one skinned mesh node.
 struct JointPalette {
@@ -68,5 +82,23 @@ struct JointPalette {
 std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
                                         const std::vector<ScaledMotor>& world,
                                         bool relativeToNode = false);
+// The same into `palettes` (storage reused).
+void jointPalettes(const Scene& scene, const Rig& rig, const std::vector<ScaledMotor>& world,
+                   bool relativeToNode, std::vector<JointPalette>& palettes);
+
+// What one motor pipeline keeps between updates.
+struct PoseWork {
+  std::vector<TRS> pose, second;                // sampled TRS (second: the animation blended in)
+  std::vector<ScaledMotor> local, localSecond;  // converted (local: blended in place)
+  std::vector<ScaledMotor> world;               // per node: the result
+  std::vector<JointPalette> palettes;           // the result: jointPalettes
+};
+
+// One update: sampleAnimation, localPose (unblended: the rest motors, converting only the
+// nodes the animation drives; the same values and counts) (and for a blend the second animation, then
+// blendLocal), worldPose in rig.order, jointPalettes; results in work.world / work.palettes,
+// the phases lapped into `clock`. `counts` receives the first animation's node fallbacks.
+void poseScene(const Scene& scene, const Rig& rig, const AnimState& state, bool relativeToNode,
+               PoseWork& work, RigCounts* counts, PhaseClock& clock);
 
 }  // namespace mb::motor

@@ -21,7 +21,11 @@ float sgn(float x) { return x < 0.0f ? -1.0f : 1.0f; }
 
 ScaledMotor identityScaledMotor() { return ScaledMotor{}; }
 
-ScaledMotor fromTRS(const TRS& trs, bool leaf, ConversionFlags* flags) {
+// flatten (here and in blend): the shim's motor functions inlined. Called per node per frame;
+// left to itself GCC -O2 calls normalize_m and gp_* out of line with the motors passed through
+// the stack, which cost more than the arithmetic (issue 13: the motor update was 1.2-1.8x the
+// matrix update before).
+[[gnu::flatten]] ScaledMotor fromTRS(const TRS& trs, bool leaf, ConversionFlags* flags) {
   ConversionFlags f;
   const glm::vec3 s = trs.scale;
   Motor rotor = mk().normalize_m(companion::rotorFromQuat(trs.rotation));
@@ -77,17 +81,7 @@ ScaledMotor fromMatrix(const glm::mat4& m, const TRS& approx, bool leaf, Convers
   return out;
 }
 
-Motor scaleDual(const Motor& m, float s) { return Motor(m[0], m[1] * s); }
-
-ScaledMotor compose(const ScaledMotor& parent, const ScaledMotor& child) {
-  ScaledMotor out;
-  out.motor = mk().gp_mm(parent.motor, scaleDual(child.motor, parent.scale));
-  out.scale = parent.scale * child.scale;
-  out.residual = child.residual;
-  return out;
-}
-
-ScaledMotor blend(const ScaledMotor& a, const ScaledMotor& b, float w) {
+[[gnu::flatten]] ScaledMotor blend(const ScaledMotor& a, const ScaledMotor& b, float w) {
   const float wb = mk().dot(a.motor[0], b.motor[0]) < 0.0f ? -w : w;
   ScaledMotor out;
   out.motor = mk().normalize_m(a.motor * (1.0f - w) + b.motor * wb);

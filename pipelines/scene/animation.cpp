@@ -78,9 +78,15 @@ glm::vec4 evaluate(const Channel& c, float t) {
 }  // namespace
 
 std::vector<TRS> sampleAnimation(const Scene& scene, int anim, float time) {
-  std::vector<TRS> pose(scene.nodes.size());
+  std::vector<TRS> pose;
+  sampleAnimation(scene, anim, time, pose);
+  return pose;
+}
+
+void sampleAnimation(const Scene& scene, int anim, float time, std::vector<TRS>& pose) {
+  pose.resize(scene.nodes.size());
   for (size_t i = 0; i < pose.size(); ++i) pose[i] = scene.nodes[i].local;
-  if (anim < 0 || size_t(anim) >= scene.animations.size()) return pose;
+  if (anim < 0 || size_t(anim) >= scene.animations.size()) return;
   for (const Channel& c : scene.animations[size_t(anim)].channels) {
     if (c.node < 0 || size_t(c.node) >= pose.size() || c.times.empty()) continue;
     glm::vec4 v = evaluate(c, time);
@@ -91,15 +97,34 @@ std::vector<TRS> sampleAnimation(const Scene& scene, int anim, float time) {
       case AnimPath::Scale: trs.scale = glm::vec3(v); break;
     }
   }
-  return pose;
 }
 
 std::vector<TRS> blendPoses(const std::vector<TRS>& a, const std::vector<TRS>& b, float w) {
-  std::vector<TRS> out = a;
+  std::vector<TRS> out;
+  blendPoses(a, b, w, out);
+  return out;
+}
+
+void blendPoses(const std::vector<TRS>& a, const std::vector<TRS>& b, float w, std::vector<TRS>& out) {
+  if (&out != &a) out = a;
   for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
-    out[i].translation = glm::mix(a[i].translation, b[i].translation, w);
-    out[i].scale = glm::mix(a[i].scale, b[i].scale, w);
-    out[i].rotation = shortestSlerp(a[i].rotation, b[i].rotation, w);
+    TRS& o = out[i];  // may be a[i]: each field is read before it is written
+    o.translation = glm::mix(o.translation, b[i].translation, w);
+    o.scale = glm::mix(o.scale, b[i].scale, w);
+    o.rotation = shortestSlerp(o.rotation, b[i].rotation, w);
+  }
+}
+
+std::vector<std::vector<int>> animatedNodes(const Scene& scene) {
+  std::vector<std::vector<int>> out;
+  for (const Animation& a : scene.animations) {
+    std::vector<char> driven(scene.nodes.size(), 0);
+    for (const Channel& c : a.channels)
+      if (c.node >= 0 && size_t(c.node) < driven.size() && !c.times.empty()) driven[size_t(c.node)] = 1;
+    std::vector<int> nodes;
+    for (size_t n = 0; n < driven.size(); ++n)
+      if (driven[n]) nodes.push_back(int(n));
+    out.push_back(std::move(nodes));
   }
   return out;
 }

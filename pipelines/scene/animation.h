@@ -19,9 +19,18 @@ struct AnimState {
 // (clamped to the animation's range). Unanimated nodes keep their rest TRS; anim < 0 or out
 // of range gives the rest pose.
 std::vector<TRS> sampleAnimation(const Scene& scene, int anim, float time);
+// The same into `pose` (resized; its storage is reused from call to call).
+void sampleAnimation(const Scene& scene, int anim, float time, std::vector<TRS>& pose);
 
 // Per-node blend: translation and scale lerp, rotation shortest-arc slerp; w = weight of b.
 std::vector<TRS> blendPoses(const std::vector<TRS>& a, const std::vector<TRS>& b, float w);
+// The same into `out` (which may be `a`; nodes past b's end keep a's TRS).
+void blendPoses(const std::vector<TRS>& a, const std::vector<TRS>& b, float w, std::vector<TRS>& out);
+
+// Per animation: the nodes its channels drive (those sampleAnimation changes: a valid node and
+// at least one key), each once, ascending. Every other node keeps its rest TRS exactly, so a
+// pipeline may keep its rest conversion for those when it poses one animation unblended.
+std::vector<std::vector<int>> animatedNodes(const Scene& scene);
 
 // sampleAnimation + blendPoses as the state asks.
 std::vector<TRS> samplePose(const Scene& scene, const AnimState& state);

@@ -7,7 +7,6 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "pipelines/scene/transform.h"
 
 namespace mb {
 namespace {
@@ -98,33 +97,6 @@ std::vector<int> nodesInDrawOrder(const Scene& scene) {
     stack.insert(stack.end(), children.rbegin(), children.rend());
   }
   return order;
-}
-
-std::vector<glm::mat4> worldMatrices(const Scene& scene, const std::vector<TRS>& pose) {
-  const size_t count = scene.nodes.size();
-  std::vector<glm::mat4> world(count, glm::mat4(1.0f));
-  std::vector<char> state(count, 0);  // 0 todo, 1 in progress (cycle guard), 2 done
-  for (size_t start = 0; start < count; ++start) {
-    // Walk up to the first finished ancestor, then fill the chain top-down.
-    std::vector<size_t> chain;
-    for (size_t n = start; n < count && state[n] == 0;) {
-      state[n] = 1;
-      chain.push_back(n);
-      int parent = scene.nodes[n].parent;
-      if (parent < 0 || size_t(parent) >= count) break;
-      n = size_t(parent);
-    }
-    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
-      const Node& node = scene.nodes[*it];
-      glm::mat4 local = node.hasMatrix ? node.matrix
-                                       : trsMatrix(*it < pose.size() ? pose[*it] : node.local);
-      int parent = node.parent;
-      bool hasParent = parent >= 0 && size_t(parent) < count && state[size_t(parent)] == 2;
-      world[*it] = hasParent ? world[size_t(parent)] * local : local;
-      state[*it] = 2;
-    }
-  }
-  return world;
 }
 
 View frameScene(const Scene& scene, const AnimState& state, float aspect, int cameraIndex) {

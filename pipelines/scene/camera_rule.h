@@ -35,7 +35,8 @@ std::vector<int> nodesInDrawOrder(const Scene& scene);
 // World matrix of every node for `pose` (one local TRS per node, e.g. from samplePose):
 // parent world * local, where local is the authored matrix for nodes authored as one (glTF
 // forbids animating those) and T*R*S otherwise. Nodes unreachable from a root get their
-// chain up to their topmost ancestor. The camera rule and the matrix pipeline share it.
+// chain up to their topmost ancestor. The camera rule and the GLM pipelines share it
+// (pipelines/scene/matrix_world.h: the same composition into reused buffers).
 std::vector<glm::mat4> worldMatrices(const Scene& scene, const std::vector<TRS>& pose);
 
 }  // namespace mb
