@@ -13,7 +13,7 @@ FastestSides fastestSides(const nlohmann::json& pair) {
     char b[64];
     std::snprintf(b, sizeof b, "%.3g", ips);
     f.all += (f.all.empty() ? "" : ", ") + side + " " + b;
-    if (side.rfind("motor", 0) == 0) {
+    if (side.find("motor") != std::string::npos) {
       if (ips > f.motor) f.motor = ips, f.motorSide = side;
     } else if (ips > f.matrix) {
       f.matrix = ips, f.matrixSide = side;

@@ -1,6 +1,7 @@
 // One kernel pair of report_bench.h's kernelPairs() reduced to the fastest implementation on
-// each side, whatever sides the bench registers: every side named "motor..." is the motor side,
-// every other one ("matrix", "glm", a SIMD variant) the matrix side. Fair in both directions: a
+// each side, whatever sides the bench registers: every side whose name contains "motor"
+// ("motor", "simd_motor") is the motor side, every other one ("matrix", "glm", "simd_matrix",
+// "simd_affine") the matrix side. Fair in both directions: a
 // faster motor implementation counts as much as a faster matrix one.
 #pragma once
 #include <string>

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "harness/claims/claims_kernels.h"
 #include "harness/claims/claims_sources.h"
 #include "harness/ops/ops_vertex.h"
 #include "harness/timing/frame_timing.h"
@@ -85,16 +86,14 @@ std::vector<Claim> speedClaims(const SpeedInputs& in) {
     std::string detail;
     if (in.kernelPairs.is_array())
       for (const json& p : in.kernelPairs) {
-        if (p.value("kernel", "") != kernel || !p["ratio_motor_fastest_matrix"].is_number()) continue;
-        const double best = p["ratio_motor_fastest_matrix"].get<double>();  // items/s, > 1: motor faster
-        const std::string fm = p["fastest_matrix"].get<std::string>(), fmo = p["fastest_motor"].get<std::string>();
-        const double fastestMatrix = p[fm].value("items_per_second", 0.0);
+        if (p.value("kernel", "") != kernel) continue;
+        const FastestSides f = fastestSides(p);
+        if (f.costRatio() < 0) continue;
         const double shimMotor = p.contains("motor") ? p["motor"].value("items_per_second", 0.0) : 0.0;
-        const double cost = 1.0 / best;  // time per item, fastest motor / fastest matrix
-        worst.push_back(cost);
+        worst.push_back(f.costRatio());
         detail += (detail.empty() ? "" : "; ") + (p["size"].is_string() ? p["size"].get<std::string>() : std::string("?")) +
-                  ": fastest motor " + fmo + " / fastest matrix " + fm + " time " + x2(cost) +
-                  (shimMotor > 0 && fastestMatrix > 0 ? " (the shim motor: time " + x2(fastestMatrix / shimMotor) + " of the fastest matrix)" : "");
+                  ": fastest motor " + f.motorSide + " / fastest matrix " + f.matrixSide + " time " + x2(f.costRatio()) +
+                  (shimMotor > 0 && f.motorSide != "motor" ? " (the shim motor: time " + x2(f.matrix / shimMotor) + " of the fastest matrix)" : "");
       }
     Evidence e{std::string("CPU kernel ") + kernel + " vs the fastest matrix code measured", detail, -1, ""};
     if (!worst.empty()) e.costRatio = *std::max_element(worst.begin(), worst.end());
