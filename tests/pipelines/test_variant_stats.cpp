@@ -40,6 +40,9 @@ TEST(VariantStats, BytesPerVertexOnANormalMappedScene) {
     const PipelineStats s = render(scene, name).stats;
     ASSERT_GT(s.vertices, 0u) << name;
     EXPECT_EQ(s.vertexBytes, bytes * s.vertices) << name;
+    // Every primitive of normal_torus is normal-mapped: all of it is the normal-mapped share.
+    EXPECT_EQ(s.normalMappedVertexBytes, s.vertexBytes) << name;
+    EXPECT_EQ(s.normalMappedVertices, s.vertices) << name;
     std::printf("normal_torus %-8s %llu B/vertex, %.1f floats/transform\n", name,
                 (unsigned long long)(s.vertexBytes / s.vertices), s.floatsPerTransform);
   }
