@@ -10,7 +10,10 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <deque>
 #include <map>
+#include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,6 +21,7 @@
 #include "harness/bench/bench_kernels.h"
 #include "harness/bench/report_bench.h"
 #include "harness/cli/command.h"
+#include "harness/process/progress.h"
 
 namespace mb {
 namespace {
@@ -59,6 +63,8 @@ public:
       if (it != r.counters.end()) it->second.flags = benchmark::Counter::kDefaults;
     }
     benchmark::ConsoleReporter::ReportRuns(shown);
+    // One benchmark done when its runs (not the aggregates that follow them) are reported.
+    if (progress && !runs.empty() && runs[0].run_type != Run::RT_Aggregate) progress->done(runs[0].run_name.str());
     for (const Run& r : runs) {
       if (r.error_occurred) continue;
       nlohmann::json b = {{"name", r.benchmark_name()}, {"run_name", r.run_name.str()},
@@ -72,7 +78,32 @@ public:
   }
   nlohmann::json benchmarks = nlohmann::json::array();
   bool outOfCache = false;
+  std::unique_ptr<Progress> progress;  // stderr lines with an ETA (none in list mode)
 };
+
+// How many benchmarks `flags` select: Google Benchmark's list mode writes their names to the
+// reporter's stream (captured here) and returns the count. Re-initialises the flags as given.
+size_t countSelected(const std::vector<std::string>& flags) {
+  // Google Benchmark keeps argv[0] (the executable name it prints): the copies must outlive the run.
+  static std::deque<std::vector<std::string>> alive;
+  auto initialize = [&](const char* listFlag) {
+    std::vector<std::string>& copy = alive.emplace_back(flags);
+    copy.push_back(listFlag);
+    std::vector<char*> argv;
+    for (std::string& f : copy) argv.push_back(f.data());
+    argv.push_back(nullptr);
+    int argc = int(argv.size()) - 1;
+    benchmark::Initialize(&argc, argv.data());
+  };
+  initialize("--benchmark_list_tests=true");
+  std::ostringstream names;
+  benchmark::ConsoleReporter lister;
+  lister.SetOutputStream(&names);
+  lister.SetErrorStream(&names);
+  const size_t n = benchmark::RunSpecifiedBenchmarks(&lister);
+  initialize("--benchmark_list_tests=false");
+  return n;
+}
 
 std::string num(const nlohmann::json& v, const char* fmt = "%.4g") {
   if (!v.is_number() || !(v.get<double>() > 0)) return "-";
@@ -177,6 +208,9 @@ int runBench(const std::vector<std::string>& args) {
   bench::registerTangentBenchmarks();
 
   SummaryReporter reporter(consoleOptions(flags));
+  bool listOnly = false;
+  for (const std::string& f : flags) listOnly = listOnly || f == "--benchmark_list_tests" || f == "--benchmark_list_tests=true";
+  if (!listOnly) reporter.progress = std::make_unique<Progress>("bench", "benchmarks run", countSelected(flags), false);
   const size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   if (ran == 0) {

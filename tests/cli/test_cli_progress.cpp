@@ -34,5 +34,19 @@ TEST(Progress, CheckAndReportPrintOneLinePerItemWithTimeLeft) {
   std::filesystem::remove_all(dir);
 }
 
+// bench counts the benchmarks its filter selects (Google Benchmark's list mode) before running
+// them: compose has six sides (matrix, motor, glm, simd_matrix, simd_affine, simd_motor).
+TEST(Progress, BenchPrintsOneLinePerBenchmarkWithTimeLeft) {
+  std::string out;
+  ASSERT_EQ(runCommand(motorbench() + "bench --benchmark_filter=^compose/ --benchmark_min_time=0.001", &out), 0) << out;
+  EXPECT_TRUE(std::regex_search(out, std::regex("bench: 1/6 benchmarks run \\(compose/matrix\\), [0-9]+ s elapsed, about [0-9]+ s left\n")))
+      << out;
+  EXPECT_TRUE(std::regex_search(out, std::regex("bench: 6/6 benchmarks run \\(compose/[a-z_]+\\), [0-9]+ s elapsed\n"))) << out;
+  // List mode runs nothing and so shows no progress.
+  out.clear();
+  ASSERT_EQ(runCommand(motorbench() + "bench --benchmark_filter=^compose/ --benchmark_list_tests", &out), 0) << out;
+  EXPECT_EQ(out.find("benchmarks run"), std::string::npos) << out;
+}
+
 }  // namespace
 }  // namespace mb::cli_test
