@@ -25,6 +25,12 @@ bool normalMapped(const Scene& scene, const Primitive& p) {
          scene.materials[size_t(p.material)].normal.texture >= 0;
 }
 
+void countNormalMappedShare(const Scene& scene, const Primitive& p, uint64_t bytes, PipelineStats& stats) {
+  if (!normalMapped(scene, p)) return;
+  stats.normalMappedVertexBytes += bytes;
+  stats.normalMappedVertices += p.positions.size();
+}
+
 void SceneGeometry::upload(const Scene& scene, const Interleave& interleave,
                            std::initializer_list<GLint> attributeSizes, PipelineStats& stats) {
   std::vector<VertexAttribute> attributes;
@@ -60,10 +66,7 @@ void SceneGeometry::upload(const Scene& scene, const Format& format, PipelineSta
                               reinterpret_cast<const void*>(offset * sizeof(float)));
         offset += size_t(a.size);
       }
-      if (normalMapped(scene, p)) {
-        stats.normalMappedVertexBytes += stats.vertexBytes - before;
-        stats.normalMappedVertices += p.positions.size();
-      }
+      countNormalMappedShare(scene, p, stats.vertexBytes - before, stats);
       g.extra.upload(p, stats.extraVertexBytes, stats.skinVertexBytes);
       g.skinned = skinnedMesh[m] && g.extra.joints != 0;
       g.indices = createBuffer(GL_ELEMENT_ARRAY_BUFFER, p.indices, stats.indexBytes);

@@ -72,6 +72,9 @@ private:
 // True when `p`'s material has a normal texture (the paper's 12-vs-9-float case; the split of
 // PipelineStats::normalMappedVertexBytes).
 bool normalMapped(const Scene& scene, const Primitive& p);
+// Adds `bytes` (the vertex bytes just uploaded for `p`) and p's vertices to the normal-mapped
+// share of `stats` when `p` is normal-mapped; both upload paths call it.
+void countNormalMappedShare(const Scene& scene, const Primitive& p, uint64_t bytes, PipelineStats& stats);
 
 // One shader storage buffer per joint palette, re-uploaded every frame.
 class PaletteBuffers {

@@ -26,10 +26,7 @@ void SceneGeometry::uploadPacked(const Scene& scene, const PackedInterleave& int
       glBindVertexArray(g.vao);
       const uint64_t before = stats.vertexBytes;
       g.vertices = createBuffer(GL_ARRAY_BUFFER, interleave(p), stats.vertexBytes);
-      if (normalMapped(scene, p)) {  // as upload(): the normal-mapped share of the bytes
-        stats.normalMappedVertexBytes += stats.vertexBytes - before;
-        stats.normalMappedVertices += p.positions.size();
-      }
+      countNormalMappedShare(scene, p, stats.vertexBytes - before, stats);
       GLuint loc = 0;
       size_t offset = 0;
       for (const PackedAttribute& a : attributes) {
