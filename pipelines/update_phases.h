@@ -14,7 +14,9 @@ struct UpdatePhases {
   double blendingMs = 0;    // mixing the two animations of a blend (TRS slerp, or motor blend)
   double conversionMs = 0;  // per-frame representation changes: sampled TRS -> local matrix or
                             // ScaledMotor; hybrid: world / joint motors -> mat4x3
-  double hierarchyMs = 0;   // world transforms: parent world x local, parents first
+  double hierarchyMs = 0;   // world transforms: parent world x local, parents first; matrix
+                            // forms: + the normal matrices of the drawn nodes (computed per
+                            // node in the Sample Viewer's hierarchy pass; motors need none)
   double paletteMs = 0;     // skin palettes: joint world x inverse bind (+ normal matrices)
   double total() const { return samplingMs + blendingMs + conversionMs + hierarchyMs + paletteMs; }
 };

@@ -121,6 +121,8 @@ void AffinePipeline::update(const AnimState& state) {
   auto t0 = gl::Clock::now();
   PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
   poser_->pose(*scene_, state, pose_, stats_, clock);
+  drawnNormalMatrices(*scene_, pose_);
+  clock.lap(&UpdatePhases::hierarchyMs);
   stats_.updateMs = gl::msSince(t0);
 }
 
@@ -167,11 +169,11 @@ void AffinePipeline::render(const View& view) {
     const gl::Program& program = patch ? *patch_ : palette ? *skinned_ : *rigid_;
     program.use();
     const glm::mat4x3& model = pose_.world[size_t(d.node)];
-    const float sign = mirror(model);
+    const float sign = pose_.mirrors[size_t(d.node)];
     if (palette) {
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
     } else {
-      const glm::mat3 normal = normalMatrix(model);
+      const glm::mat3& normal = pose_.normals[size_t(d.node)];
       gl::uniformMatrix4x3(program.uniform("u_ModelMatrix"), 1, glm::value_ptr(model), transformBytes);
       gl::uniformMatrix3(program.uniform("u_NormalMatrix"), 1, glm::value_ptr(normal), transformBytes);
       ++transforms;

@@ -7,6 +7,16 @@ glm::mat3 normalMatrix(const glm::mat4x3& m) { return glm::transpose(glm::invers
 
 float mirror(const glm::mat4x3& m) { return glm::determinant(glm::mat3(m)) < 0.0f ? -1.0f : 1.0f; }
 
+[[gnu::flatten]] void drawnNormalMatrices(const Scene& scene, Pose& pose) {
+  pose.normals.resize(pose.world.size());
+  pose.mirrors.resize(pose.world.size(), 1.0f);
+  for (size_t n = 0; n < pose.world.size() && n < scene.nodes.size(); ++n)
+    if (scene.nodes[n].mesh >= 0) {
+      pose.normals[n] = normalMatrix(pose.world[n]);
+      pose.mirrors[n] = mirror(pose.world[n]);
+    }
+}
+
 Pose poseScene(const Scene& scene, const AnimState& state) {
   MatrixPoseWork work;
   prepareMatrixPose(scene, work);

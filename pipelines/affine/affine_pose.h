@@ -20,6 +20,8 @@ struct Palette {
 
 struct Pose {
   std::vector<glm::mat4x3> world;  // per node
+  std::vector<glm::mat3> normals;  // per node with a mesh: normalMatrix(world) (else untouched)
+  std::vector<float> mirrors;      // per node with a mesh: mirror(world)
   std::vector<Palette> palettes;   // one per node with a mesh and a skin, in node order
 };
 
@@ -34,5 +36,10 @@ glm::mat3 normalMatrix(const glm::mat4x3& m);
 
 // sign(det(linear part)): -1 for a mirroring transform, else +1.
 float mirror(const glm::mat4x3& m);
+
+// pose.normals and pose.mirrors of every node with a mesh, from pose.world: per-frame CPU work
+// of the matrix forms (the Sample Viewer's hierarchy pass computes the normal matrix per node),
+// lapped by the caller as hierarchy time.
+void drawnNormalMatrices(const Scene& scene, Pose& pose);
 
 }  // namespace mb::affine

@@ -162,7 +162,7 @@ void MatrixPipeline::render(const View& view) {
     const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, g.variant == 1 ? 1 : 0);
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
     const glm::mat4& model = pose_.world[size_t(d.node)];
-    glm::mat4 normal = matrix::normalMatrix(model);
+    const glm::mat4& normal = pose_.normals[size_t(d.node)];
     gl::uniformMatrix4(program.uniform("u_ModelMatrix"), 1, glm::value_ptr(model), transformBytes);
     gl::uniformMatrix4(program.uniform("u_NormalMatrix"), 1, glm::value_ptr(normal), transformBytes);
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);

@@ -29,6 +29,15 @@ namespace {
   palettes.resize(count);
 }
 
+// normalMatrix of every node with a mesh: per-frame CPU work of the matrix form (the motor
+// pipeline has none), timed with the hierarchy as the Sample Viewer's hierarchy pass does it.
+[[gnu::flatten]] void drawnNormalMatrices(const Scene& scene, const std::vector<glm::mat4>& world,
+                                          std::vector<glm::mat4>& normals) {
+  normals.resize(world.size());
+  for (size_t n = 0; n < world.size() && n < scene.nodes.size(); ++n)
+    if (scene.nodes[n].mesh >= 0) normals[n] = normalMatrix(world[n]);
+}
+
 }  // namespace
 
 glm::mat4 normalMatrix(const glm::mat4& m) {
@@ -50,6 +59,8 @@ void poseScene(const Scene& scene, const AnimState& state, bool worldPalette, Ma
                Pose& pose, PhaseClock& clock) {
   poseWorldMatrices(scene, state, work, clock);
   pose.world.swap(work.world);  // the pipeline keeps the result, work keeps last frame's storage
+  drawnNormalMatrices(scene, pose.world, pose.normals);
+  clock.lap(&UpdatePhases::hierarchyMs);
   skinPalettes(scene, pose.world, worldPalette, pose.palettes);
   clock.lap(&UpdatePhases::paletteMs);
 }

@@ -22,11 +22,13 @@ struct SkinPalette {
 
 struct Pose {
   std::vector<glm::mat4> world;      // per node
+  std::vector<glm::mat4> normals;    // per node with a mesh: normalMatrix(world) (else untouched)
   std::vector<SkinPalette> palettes; // one per skinned mesh node reachable from the roots
 };
 
 // Poses `scene` for `state`: samplePose (shared animation sampling and blending), world
-// matrices, then a palette for every node that has both a mesh and a skin; `worldPalette`:
+// matrices and the normal matrices of the nodes drawn (the Sample Viewer's hierarchy pass
+// computes world, inverse world and normal matrix per node), then a palette for every node that has both a mesh and a skin; `worldPalette`:
 // the palette without inverse(mesh node world) (SkinSpace::WorldPalette).
 Pose poseScene(const Scene& scene, const AnimState& state, bool worldPalette = false);
 

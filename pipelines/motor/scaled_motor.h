@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "pipelines/motor/gp_motors.h"
 #include "pipelines/motor/motor_kernels.h"
 #include "pipelines/scene/scene.h"
 
@@ -52,31 +53,6 @@ ScaledMotor fromMatrix(const glm::mat4& m, const TRS& approx, bool leaf,
 // Multiplies the dual (translation) half of `m` by s: the motor that moves s-scaled space the
 // way `m` moves unscaled space (s M = M' s with M' = scaleDual(M, s)).
 inline Motor scaleDual(const Motor& m, float s) { return Motor(m[0], m[1] * s); }
-
-// gp_mm of shaders/pga.glsl written out in scalars, operation for operation in the same order,
-// so the result is bit-identical (tests/pipelines/test_update_phases.cpp checks it on 100k
-// motors): the hierarchy and the palettes compose a motor per node and joint every frame, and
-// GCC -O2 compiles the shim's version to about 400 instructions of shuffles and spills where
-// GLM's mat4 product, which the matrix pipelines use, is about a quarter of that.
-inline void gpMotors(const Motor& a, const Motor& b, Motor& r) {
-  const float as = a[0][0], Ax = a[0][1], Ay = a[0][2], Az = a[0][3];
-  const float Adx = a[1][0], Ady = a[1][1], Adz = a[1][2], ap = a[1][3];
-  const float bs = b[0][0], Bx = b[0][1], By = b[0][2], Bz = b[0][3];
-  const float Bdx = b[1][0], Bdy = b[1][1], Bdz = b[1][2], bp = b[1][3];
-  r[0][0] = as * bs - (Ax * Bx + Ay * By + Az * Bz);                      // s - dot(A, B)
-  r[0][1] = as * Bx + bs * Ax + (By * Az - Bz * Ay);                      // + cross(B, A)
-  r[0][2] = as * By + bs * Ay + (Bz * Ax - Bx * Az);
-  r[0][3] = as * Bz + bs * Az + (Bx * Ay - By * Ax);
-  r[1][0] = as * Bdx + bs * Adx + (By * Adz - Bz * Ady) + (Bdy * Az - Bdz * Ay) - bp * Ax - ap * Bx;
-  r[1][1] = as * Bdy + bs * Ady + (Bz * Adx - Bx * Adz) + (Bdz * Ax - Bdx * Az) - bp * Ay - ap * By;
-  r[1][2] = as * Bdz + bs * Adz + (Bx * Ady - By * Adx) + (Bdx * Ay - Bdy * Ax) - bp * Az - ap * Bz;
-  r[1][3] = as * bp + bs * ap + (Ax * Bdx + Ay * Bdy + Az * Bdz) + (Adx * Bx + Ady * By + Adz * Bz);
-}
-inline Motor gpMotors(const Motor& a, const Motor& b) {
-  Motor r;
-  gpMotors(a, b, r);
-  return r;
-}
 
 // Parent then child: the child's transform expressed in the parent's space. Contract: the
 // parent's residual is (1,1,1) (residuals live on leaves only). Inline, so that the per-frame

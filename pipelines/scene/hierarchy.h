@@ -14,10 +14,12 @@ struct HierarchyOrder {
                              // chain (a root, an invalid parent index, or where a cycle was cut)
 };
 
-// The order of the walk worldMatrices() has always done (its results are unchanged): for each
-// node in index order, its chain of unvisited ancestors top-down; a node whose parent was still
-// on the chain being walked (a cycle) starts the chain instead. Nodes unreachable from a root
-// get the chain up to their topmost ancestor.
+// Which parent each node composes with is the walk worldMatrices() has always done (its results
+// are unchanged): for each node in index order, its chain of unvisited ancestors top-down; a
+// node whose parent was still on the chain being walked (a cycle) starts the chain instead.
+// Nodes unreachable from a root get the chain up to their topmost ancestor. The entries are
+// then ordered by depth (stable): siblings and cousins side by side, so that consecutive
+// products do not wait on each other.
 HierarchyOrder hierarchyOrder(const Scene& scene);
 
 }  // namespace mb

@@ -114,8 +114,9 @@ TEST(UpdatePhases, MeasuredOnlyWhenAsked) {
   }
 }
 
-// The scalar gp_mm of the per-frame loops is the shader's gp_mm, bit for bit.
-TEST(UpdatePhases, ScalarProductIsTheShadersBitForBit) {
+// The motor product of the per-frame loops (4-lane, and its scalar fallback) is the shader's
+// gp_mm, bit for bit.
+TEST(UpdatePhases, MotorProductIsTheShadersBitForBit) {
   std::mt19937 g(13);
   std::uniform_real_distribution<float> u(-2.0f, 2.0f);
   auto random = [&] {
@@ -127,7 +128,10 @@ TEST(UpdatePhases, ScalarProductIsTheShadersBitForBit) {
   for (int i = 0; i < 100000; ++i) {
     const Motor a = random(), b = random();
     const Motor fast = motor::gpMotors(a, b), shader = mk().gp_mm(a, b);
+    Motor scalar;
+    motor::gpMotorsScalar(a, b, scalar);
     ASSERT_EQ(std::memcmp(&fast, &shader, sizeof(Motor)), 0) << "sample " << i;
+    ASSERT_EQ(std::memcmp(&scalar, &shader, sizeof(Motor)), 0) << "sample " << i;
   }
 }
 
