@@ -5,6 +5,7 @@
 #include <map>
 
 #include "harness/bench/bench_common.h"
+#include "harness/bench/fastest_sides.h"
 #include "harness/process/report_workers.h"
 
 namespace mb::report {
@@ -94,17 +95,10 @@ json kernelPairs(const json& bench) {
     const double sm = ips(bench::kSimdMatrix), smo = ips(bench::kSimdMotor);
     p["ratio_simd_motor_matrix"] = sm > 0 && smo > 0 ? json(smo / sm) : json(nullptr);
     // The fastest implementation on each side, whatever its source.
-    std::string fastest[2];
-    for (const auto& [side, fig] : p.items()) {
-      const std::string kind = bench::sideKind(side);
-      if (kind.empty() || !(ips(side) > 0)) continue;
-      std::string& f = fastest[kind == "motor"];
-      if (f.empty() || ips(side) > ips(f)) f = side;
-    }
-    p["fastest_matrix"] = fastest[0].empty() ? json(nullptr) : json(fastest[0]);
-    p["fastest_motor"] = fastest[1].empty() ? json(nullptr) : json(fastest[1]);
-    p["ratio_motor_fastest_matrix"] =
-        fastest[0].empty() || fastest[1].empty() ? json(nullptr) : json(ips(fastest[1]) / ips(fastest[0]));
+    const bench::FastestSides f = bench::fastestSides(p);
+    p["fastest_matrix"] = f.matrixSide.empty() ? json(nullptr) : json(f.matrixSide);
+    p["fastest_motor"] = f.motorSide.empty() ? json(nullptr) : json(f.motorSide);
+    p["ratio_motor_fastest_matrix"] = f.costRatio() > 0 ? json(f.motor / f.matrix) : json(nullptr);
   }
   return {{"context", bench.value("context", json::object())}, {"pairs", pairs}, {"probe", probe}};
 }

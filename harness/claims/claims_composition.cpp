@@ -9,7 +9,7 @@
 
 #include "harness/bench/affine_compose.h"
 #include "harness/bench/compose_timing.h"
-#include "harness/claims/claims_kernels.h"
+#include "harness/bench/fastest_sides.h"
 #include "harness/claims/claims_measures.h"
 #include "harness/claims/claims_sources.h"
 #include "harness/ops/op_kernels.h"
@@ -131,7 +131,7 @@ std::vector<Claim> sceneGraphClaims(const json& kernelPairs, const json& timings
     if (kernelPairs.is_array())
       for (const json& p : kernelPairs) {
         if (p.value("kernel", "") != "hierarchy") continue;
-        const FastestSides f = fastestSides(p);
+        const bench::FastestSides f = bench::fastestSides(p);
         if (f.costRatio() > 0) {
           e.cost = f.costRatio();
           e.detail = "fastest motor side " + f.motorSide + ", fastest matrix side " + f.matrixSide + " (nodes/s: " + f.all + ")";

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "harness/claims/claims_kernels.h"
+#include "harness/bench/fastest_sides.h"
 #include "harness/claims/claims_sources.h"
 #include "harness/ops/ops_vertex.h"
 #include "harness/timing/frame_timing.h"
@@ -87,7 +87,7 @@ std::vector<Claim> speedClaims(const SpeedInputs& in) {
     if (in.kernelPairs.is_array())
       for (const json& p : in.kernelPairs) {
         if (p.value("kernel", "") != kernel) continue;
-        const FastestSides f = fastestSides(p);
+        const bench::FastestSides f = bench::fastestSides(p);
         if (f.costRatio() < 0) continue;
         const double shimMotor = p.contains("motor") ? p["motor"].value("items_per_second", 0.0) : 0.0;
         worst.push_back(f.costRatio());

@@ -10,7 +10,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "harness/bench/affine_compose.h"
-#include "harness/claims/claims_kernels.h"
+#include "harness/bench/fastest_sides.h"
 #include "harness/claims/claims_measures.h"
 #include "harness/claims/claims_sources.h"
 #include "pipelines/motor/companion.h"
@@ -261,18 +261,18 @@ TEST(ClaimsSpeed, KernelEvidenceIsFastestAgainstFastest) {
   in.kernelPairs = json::array(
       {{{"kernel", "vertex_frame"}, {"size", "in_cache"},
         {"matrix", {{"items_per_second", 100.0}}}, {"glm", {{"items_per_second", 400.0}}},
-        {"motor", {{"items_per_second", 150.0}}}, {"motor_simd", {{"items_per_second", 500.0}}}},
+        {"motor", {{"items_per_second", 150.0}}}, {"simd_motor", {{"items_per_second", 500.0}}}},
        {{"kernel", "vertex_frame"}, {"size", "out_of_cache"},
         {"matrix", {{"items_per_second", 600.0}}}, {"motor", {{"items_per_second", 300.0}}}}});
-  const claims::FastestSides f = claims::fastestSides(in.kernelPairs[0]);
-  EXPECT_EQ(f.motorSide, "motor_simd");
+  const bench::FastestSides f = bench::fastestSides(in.kernelPairs[0]);
+  EXPECT_EQ(f.motorSide, "simd_motor");
   EXPECT_EQ(f.matrixSide, "glm");
   EXPECT_DOUBLE_EQ(f.costRatio(), 0.8);
   const claims::Claim c = only(claims::speedClaims(in), "as_fast_as_matrices");
   const json& cpu = c.measuredValue["CPU kernel vertex_frame vs the fastest matrix code measured"];
   ASSERT_TRUE(cpu["costRatio"].is_number()) << c.measuredValue.dump(2);
   EXPECT_DOUBLE_EQ(cpu["costRatio"].get<double>(), 2.0);
-  EXPECT_NE(cpu["detail"].get<std::string>().find("motor_simd"), std::string::npos);
+  EXPECT_NE(cpu["detail"].get<std::string>().find("simd_motor"), std::string::npos);
   // No frame timing: some evidence is missing, so the verdict cannot be "reproduced".
   EXPECT_NE(c.verdict, claims::Verdict::Reproduced);
 }

@@ -1,19 +1,25 @@
-#include "harness/claims/claims_kernels.h"
+#include "harness/bench/fastest_sides.h"
 
 #include <cstdio>
 
-namespace mb::claims {
+#include "harness/bench/bench_common.h"
+
+namespace mb::bench {
 
 FastestSides fastestSides(const nlohmann::json& pair) {
   FastestSides f;
   if (!pair.is_object()) return f;
   for (const auto& [side, fig] : pair.items()) {
-    if (!fig.is_object() || !fig.contains("items_per_second") || !fig["items_per_second"].is_number()) continue;
+    const std::string kind = sideKind(side);
+    if (kind.empty() || !fig.is_object() || !fig.contains("items_per_second") ||
+        !fig["items_per_second"].is_number())
+      continue;
     const double ips = fig["items_per_second"].get<double>();
+    if (!(ips > 0)) continue;
     char b[64];
     std::snprintf(b, sizeof b, "%.3g", ips);
     f.all += (f.all.empty() ? "" : ", ") + side + " " + b;
-    if (side.find("motor") != std::string::npos) {
+    if (kind == "motor") {
       if (ips > f.motor) f.motor = ips, f.motorSide = side;
     } else if (ips > f.matrix) {
       f.matrix = ips, f.matrixSide = side;
@@ -22,4 +28,4 @@ FastestSides fastestSides(const nlohmann::json& pair) {
   return f;
 }
 
-}  // namespace mb::claims
+}  // namespace mb::bench

@@ -1,14 +1,14 @@
 // One kernel pair of report_bench.h's kernelPairs() reduced to the fastest implementation on
-// each side, whatever sides the bench registers: every side whose name contains "motor"
-// ("motor", "simd_motor") is the motor side, every other one ("matrix", "glm", "simd_matrix",
-// "simd_affine") the matrix side. Fair in both directions: a
-// faster motor implementation counts as much as a faster matrix one.
+// each side, whatever sides the bench registers: bench::sideKind says which side a name is
+// ("motor", "simd_motor": motor; "matrix", "glm", "simd_matrix", "simd_affine": matrix). Fair in
+// both directions: a faster motor implementation counts as much as a faster matrix one. The
+// bench summary (fastest_matrix / fastest_motor) and the claims read the pair through this.
 #pragma once
 #include <string>
 
 #include <nlohmann/json.hpp>
 
-namespace mb::claims {
+namespace mb::bench {
 
 struct FastestSides {
   double motor = 0, matrix = 0;      // items/s of the fastest side of each kind (0: none)
@@ -18,6 +18,8 @@ struct FastestSides {
   double costRatio() const { return motor > 0 && matrix > 0 ? matrix / motor : -1.0; }
 };
 
+// Entries of `pair` that are not a side (kernel, size, ratios) or have no positive items/s
+// are skipped.
 FastestSides fastestSides(const nlohmann::json& pair);
 
-}  // namespace mb::claims
+}  // namespace mb::bench
