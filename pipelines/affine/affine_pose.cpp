@@ -33,19 +33,14 @@ namespace {
                                    std::vector<Palette>& palettes) {
   size_t count = 0;
   for (size_t n = 0; n < scene.nodes.size(); ++n) {
-    const Node& node = scene.nodes[n];
-    if (node.mesh < 0 || node.skin < 0 || size_t(node.skin) >= scene.skins.size()) continue;
-    const Skin& skin = scene.skins[size_t(node.skin)];
+    const Skin* skin = drawnSkin(scene, n);
+    if (!skin) continue;
     if (palettes.size() <= count) palettes.emplace_back();
     Palette& palette = palettes[count++];
     palette.node = int(n);
-    palette.joints.resize(skin.joints.size());
-    for (size_t j = 0; j < skin.joints.size(); ++j) {
-      const int jn = skin.joints[j];
-      const glm::mat4 joint = jn >= 0 && size_t(jn) < world.size() ? world[size_t(jn)] : glm::mat4(1.0f);
-      const glm::mat4 bind = j < skin.inverseBind.size() ? skin.inverseBind[j] : glm::mat4(1.0f);
-      palette.joints[j] = glm::mat4x3(joint * bind);
-    }
+    palette.joints.resize(skin->joints.size());
+    for (size_t j = 0; j < skin->joints.size(); ++j)
+      palette.joints[j] = glm::mat4x3(jointWorld(*skin, world, j) * inverseBind(*skin, j));
   }
   palettes.resize(count);
 }

@@ -9,19 +9,15 @@ namespace {
                                    std::vector<SkinPalette>& palettes) {
   size_t count = 0;
   for (size_t n = 0; n < scene.nodes.size(); ++n) {
-    const Node& node = scene.nodes[n];
-    if (node.mesh < 0 || node.skin < 0 || size_t(node.skin) >= scene.skins.size()) continue;
-    const Skin& skin = scene.skins[size_t(node.skin)];
+    const Skin* skin = drawnSkin(scene, n);
+    if (!skin) continue;
     if (palettes.size() <= count) palettes.emplace_back();
     SkinPalette& palette = palettes[count++];
     palette.node = int(n);
-    palette.matrices.resize(2 * skin.joints.size());
+    palette.matrices.resize(2 * skin->joints.size());
     const glm::mat4 toMesh = worldPalette ? glm::mat4(1.0f) : glm::inverse(world[n]);
-    for (size_t j = 0; j < skin.joints.size(); ++j) {
-      int jn = skin.joints[j];
-      glm::mat4 joint = jn >= 0 && size_t(jn) < world.size() ? world[size_t(jn)] : glm::mat4(1.0f);
-      glm::mat4 bind = j < skin.inverseBind.size() ? skin.inverseBind[j] : glm::mat4(1.0f);
-      glm::mat4 m = toMesh * joint * bind;
+    for (size_t j = 0; j < skin->joints.size(); ++j) {
+      const glm::mat4 m = toMesh * jointWorld(*skin, world, j) * inverseBind(*skin, j);
       palette.matrices[2 * j] = m;
       palette.matrices[2 * j + 1] = glm::transpose(glm::inverse(m));
     }
