@@ -149,13 +149,20 @@ void AffinePipeline::render(const View& view) {
   const glm::mat4 viewProjection =
       glm::perspective(view.yfov, view.aspect, view.znear, view.zfar) * viewMatrix;
   gl::beginDraws();
-  for (gl::Program* p : {rigid_.get(), skinned_.get(), patch_.get()}) {
-    if (!p) continue;
-    p->use();
-    gl::uniformMatrix4(p->uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
-                       stats_.uniformBytesPerFrame);
-    gl::setFrameUniforms(*p, view, stats_.uniformBytesPerFrame);
-  }
+  // Per-frame uniforms go to a program when the frame first draws with it (as matrix and
+  // motor do: a program the frame does not use uploads nothing).
+  bool frameSet[3] = {};
+  auto useProgram = [&](int which) -> const gl::Program& {
+    gl::Program& p = which == 0 ? *rigid_ : which == 1 ? *skinned_ : *patch_;
+    p.use();
+    if (!frameSet[which]) {
+      frameSet[which] = true;
+      gl::uniformMatrix4(p.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
+                         stats_.uniformBytesPerFrame);
+      gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
+    }
+    return p;
+  };
   uint64_t transformBytes = 0, transforms = 0;
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.at(d);
@@ -166,8 +173,7 @@ void AffinePipeline::render(const View& view) {
     GLuint palette = 0;
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = palettes_[i];
-    const gl::Program& program = patch ? *patch_ : palette ? *skinned_ : *rigid_;
-    program.use();
+    const gl::Program& program = useProgram(patch ? 2 : palette ? 1 : 0);
     const glm::mat4x3& model = pose_.world[size_t(d.node)];
     const float sign = pose_.mirrors[size_t(d.node)];
     if (palette) {
