@@ -27,6 +27,8 @@ struct PipelineStats {
   uint64_t uniformBytesPerFrame = 0;  // per-frame + per-draw uniforms of the last render()
   uint64_t skinBytesPerFrame = 0;     // joint palette of the last update()/render()
   uint64_t patchBytes = 0;            // Bezier patch control points (pipelines/gl/patch_geometry.h)
+  uint64_t patchPatternBytes = 0;     // the patches' shared (u, v) refinement pattern: not a
+                                      // vertex format, so neither in vertexBytes nor vertices
   uint64_t vertices = 0;              // vertices uploaded
   // Of vertexBytes / vertices: the primitives whose material has a normal texture, so that
   // bytes per vertex split normal-mapped / not (the paper's 12-vs-9 floats is the former).

@@ -66,7 +66,7 @@ Result<std::vector<PatchMemoryRow>> measurePatchMemory(const Scene& scene, const
       const PipelineStats sb = b->stats();
       b.reset();
       row.controlPointBytes = sa.patchBytes;
-      row.instancedBytes = sa.patchBytes + sa.vertexBytes + sa.indexBytes;
+      row.instancedBytes = sa.patchBytes + sa.patchPatternBytes + sa.vertexBytes + sa.indexBytes;
       row.pretessellatedBytes = sb.vertexBytes + sb.indexBytes;
       row.pretessellatedVertices = sb.vertices;
       rows.push_back(row);

@@ -23,7 +23,7 @@ Primitive tessellatePatches(const Primitive& patches, int level);
 struct PatchMemoryRow {
   std::string pipeline;
   int level = 0;
-  uint64_t instancedBytes = 0;      // patchBytes + pattern vertexBytes + pattern indexBytes
+  uint64_t instancedBytes = 0;      // patchBytes + patchPatternBytes + pattern indexBytes
   uint64_t controlPointBytes = 0;   // patchBytes alone
   uint64_t pretessellatedBytes = 0; // vertexBytes + indexBytes of the tessellated copy
   uint64_t pretessellatedVertices = 0;

@@ -14,6 +14,7 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"PipelineStats", "textureBytes", "bytes", "texture bytes handed to glTexImage2D (RGBA8, level 0; the mipmaps the driver generates are not counted)"},
       {"PipelineStats", "uniformBytesPerFrame", "bytes", "per-frame plus per-draw uniform bytes of the last render (transforms: matrices or motors)"},
       {"PipelineStats", "patchBytes", "bytes", "Bezier patch control points uploaded (16 x 3 floats per patch, GL_RGB32F buffer texture; 0 without patches)"},
+      {"PipelineStats", "patchPatternBytes", "bytes", "the Bezier patches' shared (u, v) refinement pattern, (level + 1)^2 x 2 floats, drawn instanced per patch; not a vertex format, so counted neither in vertexBytes nor in vertices"},
       {"PipelineStats", "skinBytesPerFrame", "bytes", "joint palette bytes of the last update (matrices or motors per joint)"},
       {"PipelineStats", "vertices", "vertices", "vertices uploaded"},
       {"PipelineStats", "floatsPerVertex", "floats", "shading-attribute floats per vertex, from the upload stride"},

@@ -80,7 +80,7 @@ Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
 
 nlohmann::json toJson(const PipelineStats& s) {
   return {{"vertexBytes", s.vertexBytes}, {"skinVertexBytes", s.skinVertexBytes},
-          {"extraVertexBytes", s.extraVertexBytes}, {"patchBytes", s.patchBytes}, {"indexBytes", s.indexBytes},
+          {"extraVertexBytes", s.extraVertexBytes}, {"patchBytes", s.patchBytes}, {"patchPatternBytes", s.patchPatternBytes}, {"indexBytes", s.indexBytes},
           {"textureBytes", s.textureBytes}, {"uniformBytesPerFrame", s.uniformBytesPerFrame},
           {"skinBytesPerFrame", s.skinBytesPerFrame}, {"vertices", s.vertices},
           {"normalMappedVertexBytes", s.normalMappedVertexBytes},

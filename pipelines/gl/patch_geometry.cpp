@@ -40,13 +40,12 @@ Status PatchGeometry::upload(const Scene& scene, PipelineStats& stats) {
   RefinementPattern pattern = refinementPattern(level_);
   glGenVertexArrays(1, &vao_);
   glBindVertexArray(vao_);
-  uv_ = createBuffer(GL_ARRAY_BUFFER, pattern.uv, stats.vertexBytes);
+  uv_ = createBuffer(GL_ARRAY_BUFFER, pattern.uv, stats.patchPatternBytes);
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
   indices_ = createBuffer(GL_ELEMENT_ARRAY_BUFFER, pattern.indices, stats.indexBytes);
   indexCount_ = GLsizei(pattern.indices.size());
   glBindVertexArray(0);
-  stats.vertices += pattern.uv.size();
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     meshes_.emplace_back();
     for (size_t i = 0; i < scene.meshes[m].primitives.size(); ++i) {

@@ -98,12 +98,13 @@ TEST_P(BuiltinScene, RendersNonEmptyDeterministicWithMeasuredStats) {
   const PipelineStats& s = a.stats;
   const FileStats f = computeFileStats(*scene);
   if (f.patches > 0) {
-    // Bezier patches: the uploaded vertices are one refinement pattern of uv pairs (level N:
-    // (N+1)^2), the control points go to a buffer texture (16 x vec3 per patch).
+    // Bezier patches: one refinement pattern of uv pairs (level N: (N+1)^2), drawn instanced
+    // per patch, is not a vertex format (patchPatternBytes, not vertices); the control points go
+    // to a buffer texture (16 x vec3 per patch). The teapot has no other primitive.
     const uint64_t n = uint64_t(scene->patchLevel) + 1;
-    EXPECT_DOUBLE_EQ(s.floatsPerVertex, 2.0);
-    EXPECT_EQ(s.vertices, n * n);
-    EXPECT_EQ(s.vertexBytes, s.vertices * 8);
+    EXPECT_EQ(s.patchPatternBytes, n * n * 8);
+    EXPECT_EQ(s.vertices, 0u);
+    EXPECT_EQ(s.vertexBytes, 0u);
     EXPECT_EQ(s.patchBytes, uint64_t(f.patches) * 16 * 12);
   } else {
     EXPECT_DOUBLE_EQ(s.floatsPerVertex, 12.0);
