@@ -166,7 +166,7 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
       const int jn = skin.joints[j];
       const ScaledMotor joint = nodeIndexOk(scene, jn) ? world[size_t(jn)] : identityScaledMotor();
       ScaledMotor m = compose(joint, rig.inverseBind[size_t(node.skin)][j]);
-      if (relativeToNode) m.motor = mk().gp_mm(toNode, m.motor);
+      if (relativeToNode) m.motor = gpMotors(toNode, m.motor);
       if (j == 0) p.scale = m.scale;
       else if (std::fabs(m.scale - p.scale) > 1e-4f * std::fabs(p.scale)) p.uniform = false;
       float* out = &p.motors[8 * j];
