@@ -16,6 +16,11 @@ namespace mb::claims {
 // paper does not define what its number counts).
 enum class Verdict { Reproduced, Differs, NotMeasurable, Baseline, Inconclusive };
 
+// "As fast" for a timed figure = within this fraction of the other side (or faster): run-to-run
+// noise of both measurements on a shared 2-core machine is a few per cent. The speed verdict
+// (claims_speed.cpp) and the timed "vs strongest" rows (claims_strongest.cpp) use it.
+inline constexpr double kTimeTolerance = 0.10;
+
 struct Claim {
   std::string id;         // stable key, e.g. "gp_mm", "floats_per_vertex"
   std::string section;    // "Composition", "Sandwich products", "Memory", ...

@@ -18,9 +18,7 @@ namespace {
 
 using json = nlohmann::json;
 
-// "As fast" = within this fraction (or faster): run-to-run noise of both measurements on a
-// shared 2-core machine is a few per cent.
-constexpr double kTolerance = 0.10;
+constexpr double kTolerance = kTimeTolerance;
 
 std::string pct(double r) {
   char b[32];
