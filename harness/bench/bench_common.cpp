@@ -14,7 +14,7 @@ void registerKernel(const std::string& name, std::function<void(benchmark::State
 
 const char* sideKind(const std::string& side) {
   if (side == kMatrix || side == kGlm || side == kSimdMatrix || side == kSimdAffine) return "matrix";
-  if (side == kMotor || side == kSimdMotor) return "motor";
+  if (side == kMotor || side == kSimdMotor || side == kLanesMotor) return "motor";
   return "";
 }
 

@@ -38,9 +38,12 @@ inline const char* const kGlm = "glm";
 inline const char* const kSimdMatrix = "simd_matrix";
 inline const char* const kSimdAffine = "simd_affine";
 inline const char* const kSimdMotor = "simd_motor";
+// The 4-lane motor product the motor pipelines' CPU update runs (pipelines/motor/gp_motors.h),
+// one product at a time as GLM's mat4 product is on the matrix side (compose).
+inline const char* const kLanesMotor = "lanes_motor";
 
 // Which side of a pair a name is: a matrix implementation (matrix, glm, simd_matrix,
-// simd_affine), a motor one (motor, simd_motor), or neither ("").
+// simd_affine), a motor one (motor, simd_motor, lanes_motor), or neither ("").
 const char* sideKind(const std::string& side);
 
 // Working-set classes of the per-vertex kernels.

@@ -4,7 +4,10 @@
 // Matrix: T R S as a mat4, parent * local with matrix_transform.glsl's matrixCompose (the full
 // mat4 product the Sample Viewer's GLM code does). Motor: T R as gp_tr of pga.glsl, uniform
 // scale tracked as one float (the parent's scale scales the local translation), gp_mm.
-// glm: mat4_cast + scale + translation, GLM's mat4 product.
+// glm: mat4_cast + scale + translation, GLM's mat4 product. (No lanes_motor side here: its
+// 4-lane product reads the local motor the loop has just built with scalar stores back as
+// vectors, a store-forwarding stall the pipelines' update does not have — their locals are
+// converted in an earlier pass. compose/lanes_motor times the product alone.)
 // simd_matrix / simd_motor: kernels/simd's hierarchy update (the same TRS, locals and products,
 // mat4x3 for the matrix side) level by level: the nodes of one depth are one SIMD batch, so
 // this chain-heavy hierarchy (about one node per level) runs mostly one lane at a time.

@@ -6,6 +6,7 @@
 // on affine operands) and gp_mm.
 #include <glm/glm.hpp>
 
+#include "pipelines/motor/gp_motors.h"
 #include "harness/bench/bench_common.h"
 #include "harness/bench/bench_kernels.h"
 #include "kernels/simd/simd_kernels.h"
@@ -70,6 +71,11 @@ void composeMotor(benchmark::State& state) {
   ComposeData& d = composeData();
   PS P;
   composePass(state, d.pa, d.pb, d.po, [&P](const PS::motor& a, const PS::motor& b) { return P.gp_mm(a, b); });
+}
+
+void composeLanesMotor(benchmark::State& state) {
+  ComposeData& d = composeData();
+  composePass(state, d.pa, d.pb, d.po, [](const PS::motor& a, const PS::motor& b) { return motor::gpMotors(a, b); });
 }
 
 void composeGlm(benchmark::State& state) {
@@ -241,6 +247,7 @@ void registerTransformBenchmarks() {
   registerKernel("compose/matrix", composeMatrix);
   registerKernel("compose/motor", composeMotor);
   registerKernel("compose/glm", composeGlm);
+  registerKernel(std::string("compose/") + kLanesMotor, composeLanesMotor);
   registerKernel(std::string("compose/") + kSimdMatrix, composeSimdMat4);
   registerKernel(std::string("compose/") + kSimdAffine, composeSimdAffine);
   registerKernel(std::string("compose/") + kSimdMotor, composeSimdMotor);

@@ -112,23 +112,24 @@ std::string num(const nlohmann::json& v, const char* fmt = "%.4g") {
   return b;
 }
 
-// The five implementations per pair (and simd_affine where measured), motor against the
+// The five implementations per pair (and simd_affine, lanes_motor where measured), motor against the
 // shim matrix and against the fastest matrix implementation; out of cache, the fraction of the
 // probe's bandwidth each side moves. withProbe: print the probe (measured when an out-of-cache
 // kernel ran).
 void printSummary(const SummaryReporter& rep, bool withProbe) {
   const nlohmann::json pairs = report::kernelPairs({{"benchmarks", rep.benchmarks}})["pairs"];
   if (pairs.empty()) return;
-  const char* sides[] = {"matrix", "motor", "glm", "simd_matrix", "simd_motor", "simd_affine"};
+  const char* sides[] = {"matrix", "motor", "glm", "simd_matrix", "simd_motor", "simd_affine", "lanes_motor"};
   auto ips = [](const nlohmann::json& p, const char* side) {
     return p.contains(side) ? num(p[side].value("items_per_second", nlohmann::json())) : std::string("-");
   };
   std::printf("\nThroughput (items/s; the median of the repetitions where repeated). matrix, motor: the "
               "shader source through the shim; glm: GLM's operators; simd_*: kernels/simd (Highway, "
-              "target in the label); motor/matrix: the shim pair; best motor / fastest matrix: each kind's "
+              "target in the label); lanes_motor: the 4-lane motor product of the motor pipelines' update "
+              "(pipelines/motor/gp_motors.h); motor/matrix: the shim pair; best motor / fastest matrix: each kind's "
               "fastest implementation, named (> 1: the motor is faster):\n");
-  std::printf("%-28s %11s %11s %11s %11s %11s %11s %9s %28s\n", "kernel", "matrix", "motor", "glm",
-              "simd_matrix", "simd_motor", "simd_affine", "motor/mat", "best motor / fastest matrix");
+  std::printf("%-28s %11s %11s %11s %11s %11s %11s %11s %9s %28s\n", "kernel", "matrix", "motor", "glm",
+              "simd_matrix", "simd_motor", "simd_affine", "lanes_motor", "motor/mat", "best motor / fastest matrix");
   for (const nlohmann::json& p : pairs) {
     std::printf("%-28s", p.value("pair", "").c_str());
     for (const char* s : sides) std::printf(" %11s", ips(p, s).c_str());

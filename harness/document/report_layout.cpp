@@ -521,7 +521,8 @@ void kernelSection(Document& d, const json& r) {
   d.paragraph("motorbench bench (" + std::string(k.value("source", "") == "run" ? "run by this report" : "read from " + str(k["file"])) +
               "): matrix and motor kernels compiled from the same shader source through the shim with "
               "float; glm = GLM's own operators (extra baseline); simd_matrix / simd_motor = kernels/simd, the same math "
-              "hand-vectorised with Highway (compose also has simd_affine, the mat4x3 product). Out of cache = arrays "
+              "hand-vectorised with Highway (compose also has simd_affine, the mat4x3 product, and lanes_motor, the "
+              "4-lane motor product of the motor pipelines' CPU update). Out of cache = arrays "
               "of at least 256 MiB; "
               "bw = bytes/s over the STREAM probe. Ratios of items/s: > 1 means faster than matrix.");
   std::vector<std::vector<Cell>> rows;

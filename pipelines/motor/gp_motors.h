@@ -48,10 +48,14 @@ inline f4 splat(float x) { return f4{x, x, x, x}; }
 // products, same order of additions), so the result is the same bits; the two lanes whose
 // trees differ from their neighbours' (the scalar part's dot, e0123's two dots) are computed
 // as scalars and put in place. 36 vector + 12 scalar arithmetic instructions.
-inline void gpMotors(const Motor& a, const Motor& b, Motor& r) {
+// bDualScale: b's dual half is taken times this first (scaleDual of scaled_motor.h: the
+// hierarchy's parent scale), in registers — a scaled copy of b built in memory by the caller
+// would be stored as scalars and read back as vectors, a store-forwarding stall per node.
+inline void gpMotors(const Motor& a, const Motor& b, Motor& r, float bDualScale = 1.0f) {
   using lanes::f4;
+  const float ds = bDualScale;
   const f4 a0 = lanes::load(a, 0), a1 = lanes::load(a, 1);  // (s, A) and (Ad, e0123)
-  const f4 b0 = lanes::load(b, 0), b1 = lanes::load(b, 1);
+  const f4 b0 = lanes::load(b, 0), b1 = lanes::load(b, 1) * lanes::splat(ds);
   const f4 as = lanes::splat(a0[0]), bs = lanes::splat(b0[0]);
   // Rotor half, lanes 1-3: (as B + bs A) + cross(B, A).
   f4 r0 = (as * b0 + bs * a0) + (__builtin_shufflevector(b0, b0, 0, 2, 3, 1) * __builtin_shufflevector(a0, a0, 0, 3, 1, 2) -
@@ -66,14 +70,18 @@ inline void gpMotors(const Motor& a, const Motor& b, Motor& r) {
   const f4 crossBdA = __builtin_shufflevector(b1, b1, 1, 2, 0, 3) * __builtin_shufflevector(a0, a0, 3, 1, 2, 0) -
                       __builtin_shufflevector(b1, b1, 2, 0, 1, 3) * __builtin_shufflevector(a0, a0, 2, 3, 1, 0);
   const f4 A = __builtin_shufflevector(a0, a0, 1, 2, 3, 0), B = __builtin_shufflevector(b0, b0, 1, 2, 3, 0);
-  f4 r1 = sum + crossBAd + crossBdA - lanes::splat(b1[3]) * A - lanes::splat(a1[3]) * B;
-  r1[3] = (a[0][0] * b[1][3] + b[0][0] * a[1][3]) + (a[0][1] * b[1][0] + a[0][2] * b[1][1] + a[0][3] * b[1][2]) +
+  const float bp = b[1][3] * ds;
+  f4 r1 = sum + crossBAd + crossBdA - lanes::splat(bp) * A - lanes::splat(a[1][3]) * B;
+  r1[3] = (a[0][0] * bp + b[0][0] * a[1][3]) +
+          (a[0][1] * (b[1][0] * ds) + a[0][2] * (b[1][1] * ds) + a[0][3] * (b[1][2] * ds)) +
           (a[1][0] * b[0][1] + a[1][1] * b[0][2] + a[1][2] * b[0][3]);
   std::memcpy(&r[0][0], &r0, sizeof r0);
   std::memcpy(&r[1][0], &r1, sizeof r1);
 }
 #else
-inline void gpMotors(const Motor& a, const Motor& b, Motor& r) { gpMotorsScalar(a, b, r); }
+inline void gpMotors(const Motor& a, const Motor& b, Motor& r, float bDualScale = 1.0f) {
+  gpMotorsScalar(a, Motor(b[0], b[1] * bDualScale), r);
+}
 #endif
 
 inline Motor gpMotors(const Motor& a, const Motor& b) {

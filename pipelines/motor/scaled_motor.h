@@ -54,21 +54,22 @@ ScaledMotor fromMatrix(const glm::mat4& m, const TRS& approx, bool leaf,
 // way `m` moves unscaled space (s M = M' s with M' = scaleDual(M, s)).
 inline Motor scaleDual(const Motor& m, float s) { return Motor(m[0], m[1] * s); }
 
+// compose() written straight into `out` (which must not be `parent` or `child`): the motor is
+// stored as the two 4-float halves the children's compose reads back, so the store-to-load
+// forwarding of a parent's fresh result works (16-byte loads of scalar stores would stall).
+inline void composeInto(const ScaledMotor& parent, const ScaledMotor& child, ScaledMotor& out) {
+  gpMotors(parent.motor, child.motor, out.motor, parent.scale);  // = gp(parent, scaleDual(child))
+  out.scale = parent.scale * child.scale;
+  out.residual = child.residual;
+}
+
 // Parent then child: the child's transform expressed in the parent's space. Contract: the
 // parent's residual is (1,1,1) (residuals live on leaves only). Inline, so that the per-frame
 // loops (hierarchy, palettes) inline it as they inline GLM's matrix product.
 inline ScaledMotor compose(const ScaledMotor& parent, const ScaledMotor& child) {
-  return ScaledMotor{gpMotors(parent.motor, scaleDual(child.motor, parent.scale)), parent.scale * child.scale,
-                     child.residual};
-}
-
-// compose() written straight into `out` (which must not be `parent` or `child`): every float
-// stored on its own and read back on its own by the children's compose, so the store-to-load
-// forwarding of a parent's fresh result works (a 16-byte copy of scalar stores stalls it).
-inline void composeInto(const ScaledMotor& parent, const ScaledMotor& child, ScaledMotor& out) {
-  gpMotors(parent.motor, scaleDual(child.motor, parent.scale), out.motor);
-  out.scale = parent.scale * child.scale;
-  out.residual = child.residual;
+  ScaledMotor out;
+  composeInto(parent, child, out);
+  return out;
 }
 
 // Shortest-arc blend of two node transforms: (1-w) a + w (+-b) on the motors (b negated when

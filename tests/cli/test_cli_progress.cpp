@@ -35,13 +35,14 @@ TEST(Progress, CheckAndReportPrintOneLinePerItemWithTimeLeft) {
 }
 
 // bench counts the benchmarks its filter selects (Google Benchmark's list mode) before running
-// them: compose has six sides (matrix, motor, glm, simd_matrix, simd_affine, simd_motor).
+// them: compose has seven sides (matrix, motor, glm, lanes_motor, simd_matrix, simd_affine,
+// simd_motor).
 TEST(Progress, BenchPrintsOneLinePerBenchmarkWithTimeLeft) {
   std::string out;
   ASSERT_EQ(runCommand(motorbench() + "bench --benchmark_filter=^compose/ --benchmark_min_time=0.001", &out), 0) << out;
-  EXPECT_TRUE(std::regex_search(out, std::regex("bench: 1/6 benchmarks run \\(compose/matrix\\), [0-9]+ s elapsed, about [0-9]+ s left\n")))
+  EXPECT_TRUE(std::regex_search(out, std::regex("bench: 1/7 benchmarks run \\(compose/matrix\\), [0-9]+ s elapsed, about [0-9]+ s left\n")))
       << out;
-  EXPECT_TRUE(std::regex_search(out, std::regex("bench: 6/6 benchmarks run \\(compose/[a-z_]+\\), [0-9]+ s elapsed\n"))) << out;
+  EXPECT_TRUE(std::regex_search(out, std::regex("bench: 7/7 benchmarks run \\(compose/[a-z_]+\\), [0-9]+ s elapsed\n"))) << out;
   // List mode runs nothing and so shows no progress.
   out.clear();
   ASSERT_EQ(runCommand(motorbench() + "bench --benchmark_filter=^compose/ --benchmark_list_tests", &out), 0) << out;

@@ -132,6 +132,12 @@ TEST(UpdatePhases, MotorProductIsTheShadersBitForBit) {
     motor::gpMotorsScalar(a, b, scalar);
     ASSERT_EQ(std::memcmp(&fast, &shader, sizeof(Motor)), 0) << "sample " << i;
     ASSERT_EQ(std::memcmp(&scalar, &shader, sizeof(Motor)), 0) << "sample " << i;
+    // With b's dual half scaled in registers (the hierarchy's parent scale).
+    const float s = u(g);
+    Motor scaled;
+    motor::gpMotors(a, b, scaled, s);
+    const Motor scaledShader = mk().gp_mm(a, Motor(b[0], b[1] * s));
+    ASSERT_EQ(std::memcmp(&scaled, &scaledShader, sizeof(Motor)), 0) << "sample " << i;
   }
 }
 
