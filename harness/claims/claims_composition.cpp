@@ -186,7 +186,7 @@ std::vector<Claim> sceneGraphClaims(const json& kernelPairs, const json& timings
              "faster): the hierarchy kernel of motorbench bench (1536 nodes, T R S per node composed with the parent; "
              "motor: gp_tr + gp_mm + 1 scale float; matrix: the shader source's mat4 product; glm: GLM's), the "
              "fastest motor side against the fastest other side (GLM is SIMD library code; the motor side is the "
-             "scalar shim source unless a faster motor side is registered); and Pipeline::update per scene (sampling, hierarchy, skin palette) from frame "
+             "scalar shim source unless a faster motor side is registered); and Pipeline::update per scene (sampling, hierarchy, skin palette; matrix forms: + node normal matrices) from frame "
              "timing, updateMedianMs of motor against the fastest of matrix, affine, qtangent (hybrid's update is the "
              "motor pipeline's plus a conversion, so it is no matrix baseline); source: " + timingSource +
              ". Verdict: reproduced when every measurement shows a gain (< 0.95x), differs when none does, "

@@ -195,7 +195,7 @@ int runTime(const std::vector<std::string>& argv) {
   std::printf("motorbench time: %d frames per pipeline after %d warm-up, pipelines interleaved "
               "frame by frame (alternating order); frame = clear + render + glFinish (wall "
               "clock, fastest of %d back-to-back renders); update = Pipeline::update (hierarchy, "
-              "animation, skin palette) timed apart, per call (fastest block, same count); median "
+              "animation, skin palette; matrix forms: + the drawn nodes' normal matrices) timed apart, per call (fastest block, same count); median "
               "[first-third quartile]\n",
               normal.frames, normal.warmup, normal.bestOf);
   std::printf("machine: %s, %u cores; GL_RENDERER %s; GL_VERSION %s; LP_NUM_THREADS %s; "

@@ -469,7 +469,9 @@ void sceneSection(Document& d, const json& r, const json& s) {
   if (!urow.empty()) {
     d.paragraph("CPU update by phase: microseconds per update call, medians over the timed frames, from a block "
                 "of updates timed with the pipelines' phase clock on (apart from the whole-update timing, whose "
-                "median is the last column; the phases include their clock reads).");
+                "median is the last column; the phases include their clock reads). The matrix forms' hierarchy "
+                "includes the normal matrices of the drawn nodes, computed per node as the Sample Viewer's "
+                "hierarchy pass does; the motor forms need none.");
     d.table({"pipeline", "sampling us", "blending us", "conversion us", "hierarchy us", "palette us",
              "whole update us"},
             urow);
