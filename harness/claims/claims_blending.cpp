@@ -22,12 +22,6 @@ using json = nlohmann::json;
 
 constexpr int kSteps = 32;  // parameters t = k / kSteps per key pair
 
-std::string fmt(const char* f, double v) {
-  char b[48];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
 // Rotation angle between two unit quaternions, degrees (q and -q are the same rotation);
 // The quaternions lie b = 2 atan2(|a - b|, |a + b|) apart on the unit sphere (accurate for tiny
 // angles, where acos(dot) is not), and the rotations twice that.

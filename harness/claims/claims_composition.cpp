@@ -19,12 +19,6 @@ namespace {
 
 using json = nlohmann::json;
 
-std::string fmt(const char* f, double v) {
-  char b[48];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
 double total(const OpCounts& c) { return double(c.mul + c.add + c.div + c.sqrt + c.other); }
 
 // Rigid transforms as the shim's types, generic (no zero entry, so no product is skipped).

@@ -21,12 +21,6 @@ namespace {
 
 using json = nlohmann::json;
 
-std::string fmt(const char* f, double v) {
-  char b[48];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
 bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 double total(const OpCounts& c) { return double(c.mul + c.add + c.div + c.sqrt + c.other); }

@@ -22,12 +22,6 @@ namespace {
 
 using json = nlohmann::json;
 
-std::string fmt(const char* f, double v) {
-  char b[48];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
-
 // JavaScript's Math.sign: NaN stays NaN, +-0 stay +-0, else +-1.
 double jsSign(double x) { return x > 0 ? 1.0 : x < 0 ? -1.0 : x; }
 

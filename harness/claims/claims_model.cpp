@@ -128,4 +128,10 @@ nlohmann::json toJson(const Claim& c) {
           {"method", c.method}, {"verdict", verdictName(c.verdict)}, {"verdictText", c.verdictText}};
 }
 
+std::string fmt(const char* f, double v) {
+  char b[48];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
 }  // namespace mb::claims

@@ -37,6 +37,9 @@ struct Claim {
 // "reproduced", "differs", "not measurable here", "baseline", "inconclusive"
 std::string verdictName(Verdict v);
 
+// One number through a printf format ("%.2fx", "%.3g"), for the measured and verdict texts.
+std::string fmt(const char* f, double v);
+
 // Op counts as data and text: {"mul", "add", "div", "sqrt", "other", "calls"}; "48 mul, 40 add
 // + 1 div + 1 sqrt (acos)".
 nlohmann::json opsJson(const OpCounts& c);
