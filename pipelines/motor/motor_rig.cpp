@@ -151,13 +151,13 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
                                     bool relativeToNode, std::vector<JointPalette>& palettes) {
   size_t count = 0;
   for (size_t n = 0; n < scene.nodes.size(); ++n) {
-    const Node& node = scene.nodes[n];
-    if (node.mesh < 0 || node.skin < 0 || size_t(node.skin) >= scene.skins.size()) continue;
-    const Skin& skin = scene.skins[size_t(node.skin)];
+    const Skin* drawn = drawnSkin(scene, n);
+    if (!drawn) continue;
+    const Skin& skin = *drawn;
     if (palettes.size() <= count) palettes.emplace_back();
     JointPalette& p = palettes[count++];
     p.node = int(n);
-    p.skin = node.skin;
+    p.skin = scene.nodes[n].skin;
     p.scale = 1.0f;
     p.uniform = true;
     p.motors.resize(skin.joints.size() * 8);
@@ -165,7 +165,7 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
     for (size_t j = 0; j < skin.joints.size(); ++j) {
       const int jn = skin.joints[j];
       const ScaledMotor joint = nodeIndexOk(scene, jn) ? world[size_t(jn)] : identityScaledMotor();
-      ScaledMotor m = compose(joint, rig.inverseBind[size_t(node.skin)][j]);
+      ScaledMotor m = compose(joint, rig.inverseBind[size_t(p.skin)][j]);
       if (relativeToNode) m.motor = gpMotors(toNode, m.motor);
       if (j == 0) p.scale = m.scale;
       else if (std::fabs(m.scale - p.scale) > 1e-4f * std::fabs(p.scale)) p.uniform = false;

@@ -37,13 +37,6 @@ void composeWorld(const HierarchyOrder& order, const std::vector<glm::mat4>& loc
 // the same values) and composeWorld; the phases lap into `clock`.
 void poseWorldMatrices(const Scene& scene, const AnimState& state, MatrixPoseWork& work, PhaseClock& clock);
 
-// The skin of node n when it is drawn skinned (a mesh and a valid skin index), else null.
-inline const Skin* drawnSkin(const Scene& scene, size_t n) {
-  const Node& node = scene.nodes[n];
-  return node.mesh >= 0 && node.skin >= 0 && size_t(node.skin) < scene.skins.size() ? &scene.skins[size_t(node.skin)]
-                                                                                      : nullptr;
-}
-
 // The two factors of every matrix pipeline's palette entry, joint world x inverse bind: the
 // identity for a joint index out of range and for a missing inverse bind (glTF's default).
 inline glm::mat4 jointWorld(const Skin& skin, const std::vector<glm::mat4>& world, size_t j) {

@@ -198,4 +198,11 @@ struct Scene {
   int patchLevel = 16;
 };
 
+// The skin of node n when it is drawn skinned (a mesh and a valid skin index), else null.
+inline const Skin* drawnSkin(const Scene& scene, size_t n) {
+  const Node& node = scene.nodes[n];
+  return node.mesh >= 0 && node.skin >= 0 && size_t(node.skin) < scene.skins.size() ? &scene.skins[size_t(node.skin)]
+                                                                                      : nullptr;
+}
+
 }  // namespace mb
