@@ -13,6 +13,8 @@ PACKAGES=(
   libbenchmark-dev libgtest-dev libgmock-dev
   libhwy-dev                        # Google Highway: SIMD kernels with runtime dispatch (kernels/simd)
   glslang-tools spirv-tools
+  libvulkan-dev mesa-vulkan-drivers  # motorbench isa: AMD's compiler (ACO) through RADV's null device
+  libdraco-dev libmeshoptimizer-dev  # KHR_draco_mesh_compression, EXT_meshopt_compression decode
   python3 python3-matplotlib
   parallel python3-yaml              # sharded runs (motorbench --shard, tests/cli, README examples)
   chromium                          # the report opened in a real browser (tests/cli/test_cli_browser.cpp)
