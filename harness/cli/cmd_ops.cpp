@@ -11,6 +11,7 @@
 #include "harness/ops/op_count.h"
 #include "harness/ops/op_kernels.h"
 #include "harness/ops/ops_vertex.h"
+#include "harness/ops/pipeline_ops.h"
 
 namespace {
 
@@ -39,6 +40,9 @@ int runOps(const std::vector<std::string>& argv) {
   const mb::opsv::VertexOps perVertex = mb::opsv::measureVertexOps();
   std::printf("\n");
   std::fputs(mb::opsv::formatVertexOps(perVertex).c_str(), stdout);
+  const std::vector<mb::opsv::PipelineOps> perPipeline = mb::opsv::pipelineOps(perVertex);
+  std::printf("\n");
+  std::fputs(mb::opsv::formatPipelineOps(perPipeline).c_str(), stdout);
 
   if (const auto path = args.get("json")) {
     nlohmann::json j = {
@@ -48,6 +52,7 @@ int runOps(const std::vector<std::string>& argv) {
         {"source", "shaders/pga.glsl"},
         {"kernels", mb::ops::toJson(rows)},
         {"per_vertex", mb::opsv::toJson(perVertex)},
+        {"per_pipeline", mb::opsv::toJson(perPipeline)},
     };
     std::ofstream out(*path);
     if (!out || !(out << j.dump(2) << "\n")) {

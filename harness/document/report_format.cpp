@@ -94,4 +94,11 @@ std::string cell(const std::string& s) {
   return out;
 }
 
+std::string cpuMachineText(const json& cpu, const json& cores, const json& simdTarget) {
+  auto text = [](const json& v) {
+    return v.is_string() ? v.get<std::string>() : v.is_number() ? std::to_string(v.get<long long>()) : std::string("unknown");
+  };
+  return "CPU: " + text(cpu) + ", " + text(cores) + " logical cores; SIMD kernels: Highway " + text(simdTarget);
+}
+
 }  // namespace mb::report

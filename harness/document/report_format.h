@@ -22,6 +22,9 @@ std::string percent(const nlohmann::json& fraction, int decimals = 2);
 std::string spreadText(const nlohmann::json& spread, int digits = 3);
 // mul/add of an ops object ({"mul", "add", ...}), plus "+N div/sqrt/other" when present.
 std::string opsText(const nlohmann::json& ops, int decimals = 0);
+// The line above every CPU table: "CPU: <model>, <n> logical cores; SIMD kernels: Highway <target>"
+// ("unknown" for what is not given); CPU ratios hold for the CPU named.
+std::string cpuMachineText(const nlohmann::json& cpu, const nlohmann::json& cores, const nlohmann::json& simdTarget);
 // A value at a path of object keys, or null.
 const nlohmann::json& at(const nlohmann::json& j, std::initializer_list<const char*> path);
 

@@ -467,6 +467,9 @@ void sceneSection(Document& d, const json& r, const json& s) {
     urow.push_back(row);
   }
   if (!urow.empty()) {
+    const json& m = r["machine"];
+    d.paragraph("Measured on " + cpuMachineText(m["cpu"], m["logicalCores"], m["simdTarget"]) +
+                " (CPU times hold for this CPU).");
     d.paragraph("CPU update by phase: microseconds per update call, medians over the timed frames, from a block "
                 "of updates timed with the pipelines' phase clock on (apart from the whole-update timing, whose "
                 "median is the last column; the phases include their clock reads). The matrix forms' hierarchy "
@@ -502,6 +505,17 @@ void opsSection(Document& d, const json& r) {
               "matrix instructions expanded to scalar operations." +
               (ops.value("toolsProblem", "").empty() ? std::string() : " SPIR-V not counted: " + str(ops["toolsProblem"])));
   std::vector<std::vector<Cell>> rows;
+  // One row per registered pipeline (harness/ops/pipeline_ops.h): what the README's table quotes.
+  auto figure = [](const json& f, const char* way) { return f.is_object() ? opsText(f[way]) : std::string("-"); };
+  for (const json& p : ops.value("perPipeline", json::array()))
+    rows.push_back({{str(p["pipeline"])}, {figure(p["rigid"], "counted")}, {figure(p["skinned"], "counted")},
+                    {figure(p["toClip"], "counted")}, {figure(p["toClip"], "spirv")}, {figure(p["patch"], "counted")},
+                    {str(p["problem"], "")}});
+  if (!rows.empty())
+    d.table({"pipeline", "rigid (transform)", "skinned (transform, 4 joints)", "rigid to clip", "to clip (SPIR-V probes)",
+             "bezier patch to clip", "problem"},
+            rows);
+  rows.clear();
   for (const json& v : ops.value("variants", json::array()))
     rows.push_back({{str(v["pipeline"])}, {str(v["label"])}, {str(v["shader"])}, {opsText(v["counted"])},
                     {opsText(v["spirv"])}, {str(v["difference"], "")}});
@@ -520,6 +534,14 @@ void kernelSection(Document& d, const json& r) {
     d.paragraph("Not available: " + k["error"].get<std::string>() + ".");
     return;
   }
+  // The machine the bench ran on (its JSON's context; a file written before issue 26 lacks it).
+  const json& ctx = k.value("context", json::object());
+  d.paragraph("Measured on " +
+              (ctx.contains("cpu_model")
+                   ? cpuMachineText(ctx["cpu_model"], ctx["logical_cores"], ctx["simd_target"])
+                   : "an unnamed CPU (the bench file does not name it; this report ran on " +
+                         cpuMachineText(r["machine"]["cpu"], r["machine"]["logicalCores"], r["machine"]["simdTarget"]) + ")") +
+              " (CPU kernel ratios hold for the CPU named).");
   d.paragraph("motorbench bench (" + std::string(k.value("source", "") == "run" ? "run by this report" : "read from " + str(k["file"])) +
               "): matrix and motor kernels compiled from the same shader source through the shim with "
               "float; glm = GLM's own operators (extra baseline); simd_matrix / simd_motor = kernels/simd, the same math "

@@ -6,6 +6,7 @@
 #include <ctime>
 #include <string>
 
+#include "harness/bench/cpu_machine.h"
 #include "harness/timing/frame_timing.h"
 
 namespace mb::report {
@@ -33,7 +34,8 @@ nlohmann::json machineJson() {
   nlohmann::json j = {{"os", std::string(u.sysname) + " " + u.release + " " + u.machine},
                       {"compiler", std::string("gcc-compatible ") + __VERSION__},
                       {"build", build},
-                      {"date", utcNow()}};
+                      {"date", utcNow()},
+                      {"simdTarget", bench::cpuMachine().simdTarget}};
   // CPU, cores, GL and LP_NUM_THREADS as `motorbench time` records them (frame_timing.h).
   auto m = timing::machineInfo();
   if (!m) {

@@ -1,6 +1,7 @@
 #include "harness/report/report_ops.h"
 
 #include "harness/ops/ops_vertex.h"
+#include "harness/ops/pipeline_ops.h"
 #include "pipelines/pipeline.h"
 
 namespace mb::report {
@@ -55,7 +56,7 @@ json measureOpsPerVertex() {
     kernels.push_back(row);
   }
   return {{"kernels", kernels}, {"variants", variants}, {"toolsProblem", ops.toolsProblem},
-          {"detail", full}};
+          {"perPipeline", opsv::toJson(opsv::pipelineOps(ops))}, {"detail", full}};
 }
 
 json sceneOpsPerVertex(const json& ops, const json& mix) {

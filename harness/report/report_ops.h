@@ -7,9 +7,10 @@
 
 namespace mb::report {
 
-// {"kernels": [...], "variants": [...], "toolsProblem": ...} with, for every variant (one
-// pipeline's rigid / skinned / scaled-fallback vertex shader incl. world to clip), "counted"
-// and "spirv" mul/add/div/sqrt/other.
+// {"kernels": [...], "variants": [...], "toolsProblem": ..., "perPipeline": [...]} with, for
+// every variant (one pipeline's rigid / skinned / scaled-fallback vertex shader incl. world to
+// clip), "counted" and "spirv" mul/add/div/sqrt/other; "perPipeline": harness/ops/pipeline_ops.h's
+// rows (rigid, skinned, to clip, patch of every registered pipeline).
 nlohmann::json measureOpsPerVertex();
 
 // Per pipeline, the mean ops of one drawn vertex of a scene with `mix` ({"rigid", "skinned",

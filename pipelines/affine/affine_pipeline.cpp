@@ -10,12 +10,12 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "pipelines/affine/qtangent_vertices.h"
+#include "pipelines/gl/frame_vertices.h"
 #include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
-#include "pipelines/affine/affine_vertices.h"
 
 namespace mb::affine {
 namespace {
@@ -60,7 +60,7 @@ private:
   FrameFormat format_;
   std::unique_ptr<Poser> poser_;
   const Scene* scene_ = nullptr;
-  std::unique_ptr<gl::Program> rigid_, skinned_;
+  std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][no tangent] (qtangent: [.][0] only)
   std::unique_ptr<gl::Program> patch_;  // affine_patch.vs, only for scenes with patches
   gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
@@ -76,16 +76,18 @@ Status AffinePipeline::prepare(const Scene& scene) {
   release();
   scene_ = &scene;
   stats_ = PipelineStats{};
-  gl::Defines defines;
-  if (format_ == FrameFormat::QTangent) defines.push_back({"MB_QTANGENT", ""});
-  auto rigid = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
-  if (!rigid) return Status::fail(rigid.error());
-  defines.push_back({"MB_SKINNED", ""});
-  auto skinned = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
-  if (!skinned) return Status::fail(skinned.error());
-  rigid_ = rigid.take();
-  skinned_ = skinned.take();
-  skinned_->bindStorageBlock("AffineJoints", 0);
+  const bool qtangent = format_ == FrameFormat::QTangent;
+  for (int skinned = 0; skinned < 2; ++skinned)
+    for (int noTangent = 0; noTangent < (qtangent ? 1 : 2); ++noTangent) {
+      gl::Defines defines;
+      if (qtangent) defines.push_back({"MB_QTANGENT", ""});
+      if (skinned) defines.push_back({"MB_SKINNED", ""});
+      if (noTangent) defines.push_back({"MB_NO_TANGENT", ""});
+      auto program = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
+      if (!program) return Status::fail(program.error());
+      programs_[skinned][noTangent] = program.take();
+      if (skinned) programs_[skinned][noTangent]->bindStorageBlock("AffineJoints", 0);
+    }
   if (Status fits = gl::checkPaletteSize(scene, 12 * sizeof(float)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
   if (gl::hasPatches(scene)) {
@@ -105,7 +107,7 @@ Status AffinePipeline::prepare(const Scene& scene) {
     };
     geometry_.uploadPacked(scene, interleave, qtangentAttributes(), stats_);
   } else {
-    geometry_.upload(scene, interleaveFullFrame, {3, 3, 4, 2}, stats_);  // pos, n, t, uv
+    geometry_.upload(scene, gl::floatFrameFormat, stats_);  // as matrix: tangent only where needed
   }
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
@@ -151,12 +153,13 @@ void AffinePipeline::render(const View& view) {
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (as matrix and
   // motor do: a program the frame does not use uploads nothing).
-  bool frameSet[3] = {};
-  auto useProgram = [&](int which) -> const gl::Program& {
-    gl::Program& p = which == 0 ? *rigid_ : which == 1 ? *skinned_ : *patch_;
+  // skinned -1: the Bezier patch program.
+  bool frameSet[3][2] = {};
+  auto useProgram = [&](int skinned, int noTangent) -> const gl::Program& {
+    gl::Program& p = skinned < 0 ? *patch_ : *programs_[skinned][noTangent];
     p.use();
-    if (!frameSet[which]) {
-      frameSet[which] = true;
+    if (!frameSet[skinned + 1][noTangent]) {
+      frameSet[skinned + 1][noTangent] = true;
       gl::uniformMatrix4(p.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
                          stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
@@ -173,7 +176,7 @@ void AffinePipeline::render(const View& view) {
     GLuint palette = 0;
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = palettes_[i];
-    const gl::Program& program = useProgram(patch ? 2 : palette ? 1 : 0);
+    const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, g.variant == 1 ? 1 : 0);
     const glm::mat4x3& model = pose_.world[size_t(d.node)];
     const float sign = pose_.mirrors[size_t(d.node)];
     if (palette) {
@@ -204,8 +207,8 @@ void AffinePipeline::release() {
   patch_.reset();
   palettes_.release();
   textures_.release();
-  rigid_.reset();
-  skinned_.reset();
+  for (auto& row : programs_)
+    for (auto& p : row) p.reset();
   scene_ = nullptr;
 }
 

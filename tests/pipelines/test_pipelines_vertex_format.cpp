@@ -8,7 +8,7 @@
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/gl/gpu_geometry.h"
-#include "pipelines/matrix/matrix_vertices.h"
+#include "pipelines/gl/frame_vertices.h"
 #include "pipelines/scene/loader.h"
 
 using namespace mb;
@@ -57,13 +57,13 @@ TEST(MatrixVertexFormat, TangentOnlyWhereTheSampleViewerHasOne) {
   p.positions = {{1, 2, 3}, {4, 5, 6}};
   p.normals = {{0, 0, 1}, {0, 1, 0}};
   p.uv0 = {{0.25f, 0.5f}, {0.75f, 1.0f}};
-  EXPECT_FALSE(matrix::uploadsTangent(p));
+  EXPECT_FALSE(gl::uploadsTangent(p));
   // Hand-written layout: position, normal, uv.
-  EXPECT_EQ(matrix::interleaveVertices(p),
+  EXPECT_EQ(gl::interleaveVertices(p),
             (std::vector<float>{1, 2, 3, 0, 0, 1, 0.25f, 0.5f, 4, 5, 6, 0, 1, 0, 0.75f, 1.0f}));
   p.tangents = {{1, 0, 0, 1}, {0, 0, 1, -1}};
-  EXPECT_TRUE(matrix::uploadsTangent(p));
-  EXPECT_EQ(matrix::interleaveVertices(p),
+  EXPECT_TRUE(gl::uploadsTangent(p));
+  EXPECT_EQ(gl::interleaveVertices(p),
             (std::vector<float>{1, 2, 3, 0, 0, 1, 1, 0, 0, 1, 0.25f, 0.5f,  //
                                 4, 5, 6, 0, 1, 0, 0, 0, 1, -1, 0.75f, 1.0f}));
 }
