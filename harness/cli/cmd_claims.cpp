@@ -17,6 +17,7 @@
 #include "harness/bench/report_bench.h"
 #include "harness/document/report_format.h"
 #include "harness/report/report_machine.h"
+#include "harness/render/gpu_option.h"
 #include "harness/render/render_frame.h"
 #include "harness/timing/report_timing.h"
 #include "pipelines/pipeline.h"
@@ -150,9 +151,10 @@ claims::SpeedInputs speedInputs(const Args& args, json& sources) {
 }
 
 int runClaims(const std::vector<std::string>& argv) {
-  const Args args(argv, {{"o", "output", "json", "report", "bench-json", "corpus", "frames"}, {"no-run"}, {}});
+  const Args args(argv, {{"o", "output", "json", "report", "bench-json", "corpus", "frames", "gpu"}, {"no-run"}, {}});
   if (!args.error().empty()) return fail(args.error());
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
+  if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());  // the report it runs inherits MB_GPU
   args.integer("frames", 20, 1, 100000);  // checked here; speedInputs reads it
   const std::string corpus = args.get("corpus", "../shared/corpus");
   json sources = {{"opCounts", "shaders/pga.glsl, shaders/matrix_transform.glsl, shaders/motor_transform.glsl "
@@ -215,6 +217,6 @@ int runClaims(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(claims, "claims",
-           "[-o FILE] [--json FILE] [--report report.json] [--bench-json FILE] [--corpus DIR] [--frames N] [--no-run]",
+           "[-o FILE] [--json FILE] [--report report.json] [--bench-json FILE] [--corpus DIR] [--frames N] [--no-run] [--gpu auto|llvmpipe|N]",
            "every quantitative claim of the paper: paper value, measured value, method, verdict (Markdown/JSON)",
            mb::runClaims);

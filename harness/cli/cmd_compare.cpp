@@ -81,6 +81,7 @@ int runCompare(const std::vector<std::string>& argv) {
     if (!frame) return fail(frame.error());
     frames.push_back(frame.take());
   }
+  commandNotes("compare", {"drawn on " + describeGl(frames[0].gl) + " (both pipelines: one process, one device)"});
   auto metrics = compareImages(frames[0].image, frames[1].image);
   if (!metrics) return fail(metrics.error());
   Verdict verdict = judge(frames[0].image, frames[1].image, t);
@@ -114,8 +115,7 @@ int runCompare(const std::vector<std::string>& argv) {
                                          {"time", settings.anim.time}}},
       {"loaderFallbacks", loaderFallbackJson(scene)},
       {"view", toJson(frames[0].view)},
-      {"gl", {{"renderer", frames[0].glRenderer}, {"version", frames[0].glVersion},
-              {"backend", frames[0].glBackend}}},
+      {"gl", toJson(frames[0].gl)},  // both images: one device (the equivalence figures)
       {"metrics", toJson(*metrics)},
       {"thresholds", {{"applied", thresholdsGiven},
                       {"units", "fail, hardfail: channel difference / 255 (0..1); failpercent: % of pixels"},
@@ -143,7 +143,8 @@ int runCompare(const std::vector<std::string>& argv) {
 
 MB_COMMAND(compare, "compare",
            "SCENE [--pipelines matrix,motor] [--anim A] [--time T] [--anim2 B --time2 T2 --blend W] "
-           "[--camera C] [--size WxH] [--fail F(0..1)] [--failpercent P(0..100)] [--hardfail H(0..1)] -o DIR",
+           "[--camera C] [--size WxH] [--fail F(0..1)] [--failpercent P(0..100)] [--hardfail H(0..1)] "
+           "[--gpu auto|llvmpipe|N] -o DIR",
            "render a scene with two pipelines; write both images, diff.png, diff_legend.png and "
            "metrics.json; exit 1 when a threshold given is exceeded (F, H: channel difference / 255)",
            mb::runCompare);

@@ -10,6 +10,7 @@
 
 #include "harness/options/args.h"
 #include "harness/cli/command.h"
+#include "harness/render/gpu_option.h"
 #include "harness/render/render_frame.h"
 #include "harness/render/scene_inputs.h"
 #include "harness/document/report_format.h"
@@ -65,11 +66,12 @@ int runWorker(const Args& args, const report::Options& o) {
 int runReportCommand(const std::vector<std::string>& argv) {
   const Args args(argv, {{"o", "output", "jobs", "size", "frames", "bench-json", "bench-min-time", "pipelines",
                           "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
-                          "worker-index", "worker-total", "shard", "anim", "worker-anims"},
+                          "worker-index", "worker-total", "shard", "anim", "worker-anims", "gpu"},
                          {"no-bench", "no-plots"},
                          {},
                          {"anim"}});
   if (!args.error().empty()) return fail(args.error());
+  if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());  // workers inherit MB_GPU
   report::Options o;
   o.scenes = args.positional();
   o.outDir = args.get("o", args.get("output", ""));
@@ -124,7 +126,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
 MB_COMMAND(report, "report",
            "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--no-bench | "
            "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--anim [SCENE:]NAME|INDEX|all,...] "
-           "[--time-size WxH] [--no-plots] [--shard I/N]",
+           "[--time-size WxH] [--no-plots] [--shard I/N] [--gpu auto|llvmpipe|N]",
            "measure scenes with every pipeline of their space: images, diffs, memory, ops, timing, kernel "
            "ratios -> report.json/.md/.html",
            mb::runReportCommand);

@@ -24,6 +24,7 @@
 #include "harness/timing/frame_timing.h"
 #include "harness/process/report_workers.h"
 #include "harness/render/frame_options.h"
+#include "harness/render/gpu_option.h"
 #include "harness/render/scene_inputs.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/gl/patch_geometry.h"
@@ -149,8 +150,9 @@ int runTime(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "motorbench time: error: %s\n", m.c_str());
     return 2;
   };
-  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level"}, {}, {}});
+  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level", "gpu"}, {}, {}});
   if (!args.error().empty()) return fail(args.error());
+  if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());  // workers inherit MB_GPU
 
   timing::Settings normal, tiny;
   normal.frames = int(args.integer("frames", 30, 1, 100000));
@@ -193,16 +195,20 @@ int runTime(const std::vector<std::string>& argv) {
   auto machine = timing::machineInfo();
   if (!machine) return fail(machine.error());
   std::printf("motorbench time: %d frames per pipeline after %d warm-up, pipelines interleaved "
-              "frame by frame (alternating order); frame = clear + render + glFinish (wall "
-              "clock, fastest of %d back-to-back renders); update = Pipeline::update (hierarchy, "
+              "frame by frame (alternating order); frame = clear + render (%s, fastest of %d "
+              "back-to-back renders); update = Pipeline::update (hierarchy, "
               "animation, skin palette; matrix forms: + the drawn nodes' normal matrices) timed apart, per call (fastest block, same count); median "
               "[first-third quartile]\n",
-              normal.frames, normal.warmup, normal.bestOf);
-  std::printf("machine: %s, %u cores; GL_RENDERER %s; GL_VERSION %s; LP_NUM_THREADS %s; "
-              "GL timer queries: %s\n\n",
+              normal.frames, normal.warmup,
+              machine->realGpu ? "GL_TIME_ELAPSED timer query; wall clock to glFinish beside it in --json"
+                               : "wall clock to glFinish",
+              normal.bestOf);
+  std::printf("machine: %s, %u cores; GL_RENDERER %s; GL_VERSION %s; device %s; LP_NUM_THREADS %s; "
+              "frame time from: %s\n\n",
               machine->cpuModel.c_str(), machine->cores, machine->glRenderer.c_str(),
-              machine->glVersion.c_str(), machine->lpNumThreads.c_str(),
-              machine->realGpu ? "yes (real GPU)" : "no (software renderer: wall clock only)");
+              machine->glVersion.c_str(), machine->gl.deviceText().c_str(), machine->lpNumThreads.c_str(),
+              machine->realGpu ? "GPU timer queries (a real GPU)"
+                               : "the wall clock (a CPU rasterizer: its timer queries time no GPU)");
   std::printf(kRowFormat, "scene", "config", "size", "matrix frame ms", "motor frame ms",
               "motor/", "of", "CPU", "matrix update us", "motor update us", "update");
   std::printf(kRowFormat, "", "", "", "", "", "matrix", "medians", "time", "", "", "ratio");
@@ -253,7 +259,9 @@ int runTime(const std::vector<std::string>& argv) {
           {"size", {normal.width, normal.height}},
           {"vertex_bound_size", {tiny.width, tiny.height}},
           {"method", "pipelines interleaved frame by frame in alternating order; frame = clear + "
-                     "render + glFinish (steady_clock), fastest of best_of renders; also process "
+                     "render, timed as each result's frameTimeSource says (gpu-timer: GL_TIME_ELAPSED, "
+                     "read after glFinish, wall_ms beside it; wall-clock: steady_clock to glFinish), "
+                     "fastest of best_of renders; also process "
                      "CPU time; update = Pipeline::update per call; update_phases_ms = a further "
                      "block of update calls with the phase clock on, per call"}}},
         {"results", results},
@@ -271,7 +279,7 @@ int runTime(const std::vector<std::string>& argv) {
 
 MB_COMMAND(time, "time",
            "[SCENE|DIR...] [--frames N] [--warmup W] [--best-of K] [--size WxH] [--tiny WxH] "
-           "[--level N[,M...]] [--lp-threads N] [--json FILE]",
+           "[--level N[,M...]] [--lp-threads N] [--gpu auto|llvmpipe|N] [--json FILE]",
            "frame time (glFinish wall clock) and CPU update time of every pipeline; motor/matrix "
            "ratios from one interleaved run; scenes with >= 10 drawn vertices per tiny-viewport pixel "
            "(the crowd) also at that viewport (vertex-bound)",

@@ -41,6 +41,15 @@ std::string scenesText(const json& spread, const char* what = "scenes") {
   return " over " + std::to_string(n) + " " + (n == 1 ? std::string(what).substr(0, std::string(what).size() - 1) : what);
 }
 
+// Whose frame times a table shows, from the device record (machine.gl or a scene's timing.gl):
+// "Frame time on llvmpipe (LLVM 15.0.6, 256 bits) — a CPU rasterizer (wall clock)" or
+// "Frame time on NVIDIA H100 80GB HBM3/PCIe/SSE2 (GPU timer queries)".
+std::string frameTimeOn(const json& gl) {
+  if (!gl.is_object() || !gl.contains("renderer")) return "Frame time (device not recorded)";
+  const bool gpu = gl.value("kind", "") == "gpu" || gl.value("realGpu", false);
+  return "Frame time on " + str(gl["renderer"]) + (gpu ? " (GPU timer queries)" : " \u2014 a CPU rasterizer (wall clock)");
+}
+
 void header(Document& d, const json& r) {
   const json& m = r["machine"];
   d.paragraph("Measured on " + str(m["cpu"]) + " (" + str(m["logicalCores"]) + " logical cores), " +
@@ -208,6 +217,7 @@ void sceneTable(Document& d, const json& r) {
   for (const std::string& p : pipes) head.push_back(p + " frame ms");
   head.push_back("frame time motor/matrix");
   for (size_t i = 1; i < pipes.size(); ++i) head.insert(head.end(), {pipes[i] + " worst PSNR", pipes[i] + " px > 1/255"});
+  d.paragraph(frameTimeOn(at(r, {"machine", "gl"})) + ": the frame ms columns and motor/matrix below.");
   head.push_back("fallbacks (last pipeline)");
   std::vector<std::vector<Cell>> rows;
   for (const json& s : r["scenes"]) {
@@ -269,6 +279,7 @@ void curvedSection(Document& d, const json& r) {
                        {first ? "" : ratio(at(c, {"frameTimeRatio", "vertexBound"}))}});
     }
   }
+  d.paragraph(frameTimeOn(at(r, {"machine", "gl"})) + ": the two motor/matrix columns.");
   d.table({"scene", "space", "pipeline", "floats per instance", "ops per vertex (counted)", "ops per vertex (SPIR-V)",
            "images vs matrix side", "frame time motor/matrix", "vertex-bound motor/matrix"},
           table);
@@ -448,12 +459,15 @@ void sceneSection(Document& d, const json& r, const json& s) {
                     {t.is_object() ? fmt(t.value("updateMedianMs", json()), 3) : "-"},
                     {pj["error"].is_string() ? pj["error"].get<std::string>() : ""}});
   }
-  if (!prow.empty())
+  if (!prow.empty()) {
+    d.paragraph(frameTimeOn(at(s, {"timing", "gl"}).is_object() ? at(s, {"timing", "gl"}) : at(r, {"machine", "gl"})) +
+                ": the frame ms column.");
     d.table({"pipeline", "B/vertex", "floats/vertex", "floats/transform", "floats/joint",
              "bytes: vertex / skin / index / texture", "bytes per frame: uniforms / joint palette", "draws",
              "conversion ms (median)", "fallbacks", "ops/vertex (counted, mean)", "frame ms median (min..max)",
              "CPU update ms", "error"},
             prow);
+  }
   // The CPU update phase by phase (harness/timing: a block of updates with the phase clock on).
   std::vector<std::vector<Cell>> urow;
   for (const std::string& p : pipes) {
@@ -490,7 +504,8 @@ void sceneSection(Document& d, const json& r, const json& s) {
                ratio(at(c, {"update", "ratio_motor_matrix"}));
       };
       const json& vb = timing.value("vertexBound", json());
-      d.paragraph("Frame timing: " + str(timing["summary"]) + " Motor / matrix: " + ratios(timing) +
+      d.paragraph(frameTimeOn(timing.value("gl", at(r, {"machine", "gl"}))) + ": " + str(timing["summary"]) +
+                  " Motor / matrix: " + ratios(timing) +
                   "; vertex-bound: " + (vb.contains("skipped") ? str(vb["skipped"]) : ratios(vb)) + ".");
     }
   }
@@ -584,7 +599,8 @@ void method(Document& d) {
       "and cross-checked in the optimised SPIR-V of the real vertex shaders; per scene, the mean over drawn "
       "vertices, weighted by the variant (rigid, skinned, scaled fallback) each vertex goes through.",
       "Frame timing (harness/timing/frame_timing.h, as `motorbench time`): per scene, in a worker process that runs "
-      "alone (never alongside other scenes); wall clock around update + render + glFinish after warm-up, each "
+      "alone (never alongside other scenes); on a CPU rasterizer the wall clock around update + render + glFinish, "
+      "on a real GPU GL_TIME_ELAPSED timer queries (wall clock beside them), after warm-up, each "
       "frame the fastest of a few renders, pipelines interleaved; process CPU time and the CPU update beside "
       "it; ratios are motor / matrix from the same process.",
       "Kernel throughput: Google Benchmark via `motorbench bench` (JSON kept next to the report).",

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "harness/render/gpu_option.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
 
@@ -64,7 +65,7 @@ Result<float> timeFor(const Args& args, const std::string& timeKey, double fallb
 OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags) {
   OptionSpec spec;
   spec.values = std::move(values);
-  spec.values.insert({"o", "output", "anim", "time", "anim2", "time2", "blend", "camera", "size"});
+  spec.values.insert({"o", "output", "anim", "time", "anim2", "time2", "blend", "camera", "size", "gpu"});
   spec.flags = std::move(flags);
   const std::string once =
       "a run draws one frame per pipeline: run the command once per time (report draws three times per scene)";
@@ -141,6 +142,7 @@ Result<SceneCommand> parseSceneCommand(const Args& args, const std::string& outp
   SceneCommand c;
   c.output = args.get("o", args.get("output", ""));
   if (c.output.empty()) return R::fail("missing -o " + outputWhat);
+  if (Status gpu = applyGpuOption(args); !gpu) return R::fail(gpu.error());
   if (Status ok = checkSceneSpec(args.positional()[0]); !ok) return R::fail(ok.error());
   auto scene = loadScene(args.positional()[0]);
   if (!scene) return R::fail(scene.error());

@@ -21,7 +21,7 @@ struct FrameSettings {
 
 // The option spec of a command that renders one SCENE to -o/--output: `values` and `flags`
 // plus -o/--output and the frame options --anim A --time T [--anim2 B --time2 T2 --blend W]
-// --camera C --size WxH. A repeated --time is an error (one frame per run).
+// --camera C --size WxH --gpu (gpu_option.h). A repeated --time is an error (one frame per run).
 OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags = {});
 
 // Reads the frame options against `scene`. Animations and cameras are indices or names. Rules
@@ -42,7 +42,8 @@ Status checkSceneSpec(const std::string& spec);
 
 // The start of every command that renders one SCENE to an output (-o / --output): rejects a
 // parse error (args.error()), anything but one SCENE, a missing output (`outputWhat` names it
-// in the message, e.g. "out.png"); then checks and loads the scene and reads the frame options.
+// in the message, e.g. "out.png"), a bad --gpu (applyGpuOption); then checks and loads the
+// scene and reads the frame options.
 struct SceneCommand {
   std::string output;
   Scene scene;

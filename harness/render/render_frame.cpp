@@ -64,6 +64,7 @@ Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
   frame.glRenderer = (*ctx)->info().renderer;
   frame.glVersion = (*ctx)->info().version;
   frame.glBackend = (*ctx)->info().backend;
+  frame.gl = (*ctx)->info();
   Status prepared = p->prepare(scene);
   if (!prepared) return R::fail(where + prepared.error());
   p->update(settings.anim);
@@ -97,6 +98,17 @@ nlohmann::json toJson(const PipelineStats& s) {
           {"shearMatrixNodes", s.shearMatrixNodes}, {"zeroScalarFrames", s.zeroScalarFrames},
           {"biasedFrames", s.biasedFrames}};
 }
+
+nlohmann::json toJson(const gl::ContextInfo& gl) {
+  using nlohmann::json;
+  return {{"backend", gl.backend}, {"renderer", gl.renderer}, {"version", gl.version}, {"vendor", gl.vendor},
+          {"realGpu", gl.realGpu()}, {"kind", gl.realGpu() ? "gpu" : "cpu-rasterizer"},
+          {"device", {{"index", gl.deviceIndex >= 0 ? json(gl.deviceIndex) : json(nullptr)},
+                      {"software", gl.deviceSoftware},
+                      {"drm", gl.drm.empty() ? json(nullptr) : json(gl.drm)}}}};
+}
+
+std::string describeGl(const gl::ContextInfo& gl) { return gl.renderer + " on " + gl.deviceText(); }
 
 nlohmann::json toJson(const FrameSettings& s) {
   return {{"anim", s.anim.anim}, {"time", s.anim.time}, {"anim2", s.anim.anim2},

@@ -10,6 +10,7 @@
 
 #include "harness/render/frame_options.h"
 #include "harness/render/image_metrics.h"
+#include "pipelines/gl/context.h"
 #include "pipelines/pipeline.h"
 #include "pipelines/result.h"
 
@@ -20,6 +21,7 @@ struct Frame {
   PipelineStats stats;
   View view;
   std::string glRenderer, glVersion, glBackend;
+  gl::ContextInfo gl;  // the whole record: device, vendor (toJson below)
 };
 
 // Background every pipeline clears to (RGBA8 values / 255, written as-is).
@@ -41,6 +43,12 @@ Result<std::vector<RgbaImage>> renderFrames(const Scene& scene, const std::strin
 nlohmann::json toJson(const PipelineStats& stats);
 nlohmann::json toJson(const FrameSettings& settings);
 nlohmann::json toJson(const View& view);
+// The GL context a figure was taken on, as report.json's machine.gl, `time --json` and compare's
+// metrics.json record it: {"backend", "renderer", "version", "vendor", "realGpu", "kind" ("gpu" |
+// "cpu-rasterizer"), "device": {"index" (null unless egl-device), "software", "drm" (or null)}}.
+nlohmann::json toJson(const gl::ContextInfo& gl);
+// "llvmpipe (LLVM 15.0.6, 256 bits) on egl-device 0, software": what every command prints.
+std::string describeGl(const gl::ContextInfo& gl);
 // psnr is null (and "identical" true) for identical images: JSON has no infinity.
 nlohmann::json toJson(const ImageMetrics& metrics);
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "harness/bench/cpu_machine.h"
+#include "harness/render/render_frame.h"
 #include "harness/timing/frame_timing.h"
 
 namespace mb::report {
@@ -46,8 +47,7 @@ nlohmann::json machineJson() {
   j["cpu"] = m->cpuModel;
   j["logicalCores"] = m->cores;
   j["lpNumThreads"] = m->lpNumThreads == "unset" ? nlohmann::json(nullptr) : nlohmann::json(m->lpNumThreads);
-  j["gl"] = {{"renderer", m->glRenderer}, {"version", m->glVersion}, {"backend", m->glBackend},
-             {"realGpu", m->realGpu}};
+  j["gl"] = toJson(m->gl);  // renderer, version, vendor, backend, realGpu, kind, device
   return j;
 }
 

@@ -208,7 +208,7 @@ json measureScene(const SceneJob& job) {
         pj["draws"] = f->stats.draws;
         pj["skinBlend"] = skinBlendOf(p);
         if (!out.contains("gl"))
-          out["gl"] = {{"renderer", f->glRenderer}, {"version", f->glVersion}, {"backend", f->glBackend}};
+          out["gl"] = toJson(f->gl);  // the device record (render_frame.h)
       }
       images.emplace(p, std::move(f->image));
     }
