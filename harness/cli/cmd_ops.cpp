@@ -10,6 +10,7 @@
 #include "harness/cli/command.h"
 #include "harness/ops/op_count.h"
 #include "harness/ops/op_kernels.h"
+#include "harness/isa/isa_ops.h"
 #include "harness/ops/ops_vertex.h"
 #include "harness/ops/pipeline_ops.h"
 
@@ -44,6 +45,12 @@ int runOps(const std::vector<std::string>& argv) {
   std::printf("\n");
   std::fputs(mb::opsv::formatPipelineOps(perPipeline).c_str(), stdout);
 
+  // The same variants as AMD's compiler builds them (harness/isa), when RADV is installed.
+  std::fflush(stdout);
+  const auto isa = mb::isa::runIsa({});
+  if (isa) std::fputs(mb::isa::formatIsaBesideOps(perVertex, *isa).c_str(), stdout);
+  else std::printf("\nNo ISA columns: %s\n", isa.error().c_str());
+
   if (const auto path = args.get("json")) {
     nlohmann::json j = {
         {"tool", "motorbench ops"},
@@ -53,6 +60,7 @@ int runOps(const std::vector<std::string>& argv) {
         {"kernels", mb::ops::toJson(rows)},
         {"per_vertex", mb::opsv::toJson(perVertex)},
         {"per_pipeline", mb::opsv::toJson(perPipeline)},
+        {"isa", isa ? mb::isa::isaBesideOpsJson(perVertex, *isa) : nlohmann::json{{"error", isa.error()}}},
     };
     std::ofstream out(*path);
     if (!out || !(out << j.dump(2) << "\n")) {

@@ -66,7 +66,7 @@ int runWorker(const Args& args, const report::Options& o) {
 int runReportCommand(const std::vector<std::string>& argv) {
   const Args args(argv, {{"o", "output", "jobs", "size", "frames", "bench-json", "bench-min-time", "pipelines",
                           "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
-                          "worker-index", "worker-total", "shard", "anim", "worker-anims", "gpu"},
+                          "worker-index", "worker-total", "shard", "anim", "worker-anims", "gpu", "isa-json"},
                          {"no-bench", "no-plots"},
                          {},
                          {"anim"}});
@@ -116,6 +116,14 @@ int runReportCommand(const std::vector<std::string>& argv) {
     if (nlohmann::json::parse(in, nullptr, false).is_discarded())
       return fail("--bench-json " + o.benchJson + ": not JSON (expected a `motorbench bench --out` file)");
   }
+  if (auto isa = args.get("isa-json")) {
+    std::ifstream in(*isa);
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (!in.is_open()) return fail("--isa-json " + *isa + ": no such file (write one with `motorbench isa --json FILE`)");
+    if (j.is_discarded() || !j.is_object() || j.value("schema", "") != "motorbench-isa/1")
+      return fail("--isa-json " + *isa + ": not a `motorbench isa --json` file (schema motorbench-isa/1)");
+    o.isaJson = *isa;
+  }
   for (const std::string& w : emptyInputWarnings(o.scenes)) std::fprintf(stderr, "motorbench report: warning: %s\n", w.c_str());
   return report::runReport(o);
 }
@@ -126,7 +134,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
 MB_COMMAND(report, "report",
            "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--no-bench | "
            "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--anim [SCENE:]NAME|INDEX|all,...] "
-           "[--time-size WxH] [--no-plots] [--shard I/N] [--gpu auto|llvmpipe|N]",
+           "[--time-size WxH] [--no-plots] [--shard I/N] [--gpu auto|llvmpipe|N] [--isa-json FILE]",
            "measure scenes with every pipeline of their space: images, diffs, memory, ops, timing, kernel "
            "ratios -> report.json/.md/.html",
            mb::runReportCommand);

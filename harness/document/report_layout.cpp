@@ -5,6 +5,7 @@
 
 #include "harness/document/report_document.h"
 #include "harness/document/report_format.h"
+#include "harness/document/report_isa.h"
 
 namespace mb::report {
 namespace {
@@ -621,6 +622,7 @@ Document reportDocument(const json& r) {
   statisticsSection(d, r);
   for (const json& s : r["scenes"]) sceneSection(d, r, s);
   opsSection(d, r);
+  isaSection(d, r);
   kernelSection(d, r);
   method(d);
   glossary(d, r);
