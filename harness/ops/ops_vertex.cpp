@@ -126,11 +126,17 @@ std::string describeDefines(const ShaderVariant& v) {
 
 }  // namespace
 
-VertexOps measureVertexOps() {
+VertexOps measureVertexOps(const OpsStep& step) {
   VertexOps ops;
   const spirv::Tools tools = spirv::findTools();
   ops.toolsProblem = spirv::toolsProblem(tools);
-  for (const VertexKernel& k : vertexKernels()) {
+  const std::vector<VertexKernel> kernels = vertexKernels();
+  const std::vector<ShaderVariant> variants = shaderVariants();
+  size_t done = 0;
+  auto stepDone = [&](const std::string& what) {
+    if (step) step(++done, kernels.size() + variants.size(), what);
+  };
+  for (const VertexKernel& k : kernels) {
     KernelRow r{k, countVertexKernel(k), std::nullopt, std::nullopt, std::nullopt, "", ""};
     if (ops.toolsProblem.empty()) {
       auto full = countProbe(k, spirv::Optimise::Full);
@@ -143,8 +149,9 @@ VertexOps measureVertexOps() {
       r.why = kernelWhy(r);
     }
     ops.kernels.push_back(std::move(r));
+    stepDone(k.pipeline + " " + k.kernel);
   }
-  for (const ShaderVariant& v : shaderVariants()) {
+  for (const ShaderVariant& v : variants) {
     VariantRow row{v, {}, Counts{}, std::nullopt, "", ""};
     for (const std::string& fn : v.kernels)
       for (const KernelRow& k : ops.kernels)
@@ -167,6 +174,7 @@ VertexOps measureVertexOps() {
     }
     if (row.shader) row.why = variantWhy(row);
     ops.variants.push_back(std::move(row));
+    stepDone(v.pipeline + " " + v.label + " vertex shader");
   }
   return ops;
 }

@@ -544,8 +544,11 @@ struct VertexOps {
   std::string toolsProblem;  // non-empty: no SPIR-V column
 };
 
-// Counts every kernel and, when the tools run, compiles every probe and variant.
-VertexOps measureVertexOps();
+// Counts every kernel and, when the tools run, compiles every probe and variant. `step` (when
+// set) is called after each kernel and variant with (done, total, what): compiling them all
+// takes a minute or more, and a caller such as the report shows progress.
+using OpsStep = std::function<void(size_t done, size_t total, const std::string& what)>;
+VertexOps measureVertexOps(const OpsStep& step = {});
 std::string formatVertexOps(const VertexOps& ops);
 nlohmann::json toJson(const VertexOps& ops);
 
