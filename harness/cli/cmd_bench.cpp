@@ -236,3 +236,8 @@ int runBench(const std::vector<std::string>& args) {
 MB_COMMAND(bench, "bench", "[--out FILE] [--benchmark_filter=REGEX] [--benchmark_*...]",
            "Google Benchmark: matrix vs motor (vs glm) kernels in and out of cache, STREAM probe",
            mb::runBench);
+MB_COMMAND_HELP(bench, "bench",
+               "  --out FILE               Google Benchmark JSON (report --bench-json reads it)\n"
+               "  --benchmark_filter=REGEX  only the kernels matching (e.g. ^compose/)\n"
+               "  --benchmark_*             any other Google Benchmark option (min time, repetitions, colour)\n",
+                "motorbench bench --benchmark_filter=^compose/ --out out/bench.json", false);

@@ -140,6 +140,8 @@ int check(const Selection& sel) {
   run.shard = {{"index", sel.shard.index}, {"count", sel.shard.count}, {"inputs", sel.scenes}};
   std::vector<std::string> mine;
   for (size_t k : shardPositions(sel.scenes, sel.shard)) mine.push_back(sel.scenes[k]);
+  if (const std::string note = emptyShardNote(sel.shard, sel.scenes.size(), mine.size()); !note.empty())
+    commandNotes("check", {note});
   std::set<std::string> rendererNotes, planned;
   Progress progress("check", "scenes checked", mine.size(), false);
   for (const std::string& name : mine) {
@@ -310,6 +312,15 @@ int runCheck(const std::vector<std::string>& argv) {
     return fail("tests/golden/" + std::string(golden::kManifest) + " not found under " + fs::current_path().string() +
                 ": run check from the repository root, or pass --golden DIR (the folder holding " +
                 golden::kManifest + ", e.g. --golden /path/to/motorbench/tests/golden)");
+  // A --golden folder without golden.json is the wrong folder: --update there would make a golden
+  // set of this renderer's own images, so the check would compare the renderer with itself.
+  if (args.has("golden") && !args.has("update") && !fs::exists(fs::path(sel.goldenDir) / golden::kManifest))
+    return fail("--golden " + sel.goldenDir + ": not a golden folder (no " + golden::kManifest +
+                " there). A golden folder holds " + golden::kManifest +
+                " (the thresholds and the list of images with the GL renderer that made them) and one PNG per "
+                "scene, pose and pipeline, e.g. tests/golden of the motorbench repository; pass that folder. "
+                "Do not make one here with --update: goldens rendered by the renderer under test would "
+                "compare it with itself");
   // Which goldens this device is checked against (or, updating, writes): golden_device.h.
   auto ctx = gl::sharedContext();
   if (!ctx) return fail(ctx.error());
@@ -332,3 +343,12 @@ MB_COMMAND(check, "check",
            "[--gpu auto|llvmpipe|N]",
            "compare renders with the golden images (exit 1 on a threshold, 2 on a missing golden)",
            mb::runCheck);
+MB_COMMAND_HELP(check, "check",
+               "  --golden DIR       the golden folder: golden.json + one PNG per scene, pose and pipeline\n"
+               "                     (default tests/golden from the repository root)\n"
+               "  --scenes a,b       only these scenes;  --pipelines p,q  only these pipelines\n"
+               "  --out DIR          actual, expected and diff images of failures, summary.html, check.json\n"
+               "  --update           re-render the selection into --golden and rewrite golden.json\n"
+               "  --shader-dir DIR   run against a modified copy of shaders/\n"
+               "  --shard I/N        only every N-th golden from the I-th\n",
+                "motorbench check --scenes normal_torus --out out/check", true);

@@ -76,3 +76,6 @@ int runOps(const std::vector<std::string>& argv) {
 MB_COMMAND(ops, "ops", "[--json FILE]",
            "count mul/add/div/sqrt per PGA kernel and matrix op, next to the paper's claims; ops per "
            "vertex of each pipeline, counted and from SPIR-V", runOps);
+MB_COMMAND_HELP(ops, "ops",
+               "  --json FILE        every count as JSON\n",
+                "motorbench ops --json out/ops.json", false);

@@ -11,6 +11,7 @@
 #include "harness/options/args.h"
 #include "harness/cli/command.h"
 #include "harness/render/gpu_option.h"
+#include "harness/cli/output_paths.h"
 #include "harness/render/render_frame.h"
 #include "harness/render/scene_inputs.h"
 #include "harness/document/report_format.h"
@@ -124,6 +125,8 @@ int runReportCommand(const std::vector<std::string>& argv) {
       return fail("--isa-json " + *isa + ": not a `motorbench isa --json` file (schema motorbench-isa/1)");
     o.isaJson = *isa;
   }
+  if (Status ok = prepareOutputFolder("-o", o.outDir, "report.json, report.md, report.html, images/, plots/"); !ok)
+    return fail(ok.error());
   for (const std::string& w : emptyInputWarnings(o.scenes)) std::fprintf(stderr, "motorbench report: warning: %s\n", w.c_str());
   return report::runReport(o);
 }
@@ -138,3 +141,16 @@ MB_COMMAND(report, "report",
            "measure scenes with every pipeline of their space: images, diffs, memory, ops, timing, kernel "
            "ratios -> report.json/.md/.html",
            mb::runReportCommand);
+MB_COMMAND_HELP(report, "report",
+               "  SCENE|FILE|DIR...  scenes (default: the built-in ones, then s3_tiling and h3_tiling)\n"
+               "  -o, --output DIR   the report folder: report.json/.md/.html, images/, plots/\n"
+               "  --jobs N           scenes measured at once (default 1)\n"
+               "  --size WxH         image size (default 256x192);  --time-size WxH  timing viewport\n"
+               "  --frames N         timed frames per pipeline (0: no timing)\n"
+               "  --no-bench | --bench-json FILE   skip the kernel ratios, or read them from `bench --out`\n"
+               "  --bench-min-time S Google Benchmark min time per kernel (default 0.05)\n"
+               "  --pipelines a,b    pipelines (default: every pipeline of each scene's space)\n"
+               "  --anim ITEMS       animations shown: NAME, INDEX, all or SCENE:NAME, comma-separated\n"
+               "  --no-plots         no plots;  --python P  the python with matplotlib;  --timeout S  per worker\n"
+               "  --shard I/N        only every N-th scene from the I-th (merge puts shards together)\n",
+                "motorbench report textured_box --frames 0 --no-bench -o out/report", true);

@@ -46,6 +46,12 @@ std::string spreadText(const json& s, int digits) {
   return lo == hi ? med : med + " (" + lo + ".." + hi + ")";
 }
 
+std::string noneText(const json& spread, const std::string& why) {
+  const int none = spread.is_object() ? spread.value("none", 0) : 0;
+  if (none == 0) return "";
+  return "; none on " + std::to_string(none) + " scene" + (none == 1 ? " " : "s ") + why;
+}
+
 std::string opsText(const json& o, int decimals) {
   if (!o.is_object()) return "-";
   std::string s = fixed(o.value("mul", json()), decimals) + " mul / " + fixed(o.value("add", json()), decimals) + " add";

@@ -20,6 +20,9 @@ std::string psnrText(const nlohmann::json& metrics);
 std::string percent(const nlohmann::json& fraction, int decimals = 2);
 // min / median / max of report_document's spread(): "36" when all equal, else "36 (32..40)".
 std::string spreadText(const nlohmann::json& spread, int digits = 3);
+// "; none on N scene(s) <why>" for a spread's "none" count (scenes where a pipeline has no such
+// value at all, e.g. no node transform on a skinned-only scene); "" when 0.
+std::string noneText(const nlohmann::json& spread, const std::string& why);
 // mul/add of an ops object ({"mul", "add", ...}), plus "+N div/sqrt/other" when present.
 std::string opsText(const nlohmann::json& ops, int decimals = 0);
 // The line above every CPU table: "CPU: <model>, <n> logical cores; SIMD kernels: Highway <target>"

@@ -103,7 +103,11 @@ void summary(Document& d, const json& r) {
   row("bytes per vertex, primitives without normal map", fromSpread("bytesPerVertexNotNormalMapped", 3));
   row("bytes per vertex incl. skin + extra streams", fromSpread("bytesPerVertexAll", 3));
   row("floats per vertex", fromSpread("floatsPerVertex", 3));
-  row("floats per transform", fromSpread("floatsPerTransform", 3));
+  row("floats per transform", [&sum](const std::string& p) {
+    const json& spread = at(sum, {"pipelines"})[p]["floatsPerTransform"];
+    return spreadText(spread, 3) + scenesText(spread) +
+           noneText(spread, "whose every draw is skinned (the joint palette moves the mesh)");
+  });
   row("floats per transform incl. the per-draw scale", fromSpread("floatsPerTransformWithScale", 3));
   row("floats per joint (skinned scenes)", fromSpread("floatsPerJoint", 3));
   row("load-time conversion [ms]", fromSpread("conversionMs", 3));
@@ -449,7 +453,10 @@ void sceneSection(Document& d, const json& r, const json& s) {
     const json& t = at(s, {"timing", "pipelines"}).is_object() && s["timing"]["pipelines"].contains(p) ? s["timing"]["pipelines"][p] : json();
     const json& o = at(s, {"opsPerVertex"}).is_object() && s["opsPerVertex"].contains(p) ? s["opsPerVertex"][p] : json();
     prow.push_back({{p}, {fmt(mem.value("bytesPerVertex", json()))}, {fmt(mem.value("floatsPerVertex", json()))},
-                    {fmt(mem.value("floatsPerTransform", json()))}, {fmt(mem.value("floatsPerJoint", json()))},
+                    {mem.value("floatsPerTransform", json()).is_null() && mem.contains("floatsPerTransform")
+                         ? std::string("none (skinned draws only)")
+                         : fmt(mem.value("floatsPerTransform", json()))},
+                    {fmt(mem.value("floatsPerJoint", json()))},
                     {str(mem.value("vertexBytes", json())) + " / " + str(mem.value("skinVertexBytes", json())) + " / " +
                      str(mem.value("indexBytes", json())) + " / " + str(mem.value("textureBytes", json()))},
                     {str(mem.value("uniformBytesPerFrame", json())) + " / " + str(mem.value("skinBytesPerFrame", json()))},

@@ -129,12 +129,18 @@ const KernelRow* findKernel(const std::vector<KernelRow>& kernels, const std::st
   return matches == 1 ? only : nullptr;
 }
 
-VertexOps measureVertexOps(SpirvDepth depth) {
+VertexOps measureVertexOps(SpirvDepth depth, const OpsStep& step) {
   VertexOps ops;
   const spirv::Tools tools = spirv::findTools();
   ops.toolsProblem = depth == SpirvDepth::None ? "SPIR-V not counted in this run" : spirv::toolsProblem(tools);
   const bool full = depth == SpirvDepth::Full;
-  for (const VertexKernel& k : vertexKernels()) {
+  const std::vector<VertexKernel> kernels = vertexKernels();
+  const std::vector<ShaderVariant> variants = shaderVariants();
+  size_t done = 0;
+  auto stepDone = [&](const std::string& what) {
+    if (step) step(++done, kernels.size() + variants.size(), what);
+  };
+  for (const VertexKernel& k : kernels) {
     KernelRow r{k, countVertexKernel(k), std::nullopt, std::nullopt, std::nullopt, "", ""};
     if (ops.toolsProblem.empty()) {
       auto optimised = countProbe(k, spirv::Optimise::Full);
@@ -147,8 +153,9 @@ VertexOps measureVertexOps(SpirvDepth depth) {
       }
     }
     ops.kernels.push_back(std::move(r));
+    stepDone(k.pipeline + " " + k.kernel);
   }
-  for (const ShaderVariant& v : shaderVariants()) {
+  for (const ShaderVariant& v : variants) {
     VariantRow row{v, {}, Counts{}, std::nullopt, "", ""};
     for (const std::string& fn : v.kernels) {
       const KernelRow* k = findKernel(ops.kernels, v.pipeline, fn);
@@ -176,6 +183,7 @@ VertexOps measureVertexOps(SpirvDepth depth) {
     }
     if (row.shader && row.error.empty()) row.why = variantWhy(row);
     ops.variants.push_back(std::move(row));
+    stepDone(v.pipeline + " " + v.label + " vertex shader");
   }
   return ops;
 }

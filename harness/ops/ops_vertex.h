@@ -6,6 +6,7 @@
 // A variant's counted ops are the sum of the kernels its main() calls; pipeline_ops.h reduces
 // the variants to one row per registered pipeline.
 #pragma once
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,8 +56,11 @@ const KernelRow* findKernel(const std::vector<KernelRow>& kernels, const std::st
 enum class SpirvDepth { None, Probes, Full };
 
 // Counts every kernel and, when the tools run, compiles the SPIR-V `depth` asks for. A variant
-// naming a kernel findKernel cannot resolve carries an error and no counts.
-VertexOps measureVertexOps(SpirvDepth depth = SpirvDepth::Full);
+// naming a kernel findKernel cannot resolve carries an error and no counts. `step` (when set) is
+// called after each kernel and variant with (done, total, what): compiling them all takes a
+// minute or more, and a caller such as the report shows progress.
+using OpsStep = std::function<void(size_t done, size_t total, const std::string& what)>;
+VertexOps measureVertexOps(SpirvDepth depth = SpirvDepth::Full, const OpsStep& step = {});
 std::string formatVertexOps(const VertexOps& ops);
 nlohmann::json toJson(const VertexOps& ops);
 

@@ -1,12 +1,15 @@
 #include "harness/render/frame_options.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
 #include "harness/render/gpu_option.h"
+#include "pipelines/pipeline.h"
 #include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/scene/curved_space.h"
 #include "pipelines/scene/loader.h"
 
 namespace mb {
@@ -60,6 +63,13 @@ Result<float> timeFor(const Args& args, const std::string& timeKey, double fallb
   return float(t);
 }
 
+// The glTF built-ins, then the curved-space ones (s3_tiling, h3_tiling).
+std::vector<std::string> everyBuiltinName() {
+  std::vector<std::string> names = builtinSceneNames();
+  names.insert(names.end(), curvedSceneNames().begin(), curvedSceneNames().end());
+  return names;
+}
+
 }  // namespace
 
 OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags) {
@@ -83,7 +93,15 @@ Status checkSceneSpec(const std::string& spec) {
                                "(inspect, report and time take folders)");
   if (!fs::exists(spec, ec))
     return Status::fail(spec + ": no such file, and not a built-in scene (built-in: " +
-                        joinNames(builtinSceneNames()) + ")");
+                        joinNames(everyBuiltinName()) + ")");
+  return Status();
+}
+
+Status checkPipelineNames(const std::string& option, const std::vector<std::string>& names) {
+  const std::vector<std::string> known = allPipelineNames();
+  for (const std::string& n : names)
+    if (std::find(known.begin(), known.end(), n) == known.end())
+      return Status::fail(option + " " + n + ": unknown pipeline (registered: " + joinNames(known) + ")");
   return Status();
 }
 

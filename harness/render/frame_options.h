@@ -40,6 +40,10 @@ Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene
 // name (listing the built-in names). Success for an existing file or a built-in name.
 Status checkSceneSpec(const std::string& spec);
 
+// Checks pipeline names given to `option` (e.g. "--pipeline") against the registry before any
+// scene is loaded: "--pipeline Motor: unknown pipeline (registered: matrix, motor, ...)".
+Status checkPipelineNames(const std::string& option, const std::vector<std::string>& names);
+
 // The start of every command that renders one SCENE to an output (-o / --output): rejects a
 // parse error (args.error()), anything but one SCENE, a missing output (`outputWhat` names it
 // in the message, e.g. "out.png"), a bad --gpu (applyGpuOption); then checks and loads the

@@ -79,7 +79,15 @@ Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
   return frame;
 }
 
+int64_t drawnPixels(const RgbaImage& image) {
+  std::array<uint8_t, 3> background;
+  for (int c = 0; c < 3; ++c) background[size_t(c)] = uint8_t(std::lround(kBackground[c] * 255.0f));
+  return countPixelsOtherThan(image, background);
+}
+
 nlohmann::json toJson(const PipelineStats& s) {
+  const bool timed = s.updatePhases.total() > 0;  // phases are timed only with the phase clock on
+  auto phase = [timed](double ms) { return timed ? nlohmann::json(ms) : nlohmann::json(nullptr); };
   return {{"vertexBytes", s.vertexBytes}, {"skinVertexBytes", s.skinVertexBytes},
           {"extraVertexBytes", s.extraVertexBytes}, {"patchBytes", s.patchBytes}, {"patchPatternBytes", s.patchPatternBytes}, {"indexBytes", s.indexBytes},
           {"textureBytes", s.textureBytes}, {"uniformBytesPerFrame", s.uniformBytesPerFrame},
@@ -90,9 +98,9 @@ nlohmann::json toJson(const PipelineStats& s) {
           {"floatsPerTransformWithScale", s.floatsPerTransformWithScale},
           {"floatsPerJoint", s.floatsPerJoint}, {"draws", s.draws},
           {"conversionMs", s.conversionMs}, {"updateMs", s.updateMs},
-          {"updateSamplingMs", s.updatePhases.samplingMs}, {"updateBlendingMs", s.updatePhases.blendingMs},
-          {"updateConversionMs", s.updatePhases.conversionMs}, {"updateHierarchyMs", s.updatePhases.hierarchyMs},
-          {"updatePaletteMs", s.updatePhases.paletteMs},
+          {"updateSamplingMs", phase(s.updatePhases.samplingMs)}, {"updateBlendingMs", phase(s.updatePhases.blendingMs)},
+          {"updateConversionMs", phase(s.updatePhases.conversionMs)},
+          {"updateHierarchyMs", phase(s.updatePhases.hierarchyMs)}, {"updatePaletteMs", phase(s.updatePhases.paletteMs)},
           {"nonUniformScaleNodes", s.nonUniformScaleNodes},
           {"negativeScaleNodes", s.negativeScaleNodes},
           {"shearMatrixNodes", s.shearMatrixNodes}, {"zeroScalarFrames", s.zeroScalarFrames},

@@ -27,6 +27,11 @@ struct Frame {
 // Background every pipeline clears to (RGBA8 values / 255, written as-is).
 constexpr float kBackground[4] = {0.2f, 0.2f, 0.22f, 1.0f};
 
+// Pixels some primitive covered: those whose RGB differs from kBackground as the framebuffer
+// stores it (8-bit, rounded). A drawn pixel that happens to equal the background exactly is not
+// counted. 0: the frame is background only (nothing drawn, or drawn off screen or at zero scale).
+int64_t drawnPixels(const RgbaImage& image);
+
 // Renders `scene` with the registered pipeline `pipeline` on the shared headless context:
 // create, prepare, update(settings.anim), render(frameScene(...)), read back. Errors name the
 // scene source and the reason: unknown pipeline (listing the registered ones), a placeholder
@@ -40,6 +45,8 @@ Result<std::vector<RgbaImage>> renderFrames(const Scene& scene, const std::strin
                                             const FrameSettings& settings, const std::vector<float>& times);
 
 // JSON forms for the result files of the commands (every counter, by its field name).
+// The update phases (updateSamplingMs, ...) are null when this run did not time them (every
+// phase 0: render, compare and report never turn the phase clock on; `motorbench time` does).
 nlohmann::json toJson(const PipelineStats& stats);
 nlohmann::json toJson(const FrameSettings& settings);
 nlohmann::json toJson(const View& view);

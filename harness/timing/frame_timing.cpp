@@ -31,14 +31,6 @@ double processCpuMs() {
   return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
 }
 
-// Per-frame ratios b[i] / a[i] of two sample series.
-std::vector<double> pairedRatios(const std::vector<double>& a, const std::vector<double>& b) {
-  std::vector<double> r;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
-    if (a[i] > 0) r.push_back(b[i] / a[i]);
-  return r;
-}
-
 // Linear-interpolated quantile of sorted samples.
 double quantile(const std::vector<double>& s, double q) {
   if (s.empty()) return 0;
@@ -82,6 +74,13 @@ AnimState stateForFrame(const Scene& scene, int i) {
 double ratioOf(double motor, double matrix) { return motor > 0 && matrix > 0 ? motor / matrix : -1; }
 
 }  // namespace
+
+std::vector<double> pairedRatios(const std::vector<double>& a, const std::vector<double>& b) {
+  std::vector<double> r;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+    if (a[i] > 0) r.push_back(b[i] / a[i]);
+  return r;
+}
 
 Spread spreadOf(std::vector<double> s) {
   Spread r;

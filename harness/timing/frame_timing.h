@@ -40,6 +40,8 @@ struct Spread {
 };
 // Median, quartiles (linear interpolation) and median absolute deviation of `samples`.
 Spread spreadOf(std::vector<double> samples);
+// Per-frame ratios b[i] / a[i] of two sample series (frames where a[i] > 0).
+std::vector<double> pairedRatios(const std::vector<double>& a, const std::vector<double>& b);
 
 struct MachineInfo {
   std::string cpuModel;    // /proc/cpuinfo "model name"
