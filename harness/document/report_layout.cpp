@@ -152,7 +152,8 @@ void summary(Document& d, const json& r) {
   std::string kr;
   for (const auto& [k, v] : members(sum, "kernelRatios").items())
     if (k.rfind("vertex_frame", 0) == 0 || k.rfind("skinned_vertex", 0) == 0) kr += (kr.empty() ? "" : ", ") + k + " " + ratio(v);
-  lines.push_back("CPU kernel throughput motor / matrix (items/s, > 1: motor faster): " +
+  lines.push_back("CPU kernel throughput motor / matrix (items/s, > 1: motor faster; skinned pairs in matched "
+                  "configurations: skinned_vertex world palette, skinned_vertex_reference the references' form): " +
                   (kr.empty() ? str(at(r, {"kernels", "error"}), "not measured") : kr) + ".");
   d.bullets(lines);
 }
@@ -571,7 +572,9 @@ void kernelSection(Document& d, const json& r) {
               "hand-vectorised with Highway (compose also has simd_affine, the mat4x3 product, and lanes_motor, the "
               "4-lane motor product of the motor pipelines' CPU update). Out of cache = arrays "
               "of at least 256 MiB; "
-              "bw = bytes/s over the STREAM probe. Ratios of items/s: > 1 means faster than matrix.");
+              "bw = bytes/s over the STREAM probe. Ratios of items/s: > 1 means faster than matrix. Skinned vertices in "
+              "matched configurations: skinned_vertex with a world-space palette on every side, "
+              "skinned_vertex_reference in the references' form (the node's transform after the blend) on every side.");
   std::vector<std::vector<Cell>> rows;
   for (const json& p : k.value("pairs", json::array())) {
     auto ips = [&](const char* side) { return fmt(at(p, {side, "items_per_second"}), 4); };

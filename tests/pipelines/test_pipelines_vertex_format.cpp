@@ -104,6 +104,14 @@ TEST(MatrixVertexFormat, WithoutNormalMapOrTangentIs32BytesAndTheSameImage) {
     // The motor vertex keeps its 9 floats (the rotor carries the normal too).
     const Frame motor = render(bare, "motor", anim);
     EXPECT_EQ(motor.stats.vertexBytes, n * 36);
+    // Issue 26: affine uploads the same 8-float vertex (affine.vs MB_NO_TANGENT), 12 floats with
+    // an authored tangent, and the two draw bit-identical images.
+    const Frame affineBare = render(bare, "affine", anim);
+    const Frame affineAuthored = render(authored, "affine", anim);
+    EXPECT_EQ(affineBare.stats.vertexBytes, n * 32);
+    EXPECT_EQ(affineAuthored.stats.vertexBytes, n * 48);
+    EXPECT_DOUBLE_EQ(affineBare.stats.floatsPerVertex, 8.0);
+    EXPECT_EQ(affineBare.image.rgba, affineAuthored.image.rgba);
   }
 }
 
