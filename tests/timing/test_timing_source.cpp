@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "harness/document/report_format.h"
+#include "harness/render/render_frame.h"
 #include "harness/timing/frame_timing.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
@@ -73,6 +75,25 @@ TEST(FrameTiming, ForcedTimerQueriesGiveSaneValuesOnLlvmpipe) {
   EXPECT_EQ(j["frameTimeSource"], "gpu-timer");
   EXPECT_TRUE(j["pipelines"]["matrix"]["gpu_ms"].is_object());
   EXPECT_TRUE(j["pipelines"]["matrix"]["wall_ms"].is_object());
+}
+
+// The report's timing tables name their device from the record report.json keeps.
+TEST(FrameTimeDevice, TablesNameTheDeviceAndItsClock) {
+  mb::gl::ContextInfo h100;
+  h100.backend = "egl-device 1", h100.renderer = "NVIDIA H100 80GB HBM3/PCIe/SSE2";
+  h100.deviceIndex = 1, h100.deviceSoftware = false, h100.drm = "/dev/dri/renderD128";
+  const nlohmann::json gpu = mb::toJson(h100);
+  EXPECT_EQ(gpu["kind"], "gpu");
+  EXPECT_EQ(gpu["device"]["drm"], "/dev/dri/renderD128");
+  EXPECT_EQ(mb::report::frameTimeOn(gpu), "Frame time on NVIDIA H100 80GB HBM3/PCIe/SSE2 (GPU timer queries)");
+  mb::gl::ContextInfo llvm;
+  llvm.backend = "egl-surfaceless", llvm.renderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
+  const nlohmann::json cpu = mb::toJson(llvm);
+  EXPECT_EQ(cpu["kind"], "cpu-rasterizer");
+  EXPECT_TRUE(cpu["device"]["index"].is_null());
+  EXPECT_EQ(mb::report::frameTimeOn(cpu),
+            "Frame time on llvmpipe (LLVM 15.0.6, 256 bits) \u2014 a CPU rasterizer (wall clock)");
+  EXPECT_EQ(mb::report::frameTimeOn(nlohmann::json{{"error", "no context"}}), "Frame time (device not recorded)");
 }
 
 }  // namespace
