@@ -75,6 +75,13 @@ std::string dumpJson(const json& j, int indent) {
   return j.dump(indent, ' ', false, json::error_handler_t::replace);
 }
 
+std::string frameTimeOn(const nlohmann::json& gl) {
+  if (!gl.is_object() || !gl.contains("renderer") || !gl["renderer"].is_string()) return "Frame time (device not recorded)";
+  const bool gpu = gl.value("kind", "") == "gpu";
+  return "Frame time on " + gl["renderer"].get<std::string>() +
+         (gpu ? " (GPU timer queries)" : " \u2014 a CPU rasterizer (wall clock)");
+}
+
 std::string html(const std::string& s) {
   std::string out;
   out.reserve(s.size());

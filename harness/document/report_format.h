@@ -35,6 +35,11 @@ const nlohmann::json& at(const nlohmann::json& j, std::initializer_list<const ch
 // invalid bytes become U+FFFD. indent < 0: one line.
 std::string dumpJson(const nlohmann::json& j, int indent = -1);
 
+// Whose frame times a table shows, from a device record (report.json's machine.gl, a scene's
+// timing.gl): "Frame time on llvmpipe (LLVM 15.0.6, 256 bits) — a CPU rasterizer (wall clock)"
+// or, for "kind": "gpu", "Frame time on NVIDIA H100 80GB HBM3/PCIe/SSE2 (GPU timer queries)".
+std::string frameTimeOn(const nlohmann::json& gl);
+
 // HTML text escaping (&, <, >, ").
 std::string html(const std::string& s);
 // Markdown table cell: "|" escaped and newlines folded.

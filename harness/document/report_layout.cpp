@@ -42,15 +42,6 @@ std::string scenesText(const json& spread, const char* what = "scenes") {
   return " over " + std::to_string(n) + " " + (n == 1 ? std::string(what).substr(0, std::string(what).size() - 1) : what);
 }
 
-// Whose frame times a table shows, from the device record (machine.gl or a scene's timing.gl):
-// "Frame time on llvmpipe (LLVM 15.0.6, 256 bits) — a CPU rasterizer (wall clock)" or
-// "Frame time on NVIDIA H100 80GB HBM3/PCIe/SSE2 (GPU timer queries)".
-std::string frameTimeOn(const json& gl) {
-  if (!gl.is_object() || !gl.contains("renderer")) return "Frame time (device not recorded)";
-  const bool gpu = gl.value("kind", "") == "gpu" || gl.value("realGpu", false);
-  return "Frame time on " + str(gl["renderer"]) + (gpu ? " (GPU timer queries)" : " \u2014 a CPU rasterizer (wall clock)");
-}
-
 void header(Document& d, const json& r) {
   const json& m = r["machine"];
   d.paragraph("Measured on " + str(m["cpu"]) + " (" + str(m["logicalCores"]) + " logical cores), " +
