@@ -46,12 +46,16 @@ void affineVariants(std::vector<ShaderVariant>& out) {
        "8-float vertex (position, normal, uv) as matrix.vs's MB_NO_TANGENT"},
       {"affine", "affine.vs", D{{"MB_SKINNED", ""}, {"MB_NO_TANGENT", ""}}, "skinned, no tangent",
        {"affineSkinnedVertexNoTangent", clip}, "8-float vertex"},
+      {"affine", "affine_patch.vs", {}, "bezier patch", {"bezierPatch", "affinePatchVertex", clip},
+       kAffineMain + "; " + kTexels},
   });
   for (const char* p : {"qtangent", "hybrid"}) {
     const std::string note = kAffineMain + (std::string(p) == "hybrid" ? "; the GPU side of qtangent" : "");
     out.insert(out.end(), {
         {p, "affine.vs", {{"MB_QTANGENT", ""}}, "rigid", {"qtangentRigidVertex", clip}, note},
         {p, "affine.vs", D{{"MB_QTANGENT", ""}, {"MB_SKINNED", ""}}, "skinned", {"qtangentSkinnedVertex", clip}, note},
+        {p, "affine_patch.vs", {}, "bezier patch", {"bezierPatch", "affinePatchVertex", clip},
+         note + "; a patch vertex stores no frame: affine_patch.vs, as affine; " + kTexels},
     });
   }
 }

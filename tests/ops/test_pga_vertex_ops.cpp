@@ -161,6 +161,8 @@ TEST(VertexOps, PatchKernelsMatchHandDerivedCounts) {
   expectCounts(c["bezierPatch"], {153, 137}, "bezierPatch");
   // cross 6/3 + three mat4 * vec4 48/36 + handedness 1/0.
   expectCounts(c["matrixPatchVertex"], {55, 39}, "matrixPatchVertex");
+  // affine_patch.vs (issue 26): cross 6/3 + mat4x3 point 9/9, mat3 normal 9/6, tangent 9/6, w 1/0.
+  expectCounts(c["affinePatchVertex"], {6 + 28, 3 + 21}, "affinePatchVertex");
   // (a): sw_mp 21/18 after the scale 3/0, two sw_md 2 x (18/12), cross 6/3.
   expectCounts(c["motorPatchVertex"], {66, 45}, "motorPatchVertex");
   // (a) scaled: three scalings 9/0, sw_mp 21/18, two sw_md 36/24, cross 6/3, mirror = sign of

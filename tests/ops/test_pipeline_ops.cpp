@@ -41,6 +41,7 @@ TEST(PipelineOps, EveryRegisteredPipelineHasCountedOps) {
     if (gltf) {
       EXPECT_GT(opsv::total(r.toClip.counted), opsv::total(r.rigid.counted)) << p << " to clip";
       EXPECT_GT(opsv::total(r.skinned.counted), opsv::total(r.rigid.counted)) << p << " skinned";
+      EXPECT_TRUE(r.patch.present) << p << " bezier patch";  // every glTF pipeline draws patches
     } else {
       EXPECT_EQ(opsv::total(r.toClip.counted), opsv::total(r.rigid.counted)) << p << " to clip";
     }
@@ -85,6 +86,11 @@ TEST(PipelineOps, FiguresEqualHandDerivedSums) {
   // the per-frame projection 3/1 (issue 26: both motor pipelines).
   expect("motor", 89, 89 + 66 + 43 + 1, 89 + 21 + 18 + 3 + 1);
   expect("motor_q", 89, 89 + 66 + 43 + 1, 89 + 21 + 18 + 3 + 1);
+  // Bezier patch to clip: the evaluation 153/137 + the frame + world to clip.
+  EXPECT_EQ(opsv::total(rows.at("matrix").patch.counted), 290 + (55 + 39) + matrixClip);
+  EXPECT_EQ(opsv::total(rows.at("affine").patch.counted), 290 + (34 + 24) + matrixClip);
+  EXPECT_EQ(opsv::total(rows.at("hybrid").patch.counted), 290 + (34 + 24) + matrixClip);
+  EXPECT_EQ(opsv::total(rows.at("motor").patch.counted), 290 + (66 + 45) + 21 + 18 + 3 + 1);
 }
 
 // The README's "Which pipeline for what" table: its ops column is readmeOpsCell() of each
