@@ -72,6 +72,7 @@ int runCompare(const std::vector<std::string>& argv) {
     std::error_code ec;
     if (!dir.empty() && fs::exists(dir, ec) && !fs::is_directory(dir, ec))
       return fail("-o " + dir + ": is a file; compare writes a folder (images, diff, metrics.json)");
+    args.size("size", 512, 512);  // a malformed --size is refused before the folder is made
     // The scene's name first (cheap), then the folder: created now, before the renders.
     if (args.positional().size() == 1)
       if (Status ok = checkSceneSpec(args.positional()[0]); !ok) return fail(ok.error());
@@ -170,7 +171,7 @@ int runCompare(const std::vector<std::string>& argv) {
   if (nothingDrawn) {
     std::printf("%s: %s vs %s -> NOT COMPARED\n", scene.source.c_str(), names[0].c_str(), names[1].c_str());
     return fail("neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are background only: the " +
-                "scene is off screen, empty or scaled to zero at this pose); nothing to compare, so no PASS");
+                "scene is off screen, empty or scaled to zero at this pose); nothing was compared, so it cannot pass");
   }
   if (const double most = double(std::max(drawn[0], drawn[1])); std::abs(double(drawn[0] - drawn[1])) > 0.01 * most)
     commandNotes("compare", {"warning: the two pipelines drew different numbers of pixels (" + names[0] + " " +

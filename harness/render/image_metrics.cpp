@@ -151,8 +151,11 @@ Verdict judge(const RgbaImage& a, const RgbaImage& b, const Thresholds& t) {
   v.failPercent = 100.0 * double(r.nfail) / pixels;
   char buf[200];
   if (double(r.nfail) > t.failPercent / 100.0 * pixels) {
-    std::snprintf(buf, sizeof buf, "%.4f%% of pixels differ by more than %s (allowed %g%%)", v.failPercent,
-                  differenceText(t.fail).c_str(), t.failPercent);
+    // Below half a byte step --fail means "any difference" (the default when only
+    // --failpercent is given).
+    const std::string by = t.fail < 0.5 / 255.0 ? "at all" : "by more than " + differenceText(t.fail);
+    std::snprintf(buf, sizeof buf, "%.4f%% of pixels differ %s (allowed %g%%)", v.failPercent, by.c_str(),
+                  t.failPercent);
     v.failed = true;
     v.reason = buf;
   } else if (r.maxerror > t.hardFail) {

@@ -4,7 +4,7 @@
 //    on its own (R back-to-back calls, R chosen in the warm-up so that a block lasts at least
 //    kMinUpdateBlockMs: tiny scenes update in microseconds, below the clock's noise; the
 //    fastest of Settings::bestOf blocks), then
-//    one more block of R calls with the pipeline's phase clock on (Pipeline::timeUpdatePhases:
+//    Settings::bestOf more blocks of R calls (the smallest total kept) with the pipeline's phase clock on (Pipeline::timeUpdatePhases:
 //    sampling, blending, conversion, hierarchy, palette, pipelines/update_phases.h), per call,
 //    kept apart from the timed blocks so that their clock reads never weigh on the update time;
 //    clear + render + glFinish timed by the wall clock and, beside it, by the process's CPU

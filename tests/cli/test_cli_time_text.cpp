@@ -61,6 +61,26 @@ TEST(CliTimeText, BlockListsEveryPipelineWithSpreadsAndTheLegendSaysWhichWayIsFa
   EXPECT_TRUE(contains(timing::timingLegend(), "< 1: motor")) << timing::timingLegend();
 }
 
+// Issue 28 item 7: "Fox motor update phases 'sampling 32.78 us' beside 'whole update 3.85 us'".
+// Each phase line shows its sum beside the whole update, and says so when the phase blocks ran
+// far slower than the timed update (phases then read as shares).
+TEST(CliTimeText, PhasesShowTheirSumBesideTheWholeUpdate) {
+  timing::ConfigTiming c;
+  c.scene = "fox", c.config = "normal", c.width = 64, c.height = 64;
+  for (double sampling : {0.0020, 0.03278}) {  // ms per call: below and far above the whole
+    timing::PipelineTiming t;
+    t.pipeline = sampling < 0.01 ? "matrix" : "motor";
+    t.update = timing::spreadOf({0.00385});
+    t.phases[0] = timing::spreadOf({sampling});
+    t.phases[3] = timing::spreadOf({0.0010});
+    c.pipelines.push_back(t);
+  }
+  const std::string block = timing::timingBlock(c);
+  EXPECT_TRUE(contains(block, "    matrix     2.00/0.00/0.00/1.00/0.00 (sum 3.00; whole update 3.85)\n")) << block;
+  EXPECT_TRUE(contains(block, "    motor      32.78/0.00/0.00/1.00/0.00 (sum 33.78; whole update 3.85) the phase blocks "
+                              "ran slower than the timed update")) << block;
+}
+
 // `time` end to end: the legend line before the first block, every pipeline, spreads.
 TEST(CliTimeText, TimePrintsEveryPipelineAndTheDirectionFirst) {
   const auto r = runMb("time normal_torus --frames 3 --warmup 1");

@@ -46,6 +46,8 @@ def report():
         scenes.append({"id": sid, "frames": frames, "pipelines": pipelines,
                        "opsPerVertex": {p: {"counted": {"mul": 50 + i, "add": 40}} for i, p in enumerate(PIPES)},
                        "timing": {"ratio_motor_matrix": 0.9, "update": {"ratio_motor_matrix": 0.8}}})
+    # A curved scene: compared by its space's pair (s3_motor against s3_matrix).
+    scenes.append({"id": "s3_tiling", "frames": [{"time": 0, "metrics": {"s3_motor": metrics(70.0, 0.0)}}]})
     return {"settings": {"pipelines": PIPES, "baseline": "matrix"}, "scenes": scenes}
 
 
@@ -73,10 +75,11 @@ class Plots(unittest.TestCase):
         bars = [b for b in self.plots["image_error"]["bars"] if b["panel"] == "psnr"]
         scenes = ["textured_box", "normal_torus", "skinned_tube"]
         self.assertEqual(sorted((b["series"], b["label"]) for b in bars),
-                         sorted((p, s) for p in PIPES[1:] for s in scenes))
+                         sorted([(p, s) for p in PIPES[1:] for s in scenes] + [("s3_motor", "s3_tiling")]))
         for k, s in enumerate(scenes):
             xs = [b["x"] for b in bars if b["label"] == s]
             self.assertEqual(len(set(xs)), len(PIPES) - 1, f"{s}: bars share an x: {xs}")
+            self.assertNotIn(3, [round(x) for x in xs])  # none in the curved scene's slot
             self.assertTrue(all(k - 0.5 < x < k + 0.5 for x in xs), f"{s}: bar outside its group: {xs}")
             # In pipeline order, left to right.
             order = [b["series"] for b in sorted((b for b in bars if b["label"] == s), key=lambda b: b["x"])]
