@@ -264,13 +264,17 @@ std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const 
                            std::string(of.withClip ? " (transform + world to clip)" : " (the transform function)")
                      : "the functions the pipeline's vertex shader calls, executed on mb::Counted" +
                            std::string(of.withClip ? " (transform + world to clip)" : " (the transform function)");
-      std::string zero;
+      std::string zero, unused;
+      // Counted, object to clip: each variant's kernels counted by function name (the join of
+      // claims_vertex_ops.h), the same numbers as the speed row.
+      const std::map<std::string, double> countedClip =
+          of.withClip && !spirvSide ? opsPerPipeline(of.label, false, unused) : std::map<std::string, double>{};
       for (const std::string& p : pipelineNames()) {
         const opsv::VariantRow* v = variant(p, of.label);
         if (!v || v->variant.kernels.empty()) continue;
         double total = -1;
         if (of.withClip) {
-          if (!spirvSide) total = opsTotal(v->counted);
+          if (!spirvSide) total = countedClip.count(p) ? countedClip.at(p) : 0.0;
           else if (v->probes) total = opsTotal(*v->probes);
         } else if (const opsv::KernelRow* k = kernel(v->variant.kernels.front())) {
           if (!spirvSide) total = opsTotal(k->counted);
