@@ -13,15 +13,19 @@ std::string s(const json& v) { return v.is_string() ? v.get<std::string>() : v.i
 
 }  // namespace
 
-json claimsJson(const std::vector<Claim>& claims, const json& machine, const json& sources) {
+json claimsJson(const std::vector<Claim>& claims, const json& machine, const json& sources, const json& scope) {
   json list = json::array();
-  json counts = {{"reproduced", 0}, {"differs", 0}, {"inconclusive", 0}, {"not measurable here", 0}, {"baseline", 0}};
+  const json zero = {{"reproduced", 0}, {"differs", 0}, {"inconclusive", 0}, {"not measurable here", 0}, {"baseline", 0}};
+  json counts = zero, paper = zero, own = zero;
   for (const Claim& c : claims) {
     list.push_back(toJson(c));
-    counts[verdictName(c.verdict)] = counts[verdictName(c.verdict)].get<int>() + 1;
+    const std::string v = verdictName(c.verdict);
+    counts[v] = counts[v].get<int>() + 1;
+    json& side = originOf(c) == "paper" ? paper : own;
+    side[v] = side[v].get<int>() + 1;
   }
-  return {{"schema", kClaimsSchema}, {"tool", "motorbench claims"}, {"machine", machine},
-          {"sources", sources}, {"counts", counts}, {"claims", list}};
+  return {{"schema", kClaimsSchema}, {"tool", "motorbench claims"}, {"machine", machine}, {"scope", scope},
+          {"sources", sources}, {"counts", counts}, {"paperCounts", paper}, {"ownCounts", own}, {"claims", list}};
 }
 
 report::Document claimsDocument(const json& j) {
@@ -33,14 +37,27 @@ report::Document claimsDocument(const json& j) {
               ": op counts by executing the kernels on an op-counting scalar, bytes from the buffers the "
               "pipelines uploaded, times from Google Benchmark and frame timing. Paper values are the "
               "paper's text; verdicts compare the two.");
-  const json& c = j["counts"];
-  d.paragraph(s(c["reproduced"]) + " reproduced, " + s(c["differs"]) + " differ, " + s(c.value("inconclusive", json(0))) +
-              " inconclusive, " + s(c["not measurable here"]) +
-              " not measurable here; " + s(c["baseline"]) + " reviewer baselines.");
+  auto tally = [](const json& c) {
+    return s(c["reproduced"]) + " reproduced, " + s(c["differs"]) + " differ, " + s(c.value("inconclusive", json(0))) +
+           " inconclusive, " + s(c["not measurable here"]) + " not measurable here";
+  };
+  if (j.contains("paperCounts")) {
+    d.paragraph("The paper's claims: " + tally(j["paperCounts"]) + ". Our own rows (reviewer baselines, the motor "
+                "against the strongest matrix variant, curved space, rows the paper does not claim; marked \"own\" "
+                "below): " + tally(j["ownCounts"]) + ", " + s(j["ownCounts"]["baseline"]) + " baselines.");
+  } else {
+    d.paragraph(tally(j["counts"]) + "; " + s(j["counts"]["baseline"]) + " reviewer baselines.");
+  }
+  const json& scope = j.value("scope", json());
+  if (scope.is_object())
+    d.paragraph("CPU verdicts (kernel times, update times, composition timing) hold for the CPU they were measured on: " +
+                s(scope["cpu"]) + "; another CPU can rank the implementations differently. Frame times were measured on " +
+                s(scope["frameTimeDevice"]) + ".");
   d.heading(2, "Verdicts", "verdicts");
   std::vector<std::string> lines;
   for (const json& cl : j["claims"])
-    lines.push_back("`" + s(cl["id"]) + "` " + s(cl["statement"]) + ": " + s(cl["verdictText"]) + " (paper: " +
+    lines.push_back("`" + s(cl["id"]) + "`" + (cl.value("origin", "paper") == "paper" ? "" : " (" + s(cl["origin"]) + ")") +
+                    " " + s(cl["statement"]) + ": " + s(cl["verdictText"]) + " (paper: " +
                     s(cl["paper"]) + "; measured: " + s(cl["measured"]) + ")");
   d.bullets(lines);
   // Sections in first-seen order.
@@ -55,9 +72,9 @@ report::Document claimsDocument(const json& j) {
     d.heading(2, sec);
     std::vector<std::vector<report::Cell>> rows;
     for (const json* cl : bySection[sec])
-      rows.push_back({{s((*cl)["id"])}, {s((*cl)["statement"])}, {s((*cl)["paper"])}, {s((*cl)["measured"])},
+      rows.push_back({{s((*cl)["id"])}, {s(cl->value("origin", json("paper")))}, {s((*cl)["statement"])}, {s((*cl)["paper"])}, {s((*cl)["measured"])},
                       {s((*cl)["method"])}, {s((*cl)["verdictText"])}});
-    d.table({"id", "claim", "paper", "measured", "how it was measured", "verdict"}, rows);
+    d.table({"id", "origin", "claim", "paper", "measured", "how it was measured", "verdict"}, rows);
   }
   std::vector<std::string> src;
   for (const auto& [k, v] : j["sources"].items()) src.push_back(k + ": " + s(v));

@@ -122,8 +122,15 @@ void judgeOpsThree(Claim& c, const PaperOps& paper, const OpCounts& listing,
   }
 }
 
+std::string originOf(const Claim& c) {
+  if (!c.origin.empty()) return "own: " + c.origin;
+  if (c.verdict == Verdict::Baseline) return "own: baseline";
+  if (c.paper.rfind("(not claimed", 0) == 0) return "own: not claimed by the paper";
+  return "paper";
+}
+
 nlohmann::json toJson(const Claim& c) {
-  return {{"id", c.id}, {"section", c.section}, {"statement", c.statement}, {"paper", c.paper},
+  return {{"id", c.id}, {"origin", originOf(c)}, {"section", c.section}, {"statement", c.statement}, {"paper", c.paper},
           {"paperValue", c.paperValue}, {"measured", c.measured}, {"measuredValue", c.measuredValue},
           {"method", c.method}, {"verdict", verdictName(c.verdict)}, {"verdictText", c.verdictText}};
 }

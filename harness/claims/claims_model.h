@@ -32,7 +32,14 @@ struct Claim {
   std::string method;     // how it was measured
   Verdict verdict = Verdict::NotMeasurable;
   std::string verdictText;  // "reproduced", "differs: +2 mul, +5 add (+10 %)", ...
+  // "" : a claim the paper makes; else one of our own rows, by kind ("baseline", "vs strongest",
+  // "curved"): counted apart from the paper's claims in the tally (issue 26 item 4).
+  std::string origin;
 };
+
+// "paper" or "own: <kind>": the origin above, plus rows whose paper value says the paper does
+// not claim it ("(not claimed ...") and reviewer baselines, which are ours wherever they appear.
+std::string originOf(const Claim& c);
 
 // "reproduced", "differs", "not measurable here", "baseline", "inconclusive"
 std::string verdictName(Verdict v);

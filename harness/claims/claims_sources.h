@@ -2,7 +2,7 @@
 //   claims_ops.cpp       arithmetic of the PGA kernels and the matrix operators (counted)
 //   claims_memory.cpp    floats per vertex / transform / joint (PipelineStats of real uploads)
 //   claims_speed.cpp     "as fast as matrices" (bench kernel ratios + frame timing)
-//   claims_corpus.cpp    animated / non-uniform scale over the built-in scenes + a corpus
+//   claims_corpus.cpp    animated / non-uniform scale (1e-4 rule) over a corpus of real files
 //   claims_skinning.cpp  volume kept by motor skinning vs LBS (candy wrapper)
 //   claims_baselines.cpp affine matrix path, full world-to-clip, skinning per vertex
 //   claims_curved.cpp    curved space (issue 15): S3 / H3 matrix vs motor
@@ -30,6 +30,7 @@ std::vector<Claim> memoryClaims();
 struct SpeedInputs {
   nlohmann::json kernelPairs;  // report_bench.h kernelPairs()["pairs"], or null
   std::string kernelSource;    // where they came from (file or "short run")
+  nlohmann::json kernelMachine;  // report.json "machine" of the kernels' run (CPU model, cores), or null
   // [{"scene", "ratio", "vertexBound"}...] or null: motor / matrix frame time, the median of the
   // per-frame ratios (both pipelines render each frame back to back; report.json's
   // paired_ratio_motor_matrix), the ratio of the medians where no paired ratio was recorded.
@@ -38,12 +39,24 @@ struct SpeedInputs {
   std::string missing;         // why some input is absent
   // {scene id: timing JSON of report_timing.h (every timed pipeline)}, or null.
   nlohmann::json timings;
+  nlohmann::json timingMachine;  // "machine" of the timing run (its "gl" names the device), or null
+  // {scene id: toJson(FileStats)} of the timed scenes (drawn vertices for the minimum of work).
+  nlohmann::json sceneStats;
+  nlohmann::json isa;          // `motorbench isa` JSON (schema motorbench-isa/1), or null
+  std::string isaSource;
+  bool spirv = true;           // SPIR-V ops as evidence (compiles every shader variant: seconds)
 };
 std::vector<Claim> speedClaims(const SpeedInputs& in);
 
-// `corpusDir`: "" or a folder of .gltf/.glb files (recursively), measured with the built-in
-// scenes.
-std::vector<Claim> corpusClaims(const std::string& corpusDir);
+// The files the two scene-statistics rows are judged on (claims_corpus.cpp).
+struct CorpusInputs {
+  nlohmann::json sceneGraphs;    // per-file inspect JSON of a scene-graph corpus (corpus_stats.h), or null
+  std::string sceneGraphSource;  // where it came from
+  nlohmann::json reportScenes;   // report.json's "scenes" (each with "stats", "spec"), or null: built-in scenes
+  std::string reportSource;
+  std::string corpusDir;         // "" or a folder of .gltf/.glb files measured with them
+};
+std::vector<Claim> corpusClaims(const CorpusInputs& in);
 
 // Skinning: ring radius of skinned_tube's candy_wrapper, LBS vs motor (claims_skinning.cpp).
 std::vector<Claim> skinningClaims();
@@ -60,19 +73,24 @@ std::vector<Claim> curvedClaims(bool runTiming, int frames);
 // or null), the motor pipeline judged against the best matrix-side pipeline (issue 16); and the
 // CPU kernels vertex_frame / skinned_vertex, the fastest motor implementation against the
 // fastest matrix implementation measured (`kernelPairs`: report_bench's pairs, or null; issue 13).
+// Timed rows count only scenes with the minimum of work (claims_work.h; `sceneStats` as in
+// SpeedInputs, or null: drawn vertices unknown).
 std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource,
                                            const nlohmann::json& kernelPairs = nullptr,
-                                           const std::string& kernelSource = "");
+                                           const std::string& kernelSource = "",
+                                           const nlohmann::json& sceneStats = nullptr,
+                                           const nlohmann::json& timingMachine = nullptr);
 
-// Composition, counted (gp_mm, mat4 * mat4, affine mat4x3) and, when `runTiming`, timed side
-// by side (harness/bench/compose_timing.h).
-std::vector<Claim> compositionClaims(bool runTiming);
+// Composition, counted (gp_mm, mat4 * mat4, affine mat4x3), the bench's compose pair when
+// `kernelPairs` has one (every side, SIMD included) and, when `runTiming`, timed side by side
+// (harness/bench/compose_timing.h).
+std::vector<Claim> compositionClaims(bool runTiming, const nlohmann::json& kernelPairs = nullptr);
 
 // Scene-graph update: the hierarchy bench pair (`kernelPairs`, report_bench.h's pairs, or null)
 // and Pipeline::update per scene (`timings`: {scene: timing JSON}, or null), motor against the
 // fastest matrix-side code.
 std::vector<Claim> sceneGraphClaims(const nlohmann::json& kernelPairs, const nlohmann::json& timings,
-                                    const std::string& timingSource);
+                                    const std::string& timingSource, const nlohmann::json& sceneStats = nullptr);
 
 // Quaternion -> rotor conversion cost and the uniform-scale overhead per vertex (renders
 // normal_torus for the floats per transform; needs GL).

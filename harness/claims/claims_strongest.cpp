@@ -11,7 +11,10 @@
 #include <cstdio>
 #include <map>
 
+#include "harness/claims/claims_device.h"
 #include "harness/claims/claims_sources.h"
+#include "harness/claims/claims_vertex_ops.h"
+#include "harness/claims/claims_work.h"
 #include "harness/ops/ops_vertex.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/scene/loader.h"
@@ -119,8 +122,10 @@ double opsTotal(const spirv::Counts& c) { return double(c.mul + c.add + c.div + 
 
 // The median over scenes of time(p) / time(reference) from report-style timing JSON
 // ({scene: timing}); `path` selects the configuration ("" or "vertexBound") and `key` the time.
+// Scenes below the minimum of work (claims_work.h) are left out and named in `skipped`.
 std::map<std::string, double> timeRatios(const json& timings, const std::string& path, const std::string& key,
-                                         const std::string& reference, int& scenes) {
+                                         const std::string& reference, int& scenes, const json& sceneStats,
+                                         std::string& skipped) {
   std::map<std::string, std::vector<double>> per;
   scenes = 0;
   for (const auto& [scene, t] : timings.items()) {
@@ -130,6 +135,14 @@ std::map<std::string, double> timeRatios(const json& timings, const std::string&
     if (!ps.contains(reference) || !ps[reference].value(key, json()).is_number()) continue;
     const double ref = ps[reference][key].get<double>();
     if (!(ref > 0)) continue;
+    double least = ref;
+    for (const auto& [p, v] : ps.items())
+      if (v.value(key, json()).is_number()) least = std::min(least, v[key].get<double>());
+    const json stats = sceneStats.is_object() ? sceneStats.value(scene, json()) : json();
+    if (const std::string why = belowMinimum(stats, least, key == "updateMedianMs" ? "update" : "frame"); !why.empty()) {
+      skipped += (skipped.empty() ? "" : "; ") + scene + " (" + why + ")";
+      continue;
+    }
     ++scenes;
     for (const auto& [p, v] : ps.items())
       if (v.value(key, json()).is_number()) per[p].push_back(v[key].get<double>() / ref);
@@ -188,7 +201,8 @@ Claim kernelClaim(const std::string& kernel, const json& pairs, const std::strin
 }  // namespace
 
 std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource,
-                                           const nlohmann::json& kernelPairs, const std::string& kernelSource) {
+                                           const nlohmann::json& kernelPairs, const std::string& kernelSource,
+                                           const nlohmann::json& sceneStats, const nlohmann::json& timingMachine) {
   std::vector<Claim> out;
   for (const char* k : {"vertex_frame", "skinned_vertex"}) out.push_back(kernelClaim(k, kernelPairs, kernelSource));
   // ---- memory, from the uploads -----------------------------------------------------------
@@ -219,7 +233,7 @@ std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const 
   out.push_back(judge(fpj));
 
   // ---- ops per vertex, counted and SPIR-V --------------------------------------------------
-  const opsv::VertexOps ops = opsv::measureVertexOps();
+  const opsv::VertexOps& ops = vertexOps();
   auto variant = [&](const std::string& p, const std::string& label) -> const opsv::VariantRow* {
     for (const auto& v : ops.variants)
       if (v.variant.pipeline == p && v.variant.label == label) return &v;
@@ -239,6 +253,7 @@ std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const 
       {"ops_clip_vs_strongest", "rigid", true, "ops per rigid vertex with frame, object to clip",
        "(not claimed)"},
   };
+  std::map<std::string, double> clipOps;  // counted ops per rigid vertex, object to clip (the timing check)
   for (const OpsFigure& of : opsFigures)
     for (const bool spirvSide : {false, true}) {
       Figure f{std::string(of.id) + (spirvSide ? "_spirv" : ""), std::string(of.statement) + (spirvSide ? ", SPIR-V" : ", counted"),
@@ -249,18 +264,30 @@ std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const 
                            std::string(of.withClip ? " (transform + world to clip)" : " (the transform function)")
                      : "the functions the pipeline's vertex shader calls, executed on mb::Counted" +
                            std::string(of.withClip ? " (transform + world to clip)" : " (the transform function)");
+      std::string zero, unused;
+      // Counted, object to clip: each variant's kernels counted by function name (the join of
+      // claims_vertex_ops.h), the same numbers as the speed row.
+      const std::map<std::string, double> countedClip =
+          of.withClip && !spirvSide ? opsPerPipeline(of.label, false, unused) : std::map<std::string, double>{};
       for (const std::string& p : pipelineNames()) {
         const opsv::VariantRow* v = variant(p, of.label);
         if (!v || v->variant.kernels.empty()) continue;
+        double total = -1;
         if (of.withClip) {
-          if (!spirvSide) f.values[p] = opsTotal(v->counted);
-          else if (v->probes) f.values[p] = opsTotal(*v->probes);
+          if (!spirvSide) total = countedClip.count(p) ? countedClip.at(p) : 0.0;
+          else if (v->probes) total = opsTotal(*v->probes);
         } else if (const opsv::KernelRow* k = kernel(v->variant.kernels.front())) {
-          if (!spirvSide) f.values[p] = opsTotal(k->counted);
-          else if (k->optimised) f.values[p] = opsTotal(*k->optimised);
+          if (!spirvSide) total = opsTotal(k->counted);
+          else if (k->optimised) total = opsTotal(*k->optimised);
         }
+        // No vertex shader transforms for free: 0 means the pipeline's kernels were not joined
+        // (harness/ops), never a strongest baseline.
+        if (total > 0) f.values[p] = total;
+        else if (total == 0) zero += (zero.empty() ? "" : ", ") + p;
       }
-      if (spirvSide && !ops.toolsProblem.empty()) f.missing = ops.toolsProblem;
+      if (!zero.empty()) f.missing = "0 ops counted for " + zero + " (its kernels are not joined; left out)";
+      if (spirvSide && !ops.toolsProblem.empty()) f.missing += (f.missing.empty() ? "" : "; ") + ops.toolsProblem;
+      if (of.withClip && !spirvSide) clipOps = f.values;
       out.push_back(judge(f));
     }
 
@@ -274,19 +301,46 @@ std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const 
        "CPU update: hierarchy, animation, skin palette, and the matrix forms' node normal matrices (median over "
        "scenes of time / matrix's time)", true},
   };
+  const TimingDevice device = timingDevice(timingMachine);
   for (const TimeFigure& tf : timeFigures) {
     int scenes = 0;
+    std::string skipped;
     Figure f{tf.id, tf.statement, "x matrix", "", "as fast as matrices"};
-    f.values = timings.is_object() ? timeRatios(timings, tf.path, tf.key, "matrix", scenes) : std::map<std::string, double>{};
+    f.values = timings.is_object() ? timeRatios(timings, tf.path, tf.key, "matrix", scenes, sceneStats, skipped)
+                                   : std::map<std::string, double>{};
     f.excludeHybrid = true;  // its CPU side is the motor pipeline's
     f.tolerance = kTimeTolerance;
     f.method = std::string("median over ") + std::to_string(scenes) + " scenes of each pipeline's median " + tf.key +
-               " / matrix's (ratio of medians; llvmpipe, software rasteriser); source: " + timingSource +
+               " / matrix's (ratio of medians; " + (tf.cpu ? "CPU wall clock" : device.label()) + "); " + minimumRule() +
+               (skipped.empty() ? "" : " (not counted: " + skipped + ")") + "; source: " + timingSource +
                "; hybrid is listed but not taken as the matrix baseline" +
                (tf.cpu ? std::string(": its update is the motor work plus the conversion to mat4x3")
                        : std::string(": it draws exactly as qtangent (frame time: clear + draws + glFinish)"));
-    if (f.values.empty()) f.missing = "no timing (give --report with timing, or drop --no-run)";
-    out.push_back(judge(f));
+    if (f.values.empty())
+      f.missing = timings.is_object() && !skipped.empty() ? "no scene with the minimum of work (" + skipped + ")"
+                                                           : "no timing (give --report with timing, or drop --no-run)";
+    Claim c = judge(f);
+    if (!tf.cpu && c.verdict != Verdict::NotMeasurable) {
+      c.verdictText += "; device: " + device.label();
+      // A CPU rasterizer's frame time cannot tell pipelines apart whose arithmetic differs by
+      // more than 25 % when it times them within the noise (issue 25).
+      if (device.cpuRasterizer) {
+        const std::string best = c.measuredValue.value("strongest", std::string()), motor = "motor";
+        if (clipOps.count(best) && clipOps.count(motor) && f.values.count(best) && f.values.count(motor)) {
+          const double opsRatio = std::max(clipOps[motor], clipOps[best]) / std::min(clipOps[motor], clipOps[best]);
+          const double timeRatio = f.values[motor] / f.values[best];
+          if (opsRatio > 1.25 && std::fabs(timeRatio - 1.0) <= kTimeTolerance) {
+            c.verdict = Verdict::Inconclusive;
+            c.verdictText = "unable to discriminate on a CPU rasterizer: motor and " + best + " differ by " +
+                            pct(std::max(clipOps[motor], clipOps[best]), std::min(clipOps[motor], clipOps[best])) +
+                            " in counted ops per vertex but take the same time within " +
+                            std::to_string(int(kTimeTolerance * 100)) + " % (" + pct(f.values[motor], f.values[best]) +
+                            "); device: " + device.label();
+          }
+        }
+      }
+    }
+    out.push_back(c);
   }
   return out;
 }

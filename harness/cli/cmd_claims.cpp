@@ -1,17 +1,24 @@
 // `motorbench claims [-o FILE] [--json FILE] [--report report.json] [--bench-json FILE]
-//   [--corpus DIR] [--frames N] [--no-run]`: every quantitative claim of the paper with the
-// paper's value, the value measured now, how, and a verdict; plus the reviewer baselines.
-// Op counts, uploads and scene statistics are always measured here. Speed comes from a report
-// (its kernel pairs and frame timings) or a bench JSON when given, else from a short bench run
-// (vertex kernels only) and frame timing of two built-in scenes in this process.
+//   [--isa FILE] [--corpus DIR] [--scene-graphs FILE|DIR] [--frames N] [--no-run]`: every
+// quantitative claim of the paper with the paper's value, the value measured now, how, and a
+// verdict; plus our own rows (baselines, vs the strongest matrix variant, curved space), counted
+// apart. Op counts and uploads are always measured here. Speed comes from a report (its kernel
+// pairs, frame timings, device and ISA statistics) or a bench JSON when given, else from a short
+// bench run (vertex kernels only) and frame timing of four built-in scenes in this process;
+// --no-run skips those runs (and the composition timing and curved frame timing). Scene
+// statistics come from the report's scenes (else the built-in scenes) plus --corpus, or from
+// the scene-graph corpus of --scene-graphs.
 #include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "harness/options/args.h"
+#include "harness/claims/claims_device.h"
 #include "harness/claims/claims_layout.h"
+#include "harness/claims/corpus_stats.h"
 #include "harness/claims/claims_sources.h"
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
@@ -20,9 +27,11 @@
 #include "harness/report/report_machine.h"
 #include "harness/render/gpu_option.h"
 #include "harness/render/render_frame.h"
+#include "harness/timing/frame_timing.h"
 #include "harness/timing/report_timing.h"
 #include "pipelines/pipeline.h"
 #include "pipelines/scene/loader.h"
+#include "pipelines/scene/scene_stats.h"
 
 namespace mb {
 namespace {
@@ -78,27 +87,48 @@ json frameTimesOf(const json& report) {
   return out;
 }
 
+// The frame size(s) the report's scenes were timed at ("512x512"), from the timings themselves.
+std::string timedSizes(const json& timings) {
+  std::set<std::string> sizes;
+  for (const auto& [scene, t] : timings.items())
+    if (t.value("width", json()).is_number() && t.value("height", json()).is_number())
+      sizes.insert(std::to_string(t["width"].get<int>()) + "x" + std::to_string(t["height"].get<int>()));
+  std::string out;
+  for (const std::string& s : sizes) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
 // Speed inputs: from --report / --bench-json, else measured now (unless --no-run).
-claims::SpeedInputs speedInputs(const Args& args, json& sources) {
+claims::SpeedInputs speedInputs(const Args& args, const json& report, json& sources) {
   claims::SpeedInputs in;
   std::string missing;
-  if (auto r = args.get("report")) {
-    std::ifstream f(*r);
-    json report = json::parse(f, nullptr, false);
-    if (report.is_discarded()) {
-      missing += *r + ": cannot read report.json; ";
-    } else {
-      if (report["kernels"].is_object() && report["kernels"]["pairs"].is_array() && !report["kernels"]["pairs"].empty()) {
-        in.kernelPairs = report["kernels"]["pairs"];
-        const json& file = report["kernels"]["file"];
-        in.kernelSource = *r + " (kernels from " + (file.is_string() ? file.get<std::string>() : "its bench run") + ")";
-      }
-      in.frameTimes = frameTimesOf(report);
-      in.timings = json::object();
-      for (const json& s : report.value("scenes", json::array()))
-        if (euclidean(s) && s.value("timing", json()).is_object()) in.timings[s.value("id", "")] = s["timing"];
-      in.frameSource = *r + " (" + std::to_string(in.frameTimes.size()) + " scenes)";
+  const std::string reportPath = args.get("report", "");
+  if (report.is_object()) {
+    if (report["kernels"].is_object() && report["kernels"]["pairs"].is_array() && !report["kernels"]["pairs"].empty()) {
+      in.kernelPairs = report["kernels"]["pairs"];
+      const json& file = report["kernels"]["file"];
+      in.kernelSource = reportPath + " (kernels from " + (file.is_string() ? file.get<std::string>() : "its bench run") + ")";
+      in.kernelMachine = report.value("machine", json());
     }
+    in.frameTimes = frameTimesOf(report);
+    in.timings = json::object();
+    in.sceneStats = json::object();
+    for (const json& s : report.value("scenes", json::array())) {
+      if (!euclidean(s)) continue;
+      if (s.value("timing", json()).is_object()) in.timings[s.value("id", "")] = s["timing"];
+      if (s.value("stats", json()).is_object()) in.sceneStats[s.value("id", "")] = s["stats"];
+    }
+    in.timingMachine = report.value("machine", json());
+    const std::string sizes = timedSizes(in.timings);
+    in.frameSource = reportPath + " (" + std::to_string(in.frameTimes.size()) + " scenes" +
+                     (sizes.empty() ? "" : ", timed at " + sizes) + ")";
+    if (report.value("isa", json()).is_object()) in.isa = report["isa"], in.isaSource = reportPath + " (its \"isa\")";
+  }
+  if (auto i = args.get("isa"); i && in.isa.is_null()) {
+    std::ifstream f(*i);
+    json isa = json::parse(f, nullptr, false);
+    if (isa.is_discarded() || !isa.is_object()) missing += *i + ": cannot read the isa JSON; ";
+    else in.isa = isa, in.isaSource = *i;
   }
   if (auto b = args.get("bench-json"); b && in.kernelPairs.is_null()) {
     auto j = report::readBenchJson(*b);
@@ -119,6 +149,7 @@ claims::SpeedInputs speedInputs(const Args& args, json& sources) {
   if ((in.frameTimes.is_null() || in.frameTimes.empty()) && run) {
     in.frameTimes = json::array();
     in.timings = json::object();
+    in.sceneStats = json::object();
     const int frames = int(args.integer("frames", 20, 1, 100000));
     // dense_torus: the vertex-bound rigid normal-mapped scene; crowd: the vertex-bound skinned
     // one, timed with both pipelines in the same skinning configuration (as the references do).
@@ -126,6 +157,7 @@ claims::SpeedInputs speedInputs(const Args& args, json& sources) {
       say(std::string("timing ") + name + " (" + std::to_string(frames) + " frames per pipeline)");
       auto scene = loadScene(name);
       if (!scene) continue;
+      in.sceneStats[name] = toJson(computeFileStats(*scene));
       PipelineOptions options;
       if (!scene->skins.empty()) options.skinSpace = SkinSpace::Reference;
       const json t = report::timeScene(*scene, pipelineNames(), frames, 512, 512, options);
@@ -138,21 +170,37 @@ claims::SpeedInputs speedInputs(const Args& args, json& sources) {
       row["skinSpace"] = scene->skins.empty() ? "-" : "reference (both pipelines)";
       in.frameTimes.push_back(row);
     }
-    in.frameSource = "frame timing run by claims on normal_torus, skinned_tube, crowd and dense_torus at 512x512, "
-                     "crowd and dense_torus also at 64x64 (vertex-bound); skinned scenes with both pipelines in the "
-                     "reference skinning configuration";
+    in.timingMachine = report::machineJson();
+    in.frameSource = "frame timing run by claims on normal_torus, skinned_tube, crowd and dense_torus at " + timedSizes(in.timings) +
+                     ", crowd and dense_torus also vertex-bound (" + std::to_string(timing::kVertexBoundVerticesPerPixel) +
+                     " vertices per pixel); skinned scenes with both pipelines in the reference skinning configuration";
   }
-  if (in.kernelPairs.is_null()) missing += "no kernel throughput (give --report or --bench-json, or drop --no-run); ";
-  if (in.frameTimes.is_null() || in.frameTimes.empty()) missing += "no frame timing; ";
+  if (in.kernelPairs.is_null())
+    missing += std::string("no kernel throughput (") +
+               (report.is_object() ? reportPath + " has no kernel pairs" : std::string("no --report")) +
+               (args.has("bench-json") ? "" : ", no --bench-json") + (run ? "" : ", and --no-run skips the bench run") + "); ";
+  if (in.frameTimes.is_null() || in.frameTimes.empty())
+    missing += std::string("no frame timing (") + (report.is_object() ? reportPath + " has none" : std::string("no --report")) +
+               (run ? "" : ", and --no-run skips timing") + "); ";
+  if (in.kernelMachine.is_null()) in.kernelMachine = report::machineJson();
   if (!missing.empty()) missing.resize(missing.size() - 2);
   in.missing = missing;
   sources["kernels"] = in.kernelSource.empty() ? "none" : in.kernelSource;
   sources["frameTiming"] = in.frameSource.empty() ? "none" : in.frameSource;
+  sources["isa"] = in.isaSource.empty() ? "none" : in.isaSource;
   return in;
 }
 
+// Every row of one family, marked as the paper's claim or one of our own rows.
+void add(std::vector<claims::Claim>& all, std::vector<claims::Claim> rows, const char* own = nullptr) {
+  for (claims::Claim& c : rows) {
+    if (own) c.origin = own;
+    all.push_back(std::move(c));
+  }
+}
+
 int runClaims(const std::vector<std::string>& argv) {
-  const Args args(argv, {{"o", "output", "json", "report", "bench-json", "corpus", "frames", "gpu"}, {"no-run"}, {}});
+  const Args args(argv, {{"o", "output", "json", "report", "bench-json", "isa", "corpus", "scene-graphs", "frames", "gpu"}, {"no-run"}, {}});
   if (!args.error().empty()) return fail(args.error());
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
   if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());  // the report it runs inherits MB_GPU
@@ -162,43 +210,61 @@ int runClaims(const std::vector<std::string>& argv) {
     if (auto path = args.get(key))
       if (Status ok = prepareOutputFile(std::string(key) == "o" ? "-o" : std::string("--") + key, *path); !ok)
         return fail(ok.error());
-  const std::string corpus = args.get("corpus", "../shared/corpus");
+  json report;
+  if (auto r = args.get("report")) {
+    std::ifstream f(*r);
+    if (!f) return fail(*r + ": cannot read");
+    report = json::parse(f, nullptr, false);
+    if (report.is_discarded() || !report.is_object()) return fail(*r + ": not a report.json (JSON object expected)");
+  }
+  claims::CorpusInputs corpus;
+  corpus.corpusDir = args.get("corpus", "../shared/corpus");
+  if (report.is_object()) corpus.reportScenes = report.value("scenes", json()), corpus.reportSource = *args.get("report");
+  if (auto g = args.get("scene-graphs")) {
+    say("scene-graph statistics of " + *g);
+    auto files = claims::corpusFiles(*g);
+    if (!files) return fail(files.error());
+    corpus.sceneGraphs = *files;
+    corpus.sceneGraphSource = std::to_string(files->size()) + " scene graphs of " + *g;
+  }
   json sources = {{"opCounts", "shaders/pga.glsl, shaders/matrix_transform.glsl, shaders/motor_transform.glsl "
                                 "executed on mb::Counted; SPIR-V via glslangValidator + spirv-opt"},
                   {"memory", "PipelineStats of renders of the built-in normal_torus and skinned_tube"},
-                  {"corpus", "built-in scenes + " + corpus}};
+                  {"sceneStatistics", corpus.sceneGraphs.is_array() ? corpus.sceneGraphSource
+                                      : (report.is_object() ? "the scenes of " + corpus.reportSource : std::string("built-in scenes")) +
+                                            " + " + corpus.corpusDir}};
   std::vector<claims::Claim> all;
+  const bool run = !args.has("no-run");
   say("counting ops");
-  for (auto& c : claims::opClaims()) all.push_back(c);
-  say(args.has("no-run") ? "composition (counted)" : "composition (counted and timed)");
-  for (auto& c : claims::compositionClaims(!args.has("no-run"))) all.push_back(c);
+  add(all, claims::opClaims());
+  say(run ? "composition (counted and timed)" : "composition (counted; --no-run: not timed)");
+  claims::SpeedInputs speed = speedInputs(args, report, sources);
+  add(all, claims::compositionClaims(run, speed.kernelPairs));
   say("conversions, handedness rule, blending");
-  for (auto& c : claims::conversionClaims()) all.push_back(c);
-  for (auto& c : claims::handednessClaims()) all.push_back(c);
-  for (auto& c : claims::blendingClaims()) all.push_back(c);
+  add(all, claims::conversionClaims());
+  add(all, claims::handednessClaims());
+  add(all, claims::blendingClaims());
   say("measuring uploads");
-  for (auto& c : claims::memoryClaims()) all.push_back(c);
-  claims::SpeedInputs speed = speedInputs(args, sources);
-  for (auto& c : claims::speedClaims(speed)) all.push_back(c);
-  for (auto& c : claims::sceneGraphClaims(speed.kernelPairs, speed.timings, sources["frameTiming"].get<std::string>()))
-    all.push_back(c);
+  add(all, claims::memoryClaims());
+  add(all, claims::speedClaims(speed));
+  add(all, claims::sceneGraphClaims(speed.kernelPairs, speed.timings, sources["frameTiming"].get<std::string>(), speed.sceneStats));
   say("scene statistics");
-  for (auto& c : claims::corpusClaims(corpus)) all.push_back(c);
+  add(all, claims::corpusClaims(corpus));
   say("baselines (counted and SPIR-V)");
-  for (auto& c : claims::skinningClaims()) all.push_back(c);
-  for (auto& c : claims::skinnedFileVolumeClaims(corpus)) all.push_back(c);
-  for (auto& c : claims::baselineClaims()) all.push_back(c);
+  add(all, claims::skinningClaims());
+  add(all, claims::skinnedFileVolumeClaims(corpus.corpusDir));
+  add(all, claims::baselineClaims(), "baseline");
   say("curved space (uploads, ops, frame timing, drift)");
-  {
-    const int frames = int(args.integer("frames", 20, 1, 100000));
-    for (auto& c : claims::curvedClaims(!args.has("no-run"), frames)) all.push_back(c);
-  }
+  add(all, claims::curvedClaims(run, int(args.integer("frames", 20, 1, 100000))), "curved");
   say("against the strongest baseline (every pipeline)");
-  for (auto& c : claims::strongestBaselineClaims(speed.timings, sources["frameTiming"].get<std::string>(),
-                                                 speed.kernelPairs, speed.kernelSource))
-    all.push_back(c);
+  add(all, claims::strongestBaselineClaims(speed.timings, sources["frameTiming"].get<std::string>(), speed.kernelPairs,
+                                           speed.kernelSource, speed.sceneStats, speed.timingMachine),
+      "vs strongest");
 
-  const json j = claims::claimsJson(all, report::machineJson(), sources);
+  json machine = report::machineJson();
+  json scope = {{"cpu", claims::cpuScope(speed.kernelMachine)},
+                {"frameTimeDevice", claims::timingDevice(speed.timingMachine).label()}};
+  const json j = claims::claimsJson(all, machine, sources, scope);
   const std::string md = report::toMarkdown(claims::claimsDocument(j));
   if (auto path = args.get("json")) {
     std::ofstream out(*path);
@@ -213,9 +279,12 @@ int runClaims(const std::vector<std::string>& argv) {
     out << md;
     if (!out.flush()) return fail(mdPath + ": write failed");
   }
-  const json& c = j["counts"];
-  say(std::to_string(all.size()) + " rows: " + c["reproduced"].dump() + " reproduced, " + c["differs"].dump() +
-      " differ, " + c["inconclusive"].dump() + " inconclusive, " + c["not measurable here"].dump() + " not measurable, " + c["baseline"].dump() + " baselines");
+  auto tally = [](const json& c) {
+    return c["reproduced"].dump() + " reproduced, " + c["differs"].dump() + " differ, " + c["inconclusive"].dump() +
+           " inconclusive, " + c["not measurable here"].dump() + " not measurable";
+  };
+  say(std::to_string(all.size()) + " rows; the paper's claims: " + tally(j["paperCounts"]) + "; our own rows: " +
+      tally(j["ownCounts"]) + ", " + j["ownCounts"]["baseline"].dump() + " baselines");
   return 0;
 }
 
@@ -223,7 +292,8 @@ int runClaims(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(claims, "claims",
-           "[-o FILE] [--json FILE] [--report report.json] [--bench-json FILE] [--corpus DIR] [--frames N] [--no-run] [--gpu auto|llvmpipe|N]",
+           "[-o FILE] [--json FILE] [--report report.json] [--bench-json FILE] [--isa FILE] [--corpus DIR] "
+           "[--scene-graphs FILE|DIR] [--frames N] [--no-run] [--gpu auto|llvmpipe|N]",
            "every quantitative claim of the paper: paper value, measured value, method, verdict (Markdown/JSON)",
            mb::runClaims);
 MB_COMMAND_HELP(claims, "claims",
@@ -231,9 +301,13 @@ MB_COMMAND_HELP(claims, "claims",
                "                     (missing folders are created; both checked before the work)\n"
                "  --report FILE      kernel ratios and frame timings from a report.json\n"
                "  --bench-json FILE  kernel ratios from a `motorbench bench --out` file\n"
+               "  --isa FILE         ISA statistics (a `motorbench isa --json` file; else the report's \"isa\")\n"
+               "  --scene-graphs F   scale statistics of a corpus: an inspect --json file or a folder, e.g.\n"
+               "                     ../shared/corpus-graph\n"
                "  --corpus DIR       the real glTF files for the statistics and skinning rows (default ../shared/corpus)\n"
                "  --frames N         frames per pipeline when claims times scenes itself (default 20)\n"
-               "  --no-run           run no benchmark and time no frame: speed rows come only from --report or\n"
+               "  --no-run           run no benchmark and time no frame (no composition timing, no curved-space\n"
+               "                     frame timing): speed rows come only from --report or\n"
                "                     --bench-json (else \"not measurable here\"). Everything else is still measured:\n"
                "                     op counts (shim and SPIR-V, glslangValidator + spirv-opt per shader variant),\n"
                "                     uploads of the built-in scenes, conversions, the handedness rule over every\n"

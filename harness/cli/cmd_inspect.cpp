@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "harness/claims/corpus_stats.h"
 #include "harness/options/args.h"
 #include "harness/options/shard.h"
 #include "harness/report/report_inputs.h"
@@ -99,7 +100,11 @@ void printAggregate(const nlohmann::json& a) {
   std::printf("\naggregate over %d files: %d loaded, %d failed\n", int(a["files"]), loaded, int(a["failed"]));
   std::printf("  totals      %ld vertices, %ld triangles, %ld primitives, %ld joints, %ld channels\n",
               long(a["vertices"]), long(a["triangles"]), long(a["primitives"]), long(a["joints"]), long(a["channels"]));
-  std::printf("  animated scale            %s   (paper: < 0.5 %% of ~400 files)\n", pct("filesWithAnimatedScale").c_str());
+  std::printf("  scale channel             %s\n", pct("filesWithAnimatedScale").c_str());
+  std::printf("  keys changing the scale   %s   (beyond 1e-4 relative; paper: < 0.5 %% of ~400 files)\n",
+              pct("filesWithChangingScale").c_str());
+  std::printf("  inner non-uniform scale   %s   (beyond 1e-4 relative, the paper's rule; paper: none)\n",
+              pct("filesWithInnerNonUniformScale").c_str());
   std::printf("  animated non-uniform      %s\n", pct("filesWithAnimatedNonUniformScale").c_str());
   std::printf("  non-uniform scale         %s, of which only on leaves: %d\n", pct("filesWithNonUniformScale").c_str(),
               int(a["filesWithNonUniformOnlyOnLeaves"]));
@@ -152,6 +157,8 @@ int runInspect(const std::vector<std::string>& argv) {
     failed += !scene;
   }
   nlohmann::json aggregate = mb::aggregateJson(stats);
+  // By source kind when the files' folder has a MANIFEST.tsv (../shared/corpus-graph).
+  if (const nlohmann::json kinds = mb::claims::aggregateByKind(files); !kinds.is_null()) aggregate["byKind"] = kinds;
   if (stats.size() > 1) printAggregate(aggregate);
   if (auto path = args.get("json")) {
     std::ofstream out(*path);

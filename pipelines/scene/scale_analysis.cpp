@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mb {
 
@@ -16,6 +17,43 @@ ScaleClass classifyScale(const glm::vec3& s) {
   return isNonUniform(s) ? ScaleClass::NonUniform : ScaleClass::Uniform;
 }
 
+double scaleNonUniformity(const glm::vec3& s) {
+  // The reference's check compares neighbouring components as ratios; in double so that a float
+  // scale's own rounding (1e-7) stays far below the 1e-4 rule.
+  auto ratio = [](double a, double b) {
+    a = std::fabs(a), b = std::fabs(b);
+    if (a == b) return 0.0;
+    if (b == 0.0) return std::numeric_limits<double>::infinity();
+    return std::fabs(a / b - 1.0);
+  };
+  return std::max(ratio(s.x, s.y), ratio(s.y, s.z));
+}
+
+double scaleChange(const glm::vec3& from, const glm::vec3& to) {
+  double worst = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double a = from[i], b = to[i], big = std::max(std::fabs(a), std::fabs(b));
+    if (big > 0) worst = std::max(worst, std::fabs(a - b) / big);
+  }
+  return worst;
+}
+
+namespace {
+
+// The key values of a scale channel (CUBICSPLINE: the values, not the tangents).
+std::vector<glm::vec3> scaleKeys(const Channel& c) {
+  const size_t stride = c.interpolation == Interpolation::CubicSpline ? 3 : 1;
+  std::vector<glm::vec3> keys;
+  for (size_t k = 0; k < c.times.size(); ++k) {
+    const size_t at = (k * stride + stride / 2) * 3;
+    if (at + 2 >= c.values.size()) break;
+    keys.emplace_back(c.values[at], c.values[at + 1], c.values[at + 2]);
+  }
+  return keys;
+}
+
+}  // namespace
+
 ScaleReport analyzeScale(const Scene& scene) {
   ScaleReport r;
   r.nodes.resize(scene.nodes.size());
@@ -26,6 +64,8 @@ ScaleReport analyzeScale(const Scene& scene) {
     ns.restNonUniform = isNonUniform(n.local.scale);
     ns.shear = n.hasMatrix && n.matrixHasShear;
     ns.leaf = n.children.empty();
+    ns.nonUniformity = ns.shear ? std::numeric_limits<double>::infinity() : scaleNonUniformity(n.local.scale);
+    ns.leastUniform = n.local.scale;
   }
   for (const Animation& a : scene.animations)
     for (const Channel& c : a.channels) {
@@ -33,15 +73,24 @@ ScaleReport analyzeScale(const Scene& scene) {
       ++r.scaleChannels;
       NodeScale& ns = r.nodes[size_t(c.node)];
       ns.animated = true;
-      size_t stride = c.interpolation == Interpolation::CubicSpline ? 3 : 1;
-      for (size_t k = 0; k < c.times.size(); ++k) {
-        const float* v = &c.values[(k * stride + stride / 2) * 3];  // key values, not tangents
-        glm::vec3 s(v[0], v[1], v[2]);
+      const glm::vec3 rest = scene.nodes[size_t(c.node)].local.scale;
+      const std::vector<glm::vec3> keys = scaleKeys(c);
+      bool changes = false, keyNonUniform = false;
+      for (const glm::vec3& s : keys) {
         ns.animatedNonUniform |= isNonUniform(s);
         ns.animatedNegative |= s.x * s.y * s.z < 0.0f;
+        const double nu = scaleNonUniformity(s);
+        if (nu > ns.nonUniformity) ns.nonUniformity = nu, ns.leastUniform = s;
+        keyNonUniform |= nu > kPaperScaleTolerance;
+        // Against the rest scale and the first key: a key that differs from either changes the
+        // pose's scale (a channel of constant keys equal to the rest scale animates nothing).
+        changes |= scaleChange(rest, s) > kPaperScaleTolerance || scaleChange(keys.front(), s) > kPaperScaleTolerance;
       }
+      r.changingScaleChannels += changes;
+      r.nonUniformChangingChannels += changes && keyNonUniform;
     }
-  for (const NodeScale& ns : r.nodes) {
+  for (size_t i = 0; i < r.nodes.size(); ++i) {
+    const NodeScale& ns = r.nodes[i];
     bool nonUniform = ns.restNonUniform || ns.animatedNonUniform || ns.shear;
     r.uniformNodes += ns.restClass == ScaleClass::Uniform;
     r.nonUniformNodes += ns.restNonUniform;
@@ -54,6 +103,13 @@ ScaleReport analyzeScale(const Scene& scene) {
     r.animatedScale |= ns.animated;
     r.animatedNonUniformScale |= ns.animatedNonUniform;
     if (nonUniform && !ns.leaf) r.nonUniformOnlyOnLeaves = false;
+    if (!ns.leaf && ns.nonUniformity > kPaperScaleTolerance) {
+      ++r.innerNonUniformNodes;
+      if (ns.nonUniformity > r.innerNonUniformityMax) {
+        r.innerNonUniformityMax = ns.nonUniformity, r.innerNonUniformNode = int(i);
+        r.innerNonUniformName = scene.nodes[i].name, r.innerNonUniformScale = ns.leastUniform;
+      }
+    }
   }
   return r;
 }

@@ -1,6 +1,7 @@
 #include "pipelines/scene/scene_stats.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace mb {
 
@@ -108,7 +109,21 @@ nlohmann::json toJson(const FileStats& f) {
                 {"animatedScaleNodes", r.animatedScaleNodes}, {"animatedNonUniformNodes", r.animatedNonUniformNodes},
                 {"nonUniform", r.nonUniformScale}, {"negative", r.negativeScale},
                 {"animated", r.animatedScale}, {"animatedNonUniform", r.animatedNonUniformScale},
-                {"nonUniformOnlyOnLeaves", r.nonUniformOnlyOnLeaves}};
+                {"nonUniformOnlyOnLeaves", r.nonUniformOnlyOnLeaves},
+                // The paper's 1e-4 relative rule (scale_analysis.h): the corpus statistics.
+                {"paperTolerance", kPaperScaleTolerance}, {"scaleChannels", r.scaleChannels},
+                {"changingScaleChannels", r.changingScaleChannels},
+                {"nonUniformChangingChannels", r.nonUniformChangingChannels},
+                {"innerNonUniformNodes", r.innerNonUniformNodes}};
+  if (r.innerNonUniformNode >= 0) {
+    const glm::vec3 sc = r.innerNonUniformScale;
+    // Infinite (shear, a zero component) is written as null by JSON; say which.
+    j["scale"]["innerNonUniformityMax"] = std::isfinite(r.innerNonUniformityMax) ? nlohmann::json(r.innerNonUniformityMax)
+                                                                                  : nlohmann::json("shear or zero component");
+    j["scale"]["innerNonUniformExample"] = {{"node", r.innerNonUniformNode},
+                                            {"name", r.innerNonUniformName},
+                                            {"scale", {sc.x, sc.y, sc.z}}};
+  }
   j["cameras"] = f.cameras;
   j["unsupported"] = f.unsupported;
   j["fallbacks"] = toJson(f.fallbacks);
@@ -124,6 +139,9 @@ nlohmann::json aggregateJson(const std::vector<FileStats>& files) {
 nlohmann::json aggregateFileJson(const nlohmann::json& files) {
   int loaded = 0, animated = 0, animatedNonUniform = 0, nonUniform = 0, negative = 0, leavesOnly = 0,
       withUnsupported = 0, withFallbacks = 0, skinned = 0, normalMapped = 0;
+  // The paper's 1e-4 rule: changing scale channels, of them non-uniform, inner non-uniform nodes
+  // (and of those beyond 1 %, so a reader sees how far beyond the tolerance they are).
+  int changing = 0, changingNonUniform = 0, inner = 0, innerBeyondPercent = 0;
   long vertices = 0, triangles = 0, primitives = 0, joints = 0, channels = 0;
   const nlohmann::json noFallbacks = toJson(LoadStats{});
   for (const nlohmann::json& f : files) {
@@ -135,6 +153,11 @@ nlohmann::json aggregateFileJson(const nlohmann::json& files) {
     nonUniform += sc.value("nonUniform", false);
     negative += sc.value("negative", false);
     leavesOnly += sc.value("nonUniform", false) && sc.value("nonUniformOnlyOnLeaves", false);
+    changing += sc.value("changingScaleChannels", 0) > 0;
+    changingNonUniform += sc.value("nonUniformChangingChannels", 0) > 0;
+    inner += sc.value("innerNonUniformNodes", 0) > 0;
+    const nlohmann::json worst = sc.value("innerNonUniformityMax", nlohmann::json());
+    innerBeyondPercent += worst.is_string() || (worst.is_number() && worst.get<double>() > 0.01);
     withUnsupported += !f["unsupported"].empty();
     withFallbacks += f["fallbacks"] != noFallbacks;
     skinned += f["skinning"].value("skins", 0) > 0;
@@ -154,6 +177,10 @@ nlohmann::json aggregateFileJson(const nlohmann::json& files) {
           {"fractionAnimatedNonUniformScale", frac(animatedNonUniform)},
           {"filesWithNonUniformScale", nonUniform}, {"fractionNonUniformScale", frac(nonUniform)},
           {"filesWithNonUniformOnlyOnLeaves", leavesOnly},
+          {"paperTolerance", kPaperScaleTolerance},
+          {"filesWithChangingScale", changing}, {"fractionChangingScale", frac(changing)},
+          {"filesWithNonUniformChangingScale", changingNonUniform},
+          {"filesWithInnerNonUniformScale", inner}, {"filesWithInnerNonUniformScaleBeyond1Percent", innerBeyondPercent},
           {"filesWithNegativeScale", negative}, {"fractionNegativeScale", frac(negative)},
           {"filesSkinned", skinned}, {"filesNormalMapped", normalMapped},
           {"filesWithUnsupported", withUnsupported}, {"filesWithFallbacks", withFallbacks}};

@@ -13,6 +13,7 @@
 #include "harness/bench/fastest_sides.h"
 #include "harness/claims/claims_measures.h"
 #include "harness/claims/claims_sources.h"
+#include "tests/claims/claims_test_support.h"
 #include "pipelines/motor/companion.h"
 #include "pipelines/motor/motor_kernels.h"
 
@@ -21,12 +22,7 @@ using json = nlohmann::json;
 
 namespace {
 
-claims::Claim only(const std::vector<claims::Claim>& rows, const std::string& id) {
-  for (const claims::Claim& c : rows)
-    if (c.id == id) return c;
-  ADD_FAILURE() << "no row " << id;
-  return {};
-}
+using mb::claims_test::only;
 
 void expectOps(const json& j, int mul, int add, const std::string& what) {
   EXPECT_EQ(j["mul"], mul) << what;
@@ -258,6 +254,7 @@ TEST(ClaimsSkinning, RealFileRowSkipsCleanlyOrMeasuresRiggedSimple) {
 // out of cache the worse ratio (600 / 300 = 2) is the evidence.
 TEST(ClaimsSpeed, KernelEvidenceIsFastestAgainstFastest) {
   claims::SpeedInputs in;
+  in.spirv = false;  // optional evidence; compiling every shader variant is not what this test checks
   in.kernelPairs = json::array(
       {{{"kernel", "vertex_frame"}, {"size", "in_cache"},
         {"matrix", {{"items_per_second", 100.0}}}, {"glm", {{"items_per_second", 400.0}}},

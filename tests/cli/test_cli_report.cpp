@@ -250,10 +250,10 @@ TEST(CliClaims, FrameRatiosArePairedAndVertexBoundOnlyWhereMeasured) {
   const json& v = speed["measuredValue"];
   ASSERT_TRUE(v["frame time ratio (median over 3 scenes)"].is_number()) << v.dump(2);
   EXPECT_NEAR(v["frame time ratio (median over 3 scenes)"].get<double>(), 0.95, 1e-12);
-  const json& rigid = v["llvmpipe frame time, vertex-bound rigid normal-mapped"];
+  const json& rigid = v["frame time, vertex-bound rigid normal-mapped"];
   ASSERT_TRUE(rigid["costRatio"].is_number()) << v.dump(2);
   EXPECT_DOUBLE_EQ(rigid["costRatio"].get<double>(), 0.8);
-  const json& skinned = v["llvmpipe frame time, vertex-bound skinned"];
+  const json& skinned = v["frame time, vertex-bound skinned"];
   ASSERT_TRUE(skinned["caveat"].is_string()) << v.dump(2);
   EXPECT_NE(skinned["caveat"].get<std::string>().find("asymmetric"), std::string::npos);
   // No kernel data and an asymmetric skinned timing: not every kind of evidence agrees.

@@ -1,0 +1,26 @@
+// Which device a frame time was measured on, from report.json's machine.gl (issue 25: "kind"
+// "gpu" | "cpu-rasterizer" and "renderer"; older reports: "realGpu" and the renderer string), so
+// that every timing verdict names its device and one from a CPU rasterizer says so.
+#pragma once
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace mb::claims {
+
+struct TimingDevice {
+  bool known = false;          // machine.gl says what it is
+  bool cpuRasterizer = false;  // llvmpipe, softpipe, lavapipe, swrast: times follow the CPU, not a GPU
+  std::string renderer;        // GL_RENDERER as recorded
+  // "CPU rasterizer (llvmpipe (LLVM 15.0.6, 256 bits))", "GPU (NVIDIA H100 80GB HBM3/PCIe/SSE2)",
+  // "unknown device (no machine.gl in the timing's source)".
+  std::string label() const;
+};
+
+TimingDevice timingDevice(const nlohmann::json& machine);
+
+// "CPU verdicts hold for <cpu> (<n> logical cores[, Highway target T])": CPU results depend on
+// the CPU (issue 26 item 10).
+std::string cpuScope(const nlohmann::json& machine);
+
+}  // namespace mb::claims
