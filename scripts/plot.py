@@ -241,8 +241,8 @@ def plot_image_error(plt, report, outdir):
     grouped_bars(a1, labels, psnr, "worst PSNR [dB]", digits=3, bars=bars, panel="psnr", texts=identical)
     grouped_bars(a2, labels, frac, "% pixels off by > 1/255", digits=2, bars=bars, panel="fractionOver1",
                  texts={k: "identical" for k in identical})
-    a1.set_title("Image agreement with %s (curved scenes: their space's matrix pipeline) per scene "
-                 "(worst time; hatched: identical, every byte agrees)" % baseline, fontsize=9, pad=24)
+    a1.set_title("Worst PSNR against %s (curved scenes: their space's matrix); hatched: identical" % baseline,
+                 fontsize=9, pad=24)
     a2.set_title("Changed pixels (worst time)", fontsize=9)
     legend(fig, pipes)
     save(fig, outdir, "image_error")

@@ -151,7 +151,7 @@ int runCompare(const std::vector<std::string>& argv) {
                                                           : nlohmann::json(t.hardFail)}}},
       {"verdict", {{"judged", thresholdsGiven && !nothingDrawn},
                    {"text", nothingDrawn ? "nothing drawn" : !thresholdsGiven ? "no threshold given" : verdict.failed ? "fail" : "pass"},
-                   {"failed", nothingDrawn || (thresholdsGiven && verdict.failed)},
+                   {"failed", thresholdsGiven && (nothingDrawn || verdict.failed)},
                    {"failPercent", verdict.failPercent},
                    {"reason", nothingDrawn ? nlohmann::json("neither image drew any pixel")
                               : thresholdsGiven ? nlohmann::json(verdict.reason) : nlohmann::json(nullptr)}}},
@@ -168,7 +168,10 @@ int runCompare(const std::vector<std::string>& argv) {
   for (const std::string& line : metricLines(*metrics)) std::printf("  %s\n", line.c_str());
   if (!skinning.empty()) std::printf("  note: %s\n", skinning.c_str());
   // Two background-only frames agree trivially: nothing was compared.
-  if (nothingDrawn) {
+  if (nothingDrawn && !thresholdsGiven) {  // nothing judged, but said
+    commandNotes("compare", {"warning: neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are "
+                             "background only): nothing was compared"});
+  } else if (nothingDrawn) {
     std::printf("%s: %s vs %s -> NOT COMPARED\n", scene.source.c_str(), names[0].c_str(), names[1].c_str());
     return fail("neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are background only: the " +
                 "scene is off screen, empty or scaled to zero at this pose); nothing was compared, so it cannot pass");
@@ -203,5 +206,5 @@ MB_COMMAND_HELP(compare, "compare",
                "  --failpercent P    % of pixels (0..100) allowed over F\n"
                "  --hardfail H       the largest channel difference allowed anywhere (0..1)\n"
                "  --anim A, --time T, --anim2 B, --time2 T2, --blend W, --camera C, --size WxH   as render\n"
-               "  Exit 0 pass (or not judged), 1 a threshold exceeded, 2 an error or nothing drawn in either image.\n",
+               "  Exit 0 pass (or not judged), 1 a threshold exceeded, 2 an error, or a threshold given and nothing drawn in either image.\n",
                 "motorbench compare textured_box --failpercent 0.1 -o out/box", true);

@@ -59,6 +59,11 @@ TEST(CliCompareText, NothingDrawnInEitherImageIsNotAPass) {
   EXPECT_EQ(j["verdict"]["text"], "nothing drawn");
   EXPECT_EQ(j["verdict"]["failed"], true);
   EXPECT_EQ(nonBackground(dir / "c" / "matrix.png"), 0);
+  // Without a threshold nothing is judged: exit 0, but said.
+  const auto plain = runMb("compare " + quoted(file) + " -o " + quoted(dir / "p"));
+  EXPECT_EQ(plain.rc, 0) << plain.out;
+  EXPECT_TRUE(contains(plain.out, "warning: neither matrix nor motor drew any pixel")) << plain.out;
+  EXPECT_TRUE(contains(plain.out, "not judged")) << plain.out;
   // render says so too (the image is written: it is what was asked for).
   const auto one = runMb("render " + quoted(file) + " -o " + quoted(dir / "r.png"));
   EXPECT_EQ(one.rc, 0) << one.out;
