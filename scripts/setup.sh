@@ -15,6 +15,7 @@ PACKAGES=(
   glslang-tools spirv-tools
   libvulkan-dev mesa-vulkan-drivers  # motorbench isa: AMD's compiler (ACO) through RADV's null device
   libdraco-dev libmeshoptimizer-dev  # KHR_draco_mesh_compression, EXT_meshopt_compression decode
+  libwebp-dev                        # tests/scene: libwebp's own decoder as the WebP reference
   python3 python3-matplotlib
   parallel python3-yaml              # sharded runs (motorbench --shard, tests/cli, README examples)
   chromium                          # the report opened in a real browser (tests/cli/test_cli_browser.cpp)

@@ -63,6 +63,8 @@ void printFile(const mb::FileStats& f) {
               "(%d non-uniform keys); non-uniform only on leaves: %s\n",
               r.uniformNodes, r.nonUniformNodes, r.negativeNodes, r.shearNodes, r.animatedScaleNodes,
               r.animatedNonUniformNodes, r.nonUniformScale ? (r.nonUniformOnlyOnLeaves ? "yes" : "no") : "n/a");
+  std::printf("  compression %s\n", mb::describeCompression(f.compression).c_str());
+  if (!f.notDrawn.empty()) std::printf("  NOT DRAWN   %s (render, compare and time refuse it)\n", f.notDrawn.c_str());
   printFallbacks(mb::toJson(f.fallbacks));
   if (f.unsupported.empty()) std::printf("  unsupported none\n");
   for (const auto& u : f.unsupported) std::printf("  unsupported %s\n", u.c_str());

@@ -30,6 +30,7 @@
 #include "harness/render/scene_inputs.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/gl/patch_geometry.h"
+#include "pipelines/scene/drawable.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scene_stats.h"
 
@@ -56,6 +57,9 @@ int timeOneScene(const std::string& name, const timing::Settings& normal, const 
   int status = 0;
   const Status spec = checkSceneSpec(name);  // a misspelt name lists the built-ins
   auto scene = spec ? loadScene(name) : Result<Scene>::fail(spec.error());
+  if (scene)  // a blank frame is no timing
+    if (std::string why = whyNothingDrawn(*scene); !why.empty())
+      scene = Result<Scene>::fail(scene->source + ": nothing to draw: " + why);
   if (!scene) {
     std::fprintf(stderr, "motorbench time: error: %s\n", scene.error().c_str());
     rows.push_back({{"scene", name}, {"error", scene.error()}});

@@ -45,7 +45,7 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"LoadStats", "weightsZeroSum", "vertices", "all skin weights 0: bound to joint 0"},
       {"LoadStats", "influencesTruncated", "vertices", "more than 4 influences (JOINTS_1...): the 4 largest kept"},
       {"LoadStats", "nonFinitePositions", "vertices", "NaN or infinite positions, set to 0"},
-      {"LoadStats", "skippedPrimitives", "primitives", "primitives not drawn (points, lines; listed under unsupported)"},
+      {"LoadStats", "skippedPrimitives", "primitives", "primitives not drawn (points, lines, no POSITION; each listed under unsupported with its reason); a file that draws nothing is refused by render, compare and time"},
       {"LoadStats", "normalsRenormalised", "vertices", "normals whose length differed from 1 by more than 1e-3, normalised"},
       {"LoadStats", "jointsOutOfRange", "influences", "influences naming a joint the skin lacks, given weight 0"},
       {"LoadStats", "stripsFansConverted", "primitives", "TRIANGLE_STRIP / TRIANGLE_FAN primitives converted to triangle lists"},
@@ -56,6 +56,8 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"LoadStats", "keyframeTimesNotIncreasing", "channels", "invalid file: animation channels whose input times do not strictly increase; keys stably sorted by time, equal times kept (a jump)"},
       {"LoadStats", "rotationKeysNormalised", "keyframes", "invalid file: rotation keyframes whose length differs from 1 by more than 0.00769 (the glTF validator's tolerance), normalised; zero -> identity"},
       {"LoadStats", "camerasRepaired", "cameras", "invalid file: cameras with zfar <= znear, a negative znear (perspective: <= 0) or yfov outside (0, pi): zfar made infinite (drawn at znear x 1e4), znear 0.01 (orthographic 0), yfov 0.8"},
+      {"LoadStats", "binChunkUnaligned", "files", "invalid file: GLB BIN chunk length not a multiple of 4 (three.js and the Sample Viewer read it): the chunk zero-padded to the next multiple of 4"},
+      {"LoadStats", "basisuTexturesNotDecoded", "textures", "KHR_texture_basisu (KTX2) textures: no BasisU decoder in Debian; the texture's fallback image is used, else it is drawn untextured (listed under unsupported)"},
       // Image metrics (harness/render/image_metrics.h): compare, report and check.
       {"ImageMetrics", "rmse", "", "root mean square of the channel differences (bytes / 255), RGBA, every pixel"},
       {"ImageMetrics", "psnr", "dB", "20 log10(1 / rmse); null (infinite) when the images are identical"},

@@ -10,6 +10,7 @@
 #include "pipelines/pipeline.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/curved_space.h"
+#include "pipelines/scene/drawable.h"
 #include "pipelines/scene/loader.h"
 
 namespace mb {
@@ -165,6 +166,8 @@ Result<SceneCommand> parseSceneCommand(const Args& args, const std::string& outp
   auto scene = loadScene(args.positional()[0]);
   if (!scene) return R::fail(scene.error());
   c.scene = scene.take();
+  if (std::string why = whyNothingDrawn(c.scene); !why.empty())
+    return R::fail(c.scene.source + ": nothing to draw: " + why);
   auto settings = frameSettingsFromArgs(args, c.scene, &c.notes);
   if (!settings) return R::fail(settings.error());
   c.settings = *settings;

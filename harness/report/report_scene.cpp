@@ -12,6 +12,7 @@
 #include "harness/report/report_sources.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/scene/curved_space.h"
+#include "pipelines/scene/drawable.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scale_analysis.h"
 #include "pipelines/scene/scene_stats.h"
@@ -135,6 +136,12 @@ json measureScene(const SceneJob& job) {
   }
   out["source"] = scene->source;
   out["stats"] = toJson(computeFileStats(*scene));
+  if (std::string why = whyNothingDrawn(*scene); !why.empty()) {  // listed as not drawn, no blank images
+    out["error"] = "nothing to draw: " + why;
+    out["notDrawn"] = why;
+    progress(job, "NOT DRAWN: " + why);
+    return out;
+  }
   out["vertexMix"] = vertexMix(*scene);
   // The animations shown: --anim's choice, else the first (none: the rest pose, anim -1).
   std::vector<int> anims = job.animations;

@@ -179,15 +179,28 @@ std::string decodeDataUri(const std::string& uri, std::string* type, std::vector
   return "";
 }
 
+// The EXT_/KHR_meshopt_compression object of a bufferView, nullptr when it has none. Such a
+// view reads the extension's buffer; its own buffer is only the uncompressed fallback, which may
+// have no data (meshopt_decode.cpp decodes the extension).
+const json* meshoptExtension(const json& view) {
+  auto e = view.find("extensions");
+  if (e == view.end() || !e->is_object()) return nullptr;
+  for (const char* name : {"EXT_meshopt_compression", "KHR_meshopt_compression"})
+    if (auto m = e->find(name); m != e->end() && m->is_object()) return &*m;
+  return nullptr;
+}
+
 // The index of the first bufferView reading each buffer (-1: none).
 std::vector<long> firstReaders(const json& doc, size_t bufferCount) {
   std::vector<long> reader(bufferCount, -1);
   auto views = doc.find("bufferViews");
   if (views == doc.end() || !views->is_array()) return reader;
   for (size_t v = 0; v < views->size(); ++v) {
-    const json& view = (*views)[v];
-    auto b = view.is_object() ? view.find("buffer") : view.end();
-    if (!view.is_object() || b == view.end() || !b->is_number_unsigned()) continue;
+    const json* view = &(*views)[v];
+    if (view->is_object())
+      if (const json* m = meshoptExtension(*view)) view = m;
+    auto b = view->is_object() ? view->find("buffer") : view->end();
+    if (!view->is_object() || b == view->end() || !b->is_number_unsigned()) continue;
     const uint64_t i = b->get<uint64_t>();
     if (i < bufferCount && reader[i] < 0) reader[i] = long(v);
   }
@@ -261,13 +274,15 @@ void conformImages(json& doc, ConformedGltf* out, bool* changed) {
     std::string type;
     std::vector<uint8_t> bytes;
     std::string why = decodeDataUri(text, &type, &bytes);
-    if (why.empty() && type != "image/png" && type != "image/jpeg")
-      why = "data: URI media type '" + shown(type) + "' is not image/png or image/jpeg";
+    if (why.empty() && type != "image/png" && type != "image/jpeg" && type != "image/webp")
+      why = "data: URI media type '" + shown(type) + "' is not image/png, image/jpeg or image/webp";
     if (!why.empty()) {
       out->notes.push_back(who + ": " + why + " (not decoded)");
       continue;
     }
-    *uri = "data:" + type + ";base64," + base64Encode(bytes);
+    // tinygltf 2.7 knows no image/webp data: URI; the bytes go to decodeImage, which tells the
+    // format from the bytes, so WebP travels under a media type tinygltf accepts.
+    *uri = "data:" + (type == "image/webp" ? std::string("image/png") : type) + ";base64," + base64Encode(bytes);
     *changed = true;
   }
 }

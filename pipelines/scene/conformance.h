@@ -34,6 +34,7 @@ struct ConformedGltf {
   std::vector<Indices> indices;         // removed from the JSON, restored by applyConformance
   std::vector<int> placeholderBuffers;  // emptied by applyConformance
   std::vector<std::string> notes;       // for Scene::unsupported (e.g. an image URI not read)
+  bool binChunkPadded = false;          // GLB BIN chunk length not a multiple of 4: zero-padded
 };
 
 // Whole-number floats -> integers for the properties the glTF 2.0 schema types as integers

@@ -12,6 +12,7 @@
 
 #include "pipelines/scene/bpt_reader.h"
 #include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/scene/compressed_geometry.h"
 #include "pipelines/scene/gltf_convert.h"
 #include "pipelines/scene/image_decode.h"
 #include "pipelines/scene/preflight.h"
@@ -25,6 +26,7 @@ struct LoadContext {
   bool allowFiles = false;
   std::string baseDir;
   std::vector<std::string> imageNotes;
+  int webpImages = 0;
 };
 
 // Filesystem callbacks: the defaults, except that in-memory loads without a base directory
@@ -71,6 +73,7 @@ bool loadImage(tinygltf::Image* image, const int index, std::string* err, std::s
   image->bits = 8;
   image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
   image->image = std::move(d->rgba);
+  static_cast<LoadContext*>(user)->webpImages += d->format == ImageFormat::Webp;
   return true;
 }
 
@@ -82,9 +85,10 @@ std::string firstLines(std::string s) {
 }
 
 void noteExtensions(const tinygltf::Model& m, Scene& scene) {
-  static const std::set<std::string> supported = {"KHR_mesh_quantization", kBezierPatchesExtension};
-  static const std::set<std::string> geometry = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
-                                                 "EXT_mesh_gpu_instancing", "KHR_meshopt_compression"};
+  static const std::set<std::string> supported = {"KHR_mesh_quantization", kBezierPatchesExtension,
+                                                  "KHR_draco_mesh_compression", "EXT_meshopt_compression",
+                                                  "KHR_meshopt_compression", "EXT_texture_webp"};
+  static const std::set<std::string> geometry = {"EXT_mesh_gpu_instancing"};
   std::set<std::string> seen;
   for (const auto* list : {&m.extensionsRequired, &m.extensionsUsed})
     for (const auto& ext : *list) {
@@ -95,9 +99,12 @@ void noteExtensions(const tinygltf::Model& m, Scene& scene) {
 }
 
 Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadContext& ctx,
-                      const ConformedGltf& conformed) {
+                      const ConformedGltf& conformed, const CompressionStats& compression) {
   Scene scene;
   scene.source = name;
+  scene.compression = compression;
+  scene.compression.webpImages = ctx.webpImages;
+  scene.stats.binChunkUnaligned = conformed.binChunkPadded;
   for (const auto& note : conformed.notes) scene.unsupported.push_back(note);
   noteExtensions(m, scene);
   Status s = convertNodes(m, scene);
@@ -154,7 +161,11 @@ Result<Scene> loadGltfMemory(const std::vector<uint8_t>& original, const std::st
     }
     if (!ok) return Result<Scene>::fail(name + ": " + firstLines(err));
     applyConformance(conformed, model);
-    return convert(model, name, ctx, conformed);
+    CompressionStats compression;
+    Status decoded = decodeMeshoptViews(model, compression);
+    if (decoded) decoded = decodeDracoPrimitives(model, compression);
+    if (!decoded) return Result<Scene>::fail(name + ": " + decoded.error());
+    return convert(model, name, ctx, conformed, compression);
   } catch (const std::exception& e) {
     return Result<Scene>::fail(name + ": " + e.what());
   }

@@ -66,12 +66,25 @@ Status convertMaterials(const tinygltf::Model& m, Scene& scene) {
   }
   for (size_t i = 0; i < m.textures.size(); ++i) {
     const auto& t = m.textures[i];
-    if (t.source < -1 || t.source >= int(m.images.size()) || t.sampler < -1 ||
-        t.sampler >= int(m.samplers.size()))
-      return Status::fail("texture " + std::to_string(i) + " refers to a missing image or sampler");
-    for (const auto& [ext, v] : t.extensions)
-      scene.unsupported.push_back("texture " + std::to_string(i) + ": extension " + ext + " ignored");
-    scene.textures.push_back({t.source, t.sampler});
+    const std::string who = "texture " + std::to_string(i);
+    int source = t.source;
+    for (const auto& [ext, v] : t.extensions) {
+      const int extSource = v.Get("source").IsInt() ? v.Get("source").GetNumberAsInt() : -2;
+      if (ext == "EXT_texture_webp") {  // decoded like PNG/JPEG (image_decode.h); preferred to the fallback
+        if (extSource < 0 || extSource >= int(m.images.size()))
+          return Status::fail(who + ": EXT_texture_webp source " + std::to_string(extSource) + " does not exist");
+        source = extSource;
+      } else if (ext == "KHR_texture_basisu") {  // KTX2: no decoder in Debian
+        scene.unsupported.push_back(who + ": KHR_texture_basisu (KTX2) not decoded, no BasisU decoder: " +
+                                    (source >= 0 ? "its fallback image " + std::to_string(source) + " is used" : "drawn untextured"));
+        ++scene.stats.basisuTexturesNotDecoded;
+      } else {
+        scene.unsupported.push_back(who + ": extension " + ext + " ignored");
+      }
+    }
+    if (source < -1 || source >= int(m.images.size()) || t.sampler < -1 || t.sampler >= int(m.samplers.size()))
+      return Status::fail(who + " refers to a missing image or sampler");
+    scene.textures.push_back({source, t.sampler});
   }
   for (size_t i = 0; i < m.materials.size(); ++i) {
     const auto& src = m.materials[i];

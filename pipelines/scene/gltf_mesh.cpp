@@ -16,6 +16,12 @@ namespace {
 
 constexpr int kTriangles = 4, kStrip = 5, kFan = 6;
 
+// "mode 1 (lines)": the glTF name of a primitive mode that is not drawn.
+std::string modeName(int mode) {
+  static const char* names[] = {"points", "lines", "line loop", "line strip"};
+  return "mode " + std::to_string(mode) + " (" + (mode >= 0 && mode < 4 ? names[mode] : "unknown") + ")";
+}
+
 // Reads attribute `name` when present; checks component count (any of `allowed`) and count.
 Result<AccessorData<float>> attribute(const tinygltf::Model& m, const tinygltf::Primitive& prim,
                                       const std::string& name, std::initializer_list<int> allowed,
@@ -111,6 +117,7 @@ Result<Mesh> convertMesh(const tinygltf::Model& m, int index, uint32_t jointCoun
     std::string where = "mesh " + std::to_string(index) + " primitive " + std::to_string(pi);
     auto skip = [&](const std::string& why) {
       scene.unsupported.push_back(where + ": " + why + " (primitive skipped)");
+      scene.skipped.push_back({index, int(pi), why});
       ++scene.stats.skippedPrimitives;
     };
     if (prim.extensions.count(kBezierPatchesExtension)) {
@@ -120,14 +127,12 @@ Result<Mesh> convertMesh(const tinygltf::Model& m, int index, uint32_t jointCoun
       continue;
     }
     if (prim.mode != kTriangles && prim.mode != kStrip && prim.mode != kFan && prim.mode != -1) {
-      skip("mode " + std::to_string(prim.mode) + " (points/lines) not supported");
+      skip(modeName(prim.mode) + " not supported");
       continue;
     }
-    if (prim.extensions.count("KHR_draco_mesh_compression")) {
-      skip("KHR_draco_mesh_compression not supported");
-      continue;
-    }
-    for (const auto& [ext, v] : prim.extensions) scene.unsupported.push_back(where + ": extension " + ext + " ignored");
+    // KHR_draco_mesh_compression was decoded into the accessors (draco_decode.cpp).
+    for (const auto& [ext, v] : prim.extensions)
+      if (ext != "KHR_draco_mesh_compression") scene.unsupported.push_back(where + ": extension " + ext + " ignored");
     if (!prim.targets.empty())
       scene.unsupported.push_back(where + ": " + std::to_string(prim.targets.size()) +
                                   " morph targets ignored (base geometry rendered)");

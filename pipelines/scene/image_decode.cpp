@@ -1,4 +1,4 @@
-// PNG/JPEG header checks and decoding through OpenImageIO (see image_decode.h).
+// PNG/JPEG/WebP header checks and decoding through OpenImageIO (see image_decode.h).
 #include "pipelines/scene/image_decode.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -66,6 +66,46 @@ Result<ImageHeader> jpegHeader(const uint8_t* b, size_t size) {
   return Result<ImageHeader>::fail("truncated JPEG header (no frame header)");
 }
 
+uint32_t le32(const uint8_t* p) { return uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16) | (uint32_t(p[3]) << 24); }
+uint32_t le24(const uint8_t* p) { return uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16); }
+
+// RIFF container (WebP container specification): "RIFF" size "WEBP", then chunks of
+// fourcc + little-endian size + data padded to even length. The frame size comes from the first
+// chunk: VP8X (canvas, 24-bit minus one), VP8L (14-bit minus one after signature 0x2F) or VP8
+// (14-bit after the key frame start code 9D 01 2A).
+Result<ImageHeader> webpHeader(const uint8_t* b, size_t size) {
+  using R = Result<ImageHeader>;
+  if (size < 12 + 8 + 10) return R::fail("truncated WebP header");
+  const uint64_t riff = le32(b + 4);
+  if (riff + 8 > size) return R::fail("truncated WebP (RIFF size " + std::to_string(riff) + " runs past the image data)");
+  if (riff % 2 || riff < 4 + 8) return R::fail("corrupt WebP (RIFF size " + std::to_string(riff) + ")");
+  const size_t end = size_t(riff) + 8;
+  for (size_t at = 12; at < end;) {
+    if (at + 8 > end) return R::fail("corrupt WebP (a chunk header crosses the RIFF end)");
+    const uint64_t len = le32(b + at + 4);
+    if (len + (len & 1) > end - at - 8) return R::fail("corrupt WebP (a chunk is longer than the image data)");
+    at += 8 + size_t(len + (len & 1));
+  }
+  const uint8_t* c = b + 20;  // first chunk's data
+  const uint64_t len = le32(b + 16);
+  ImageHeader h;
+  h.format = ImageFormat::Webp;
+  if (std::memcmp(b + 12, "VP8X", 4) == 0 && len >= 10) {
+    h.width = le24(c + 4) + 1;
+    h.height = le24(c + 7) + 1;
+  } else if (std::memcmp(b + 12, "VP8L", 4) == 0 && len >= 5 && c[0] == 0x2F) {
+    const uint32_t bits = le32(c + 1);
+    h.width = (bits & 0x3FFF) + 1;
+    h.height = ((bits >> 14) & 0x3FFF) + 1;
+  } else if (std::memcmp(b + 12, "VP8 ", 4) == 0 && len >= 10 && c[3] == 0x9D && c[4] == 0x01 && c[5] == 0x2A) {
+    h.width = (c[6] | (uint32_t(c[7]) << 8)) & 0x3FFF;
+    h.height = (c[8] | (uint32_t(c[9]) << 8)) & 0x3FFF;
+  } else {
+    return R::fail("WebP has no VP8, VP8L or VP8X frame header first");
+  }
+  return h;
+}
+
 // OpenImageIO messages: one line, printable ASCII (they end up in JSON reports), bounded.
 std::string oneLine(std::string s, const std::string& drop) {
   for (size_t p; !drop.empty() && (p = s.find(drop)) != std::string::npos;) s.erase(p, drop.size());
@@ -81,9 +121,11 @@ std::string oneLine(std::string s, const std::string& drop) {
 }  // namespace
 
 Result<ImageHeader> readImageHeader(const uint8_t* bytes, size_t size) {
-  Result<ImageHeader> h = Result<ImageHeader>::fail("not a PNG or JPEG image");
+  Result<ImageHeader> h = Result<ImageHeader>::fail("not a PNG, JPEG or WebP image");
   if (size >= 8 && std::memcmp(bytes, kPngSignature, 8) == 0) h = pngHeader(bytes, size);
   else if (size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF) h = jpegHeader(bytes, size);
+  else if (size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0)
+    h = webpHeader(bytes, size);
   if (h && (h->width == 0 || h->height == 0))
     return Result<ImageHeader>::fail("image header declares " + std::to_string(h->width) + "x" + std::to_string(h->height) + " pixels");
   return h;
@@ -96,18 +138,20 @@ Result<DecodedImage> decodeImage(const uint8_t* bytes, size_t size) {
   if (uint64_t(h->width) * h->height > kMaxImagePixels)
     return R::fail(std::to_string(h->width) + "x" + std::to_string(h->height) + " pixels is too large (limit " +
                    std::to_string(kMaxImagePixels) + ")");
-  const bool png = h->format == ImageFormat::Png;
+  static const char* readers[] = {"png", "jpeg", "webp"};
+  static const char* formatNames[] = {"PNG", "JPEG", "WebP"};
+  const int f = int(h->format);
   // A name no file has: the reader must take its bytes from the proxy, never from disk.
-  const std::string name = png ? "/nonexistent/motorbench-memory.png" : "/nonexistent/motorbench-memory.jpg";
+  const std::string name = std::string("/nonexistent/motorbench-memory.") + readers[f];
   const std::string quoted = " (\"" + name + "\")";
   OIIO::Filesystem::IOMemReader memory(bytes, size);
   OIIO::Filesystem::IOProxy* proxy = &memory;
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);  // PNG alpha as stored, not premultiplied
   config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-  // The PNG or JPEG reader by format name: never a reader guessed from the content.
-  auto in = OIIO::ImageInput::create(png ? "png" : "jpeg", false, &config, proxy);
-  if (!in) return R::fail("OpenImageIO has no " + std::string(png ? "PNG" : "JPEG") + " reader: " + oneLine(OIIO::geterror(), quoted));
+  // The reader by format name: never a reader guessed from the content.
+  auto in = OIIO::ImageInput::create(readers[f], false, &config, proxy);
+  if (!in) return R::fail("OpenImageIO has no " + std::string(formatNames[f]) + " reader: " + oneLine(OIIO::geterror(), quoted));
   in->threads(1);
   OIIO::ImageSpec spec;
   if (!in->open(name, spec, config)) return R::fail(oneLine(in->geterror(), quoted));
@@ -126,6 +170,7 @@ Result<DecodedImage> decodeImage(const uint8_t* bytes, size_t size) {
   in->close();
   (void)in->geterror();  // warnings of a successful read are not kept in OIIO's error state
   DecodedImage out;
+  out.format = h->format;
   out.width = int(h->width);
   out.height = int(h->height);
   out.rgba.resize(pixels * 4);

@@ -1,5 +1,5 @@
-// Decoding glTF images (PNG, JPEG) from untrusted bytes: our own header checks first, then
-// OpenImageIO (libpng, libjpeg-turbo). stb_image is not used for decoding (issue 20: it wrote
+// Decoding glTF images (PNG, JPEG, and WebP for EXT_texture_webp) from untrusted bytes: our own
+// header checks first, then OpenImageIO (libpng, libjpeg-turbo, libwebp). stb_image is not used for decoding (issue 20: it wrote
 // past a table on a JPEG whose Huffman counts sum past 256).
 #pragma once
 #include <cstddef>
@@ -15,7 +15,7 @@ namespace mb {
 // alone decides, so a few-hundred-byte file claiming 16000 x 16000 allocates nothing.
 constexpr uint64_t kMaxImagePixels = uint64_t(1) << 26;
 
-enum class ImageFormat { Png, Jpeg };
+enum class ImageFormat { Png, Jpeg, Webp };
 
 // What a header declares; nothing is decoded.
 struct ImageHeader {
@@ -27,16 +27,18 @@ struct ImageHeader {
 // skipping other segments by their lengths, tolerating junk between markers as libjpeg does).
 // Fails, with the reason, on anything that is neither PNG nor JPEG, on a truncated or zero-size
 // header, on a PNG whose chunk lengths run past the bytes there are, and on a PNG that ends
-// before a complete IEND chunk. Reads only inside
+// before a complete IEND chunk. WebP: the RIFF size must lie inside the bytes, every chunk inside
+// it, and the first chunk be VP8, VP8L or VP8X with its frame size. Reads only inside
 // [bytes, bytes + size).
 Result<ImageHeader> readImageHeader(const uint8_t* bytes, size_t size);
 
 struct DecodedImage {
+  ImageFormat format = ImageFormat::Png;
   int width = 0, height = 0;
   std::vector<uint8_t> rgba;  // width * height * 4, rows top to bottom, alpha not premultiplied
 };
 
-// readImageHeader, the pixel limit, then OpenImageIO's PNG or JPEG reader alone (never a reader
+// readImageHeader, the pixel limit, then OpenImageIO's PNG, JPEG or WebP reader alone (never a reader
 // guessed from the content), from memory. Channels are expanded as stb_image did before:
 // grey -> (g, g, g, 255), grey+alpha -> (g, g, g, a), RGB -> (r, g, b, 255); 16-bit samples
 // keep their high byte; PNG palettes, low bit depths and tRNS are expanded by libpng. Alpha is

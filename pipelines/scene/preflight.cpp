@@ -48,6 +48,23 @@ Status checkGlb(const std::vector<uint8_t>& b, size_t* jsonBegin, size_t* jsonLe
   return {};
 }
 
+// A GLB whose BIN chunk length is not a multiple of 4 (glTF 2.0 4.4.3.1 requires it; three.js
+// and the Sample Viewer read such files): the same file with the chunk zero-padded to the next
+// multiple of 4 and the lengths patched; chunks after it are dropped (readers ignore them).
+// Empty when the BIN chunk is aligned, absent, or not complete (truncation stays an error).
+std::vector<uint8_t> padUnalignedBin(const std::vector<uint8_t>& b) {
+  size_t jsonBegin = 0, jsonLength = 0, at = 0, end = 0;
+  if (!checkGlb(b, &jsonBegin, &jsonLength, &at, &end) || at + 8 > end) return {};
+  const uint32_t binLen = u32(b, at);
+  if (binLen % 4 == 0 || u32(b, at + 4) != 0x004E4942u) return {};
+  std::vector<uint8_t> out(b.begin(), b.begin() + long(at + 8 + binLen));
+  out.resize(out.size() + (4 - binLen % 4), 0);
+  const uint32_t padded = (binLen + 3) & ~3u, total = uint32_t(out.size());
+  std::memcpy(out.data() + at, &padded, 4);
+  std::memcpy(out.data() + 8, &total, 4);
+  return out;
+}
+
 uint64_t field(const nlohmann::json& o, const char* key, uint64_t fallback, bool* ok) {
   auto it = o.find(key);
   if (it == o.end()) return fallback;
@@ -103,6 +120,14 @@ std::string printable(const std::string& s) {
 Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb,
                      ConformedGltf* conformed) {
   *isGlb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (std::vector<uint8_t> padded = *isGlb ? padUnalignedBin(bytes) : std::vector<uint8_t>{}; !padded.empty()) {
+    ConformedGltf local;
+    if (!conformed) conformed = &local;
+    Status s = preflightGltf(padded, nameHint, isGlb, conformed);
+    if (conformed->bytes.empty()) conformed->bytes = std::move(padded);
+    conformed->binChunkPadded = true;
+    return s;
+  }
   size_t begin = 0, length = bytes.size(), restBegin = 0, restEnd = 0;
   if (*isGlb) {
     if (Status s = checkGlb(bytes, &begin, &length, &restBegin, &restEnd); !s) return s;

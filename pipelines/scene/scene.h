@@ -149,6 +149,25 @@ struct LoadStats {
   int keyframeTimesNotIncreasing = 0; // channels whose input times do not strictly increase (sorted)
   int rotationKeysNormalised = 0;     // rotation keyframes off unit length by > 0.00769 (normalised)
   int camerasRepaired = 0;            // cameras with zfar <= znear, bad znear or yfov (Camera)
+  int binChunkUnaligned = 0;          // GLB BIN chunk length not a multiple of 4 (padded with zeros)
+  int basisuTexturesNotDecoded = 0;   // KHR_texture_basisu sources (no decoder): fallback image or white
+};
+
+// Geometry and images the loader decoded from a compression or image-format extension
+// (draco_decode.cpp, meshopt_decode.cpp, image_decode.cpp); `inspect` shows them. Bytes are
+// those of the compressed payloads read and of the decoded data they produced.
+struct CompressionStats {
+  int dracoPrimitives = 0;          // KHR_draco_mesh_compression primitives decoded
+  uint64_t dracoCompressedBytes = 0, dracoDecodedBytes = 0;
+  int meshoptViews = 0;             // EXT_/KHR_meshopt_compression bufferViews decoded
+  uint64_t meshoptCompressedBytes = 0, meshoptDecodedBytes = 0;
+  int webpImages = 0;               // EXT_texture_webp images decoded
+};
+
+// A primitive the loader did not turn into geometry, and why ("mode 1 (lines)", ...).
+struct SkippedPrimitive {
+  int mesh = -1, primitive = -1;
+  std::string reason;
 };
 
 // Curved space (issue 15): spherical S3 and hyperbolic H3 scenes, built in code (glTF has no
@@ -191,6 +210,8 @@ struct Scene {
   std::vector<Camera> cameras;
   std::vector<std::string> unsupported;  // features present but not rendered, one line each
   LoadStats stats;
+  CompressionStats compression;
+  std::vector<SkippedPrimitive> skipped;  // also listed in `unsupported`, counted in stats
   CurvedScene curved;  // space != Euclidean: a curved-space scene (no nodes or meshes)
   // Refinement-pattern level N at which pipelines tessellate patch primitives: a uv grid of
   // (N+1)^2 vertices and 2 N^2 triangles drawn once per patch. A render setting the caller may

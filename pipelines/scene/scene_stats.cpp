@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pipelines/scene/drawable.h"
+
 namespace mb {
 
 FileStats computeFileStats(const Scene& s) {
@@ -62,6 +64,8 @@ FileStats computeFileStats(const Scene& s) {
   f.scale = analyzeScale(s);
   f.unsupported = s.unsupported;
   f.fallbacks = s.stats;
+  f.compression = s.compression;
+  f.notDrawn = whyNothingDrawn(s);
   return f;
 }
 
@@ -82,7 +86,29 @@ nlohmann::json toJson(const LoadStats& s) {
           {"degenerateUvTriangles", s.degenerateUvTriangles}, {"tangentSplitVertices", s.tangentSplitVertices},
           {"imagesNotDecoded", s.imagesNotDecoded}, {"accessorBoundsMismatch", s.accessorBoundsMismatch},
           {"keyframeTimesNotIncreasing", s.keyframeTimesNotIncreasing},
-          {"rotationKeysNormalised", s.rotationKeysNormalised}, {"camerasRepaired", s.camerasRepaired}};
+          {"rotationKeysNormalised", s.rotationKeysNormalised}, {"camerasRepaired", s.camerasRepaired},
+          {"binChunkUnaligned", s.binChunkUnaligned}, {"basisuTexturesNotDecoded", s.basisuTexturesNotDecoded}};
+}
+
+nlohmann::json toJson(const CompressionStats& c) {
+  return {{"draco", {{"primitives", c.dracoPrimitives}, {"compressedBytes", c.dracoCompressedBytes},
+                     {"decodedBytes", c.dracoDecodedBytes}}},
+          {"meshopt", {{"bufferViews", c.meshoptViews}, {"compressedBytes", c.meshoptCompressedBytes},
+                       {"decodedBytes", c.meshoptDecodedBytes}}},
+          {"webpImages", c.webpImages}};
+}
+
+std::string describeCompression(const CompressionStats& c) {
+  std::string out;
+  auto add = [&](const std::string& part) { out += (out.empty() ? "" : "; ") + part; };
+  if (c.dracoPrimitives)
+    add("KHR_draco_mesh_compression " + std::to_string(c.dracoPrimitives) + " primitives, " +
+        std::to_string(c.dracoCompressedBytes) + " compressed -> " + std::to_string(c.dracoDecodedBytes) + " decoded bytes");
+  if (c.meshoptViews)
+    add("meshopt " + std::to_string(c.meshoptViews) + " bufferViews, " + std::to_string(c.meshoptCompressedBytes) +
+        " compressed -> " + std::to_string(c.meshoptDecodedBytes) + " decoded bytes");
+  if (c.webpImages) add("EXT_texture_webp " + std::to_string(c.webpImages) + " images decoded");
+  return out.empty() ? "none" : out;
 }
 
 nlohmann::json toJson(const FileStats& f) {
@@ -127,6 +153,8 @@ nlohmann::json toJson(const FileStats& f) {
   j["cameras"] = f.cameras;
   j["unsupported"] = f.unsupported;
   j["fallbacks"] = toJson(f.fallbacks);
+  j["compression"] = toJson(f.compression);
+  j["notDrawn"] = f.notDrawn.empty() ? nlohmann::json(nullptr) : nlohmann::json(f.notDrawn);
   return j;
 }
 

@@ -29,6 +29,8 @@ struct FileStats {
   ScaleReport scale;
   std::vector<std::string> unsupported;
   LoadStats fallbacks;
+  CompressionStats compression;
+  std::string notDrawn;  // whyNothingDrawn (drawable.h): "" when the file draws something
 };
 
 FileStats computeFileStats(const Scene& scene);
@@ -36,6 +38,9 @@ FileStats failedFileStats(const std::string& file, const std::string& error);
 
 nlohmann::json toJson(const FileStats& s);
 nlohmann::json toJson(const LoadStats& s);
+nlohmann::json toJson(const CompressionStats& c);
+// inspect's line: "KHR_draco_mesh_compression 2 primitives, 1234 -> 5678 bytes; ..." or "none".
+std::string describeCompression(const CompressionStats& c);
 // Aggregate over files: counts, sums and fractions (e.g. of loaded files with animated scale).
 nlohmann::json aggregateJson(const std::vector<FileStats>& files);
 // The same from the files' JSON (toJson(FileStats) of each), so that sharded inspect runs can be

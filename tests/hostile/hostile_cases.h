@@ -17,6 +17,7 @@
 #include "pipelines/scene/scene.h"
 #include "tests/hostile/gltf_builder.h"
 #include "tests/hostile/scene_checks.h"
+#include "tests/support/compressed_gltf.h"
 
 namespace mb::hostile {
 
@@ -344,8 +345,8 @@ inline std::vector<Case> containerCases() {
                      "BIN chunk length 0xFFFFFFFC"));
   cs.push_back(error("bin_chunk_length_short.glb", patched(L.binHeader, 8), {"buffer", "bin", "length", "size", "exceed"},
                      "BIN chunk length 8: buffer 0 byteLength exceeds it"));
-  cs.push_back(error("bin_chunk_length_unaligned.glb", patched(L.binHeader, get32(good, L.binHeader) - 1), {"bin", "align", "chunk", "length"},
-                     "BIN chunk length not a multiple of 4"));
+  cs.push_back(fallback("bin_chunk_length_unaligned.glb", patched(L.binHeader, get32(good, L.binHeader) - 1), &LoadStats::binChunkUnaligned, 1,
+                        "BIN chunk length not a multiple of 4 (as three.js and the Sample Viewer do: zero-padded, counted)"));
   cs.push_back(error("bin_chunk_wrong_type.glb", patched(L.binHeader + 4, 0x41414141u), {"bin", "chunk", "type", "invalid"},
                      "second chunk type is not BIN"));
   {
@@ -403,10 +404,8 @@ inline std::vector<Case> jsonCases() {
     d.j["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     d.j["extensionsUsed"] = {"KHR_draco_mesh_compression"};
     d.j["meshes"][0]["primitives"][0]["extensions"] = {{"KHR_draco_mesh_compression", {{"bufferView", 0}, {"attributes", {{"POSITION", 0}}}}}};
-    Case c = fallback("required_extension_draco.glb", toGlb(d), &LoadStats::skippedPrimitives, 1,
-                      "Draco-compressed primitive (required extension not implemented): skipped, counted, listed");
-    c.check = listsUnsupported("KHR_draco_mesh_compression", "required extension");
-    cs.push_back(c);
+    cs.push_back(error("required_extension_draco.glb", toGlb(d), {"KHR_draco_mesh_compression: Draco data does not decode"},
+                       "Draco extension pointing at the raw POSITION bytes (not a Draco stream)"));
   }
   return cs;
 }
@@ -1140,10 +1139,102 @@ inline std::vector<Case> conformanceCases() {
   return cs;
 }
 
+// Compressed geometry and image formats (issue 27): payloads made by the real encoders
+// (tests/support/compressed_gltf.h), then broken.
+inline std::vector<Case> compressionCases() {
+  using namespace detail;
+  std::vector<Case> cs;
+  const Bytes quadGlb = toGlb(quadDoc());
+  auto edited = [](const Bytes& glb, const std::function<void(compressed::Glb&)>& edit) {
+    compressed::Glb g = compressed::splitGlb(glb);
+    edit(g);
+    return compressed::joinGlb(g);
+  };
+  const Bytes draco = compressed::dracoCompressed(quadGlb);
+  auto dracoView = [](compressed::Glb& g) -> Json& {
+    return g.json["bufferViews"][g.json["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["bufferView"].get<size_t>()];
+  };
+  {
+    Case c = loads("draco_quad.glb", draco, "the quad through Draco's encoder (valid; decoded)");
+    c.check = [](const Scene& s) { return s.compression.dracoPrimitives == 1 ? "" : "Draco primitive not decoded"; };
+    cs.push_back(c);
+  }
+  cs.push_back(error("draco_payload_garbage.glb", edited(draco, [&](compressed::Glb& g) {
+                       const Json& v = dracoView(g);
+                       for (size_t i = 0; i < v["byteLength"].get<size_t>(); ++i) g.bin[v["byteOffset"].get<size_t>() + i] = uint8_t(i * 151 + 7);
+                     }),
+                     {"Draco data does not decode"}, "Draco payload overwritten with pseudo-random bytes"));
+  cs.push_back(error("draco_payload_truncated.glb", edited(draco, [&](compressed::Glb& g) {
+                       Json& v = dracoView(g);
+                       v["byteLength"] = v["byteLength"].get<size_t>() / 2;
+                     }),
+                     {"Draco data does not decode"}, "Draco bufferView cut to half the stream"));
+  cs.push_back(error("draco_count_mismatch.glb", edited(draco, [](compressed::Glb& g) { g.json["accessors"][0]["count"] = 5; }),
+                     {"the Draco data has 4 of 3"}, "POSITION declares 5 vertices, the Draco stream holds 4"));
+  cs.push_back(error("draco_attribute_id_missing.glb", edited(draco, [](compressed::Glb& g) {
+                       g.json["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["attributes"]["NORMAL"] = 42;
+                     }),
+                     {"no attribute with id 42"}, "NORMAL names Draco attribute id 42, which the stream lacks"));
+  cs.push_back(error("draco_type_mismatch.glb", edited(draco, [](compressed::Glb& g) { g.json["accessors"][1]["type"] = "VEC2"; }),
+                     {"the Draco data has 4 of 3"}, "NORMAL declared VEC2, the Draco attribute has 3 components"));
+
+  const Bytes meshopt = compressed::meshoptCompressed(quadGlb);
+  auto meshoptExt = [](compressed::Glb& g) -> Json& {
+    for (Json& v : g.json["bufferViews"])
+      if (v.contains("extensions")) return v["extensions"]["EXT_meshopt_compression"];
+    throw std::runtime_error("no meshopt view");
+  };
+  {
+    Case c = loads("meshopt_quad.glb", meshopt, "the quad through meshoptimizer's encoder; the fallback buffer has no data");
+    c.check = positionsEqual(quadPositions());
+    cs.push_back(c);
+  }
+  cs.push_back(error("meshopt_payload_garbage.glb", edited(meshopt, [&](compressed::Glb& g) {
+                       const Json& e = meshoptExt(g);
+                       for (size_t i = 0; i < e["byteLength"].get<size_t>(); ++i) g.bin[e["byteOffset"].get<size_t>() + i] = 0xFF;
+                     }),
+                     {"data does not decode"}, "meshopt vertex stream overwritten with 0xFF"));
+  cs.push_back(error("meshopt_bad_stride.glb", edited(meshopt, [&](compressed::Glb& g) { meshoptExt(g)["byteStride"] = 6; }),
+                     {"byteStride 6"}, "ATTRIBUTES byteStride 6 (not a multiple of 4)"));
+  cs.push_back(error("meshopt_count_huge.glb", edited(meshopt, [&](compressed::Glb& g) { meshoptExt(g)["count"] = uint64_t(1) << 30; }),
+                     {"limit"}, "count 2^30: would decode to 12 GiB"));
+  cs.push_back(error("meshopt_source_outside_buffer.glb", edited(meshopt, [&](compressed::Glb& g) { meshoptExt(g)["byteOffset"] = 1u << 30; }),
+                     {"lies outside buffer"}, "compressed bytes claimed at 1 GiB into a small buffer"));
+  cs.push_back(error("meshopt_unknown_filter.glb", edited(meshopt, [&](compressed::Glb& g) { meshoptExt(g)["filter"] = "WAVELET"; }),
+                     {"filter 'WAVELET'"}, "filter WAVELET (not in the extension)"));
+
+  {  // WebP whose RIFF size runs past the image data: not decoded, counted.
+    Doc d;
+    Bytes webp = compressed::losslessWebp(2, 2, Bytes(16, 200));
+    put32(webp, 4, uint32_t(webp.size() + 64));
+    const int img = d.image(webp);
+    d.j["images"][size_t(img)]["mimeType"] = "image/webp";
+    const int tex = d.push(d.arr("textures"), Json{{"extensions", {{"EXT_texture_webp", {{"source", img}}}}}});
+    quad(d, true, true, d.material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", tex}}}}}}));
+    d.finish();
+    cs.push_back(imageFallback("webp_riff_size_beyond_data.glb", toGlb(d), {"truncated WebP"},
+                               "WebP RIFF size 64 bytes beyond the image data"));
+  }
+  {  // A texture whose only source is KTX2 (KHR_texture_basisu): no decoder, counted.
+    Doc d;
+    const int img = d.image(Bytes{0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n'});
+    d.j["images"][size_t(img)]["mimeType"] = "image/ktx2";
+    const int tex = d.push(d.arr("textures"), Json{{"extensions", {{"KHR_texture_basisu", {{"source", img}}}}}});
+    quad(d, true, true, d.material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", tex}}}}}}));
+    d.finish();
+    Case c = fallback("basisu_texture_only.glb", toGlb(d), &LoadStats::basisuTexturesNotDecoded, 1,
+                      "texture whose only source is KTX2 (KHR_texture_basisu): drawn untextured, counted, listed");
+    c.check = listsUnsupported("KHR_texture_basisu (KTX2) not decoded", "basisu fallback");
+    cs.push_back(c);
+  }
+  return cs;
+}
+
 // Every hand-made case.
 inline std::vector<Case> allCases() {
   std::vector<Case> all;
-  for (auto part : {containerCases, jsonCases, accessorCases, numericCases, graphCases, contentCases, conformanceCases}) {
+  for (auto part : {containerCases, jsonCases, accessorCases, numericCases, graphCases, contentCases, conformanceCases,
+                    compressionCases}) {
     auto v = part();
     for (auto& c : v) all.push_back(std::move(c));
   }

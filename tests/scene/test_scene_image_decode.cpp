@@ -201,11 +201,11 @@ TEST(ImageDecode, HeadersAreCheckedBeforeAnyDecoding) {
   d = mb::decodeImage(chunk.data(), chunk.size());
   ASSERT_FALSE(d.ok());
   EXPECT_NE(d.error().find("chunk is longer"), std::string::npos) << d.error();
-  // Not PNG or JPEG (a GIF header): refused, no reader guessed from the content.
+  // Not PNG, JPEG or WebP (a GIF header): refused, no reader guessed from the content.
   Bytes gif = {'G', 'I', 'F', '8', '9', 'a', 1, 0, 1, 0, 0, 0, 0, ';'};
   d = mb::decodeImage(gif.data(), gif.size());
   ASSERT_FALSE(d.ok());
-  EXPECT_NE(d.error().find("not a PNG or JPEG"), std::string::npos) << d.error();
+  EXPECT_NE(d.error().find("not a PNG, JPEG or WebP image"), std::string::npos) << d.error();
   // A PNG that ends after IHDR (finding F13: OpenImageIO's read callback leaked a string when
   // libpng hit the end): refused before OpenImageIO runs.
   Bytes ihdrOnly = mb::hostile::checkerPng();
