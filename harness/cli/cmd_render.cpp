@@ -37,10 +37,14 @@ int runRender(const std::vector<std::string>& argv) {
   Status written = writeImage(out, frame->image);
   if (!written) return fail(written.error());
   const PipelineStats& s = frame->stats;
-  std::printf("%s: %s %dx%d, %d draws, %.0f floats/vertex, %llu vertex bytes -> %s (%s)\n",
+  std::string instanced;  // instanced draws: how many and what each instance uploads
+  if (s.instances)
+    instanced = ", " + std::to_string(s.instances) + " instances x " +
+                std::to_string(s.instanceBytes / s.instances) + " bytes";
+  std::printf("%s: %s %dx%d, %d draws, %llu vertices drawn%s, %.0f floats/vertex, %llu vertex bytes -> %s (%s)\n",
               scene.source.c_str(), pipeline.c_str(), frame->image.width, frame->image.height, s.draws,
-              s.floatsPerVertex, static_cast<unsigned long long>(s.vertexBytes), out.c_str(),
-              frame->glRenderer.c_str());
+              static_cast<unsigned long long>(s.drawnVertices), instanced.c_str(), s.floatsPerVertex,
+              static_cast<unsigned long long>(s.vertexBytes), out.c_str(), frame->glRenderer.c_str());
   return 0;
 }
 
@@ -49,7 +53,7 @@ int runRender(const std::vector<std::string>& argv) {
 
 MB_COMMAND(render, "render",
            "SCENE [--pipeline NAME (default matrix; curved scenes: their space's matrix)] [--anim A] [--time T] [--anim2 B --time2 T2 "
-           "--blend W] [--camera C] [--size WxH] -o out.png",
+           "--blend W] [--camera C] [--size WxH] [--instances N] -o out.png",
            "render one frame of a scene (file or built-in name) with one pipeline to an image; "
            "--time alone poses animation 0; prints the animation, time and camera on stderr",
            mb::runRender);

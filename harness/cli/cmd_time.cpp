@@ -1,5 +1,5 @@
 // `motorbench time [SCENE|DIR...] [--frames N] [--warmup W] [--size WxH] [--tiny WxH]
-//  [--best-of K] [--level N[,M...]] [--lp-threads N] [--json FILE]`: frame time of every registered pipeline on each scene
+//  [--best-of K] [--level N[,M...]] [--instances N] [--lp-threads N] [--json FILE]`: frame time of every registered pipeline on each scene
 // (harness/timing/frame_timing.h), printed as medians with quartiles and as motor/matrix ratios
 // measured in the same run. No SCENE: every built-in scene. A scene that draws at least
 // timing::kVertexBoundVerticesPerPixel vertices per pixel of a tiny viewport (--tiny, default
@@ -86,6 +86,17 @@ void printRow(const timing::ConfigTiming& c) {
   }
   if (!phases.empty())
     std::printf("    update phases us (sampling/blending/conversion/hierarchy/palette): %s\n", phases.c_str());
+  // Vertices drawn (instances counted) per microsecond of median frame time, every pipeline.
+  std::string rates;
+  for (const auto& t : c.pipelines) {
+    if (!t.error.empty()) continue;
+    char b[96];
+    std::snprintf(b, sizeof b, "%s%s %.1f", rates.empty() ? "" : "; ", t.pipeline.c_str(), timing::verticesPerUs(t));
+    rates += b;
+  }
+  if (!rates.empty() && !c.pipelines.empty())
+    std::printf("    vertices per us of frame time (%llu drawn vertices): %s\n",
+                static_cast<unsigned long long>(c.pipelines.front().stats.drawnVertices), rates.c_str());
   std::fflush(stdout);
 }
 
@@ -94,11 +105,17 @@ void printRow(const timing::ConfigTiming& c) {
 // {"rows": [...], "patchMemory": [...] or null} to `resultPath` (patchMemory: the bytes table of
 // a Bezier patch scene timed with --level). Exit 0, or 2 when anything failed.
 int timeOneScene(const std::string& name, const timing::Settings& normal, const timing::Settings& tiny,
-                 const std::vector<int>& levels, const std::string& resultPath) {
+                 const std::vector<int>& levels, const Args& args, const std::string& resultPath) {
   nlohmann::json rows = nlohmann::json::array(), patchMemory = nullptr;
   int status = 0;
   const Status spec = checkSceneSpec(name);  // a misspelt name lists the built-ins
   auto scene = spec ? loadScene(name) : Result<Scene>::fail(spec.error());
+  if (scene) {  // --instances N: every mesh node drawn N times (frame_options.h)
+    std::vector<std::string> notes;
+    auto instances = applyInstancesOption(args, *scene, &notes);
+    if (!instances) scene = Result<Scene>::fail(instances.error());
+    for (const std::string& note : notes) std::fprintf(stderr, "motorbench time: %s\n", note.c_str());
+  }
   if (!scene) {
     std::fprintf(stderr, "motorbench time: error: %s\n", scene.error().c_str());
     rows.push_back({{"scene", name}, {"error", scene.error()}});
@@ -149,7 +166,7 @@ int runTime(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "motorbench time: error: %s\n", m.c_str());
     return 2;
   };
-  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level"}, {}, {}});
+  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level", "instances"}, {}, {}});
   if (!args.error().empty()) return fail(args.error());
 
   timing::Settings normal, tiny;
@@ -160,6 +177,7 @@ int runTime(const std::vector<std::string>& argv) {
   tiny = normal;
   tiny.config = "vertex-bound";
   std::tie(tiny.width, tiny.height) = args.size("tiny", 64, 64);
+  args.integer("instances", 1, 1, kMaxInstances);  // checked here; each worker applies it
   // llvmpipe reads LP_NUM_THREADS when the context is created, which has not happened yet.
   if (args.has("lp-threads"))
     setenv("LP_NUM_THREADS", std::to_string(args.integer("lp-threads", 0, 0, 1024)).c_str(), 1);
@@ -187,7 +205,7 @@ int runTime(const std::vector<std::string>& argv) {
   if (names.empty()) return fail("no scenes to time (the folders given hold no .gltf or .glb files)");
   if (auto file = args.get("worker")) {
     if (names.size() != 1) return fail("--worker times exactly one scene");
-    return timeOneScene(names[0], normal, tiny, levels, *file);
+    return timeOneScene(names[0], normal, tiny, levels, args, *file);
   }
 
   auto machine = timing::machineInfo();
@@ -214,7 +232,7 @@ int runTime(const std::vector<std::string>& argv) {
   Progress progress("time", "scenes timed", names.size(), false);
   for (const std::string& name : names) {
     std::vector<std::string> child = {"time", name, "--worker", scratch};
-    for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level"})
+    for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level", "instances"})
       if (auto v = args.get(key)) child.insert(child.end(), {std::string("--") + key, *v});
     std::filesystem::remove(scratch);
     std::fflush(stdout);  // the child prints its rows to the same stdout
@@ -271,7 +289,7 @@ int runTime(const std::vector<std::string>& argv) {
 
 MB_COMMAND(time, "time",
            "[SCENE|DIR...] [--frames N] [--warmup W] [--best-of K] [--size WxH] [--tiny WxH] "
-           "[--level N[,M...]] [--lp-threads N] [--json FILE]",
+           "[--level N[,M...]] [--instances N] [--lp-threads N] [--json FILE]",
            "frame time (glFinish wall clock) and CPU update time of every pipeline; motor/matrix "
            "ratios from one interleaved run; scenes with >= 10 drawn vertices per tiny-viewport pixel "
            "(the crowd) also at that viewport (vertex-bound)",

@@ -455,6 +455,7 @@ inline std::vector<ShaderVariant> shaderVariants() {
       "same on both sides of a space";
   const std::string ref = "the Sample Viewer's: skin, then u_ModelMatrix per vertex";
   const std::string world = "joint world * inverse bind; no model matrix per vertex";
+  const std::string instanced = "the per-draw transform read from per-instance attributes (divisor 1)";
   using D = std::vector<std::pair<std::string, std::string>>;
   const std::string affineMain =
       "main() normalises normal and tangent for the varyings, as matrix.vs (the position's w is "
@@ -506,6 +507,26 @@ inline std::vector<ShaderVariant> shaderVariants() {
       {"motor_q", "motor.vs",
        {{"MB_SKINNED", ""}, {"MB_SCALE_FALLBACK", ""}, {"MB_PROJECT_CONSTANTS", ""}},
        "skinned+scaled", {"motorBlendJoints", "motorScaledVertex", "motorWorldToClipConstants"}},
+      // Instanced draws (EXT_mesh_gpu_instancing, --instances): the rigid transform with its
+      // per-draw data read from per-instance attributes; the same arithmetic as "rigid".
+      {"matrix", "matrix.vs", {{"MB_INSTANCED", ""}}, "rigid, instanced",
+       {"matrixRigidVertex", "matrixWorldToClip"}, matrixMain + "; " + instanced},
+      {"matrix", "matrix.vs", D{{"MB_INSTANCED", ""}, {"MB_NO_TANGENT", ""}}, "rigid, no tangent, instanced",
+       {"matrixRigidVertexNoTangent", "matrixWorldToClip"}, instanced},
+      {"affine", "affine.vs", {{"MB_INSTANCED", ""}}, "rigid, instanced",
+       {"matrixAffineVertex", "matrixWorldToClip"}, affineMain + "; " + instanced},
+      {"qtangent", "affine.vs", D{{"MB_QTANGENT", ""}, {"MB_INSTANCED", ""}}, "rigid, instanced",
+       {"qtangentRigidVertex", "matrixWorldToClip"}, affineMain + "; " + instanced},
+      {"hybrid", "affine.vs", D{{"MB_QTANGENT", ""}, {"MB_INSTANCED", ""}}, "rigid, instanced",
+       {"qtangentRigidVertex", "matrixWorldToClip"}, affineMain + "; " + instanced},
+      {"motor", "motor.vs", {{"MB_INSTANCED", ""}}, "rigid, instanced",
+       {"motorRigidVertex", "motorWorldToClip"}, instanced},
+      {"motor", "motor.vs", D{{"MB_INSTANCED", ""}, {"MB_SCALE_FALLBACK", ""}}, "scaled fallback, instanced",
+       {"motorScaledVertex", "motorWorldToClip"}, instanced},
+      {"motor_q", "motor.vs", D{{"MB_INSTANCED", ""}, {"MB_PROJECT_CONSTANTS", ""}}, "rigid, instanced",
+       {"motorRigidVertex", "motorWorldToClipConstants"}, instanced},
+      {"motor_q", "motor.vs", D{{"MB_INSTANCED", ""}, {"MB_SCALE_FALLBACK", ""}, {"MB_PROJECT_CONSTANTS", ""}},
+       "scaled fallback, instanced", {"motorScaledVertex", "motorWorldToClipConstants"}, instanced},
       {"s3_matrix", "curved_matrix.vs", {{"MB_KAPPA", "1"}}, "S3 instance", {"curvedMatrixVertex"}, curvedMain},
       {"s3_motor", "curved_motor.vs", {{"MB_KAPPA", "1"}}, "S3 instance", {"curvedMotorVertex"}, curvedMain},
       {"h3_matrix", "curved_matrix.vs", {{"MB_KAPPA", "-1"}}, "H3 instance", {"curvedMatrixVertex"}, curvedMain},

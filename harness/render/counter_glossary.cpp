@@ -17,6 +17,9 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"PipelineStats", "patchPatternBytes", "bytes", "the Bezier patches' shared (u, v) refinement pattern, (level + 1)^2 x 2 floats, drawn instanced per patch; not a vertex format, so counted neither in vertexBytes nor in vertices"},
       {"PipelineStats", "skinBytesPerFrame", "bytes", "joint palette bytes of the last update (matrices or motors per joint)"},
       {"PipelineStats", "vertices", "vertices", "vertices uploaded"},
+      {"PipelineStats", "instanceBytes", "bytes", "per-instance transforms of the last render (EXT_mesh_gpu_instancing or --instances), streamed once per frame as vertex attributes with divisor 1: what the pipeline uploads per draw, node world x instance composed on the CPU (matrix: model + normal mat4; affine, qtangent, hybrid: mat4x3 + mat3 + mirror; motor, motor_q: motor + scale, a vec3 scale on the fallback)"},
+      {"PipelineStats", "instances", "instances", "instances whose transforms instanceBytes holds (instanceBytes / instances = bytes per instance)"},
+      {"PipelineStats", "drawnVertices", "vertices", "vertices the last render drew: each draw's vertices times its instances (Bezier patches: the refinement pattern's vertices per patch)"},
       {"PipelineStats", "floatsPerVertex", "floats", "shading-attribute floats per vertex, from the upload stride"},
       {"PipelineStats", "floatsPerTransform", "floats", "floats per node transform sent to the GPU (transform uniform bytes / 4 / transforms)"},
       {"PipelineStats", "floatsPerTransformWithScale", "floats", "floats per node transform including the per-draw scale uniform it needs (motor: 8 + 1 scale; a pipeline without one: floatsPerTransform)"},
@@ -36,6 +39,7 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"PipelineStats", "shearMatrixNodes", "nodes", "motor pipeline: authored matrices with shear, replaced by the nearest rotation and mean scale"},
       {"PipelineStats", "zeroScalarFrames", "vertices", "motor pipeline: tangent frames whose rotor scalar was exactly 0 (a 180-degree turn of the basis frame); handedness is kept by the sign bit and |scalar| raised to 1/32767 so it survives packing"},
       {"PipelineStats", "biasedFrames", "vertices", "int16 frame formats (qtangent, motor_q, hybrid): frames whose scalar |s| (rotor) or |w| (quaternion) the bias rule raised to 1/32767 so the handedness sign survives packing"},
+      {"PipelineStats", "scaleFallbackInstances", "instances", "motor pipelines: instances of the last render whose scale (node world x instance) is non-uniform or negative, drawn with the per-leaf scale fallback (MB_SCALE_FALLBACK, a vec3 scale per instance)"},
       // LoadStats (pipelines/scene/scene.h): what the loader had to fix; `inspect` lists them.
       {"LoadStats", "flatNormalsGenerated", "primitives", "primitives without NORMAL: flat normals generated"},
       {"LoadStats", "tangentsGenerated", "primitives", "normal-mapped primitives without TANGENT: tangents generated from the uvs"},
@@ -56,6 +60,8 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"LoadStats", "keyframeTimesNotIncreasing", "channels", "invalid file: animation channels whose input times do not strictly increase; keys stably sorted by time, equal times kept (a jump)"},
       {"LoadStats", "rotationKeysNormalised", "keyframes", "invalid file: rotation keyframes whose length differs from 1 by more than 0.00769 (the glTF validator's tolerance), normalised; zero -> identity"},
       {"LoadStats", "camerasRepaired", "cameras", "invalid file: cameras with zfar <= znear, a negative znear (perspective: <= 0) or yfov outside (0, pi): zfar made infinite (drawn at znear x 1e4), znear 0.01 (orthographic 0), yfov 0.8"},
+      {"LoadStats", "instanceRotationsNormalised", "instances", "EXT_mesh_gpu_instancing: instance ROTATIONs whose length differs from 1 by more than 0.00769, normalised; zero -> identity"},
+      {"LoadStats", "instancingDrawnOnce", "nodes", "EXT_mesh_gpu_instancing on a skinned node or a Bezier patch mesh: drawn once at the node, its instances ignored (listed under unsupported)"},
       // Image metrics (harness/render/image_metrics.h): compare, report and check.
       {"ImageMetrics", "rmse", "", "root mean square of the channel differences (bytes / 255), RGBA, every pixel"},
       {"ImageMetrics", "psnr", "dB", "20 log10(1 / rmse); null (infinite) when the images are identical"},

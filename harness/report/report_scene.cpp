@@ -12,6 +12,7 @@
 #include "harness/report/report_sources.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/scene/curved_space.h"
+#include "pipelines/scene/instancing.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scale_analysis.h"
 #include "pipelines/scene/scene_stats.h"
@@ -48,7 +49,11 @@ json memoryJson(const PipelineStats& s) {
           {"floatsPerVertex", s.floatsPerVertex},
           {"floatsPerTransform", s.floatsPerTransform},
           {"floatsPerTransformWithScale", s.floatsPerTransformWithScale},
-          {"floatsPerJoint", s.floatsPerJoint}};
+          {"floatsPerJoint", s.floatsPerJoint},
+          // Instanced draws: the per-instance transforms of one frame and their size each.
+          {"instances", s.instances},
+          {"instanceBytes", s.instanceBytes},
+          {"bytesPerInstance", s.instances ? json(double(s.instanceBytes) / double(s.instances)) : json(nullptr)}};
 }
 
 json fallbacksJson(const PipelineStats& s) {
@@ -56,7 +61,8 @@ json fallbacksJson(const PipelineStats& s) {
           {"negativeScaleNodes", s.negativeScaleNodes},
           {"shearMatrixNodes", s.shearMatrixNodes},
           {"zeroScalarFrames", s.zeroScalarFrames},
-          {"biasedFrames", s.biasedFrames}};
+          {"biasedFrames", s.biasedFrames},
+          {"scaleFallbackInstances", s.scaleFallbackInstances}};
 }
 
 std::string timeText(float t) {
@@ -124,6 +130,7 @@ json measureScene(const SceneJob& job) {
               {"error", nullptr}, {"frames", json::array()}, {"pipelines", json::object()}};
   progress(job, "loading " + job.input.spec);
   auto scene = loadScene(job.input.spec);
+  if (scene && scene->curved.space == Space::Euclidean) addGridInstances(*scene, job.instances);
   if (!scene) {
     out["error"] = scene.error();
     out["stats"] = toJson(failedFileStats(job.input.spec, scene.error()));

@@ -26,7 +26,9 @@ json configJson(const timing::ConfigTiming& c, const std::vector<std::string>& p
     out["pipelines"][t.pipeline] = {{"medianMs", t.frame.median}, {"q1Ms", t.frame.q1}, {"q3Ms", t.frame.q3},
                                     {"madMs", t.frame.mad}, {"minMs", t.frame.min}, {"maxMs", t.frame.max},
                                     {"frames", t.frame.n}, {"cpuMedianMs", t.cpu.median},
-                                    {"updateMedianMs", t.update.median}};
+                                    {"updateMedianMs", t.update.median},
+                                    {"drawnVertices", t.stats.drawnVertices},
+                                    {"verticesPerUs", timing::verticesPerUs(t)}};
     json phases = json::object();  // the update's phases, median ms per call
     for (int k = 0; k < timing::kUpdatePhaseCount; ++k) phases[timing::kUpdatePhases[k].key] = t.phases[k].median;
     out["pipelines"][t.pipeline]["updatePhasesMedianMs"] = phases;

@@ -4,6 +4,9 @@
 // palette (12 floats per joint, stored as rows) and upload no transform, as glTF ignores a
 // skinned node's own transform. The projection matrix is built once per frame. Bezier patch
 // primitives are drawn rigidly by their node with affine_patch.vs (the same per-draw uniforms).
+// Instanced nodes (Node::instances): the same model, normal matrix and mirror per instance,
+// node world * instance composed per frame (MB_INSTANCED, pipelines/gl/instance_stream.h:
+// 22 floats, 88 bytes per instance).
 #include "pipelines/affine/affine_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,11 +14,13 @@
 
 #include "pipelines/affine/qtangent_vertices.h"
 #include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/instance_stream.h"
 #include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
 #include "pipelines/affine/affine_vertices.h"
+#include "pipelines/scene/transform.h"
 
 namespace mb::affine {
 namespace {
@@ -54,6 +59,7 @@ public:
 
 private:
   void uploadPalettes();
+  void streamInstances();
   void release();
 
   std::string name_;
@@ -61,6 +67,9 @@ private:
   std::unique_ptr<Poser> poser_;
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> rigid_, skinned_;
+  std::unique_ptr<gl::Program> instanced_;                // MB_INSTANCED
+  std::vector<std::vector<glm::mat4>> instanceMatrices_;  // per node: trsMatrix(instance)
+  gl::InstanceStream instances_;
   std::unique_ptr<gl::Program> patch_;  // affine_patch.vs, only for scenes with patches
   gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
@@ -80,6 +89,16 @@ Status AffinePipeline::prepare(const Scene& scene) {
   if (format_ == FrameFormat::QTangent) defines.push_back({"MB_QTANGENT", ""});
   auto rigid = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
   if (!rigid) return Status::fail(rigid.error());
+  if (gl::hasInstances(scene)) {
+    gl::Defines instanced = defines;
+    instanced.push_back({"MB_INSTANCED", ""});
+    auto program = gl::Program::fromFiles("affine.vs", "forward.fs", instanced);
+    if (!program) return Status::fail(program.error());
+    instanced_ = program.take();
+  }
+  instanceMatrices_.assign(scene.nodes.size(), {});
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    for (const TRS& t : scene.nodes[n].instances) instanceMatrices_[n].push_back(trsMatrix(t));
   defines.push_back({"MB_SKINNED", ""});
   auto skinned = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
   if (!skinned) return Status::fail(skinned.error());
@@ -139,11 +158,34 @@ void AffinePipeline::uploadPalettes() {
   stats_.floatsPerJoint = gl::floatsPer(stats_.skinBytesPerFrame, joints);
 }
 
+// Per instance: model = node world * instance (mat4x3), its normal matrix and mirror; key 1:
+// mirrored (the winding flips).
+void AffinePipeline::streamInstances() {
+  instances_.begin(scene_->nodes.size());
+  for (size_t n = 0; n < instanceMatrices_.size(); ++n) {
+    const std::vector<glm::mat4>& local = instanceMatrices_[n];
+    if (local.empty()) continue;
+    const glm::mat4 world(pose_.world[n]);
+    instances_.addNode(int(n), local.size(), [&](size_t i, std::vector<float>& out) {
+      const glm::mat4x3 model(world * local[i]);
+      const glm::mat3 normal = normalMatrix(model);
+      const float sign = mirror(model);
+      out.insert(out.end(), glm::value_ptr(model), glm::value_ptr(model) + 12);
+      out.insert(out.end(), glm::value_ptr(normal), glm::value_ptr(normal) + 9);
+      out.push_back(sign);
+      return sign < 0.0f ? 1 : 0;
+    });
+  }
+  instances_.upload(stats_);
+}
+
 void AffinePipeline::render(const View& view) {
   if (!scene_) return;
   stats_.uniformBytesPerFrame = 0;
   stats_.draws = 0;
+  stats_.drawnVertices = 0;
   uploadPalettes();
+  streamInstances();
   const glm::mat4 viewMatrix = glm::inverse(glm::translate(glm::mat4(1.0f), view.eye) *
                                             glm::mat4_cast(view.orientation));
   const glm::mat4 viewProjection =
@@ -151,9 +193,9 @@ void AffinePipeline::render(const View& view) {
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (as matrix and
   // motor do: a program the frame does not use uploads nothing).
-  bool frameSet[3] = {};
+  bool frameSet[4] = {};  // rigid, skinned, patch, instanced
   auto useProgram = [&](int which) -> const gl::Program& {
-    gl::Program& p = which == 0 ? *rigid_ : which == 1 ? *skinned_ : *patch_;
+    gl::Program& p = which == 0 ? *rigid_ : which == 1 ? *skinned_ : which == 2 ? *patch_ : *instanced_;
     p.use();
     if (!frameSet[which]) {
       frameSet[which] = true;
@@ -173,6 +215,17 @@ void AffinePipeline::render(const View& view) {
     GLuint palette = 0;
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = palettes_[i];
+    const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
+    if (!groups.empty()) {
+      const gl::Program& program = useProgram(3);
+      textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
+      for (const gl::InstanceGroup& group : groups) {
+        gl::setWinding(group.key == 1);
+        stats_.drawnVertices += instances_.draw(g, group, {3, 3, 3, 3, 3, 3, 3, 1});
+        ++stats_.draws;
+      }
+      continue;
+    }
     const gl::Program& program = useProgram(patch ? 2 : palette ? 1 : 0);
     const glm::mat4x3& model = pose_.world[size_t(d.node)];
     const float sign = pose_.mirrors[size_t(d.node)];
@@ -187,10 +240,7 @@ void AffinePipeline::render(const View& view) {
     gl::uniform1f(program.uniform("u_Mirror"), sign, stats_.uniformBytesPerFrame);
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(sign < 0.0f);
-    if (patch)
-      patches_.draw(d);
-    else
-      g.draw();
+    stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
     ++stats_.draws;
   }
   gl::endDraws();
@@ -204,6 +254,8 @@ void AffinePipeline::release() {
   patch_.reset();
   palettes_.release();
   textures_.release();
+  instances_.release();
+  instanced_.reset();
   rigid_.reset();
   skinned_.reset();
   scene_ = nullptr;

@@ -14,6 +14,7 @@
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/gltf_convert.h"
 #include "pipelines/scene/image_decode.h"
+#include "pipelines/scene/instancing.h"
 #include "pipelines/scene/preflight.h"
 
 namespace mb {
@@ -82,9 +83,10 @@ std::string firstLines(std::string s) {
 }
 
 void noteExtensions(const tinygltf::Model& m, Scene& scene) {
-  static const std::set<std::string> supported = {"KHR_mesh_quantization", kBezierPatchesExtension};
+  static const std::set<std::string> supported = {"KHR_mesh_quantization", kBezierPatchesExtension,
+                                                  kInstancingExtension};
   static const std::set<std::string> geometry = {"KHR_draco_mesh_compression", "EXT_meshopt_compression",
-                                                 "EXT_mesh_gpu_instancing", "KHR_meshopt_compression"};
+                                                 "KHR_meshopt_compression"};
   std::set<std::string> seen;
   for (const auto* list : {&m.extensionsRequired, &m.extensionsUsed})
     for (const auto& ext : *list) {
@@ -114,6 +116,7 @@ Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadCon
     if (!mesh) return Result<Scene>::fail(name + ": " + mesh.error());
     scene.meshes.push_back(mesh.take());
   }
+  scene.stats.instancingDrawnOnce += dropUndrawableInstances(scene);
   if (s = convertAnimations(m, scene); !s) return Result<Scene>::fail(name + ": " + s.error());
   countAccessorBoundsMismatches(m, scene);
   return scene;

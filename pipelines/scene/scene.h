@@ -26,6 +26,10 @@ struct Node {
   int parent = -1;
   std::vector<int> children;
   int mesh = -1, skin = -1, camera = -1;
+  // EXT_mesh_gpu_instancing (gltf_instancing.cpp) or `--instances N` (instancing.h): the mesh
+  // is drawn once per entry, instance i at node world * instances[i]; empty: drawn once at the
+  // node's world. Never set on a skinned node or a Bezier patch mesh (instancing.h).
+  std::vector<TRS> instances;
 };
 
 struct Primitive {
@@ -149,6 +153,9 @@ struct LoadStats {
   int keyframeTimesNotIncreasing = 0; // channels whose input times do not strictly increase (sorted)
   int rotationKeysNormalised = 0;     // rotation keyframes off unit length by > 0.00769 (normalised)
   int camerasRepaired = 0;            // cameras with zfar <= znear, bad znear or yfov (Camera)
+  // EXT_mesh_gpu_instancing (gltf_instancing.cpp).
+  int instanceRotationsNormalised = 0;  // instance ROTATIONs off unit length by > 0.00769
+  int instancingDrawnOnce = 0;          // instanced skinned / Bezier patch nodes: drawn once
 };
 
 // Curved space (issue 15): spherical S3 and hyperbolic H3 scenes, built in code (glTF has no

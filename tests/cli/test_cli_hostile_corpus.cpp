@@ -57,7 +57,8 @@ std::string counterName(int mb::LoadStats::*c) {
       {&S::skippedPrimitives, "skippedPrimitives"},       {&S::jointsOutOfRange, "jointsOutOfRange"},
       {&S::imagesNotDecoded, "imagesNotDecoded"},         {&S::accessorBoundsMismatch, "accessorBoundsMismatch"},
       {&S::keyframeTimesNotIncreasing, "keyframeTimesNotIncreasing"}, {&S::rotationKeysNormalised, "rotationKeysNormalised"},
-      {&S::camerasRepaired, "camerasRepaired"}};
+      {&S::camerasRepaired, "camerasRepaired"}, {&S::instanceRotationsNormalised, "instanceRotationsNormalised"},
+      {&S::instancingDrawnOnce, "instancingDrawnOnce"}};
   for (const auto& [p, n] : names)
     if (p == c) return n;
   return "";
