@@ -55,7 +55,8 @@ Status convertInstancing(const tinygltf::Model& m, size_t nodeIndex, Scene& scen
   Node& node = scene.nodes[nodeIndex];
   const tinygltf::Value& ext = found->second;
   const tinygltf::Value attributes = ext.Get("attributes");
-  if (!ext.IsObject() || !attributes.IsObject()) return Status::fail(where + ": no attributes object");
+  const std::string none = where + ": no attributes (TRANSLATION, ROTATION or SCALE)";
+  if (!ext.IsObject() || !attributes.IsObject()) return Status::fail(none);  // {} parses as null
   static const char* kNames[3] = {"TRANSLATION", "ROTATION", "SCALE"};
   AccessorData<float> values[3];
   size_t count = 0;
@@ -75,7 +76,7 @@ Status convertInstancing(const tinygltf::Model& m, size_t nodeIndex, Scene& scen
     any = true;
     values[k] = data.take();
   }
-  if (!any) return Status::fail(where + ": none of TRANSLATION, ROTATION, SCALE given");
+  if (!any) return Status::fail(none);
   if (node.mesh < 0) {
     scene.unsupported.push_back(where + " on a node without a mesh: ignored");
     return {};
