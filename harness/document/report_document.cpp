@@ -25,7 +25,7 @@ void push(std::vector<double>& v, double x) {
 }
 
 json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
-  std::vector<double> bpv, bpvAll, bpvNm, bpvPlain, fpv, fpt, fptScale, fpj, conv;
+  std::vector<double> bpv, bpvAll, bpvNm, bpvPlain, fpv, fpt, fptScale, fpj, conv, bpi;
   for (const json& s : scenes) {
     if (!s.contains("pipelines") || !s["pipelines"].contains(p)) continue;
     const json& pj = s["pipelines"][p];
@@ -41,12 +41,13 @@ json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
     const double jn = number(pj, {"memory", "floatsPerJoint"});
     if (jn > 0) fpj.push_back(jn);
     push(conv, number(pj, {"conversionMs", "median"}));
+    push(bpi, number(pj, {"memory", "bytesPerInstance"}));  // NaN (skipped) without instances
   }
   return {{"bytesPerVertex", spread(bpv)}, {"bytesPerVertexAll", spread(bpvAll)},
           {"bytesPerVertexNormalMapped", spread(bpvNm)}, {"bytesPerVertexNotNormalMapped", spread(bpvPlain)},
           {"floatsPerTransformWithScale", spread(fptScale)},
           {"floatsPerVertex", spread(fpv)}, {"floatsPerTransform", spread(fpt)},
-          {"floatsPerJoint", spread(fpj)}, {"conversionMs", spread(conv)}};
+          {"floatsPerJoint", spread(fpj)}, {"conversionMs", spread(conv)}, {"bytesPerInstance", spread(bpi)}};
 }
 
 // Image agreement of `p` with the baseline over the frames of `scenes` for which

@@ -104,7 +104,8 @@ json vertexMix(const Scene& scene) {
     for (const Primitive& p : scene.meshes[size_t(node.mesh)].primitives) {
       // Bezier patches: (N+1)^2 pattern vertices per patch, through the patch vertex shaders.
       patch += long(p.patchPoints.size() / 16) * long(scene.patchLevel + 1) * long(scene.patchLevel + 1);
-      const long count = long(p.positions.size());
+      // Instanced nodes (never skinned) run the rigid vertex once per instance.
+      const long count = long(p.positions.size()) * long(std::max<size_t>(1, node.instances.size()));
       if (node.skin >= 0 && !p.joints.empty()) skinned += count;
       else {
         rigid += count;
