@@ -3,7 +3,10 @@
 
     python3 scripts/plot.py results/report.json results/plots
 
-index.json lists what was written: {"files": [{"name", "file", "title", "caption"}], "error"}.
+index.json lists what was written: {"files": [{"name", "file", "title", "caption", "bars"}], "error"};
+"bars" is each plot's data as drawn: one entry per bar {"panel", "series" (a pipeline or
+configuration, which fixes its colour), "label" (the scene or kernel), "x", "value" (null where
+"text" is drawn instead, e.g. "identical"), "text", "colour"}.
 When matplotlib is missing it still writes index.json (with the reason in "error") and exits
 0, so `motorbench report` can say so in the report and go on. A plot whose data is absent
 (e.g. no bench run) is skipped and named in "skipped".
@@ -13,11 +16,23 @@ import math
 import os
 import sys
 
-COLOURS = {"matrix": "#4c72b0", "motor": "#dd8452", "glm": "#8c8c8c", "matrix-affine": "#55a868"}
+# The one colour table of every plot: each pipeline keeps its colour in every figure, and the
+# other series (timing configurations, cache sizes) have their own, none shared.
+COLOURS = {
+    "matrix": "#1f77b4", "affine": "#2ca02c", "qtangent": "#17becf", "hybrid": "#9467bd",
+    "motor": "#ff7f0e", "motor_q": "#d62728", "glm": "#7f7f7f", "matrix-affine": "#bcbd22",
+    "s3_matrix": "#8c564b", "s3_motor": "#e377c2", "h3_matrix": "#393b79", "h3_motor": "#ad494a",
+    "frame": "#3182bd", "64x64 viewport (vertex-bound)": "#e6550d", "CPU update": "#31a354",
+    "in cache": "#6baed6", "out of cache (>= 256 MiB)": "#fd8d3c", "one working set": "#969696",
+}
+SPARE = ["#637939", "#8c6d31", "#843c39", "#7b4173", "#5254a3", "#cedb9c"]
 
 
 def colour(name, i=0):
-    return COLOURS.get(name, ["#937860", "#da8bc3", "#8172b3"][i % 3])
+    """The table's colour of `name`; names outside it take spare colours in order."""
+    if name not in COLOURS:
+        COLOURS[name] = SPARE[len([k for k in COLOURS if COLOURS[k] in SPARE]) % len(SPARE)]
+    return COLOURS[name]
 
 
 def num(x):
@@ -29,31 +44,58 @@ def scenes_with(report, pred):
 
 
 def save(fig, outdir, name):
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.94))
     fig.savefig(os.path.join(outdir, name + ".png"), dpi=90, metadata={"Software": None})
 
 
-def grouped_bars(ax, labels, series, ylabel, colours=None, digits=3, reference=None):
-    """series: [(name, [values or None])]; None values are left out. colours: one per series
-    (default: the pipeline colours by name); reference: a horizontal line (e.g. ratio 1)."""
+def grouped_bars(ax, labels, series, ylabel, digits=3, reference=None, bars=None, panel=None, texts=None):
+    """Bars grouped per label: one bar per series in each group, side by side (never at the same
+    x), coloured by the series' name (COLOURS), values written vertically above each bar so that
+    neighbours do not overlap. series: [(name, [value or None])]; None values are left out.
+    texts: {(series, label): text} drawn instead of a value (a bar of full axis height, hatched:
+    e.g. "identical" where a PSNR is infinite). Every bar drawn is appended to `bars` (the
+    plot's data in index.json): series, label, x, value, text, colour, panel."""
     n = max(1, len(series))
     width = 0.8 / n
+    texts = texts or {}
+    finite = [v for _, vs in series for v in vs if v is not None]
+    top = max(finite) * 1.25 if finite else 1.0
     for i, (name, values) in enumerate(series):
-        xs = [k + (i - (n - 1) / 2) * width for k in range(len(labels))]
-        pts = [(x, v) for x, v in zip(xs, values) if v is not None]
-        if not pts:
-            continue
-        col = colours[i] if colours else colour(name, i)
-        bars = ax.bar([p[0] for p in pts], [p[1] for p in pts], width, label=name, color=col)
-        for b, (_, v) in zip(bars, pts):
-            ax.annotate(f"{v:.{digits}g}", (b.get_x() + b.get_width() / 2, b.get_height()),
-                        ha="center", va="bottom", fontsize=7)
+        col = colour(name)
+        for k, (label, v) in enumerate(zip(labels, values)):
+            x = k + (i - (n - 1) / 2) * width
+            text = texts.get((name, label))
+            if v is None and text is None:
+                continue
+            if text is not None:
+                ax.bar(x, top, width, color=col, alpha=0.35, hatch="//", edgecolor=col)
+                ax.annotate(text, (x, top * 0.5), ha="center", va="center", rotation=90, fontsize=7)
+            else:
+                ax.bar(x, v, width, color=col)
+                ax.annotate(f"{v:.{digits}g}", (x, v), ha="center", va="bottom", rotation=90, fontsize=6,
+                            xytext=(0, 2), textcoords="offset points")
+            if bars is not None:
+                bars.append({"panel": panel, "series": name, "label": label, "x": round(x, 6),
+                             "value": v, "text": text, "colour": col})
     if reference is not None:
         ax.axhline(reference, color="black", lw=0.8)
+    ax.set_ylim(0, top * 1.15 if finite or texts else 1.0)
     ax.set_xticks(range(len(labels)))
     ax.set_xticklabels(labels, rotation=30, ha="right", fontsize=8)
     ax.set_ylabel(ylabel)
-    ax.legend(fontsize=8)
+
+
+def legend(fig, names):
+    """One legend for the figure, above the axes (it never hides a bar), a patch of each
+    series' colour from the table."""
+    from matplotlib.patches import Patch
+    handles = [Patch(facecolor=colour(n), label=n) for n in names]
+    fig.legend(handles=handles, loc="upper center", ncol=min(len(names), 6), fontsize=8,
+               bbox_to_anchor=(0.5, 1.0), frameon=False)
+
+
+def width_for(groups, per_group):
+    return max(8.0, min(24.0, 1.2 + 0.28 * groups * max(1, per_group)))
 
 
 def plot_bytes_per_vertex(plt, report, outdir):
@@ -62,15 +104,17 @@ def plot_bytes_per_vertex(plt, report, outdir):
         num(s.get("pipelines", {}).get(p, {}).get("memory", {}).get("bytesPerVertex")) for p in pipes))
     if not scenes:
         return None
-    fig, ax = plt.subplots(figsize=(8, 3.6))
+    fig, ax = plt.subplots(figsize=(width_for(len(scenes), len(pipes)), 4.0))
     series = [(p, [num(s["pipelines"].get(p, {}).get("memory", {}).get("bytesPerVertex")) for s in scenes])
               for p in pipes]
-    grouped_bars(ax, [s["id"] for s in scenes], series, "bytes / vertex")
-    ax.set_title("Vertex attribute bytes per vertex (position + frame + uv, from the uploads)", fontsize=9)
+    bars = []
+    grouped_bars(ax, [s["id"] for s in scenes], series, "bytes / vertex", bars=bars)
+    ax.set_title("Vertex attribute bytes per vertex (position + frame + uv, from the uploads)", fontsize=9, pad=24)
+    legend(fig, pipes)
     save(fig, outdir, "bytes_per_vertex")
     return ("bytes_per_vertex", "Bytes per vertex",
             "Shading attributes uploaded per vertex (PipelineStats.vertexBytes / vertices); "
-            "skin weights/joints and optional streams excluded.")
+            "skin weights/joints and optional streams excluded.", bars)
 
 
 def plot_ops_per_vertex(plt, report, outdir):
@@ -79,7 +123,7 @@ def plot_ops_per_vertex(plt, report, outdir):
         return None
     pipes = [p for p in report["settings"]["pipelines"]
              if any(p in s["opsPerVertex"] for s in scenes)]
-    fig, ax = plt.subplots(figsize=(8, 3.6))
+    fig, ax = plt.subplots(figsize=(width_for(len(scenes), len(pipes)), 4.0))
     series = []
     for p in pipes:
         vals = []
@@ -87,14 +131,16 @@ def plot_ops_per_vertex(plt, report, outdir):
             c = (s["opsPerVertex"].get(p) or {}).get("counted")
             vals.append(num(c.get("mul", 0) + c.get("add", 0)) if c else None)
         series.append((p, vals))
-    grouped_bars(ax, [s["id"] for s in scenes], series, "mul + add per vertex")
+    bars = []
+    grouped_bars(ax, [s["id"] for s in scenes], series, "mul + add per vertex", bars=bars)
     ax.set_title("Counted ops per drawn vertex (vertex shader incl. world to clip, "
-                 "weighted rigid/skinned)", fontsize=9)
+                 "weighted rigid/skinned)", fontsize=9, pad=24)
+    legend(fig, pipes)
     save(fig, outdir, "ops_per_vertex")
     return ("ops_per_vertex", "Ops per vertex",
             "Multiplications + additions of one drawn vertex, counted by executing the shaders' "
             "GLSL through the op-counting shim; each scene weights the rigid, skinned and "
-            "scaled-fallback variants by the vertices it draws.")
+            "scaled-fallback variants by the vertices it draws.", bars)
 
 
 def plot_kernel_ratios(plt, report, outdir):
@@ -106,18 +152,21 @@ def plot_kernel_ratios(plt, report, outdir):
         if p["kernel"] not in kernels:
             kernels.append(p["kernel"])
     # Bars per kernel: in cache above, out of cache below; unsized kernels centred.
-    sizes = [("in_cache", "in cache", "#4c72b0", -0.2), ("out_of_cache", "out of cache (>= 256 MiB)", "#c44e52", 0.2),
-             (None, "one working set", "#8c8c8c", 0.0)]
+    sizes = [("in_cache", "in cache", -0.2), ("out_of_cache", "out of cache (>= 256 MiB)", 0.2),
+             (None, "one working set", 0.0)]
     fig, ax = plt.subplots(figsize=(8, 0.45 * len(kernels) + 1.4))
-    for size, label, col, offset in sizes:
+    bars = []
+    for size, label, offset in sizes:
         pts = [(k, p["ratio_motor_matrix"]) for k, name in enumerate(kernels) for p in pairs
                if p["kernel"] == name and p.get("size") == size]
         if not pts:
             continue
         ys = [k + offset for k, _ in pts]
-        ax.barh(ys, [v for _, v in pts], 0.4, label=label, color=col)
-        for y, (_, v) in zip(ys, pts):
+        ax.barh(ys, [v for _, v in pts], 0.4, label=label, color=colour(label))
+        for y, (k, v) in zip(ys, pts):
             ax.annotate(f"{v:.2f}", (v, y), va="center", fontsize=7)
+            bars.append({"panel": None, "series": label, "label": kernels[k], "x": round(y, 6), "value": v,
+                         "text": None, "colour": colour(label)})
     ax.axvline(1.0, color="black", lw=0.8)
     ax.set_yticks(range(len(kernels)))
     ax.set_yticklabels(kernels, fontsize=8)
@@ -128,14 +177,13 @@ def plot_kernel_ratios(plt, report, outdir):
     save(fig, outdir, "kernel_ratios")
     return ("kernel_ratios", "Kernel throughput ratios",
             "motorbench bench: items/s of the motor kernel over the matrix kernel of each pair, in "
-            "cache and out of cache.")
+            "cache and out of cache.", bars)
 
 
 def plot_frame_time_ratio(plt, report, outdir):
     scenes = scenes_with(report, lambda s: num((s.get("timing") or {}).get("ratio_motor_matrix")))
     if not scenes:
         return None
-    fig, ax = plt.subplots(figsize=(8, 3.4))
     labels = [s["id"] for s in scenes]
     series = [("frame", [s["timing"]["ratio_motor_matrix"] for s in scenes])]
     vb = [num((s["timing"].get("vertexBound") or {}).get("ratio_motor_matrix")) for s in scenes]
@@ -144,41 +192,61 @@ def plot_frame_time_ratio(plt, report, outdir):
     cpu = [num((s["timing"].get("update") or {}).get("ratio_motor_matrix")) for s in scenes]
     if any(v is not None for v in cpu):
         series.append(("CPU update", cpu))
-    grouped_bars(ax, labels, series, "motor / matrix time (< 1: motor faster)",
-                 colours=["#4c72b0", "#c44e52", "#55a868"], digits=2, reference=1.0)
-    ax.set_title("Frame-time ratios (median wall clock around glFinish)", fontsize=9)
+    fig, ax = plt.subplots(figsize=(width_for(len(scenes), len(series)), 4.0))
+    bars = []
+    grouped_bars(ax, labels, series, "motor / matrix time (< 1: motor faster)", digits=2, reference=1.0, bars=bars)
+    ax.set_title("Frame-time ratios (median wall clock around glFinish)", fontsize=9, pad=24)
+    legend(fig, [name for name, _ in series])
     save(fig, outdir, "frame_time_ratio")
     return ("frame_time_ratio", "Frame-time ratios",
             "Median frame time of the motor pipeline over the matrix pipeline's (curved scenes: their "
             "space's pair, e.g. s3_motor / s3_matrix), both measured in one process with frames "
-            "interleaved; the CPU update (hierarchy, animation, skin palette) timed apart.")
+            "interleaved; the CPU update (hierarchy, animation, skin palette) timed apart.", bars)
 
 
-def plot_image_error(plt, report, outdir):
-    pipes = report["settings"]["pipelines"][1:]
-    scenes = scenes_with(report, lambda s: any(f.get("metrics") for f in s.get("frames", [])))
-    if not scenes or not pipes:
-        return None
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(9, 3.4))
-    labels = [s["id"] for s in scenes]
-    for i, p in enumerate(pipes):
-        psnr, frac = [], []
+def image_error_series(report, scenes, pipes):
+    """Per pipeline: worst PSNR and largest % of pixels over 1/255 per scene, and the scenes whose
+    frames were all identical to the baseline (PSNR infinite: drawn as "identical")."""
+    psnr, frac, identical = [], [], {}
+    for p in pipes:
+        ps_row, fr_row = [], []
         for s in scenes:
             ms = [f["metrics"][p] for f in s.get("frames", []) if p in f.get("metrics", {})]
             ps = [m["psnr"] for m in ms if num(m.get("psnr"))]
-            psnr.append(min(ps) if ps else (100.0 if ms else None))  # identical: drawn at 100 dB
+            ps_row.append(min(ps) if ps else None)
+            if ms and not ps:
+                identical[(p, s["id"])] = "identical"
             fr = [m["fractionOver1"] for m in ms if num(m.get("fractionOver1")) is not None]
-            frac.append(100 * max(fr) if fr else None)
-        grouped_bars(a1, labels, [(p, psnr)], "worst PSNR [dB]")
-        grouped_bars(a2, labels, [(p, frac)], "% pixels off by > 1/255")
-    a1.set_title("Image agreement with %s (worst time; identical = 100)" % report["settings"]["baseline"],
-                 fontsize=9)
+            fr_row.append(100 * max(fr) if fr else None)
+        psnr.append((p, ps_row))
+        frac.append((p, fr_row))
+    return psnr, frac, identical
+
+
+def plot_image_error(plt, report, outdir):
+    baseline = report["settings"].get("baseline", report["settings"]["pipelines"][0])
+    pipes = [p for p in report["settings"]["pipelines"] if p != baseline]
+    scenes = scenes_with(report, lambda s: any(f.get("metrics") for f in s.get("frames", [])))
+    if not scenes or not pipes:
+        return None
+    labels = [s["id"] for s in scenes]
+    psnr, frac, identical = image_error_series(report, scenes, pipes)
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(width_for(len(scenes), len(pipes)), 7.5))
+    bars = []
+    grouped_bars(a1, labels, psnr, "worst PSNR [dB]", digits=3, bars=bars, panel="psnr", texts=identical)
+    grouped_bars(a2, labels, frac, "% pixels off by > 1/255", digits=2, bars=bars, panel="fractionOver1",
+                 texts={k: "identical" for k in identical})
+    a1.set_title("Image agreement with %s per scene (worst time; hatched: identical, every byte agrees)" % baseline,
+                 fontsize=9, pad=24)
     a2.set_title("Changed pixels (worst time)", fontsize=9)
+    legend(fig, pipes)
     save(fig, outdir, "image_error")
     return ("image_error", "Image error per scene",
             "Worst PSNR and largest fraction of pixels differing by more than one 8-bit step, "
-            "over the scene's animation times. On skinned scenes a pipeline that blends joint motors "
-            "differs from the LBS baseline by design (the methods' expected difference, not an error).")
+            "over the scene's animation times, one bar per pipeline and scene; a scene whose frames "
+            "are identical to the baseline shows a hatched bar marked \"identical\". On skinned scenes "
+            "a pipeline that blends joint motors differs from the LBS baseline by design (the methods' "
+            "expected difference, not an error).", bars)
 
 
 def main():
@@ -205,8 +273,9 @@ def main():
             if got is None:
                 index["skipped"].append(fn.__name__[5:])
                 continue
-            name, title, caption = got
-            index["files"].append({"name": name, "file": name + ".png", "title": title, "caption": caption})
+            name, title, caption, bars = got
+            index["files"].append({"name": name, "file": name + ".png", "title": title, "caption": caption,
+                                   "bars": bars})
     with open(os.path.join(outdir, "index.json"), "w") as f:
         json.dump(index, f, indent=2)
     return 0

@@ -4,7 +4,8 @@
 # pairs), report.json/.md/.html + images/ + plots/ (motorbench report: the built-in scenes, the
 # curved s3_tiling / h3_tiling included, skinned_tube with its bend and candy_wrapper
 # animations), corpus/ (the same report over ../shared/corpus, real glTF files, when that folder
-# exists), claims.md/.json (motorbench claims). Progress on stderr. Budget: under 15 minutes on 2 cores.
+# exists), isa.json/.txt (motorbench isa: AMD ISA statistics from RADV's null device), claims.md/.json
+# (motorbench claims). Progress on stderr. Budget: under 15 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -29,10 +30,13 @@ step "bench: kernel pairs in and out of cache, 3 repetitions -> $OUT/bench.json"
 "$MB" bench --out "$OUT/bench.json" --benchmark_min_time=0.1 --benchmark_repetitions=3 \
   --benchmark_color=false > "$OUT/bench.txt"
 
+step "isa: AMD ISA of every pipeline's shaders (RADV null device) -> $OUT/isa.json"
+"$MB" isa --json "$OUT/isa.json" > "$OUT/isa.txt"
+
 step "report: built-in scenes -> $OUT/report.html"
 # skinned_tube also shows candy_wrapper: the half turn where linear blend skinning collapses the
 # ring and motor blending keeps it (issue 18); every other scene its first animation.
-"$MB" report -o "$OUT" --bench-json "$OUT/bench.json" --jobs "$(nproc)" \
+"$MB" report -o "$OUT" --bench-json "$OUT/bench.json" --isa-json "$OUT/isa.json" --jobs "$(nproc)" \
   --anim skinned_tube:bend,skinned_tube:candy_wrapper
 
 # Real content apart from the generated scenes (barrel.glb: the paper's normal-mapped case;
@@ -41,7 +45,7 @@ CORPUS=../shared/corpus
 rm -rf "$OUT/corpus"
 if [ -d "$CORPUS" ]; then
   step "report: $CORPUS -> $OUT/corpus/report.html"
-  "$MB" report "$CORPUS" -o "$OUT/corpus" --bench-json "$OUT/bench.json" --jobs "$(nproc)"
+  "$MB" report "$CORPUS" -o "$OUT/corpus" --bench-json "$OUT/bench.json" --isa-json "$OUT/isa.json" --jobs "$(nproc)"
 else
   step "report: no $CORPUS, corpus report skipped"
 fi
@@ -67,6 +71,8 @@ Written by \`scripts/reproduce.sh\` in $(($(date +%s) - start)) s on $(nproc) co
   measured, with a verdict; reviewer baselines beside them.
 - [bench.txt](bench.txt) ([bench.json](bench.json)): \`motorbench bench\` (Google Benchmark).
 - [ops.txt](ops.txt) ([ops.json](ops.json)): \`motorbench ops\`, counted arithmetic per kernel.
+- [isa.txt](isa.txt) ([isa.json](isa.json)): \`motorbench isa\`, AMD ISA instructions, registers
+  and occupancy of every pipeline's shaders from Mesa RADV's null device (GCN 1 to RDNA 3).
 INDEX
 
 step "done: $OUT/report.html, $OUT/claims.md"

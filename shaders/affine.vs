@@ -10,6 +10,8 @@
 //                cofactor of the blended matrix
 //   MB_QTANGENT  the vertex frame is one quaternion (int16x4 SNORM, read as a vec4 in
 //                -1..1) instead of normal + tangent: 28-byte vertices
+//   MB_NO_TANGENT float frame without tangent (no TANGENT, no normal map), as matrix.vs's:
+//                position + normal + uv, 32-byte vertices
 //   MB_INSTANCED model, normal matrix and mirror per instance (vertex attributes, divisor 1)
 //                instead of per draw: EXT_mesh_gpu_instancing / --instances
 #include "affine_transform.glsl"
@@ -20,7 +22,9 @@ layout(location = 1) in vec4 a_qtangent;
 layout(location = 2) in vec2 a_uv0;
 #else
 layout(location = 1) in vec3 a_normal;
+#ifndef MB_NO_TANGENT
 layout(location = 2) in vec4 a_tangent;
+#endif
 layout(location = 3) in vec2 a_uv0;
 #endif
 layout(location = 4) in vec2 a_uv1;    // locations 4..7: pipelines/gl/scene_textures.h
@@ -62,6 +66,10 @@ void main() {
   mat3x4 v = qtangentSkinnedVertex(u_joints[a_joints.x], u_joints[a_joints.y],
                                    u_joints[a_joints.z], u_joints[a_joints.w], a_weights,
                                    u_Mirror, a_position, a_qtangent);
+#elif defined(MB_NO_TANGENT)
+  mat3x4 v = affineSkinnedVertexNoTangent(u_joints[a_joints.x], u_joints[a_joints.y],
+                                          u_joints[a_joints.z], u_joints[a_joints.w], a_weights,
+                                          a_position, a_normal);
 #else
   mat3x4 v = affineSkinnedVertex(u_joints[a_joints.x], u_joints[a_joints.y],
                                  u_joints[a_joints.z], u_joints[a_joints.w], a_weights, u_Mirror,
@@ -70,6 +78,8 @@ void main() {
 #else
 #ifdef MB_QTANGENT
   mat3x4 v = qtangentRigidVertex(u_ModelMatrix, u_NormalMatrix, u_Mirror, a_position, a_qtangent);
+#elif defined(MB_NO_TANGENT)
+  mat3x4 v = affineVertexNoTangent(u_ModelMatrix, u_NormalMatrix, a_position, a_normal);
 #else
   mat3x4 v = matrixAffineVertex(u_ModelMatrix, u_NormalMatrix, u_Mirror, a_position, a_normal,
                                 a_tangent);
@@ -78,7 +88,11 @@ void main() {
   // As matrix.vs: unit normal and tangent in the varyings.
   v_worldPosition = v[0].xyz;
   v_worldNormal = normalize(v[1].xyz);
+#ifdef MB_NO_TANGENT
+  v_worldTangent = v[2];  // (0, 0, 0, 1): unread without a normal map
+#else
   v_worldTangent = vec4(normalize(v[2].xyz), v[2].w);
+#endif
   v_uv0 = a_uv0;
   v_uv1 = a_uv1;
   v_color = a_color;

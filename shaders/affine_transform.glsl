@@ -48,6 +48,23 @@ mat3x4 affineSkinnedVertex(mat4x3 j0, mat4x3 j1, mat4x3 j2, mat4x3 j3, vec4 weig
   return matrixAffineVertex(skin, affineCofactor(mat3(skin)), mirror, position, normal, tangent);
 }
 
+// Rigid vertex without a tangent: primitives without TANGENT and without a normal map, whose
+// vertex is position + normal + uv (8 floats, as matrix.vs's MB_NO_TANGENT). [2] is
+// (0, 0, 0, 1): forward.fs reads the tangent only with a normal map.
+// counted: 18 mul, 15 add
+mat3x4 affineVertexNoTangent(mat4x3 model, mat3 normalMatrix, vec3 position, vec3 normal) {
+  return mat3x4(vec4(mat3(model) * position + model[3], 1.0), vec4(normalMatrix * normal, 0.0),
+                vec4(0.0, 0.0, 0.0, 1.0));
+}
+
+// Skinned vertex without a tangent (8-float vertex + skin attributes).
+// counted: 84 mul, 60 add (blend 48/36, cofactor 18/9, affineVertexNoTangent 18/15)
+mat3x4 affineSkinnedVertexNoTangent(mat4x3 j0, mat4x3 j1, mat4x3 j2, mat4x3 j3, vec4 weights,
+                                    vec3 position, vec3 normal) {
+  mat4x3 skin = affineBlendJoints(j0, j1, j2, j3, weights);
+  return affineVertexNoTangent(skin, affineCofactor(mat3(skin)), position, normal);
+}
+
 // The same with a normal matrix per joint (21 floats per joint instead of 12); counted only.
 // counted: 112 mul, 84 add
 mat3x4 affineSkinnedNormalsVertex(mat4x3 j0, mat4x3 j1, mat4x3 j2, mat4x3 j3, mat3 n0, mat3 n1,

@@ -1,8 +1,10 @@
 #version 450 core
 // motor.vs: the vertex stage of the PGA motor pipeline (pipelines/motor/). No matrices: the
 // world transform is a motor plus a uniform scale, the tangent frame a rotor, the camera a
-// motor followed by pga.glsl's project(). The transform itself lives in motor_transform.glsl
-// (shared with the CPU tests and the op counter).
+// motor followed by pga.glsl's projection with its constants computed once per frame
+// (motorProjectionConstants, as the paper's renderer precomputes them and the matrix side
+// builds its projection matrix once per frame). The transform itself lives in
+// motor_transform.glsl (shared with the CPU tests and the op counter).
 //
 // Variants (#define):
 //   MB_SKINNED        motor skinning: 4 joints per vertex, one motor (8 floats) per joint
@@ -10,8 +12,6 @@
 //   MB_SKIN_REFERENCE with MB_SKINNED: the paper's form, joint motors relative to the mesh
 //                     node and toWorld = gp(u_World, blend) per vertex (issue 18; the default
 //                     palette is in world space and u_World is not used)
-//   MB_PROJECT_CONSTANTS world to clip with per-frame constants u_ProjectionK
-//                     (motorWorldToClipConstants) instead of project()'s per-vertex form
 //   MB_INSTANCED      motor and scale per instance (vertex attributes, divisor 1) instead of
 //                     per draw: EXT_mesh_gpu_instancing / --instances
 #include "pga.glsl"
@@ -44,12 +44,9 @@ uniform vec3 u_Scale;
 uniform float u_Scale;
 #endif
 #endif
-// Per frame: world -> view motor and the projection (near, far, vertical fov, aspect).
+// Per frame: world -> view motor and the projection constants.
 uniform vec4 u_Camera[2];
-uniform vec4 u_Projection;
-#ifdef MB_PROJECT_CONSTANTS
-uniform vec4 u_ProjectionK;  // motorProjectionConstants(near, far, fov, aspect)
-#endif
+uniform vec4 u_ProjectionK;  // motorProjectionConstants(near, far, vertical fov, aspect)
 
 #ifdef MB_SKINNED
 layout(location = 6) in uvec4 a_joints;
@@ -93,10 +90,5 @@ void main() {
   v_uv0 = a_uv0;
   v_uv1 = a_uv1;
   v_color = a_color;
-#ifdef MB_PROJECT_CONSTANTS
   gl_Position = motorWorldToClipConstants(motor(u_Camera[0], u_Camera[1]), v[0].xyz, u_ProjectionK);
-#else
-  gl_Position = motorWorldToClip(motor(u_Camera[0], u_Camera[1]), v[0].xyz, u_Projection.x,
-                                 u_Projection.y, u_Projection.z, u_Projection.w);
-#endif
 }

@@ -18,7 +18,7 @@ uniform vec3 u_Scale;
 uniform float u_Scale;
 #endif
 uniform vec4 u_Camera[2];
-uniform vec4 u_Projection;
+uniform vec4 u_ProjectionK;  // motorProjectionConstants(near, far, vertical fov, aspect), per frame
 
 out vec3 v_worldPosition;
 out vec3 v_worldNormal;
@@ -40,6 +40,5 @@ void main() {
   v_uv0 = a_patchUv;
   v_uv1 = a_patchUv;
   v_color = vec4(1.0);
-  gl_Position = motorWorldToClip(motor(u_Camera[0], u_Camera[1]), v[0].xyz, u_Projection.x,
-                                 u_Projection.y, u_Projection.z, u_Projection.w);
+  gl_Position = motorWorldToClipConstants(motor(u_Camera[0], u_Camera[1]), v[0].xyz, u_ProjectionK);
 }

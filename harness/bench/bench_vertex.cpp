@@ -1,8 +1,13 @@
-// vertex_frame and skinned_vertex: a full vertex (position + frame) per item, over arrays in
-// cache and far out of cache. Matrix: matrixRigidVertex / matrixSkinnedVertex of
-// matrix_transform.glsl (model + normal mat4; LBS with joint + joint-normal mat4 palettes).
-// Motor: motorRigidVertex / motorSkinnedVertex of motor_transform.glsl (one motor + uniform
-// scale; blend of joint motors, normalize_m). glm: the Sample Viewer's products with GLM.
+// vertex_frame and skinned vertices: a full vertex (position + frame) per item, over arrays in
+// cache and far out of cache. Matrix: matrixRigidVertex of matrix_transform.glsl (model + normal
+// mat4); motor: motorRigidVertex of motor_transform.glsl (one motor + uniform scale); glm: the
+// Sample Viewer's products with GLM. Skinning in matched configurations (issue 26), two pairs:
+//   skinned_vertex            world palette on every side: joint world * inverse bind, no node
+//                             transform per vertex (matrixSkinnedVertexWorld, motorSkinnedVertex,
+//                             the simd sides); the motor pipelines' default
+//   skinned_vertex_reference  the references' form on every side: palette relative to the mesh
+//                             node, then the node's transform per vertex (matrixSkinnedVertex, the
+//                             Sample Viewer's; motorSkinnedVertexReference, the paper's listing)
 // Inputs are the vertex layouts the pipelines upload: matrix position + normal + tangent
 // (10 floats), motor position + tangent rotor (7 floats), skin joints (4 x u16) + weights.
 // Both sides write the same 10-float world vertex (position, normal, tangent + handedness).
@@ -166,39 +171,48 @@ void frameGlm(benchmark::State& state, Size s) {
   });
 }
 
-void skinMatrix(benchmark::State& state, Size s) {
+// Skinned vertex, both configurations per side (`reference`: the node's transform after the blend).
+template <bool reference> void skinMatrix(benchmark::State& state, Size s) {
   const Draw& d = draw();
   const MS::mat4 model = d.model, normal = d.normal;
   MS S;
   run(state, s, kSkinMatrixBytes, [&, model, normal](Arrays& a, size_t i) {
     const MatrixVertex& v = a.matrix[i];
     const SkinAttrs& k = a.skin[i];
-    store(a.out[i],
-          S.matrixSkinnedVertex(d.joint[k.j[0]], d.joint[k.j[1]], d.joint[k.j[2]], d.joint[k.j[3]],
-                                d.jointNormal[k.j[0]], d.jointNormal[k.j[1]],
-                                d.jointNormal[k.j[2]], d.jointNormal[k.j[3]],
-                                MS::vec4(k.w[0], k.w[1], k.w[2], k.w[3]), model, normal,
-                                MS::vec3(v.p[0], v.p[1], v.p[2]), MS::vec3(v.n[0], v.n[1], v.n[2]),
-                                MS::vec4(v.t[0], v.t[1], v.t[2], v.t[3])));
+    const MS::vec4 w(k.w[0], k.w[1], k.w[2], k.w[3]);
+    const MS::vec3 p(v.p[0], v.p[1], v.p[2]), n(v.n[0], v.n[1], v.n[2]);
+    const MS::vec4 t(v.t[0], v.t[1], v.t[2], v.t[3]);
+    const MS::mat4 *J = d.joint, *N = d.jointNormal;
+    const uint16_t* j = k.j;
+    if constexpr (reference)
+      store(a.out[i], S.matrixSkinnedVertex(J[j[0]], J[j[1]], J[j[2]], J[j[3]], N[j[0]], N[j[1]], N[j[2]], N[j[3]],
+                                            w, model, normal, p, n, t));
+    else
+      store(a.out[i], S.matrixSkinnedVertexWorld(J[j[0]], J[j[1]], J[j[2]], J[j[3]], N[j[0]], N[j[1]], N[j[2]],
+                                                 N[j[3]], w, normal, p, n, t));
   });
 }
 
-void skinMotor(benchmark::State& state, Size s) {
+template <bool reference> void skinMotor(benchmark::State& state, Size s) {
   const Draw& d = draw();
+  const PS::motor toWorld = d.motor;
   const float scale = d.scale;
   PS P;
-  run(state, s, kSkinMotorBytes, [&, scale](Arrays& a, size_t i) {
+  run(state, s, kSkinMotorBytes, [&, toWorld, scale](Arrays& a, size_t i) {
     const MotorVertex& v = a.motor[i];
     const SkinAttrs& k = a.skin[i];
-    store(a.out[i], P.motorSkinnedVertex(d.jointMotor[k.j[0]], d.jointMotor[k.j[1]],
-                                         d.jointMotor[k.j[2]], d.jointMotor[k.j[3]],
-                                         PS::vec4(k.w[0], k.w[1], k.w[2], k.w[3]), scale,
-                                         PS::vec3(v.p[0], v.p[1], v.p[2]),
-                                         PS::vec4(v.r[0], v.r[1], v.r[2], v.r[3])));
+    const PS::motor* J = d.jointMotor;
+    const uint16_t* j = k.j;
+    const PS::vec4 w(k.w[0], k.w[1], k.w[2], k.w[3]), r(v.r[0], v.r[1], v.r[2], v.r[3]);
+    const PS::vec3 p(v.p[0], v.p[1], v.p[2]);
+    if constexpr (reference)
+      store(a.out[i], P.motorSkinnedVertexReference(toWorld, J[j[0]], J[j[1]], J[j[2]], J[j[3]], w, scale, p, r));
+    else
+      store(a.out[i], P.motorSkinnedVertex(J[j[0]], J[j[1]], J[j[2]], J[j[3]], w, scale, p, r));
   });
 }
 
-void skinGlm(benchmark::State& state, Size s) {
+template <bool reference> void skinGlm(benchmark::State& state, Size s) {
   const Draw& d = draw();
   const glm::mat4 model = d.gModel, normal = d.gNormal;
   run(state, s, kSkinMatrixBytes, [&, model, normal](Arrays& a, size_t i) {
@@ -208,9 +222,13 @@ void skinGlm(benchmark::State& state, Size s) {
                            k.w[2] * d.gJoint[k.j[2]] + k.w[3] * d.gJoint[k.j[3]];
     const glm::mat4 skinN = k.w[0] * d.gJointNormal[k.j[0]] + k.w[1] * d.gJointNormal[k.j[1]] +
                             k.w[2] * d.gJointNormal[k.j[2]] + k.w[3] * d.gJointNormal[k.j[3]];
-    store(a.out[i], model * (skin * glm::vec4(v.p[0], v.p[1], v.p[2], 1.0f)),
-          normal * (skinN * glm::vec4(v.n[0], v.n[1], v.n[2], 0.0f)),
-          model * (skin * glm::vec4(v.t[0], v.t[1], v.t[2], 0.0f)), v.t[3] * normal[3][3]);
+    const glm::vec4 p = skin * glm::vec4(v.p[0], v.p[1], v.p[2], 1.0f);
+    const glm::vec4 n = skinN * glm::vec4(v.n[0], v.n[1], v.n[2], 0.0f);
+    const glm::vec4 t = skin * glm::vec4(v.t[0], v.t[1], v.t[2], 0.0f);
+    if constexpr (reference)
+      store(a.out[i], model * p, normal * n, model * t, v.t[3] * normal[3][3]);
+    else
+      store(a.out[i], p, n, t, v.t[3] * normal[3][3]);
   });
 }
 
@@ -307,17 +325,17 @@ void registerVertexBenchmarks() {
   using Fn = void (*)(benchmark::State&, Size);
   const struct {
     const char* name;
-    Fn matrix, motor, glm, simdMatrix, simdMotor;
+    Fn matrix, motor, glm, simdMatrix, simdMotor;  // simd: nullptr where kernels/simd has no such form
   } families[] = {{"vertex_frame", frameMatrix, frameMotor, frameGlm, frameSimdMatrix, frameSimdMotor},
-                  {"skinned_vertex", skinMatrix, skinMotor, skinGlm, skinSimdMatrix, skinSimdMotor}};
+                  {"skinned_vertex", skinMatrix<false>, skinMotor<false>, skinGlm<false>, skinSimdMatrix, skinSimdMotor},
+                  {"skinned_vertex_reference", skinMatrix<true>, skinMotor<true>, skinGlm<true>, nullptr, nullptr}};
   for (const auto& f : families)
     for (Size s : {Size::InCache, Size::OutOfCache}) {
       const std::string prefix = std::string(f.name) + "/" + sizeName(s) + "/";
-      registerKernel(prefix + kMatrix, [s, fn = f.matrix](benchmark::State& st) { fn(st, s); });
-      registerKernel(prefix + kMotor, [s, fn = f.motor](benchmark::State& st) { fn(st, s); });
-      registerKernel(prefix + kGlm, [s, fn = f.glm](benchmark::State& st) { fn(st, s); });
-      registerKernel(prefix + kSimdMatrix, [s, fn = f.simdMatrix](benchmark::State& st) { fn(st, s); });
-      registerKernel(prefix + kSimdMotor, [s, fn = f.simdMotor](benchmark::State& st) { fn(st, s); });
+      const std::pair<const char*, Fn> sides[] = {
+          {kMatrix, f.matrix}, {kMotor, f.motor}, {kGlm, f.glm}, {kSimdMatrix, f.simdMatrix}, {kSimdMotor, f.simdMotor}};
+      for (const auto& [side, fn] : sides)
+        if (fn) registerKernel(prefix + side, [s, fn = fn](benchmark::State& st) { fn(st, s); });
     }
 }
 

@@ -19,6 +19,7 @@
 
 #include "harness/bench/bandwidth_probe.h"
 #include "harness/bench/bench_kernels.h"
+#include "harness/bench/cpu_machine.h"
 #include "harness/bench/report_bench.h"
 #include "harness/cli/command.h"
 #include "harness/process/progress.h"
@@ -119,11 +120,12 @@ std::string num(const nlohmann::json& v, const char* fmt = "%.4g") {
 void printSummary(const SummaryReporter& rep, bool withProbe) {
   const nlohmann::json pairs = report::kernelPairs({{"benchmarks", rep.benchmarks}})["pairs"];
   if (pairs.empty()) return;
+  std::printf("\nMeasured on %s (CPU ratios hold for this CPU).\n", bench::cpuMachineLine(bench::cpuMachine()).c_str());
   const char* sides[] = {"matrix", "motor", "glm", "simd_matrix", "simd_motor", "simd_affine", "lanes_motor"};
   auto ips = [](const nlohmann::json& p, const char* side) {
     return p.contains(side) ? num(p[side].value("items_per_second", nlohmann::json())) : std::string("-");
   };
-  std::printf("\nThroughput (items/s; the median of the repetitions where repeated). matrix, motor: the "
+  std::printf("Throughput (items/s; the median of the repetitions where repeated). matrix, motor: the "
               "shader source through the shim; glm: GLM's operators; simd_*: kernels/simd (Highway, "
               "target in the label); lanes_motor: the 4-lane motor product of the motor pipelines' update "
               "(pipelines/motor/gp_motors.h); motor/matrix: the shim pair; best motor / fastest matrix: each kind's "
@@ -201,6 +203,12 @@ int runBench(const std::vector<std::string>& args) {
   benchmark::Initialize(&argc, argv.data());
   if (benchmark::ReportUnrecognizedArguments(argc, argv.data())) return 2;
 
+  // The CPU the run measures, in the JSON's context (a report reading it later names it).
+  const bench::CpuMachine machine = bench::cpuMachine();
+  benchmark::AddCustomContext("cpu_model", machine.cpu);
+  benchmark::AddCustomContext("logical_cores", std::to_string(machine.logicalCores));
+  benchmark::AddCustomContext("simd_target", machine.simdTarget);
+
   bench::registerBandwidthBenchmarks();
   bench::registerTransformBenchmarks();
   bench::registerVertexBenchmarks();
@@ -228,3 +236,8 @@ int runBench(const std::vector<std::string>& args) {
 MB_COMMAND(bench, "bench", "[--out FILE] [--benchmark_filter=REGEX] [--benchmark_*...]",
            "Google Benchmark: matrix vs motor (vs glm) kernels in and out of cache, STREAM probe",
            mb::runBench);
+MB_COMMAND_HELP(bench, "bench",
+               "  --out FILE               Google Benchmark JSON (report --bench-json reads it)\n"
+               "  --benchmark_filter=REGEX  only the kernels matching (e.g. ^compose/)\n"
+               "  --benchmark_*             any other Google Benchmark option (min time, repetitions, colour)\n",
+                "motorbench bench --benchmark_filter=^compose/ --out out/bench.json", false);

@@ -20,7 +20,10 @@
 #include "harness/check/check_report.h"
 #include "harness/cli/command.h"
 #include "harness/check/golden.h"
+#include "harness/check/golden_device.h"
+#include "harness/render/gpu_option.h"
 #include "harness/render/render_frame.h"
+#include "pipelines/gl/context.h"
 #include "pipelines/gl/shader_source.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/curved_space.h"
@@ -41,6 +44,10 @@ std::string joined(const std::vector<std::string>& v) {
 struct Selection {
   std::vector<std::string> scenes, pipelines;
   std::string goldenDir, outDir;
+  // The device's goldens (golden_device.h): which folder goldenDir is, and the llvmpipe one.
+  golden::GoldenChoice goldens;
+  std::string llvmpipeGoldenDir;
+  std::string renderer, drawnOn;  // GL_RENDERER; the same with the device (describeGl)
   Shard shard;  // --shard I/N: this run checks its part of `scenes` only
 };
 
@@ -73,7 +80,9 @@ void checkOne(const Scene& scene, const golden::Manifest& manifest,
     run.glRenderer = frame->glRenderer;
     run.glVersion = frame->glVersion;
   }
-  const bool exact = golden::rendererMatches(*entry, frame->glRenderer, frame->glVersion);
+  // A device compared with llvmpipe's goldens is never judged by the exact thresholds.
+  const bool exact = sel.goldens.source != golden::GoldenSource::LlvmpipeForDevice &&
+                     golden::rendererMatches(*entry, frame->glRenderer, frame->glVersion);
   const golden::Level& level = exact ? thresholds.exact : thresholds.portable;
   item.level = exact ? "exact" : "portable";
   if (!exact) {
@@ -124,10 +133,15 @@ int check(const Selection& sel) {
   }
   CheckRun run;
   run.goldenDir = sel.goldenDir;
+  const bool againstLlvmpipe = sel.goldens.source == golden::GoldenSource::LlvmpipeForDevice;
+  if (againstLlvmpipe)
+    run.notes.push_back(golden::describeChoice(sel.goldens, sel.llvmpipeGoldenDir, sel.renderer, sel.drawnOn));
   run.shaderDir = gl::shaderDir();
   run.shard = {{"index", sel.shard.index}, {"count", sel.shard.count}, {"inputs", sel.scenes}};
   std::vector<std::string> mine;
   for (size_t k : shardPositions(sel.scenes, sel.shard)) mine.push_back(sel.scenes[k]);
+  if (const std::string note = emptyShardNote(sel.shard, sel.scenes.size(), mine.size()); !note.empty())
+    commandNotes("check", {note});
   std::set<std::string> rendererNotes, planned;
   Progress progress("check", "scenes checked", mine.size(), false);
   for (const std::string& name : mine) {
@@ -169,6 +183,11 @@ int check(const Selection& sel) {
   for (const std::string& n : run.notes) std::printf("warning: %s\n", n.c_str());
   std::printf("check: %zu images: %d passed, %d warned, %d failed, %d errors\n", run.items.size(),
               counts[0], counts[1], counts[2], counts[3]);
+  if (againstLlvmpipe && counts[2] > 0)
+    std::printf("note: %d of %zu images exceed the device-tolerant thresholds against llvmpipe's goldens: a device "
+                "difference or a real regression; look at the diffs in summary.html, and where this device is right "
+                "keep its own goldens with `check --update` on it\n",
+                counts[2], run.items.size());
   if (!written) return commandError("check", written.error());
   std::printf("report: %s\n", (fs::path(sel.outDir) / "summary.html").string().c_str());
   if (counts[3] > 0) return 2;
@@ -179,10 +198,16 @@ int update(const Selection& sel) {
   auto fail = [](const std::string& message) { return commandError("check --update", message); };
   const std::string manifestPath = (fs::path(sel.goldenDir) / golden::kManifest).string();
   golden::Manifest old;
-  if (fs::exists(manifestPath)) {  // keep its thresholds and the images outside the selection
-    auto m = golden::readManifest(manifestPath);
+  // Keep its thresholds and the images outside the selection; a device's first goldens start
+  // from the thresholds of llvmpipe's.
+  const std::string thresholdsFrom = fs::exists(manifestPath) || sel.llvmpipeGoldenDir.empty()
+                                         ? manifestPath
+                                         : (fs::path(sel.llvmpipeGoldenDir) / golden::kManifest).string();
+  if (fs::exists(thresholdsFrom)) {
+    auto m = golden::readManifest(thresholdsFrom);
     if (!m) return fail(m.error() + " (fix or delete it; --update does not discard thresholds silently)");
     old = m.take();
+    if (thresholdsFrom != manifestPath) old.entries.clear();
   }
   std::error_code ec;
   fs::create_directories(sel.goldenDir, ec);
@@ -241,10 +266,11 @@ int update(const Selection& sel) {
 }
 
 int runCheck(const std::vector<std::string>& argv) {
-  Args args(argv, {{"golden", "scenes", "pipelines", "out", "o", "shader-dir", "shard"}, {"update"}, {}});
+  Args args(argv, {{"golden", "scenes", "pipelines", "out", "o", "shader-dir", "shard", "gpu"}, {"update"}, {}});
   auto fail = [](const std::string& message) { return commandError("check", message); };
   if (!args.error().empty()) return fail(args.error());
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
+  if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());
   Selection sel;
   sel.goldenDir = args.get("golden", "tests/golden");
   sel.outDir = args.get("out", args.get("o", "out/check"));
@@ -286,6 +312,26 @@ int runCheck(const std::vector<std::string>& argv) {
     return fail("tests/golden/" + std::string(golden::kManifest) + " not found under " + fs::current_path().string() +
                 ": run check from the repository root, or pass --golden DIR (the folder holding " +
                 golden::kManifest + ", e.g. --golden /path/to/motorbench/tests/golden)");
+  // A --golden folder without golden.json is the wrong folder: --update there would make a golden
+  // set of this renderer's own images, so the check would compare the renderer with itself.
+  if (args.has("golden") && !args.has("update") && !fs::exists(fs::path(sel.goldenDir) / golden::kManifest))
+    return fail("--golden " + sel.goldenDir + ": not a golden folder (no " + golden::kManifest +
+                " there). A golden folder holds " + golden::kManifest +
+                " (the thresholds and the list of images with the GL renderer that made them) and one PNG per "
+                "scene, pose and pipeline, e.g. tests/golden of the motorbench repository; pass that folder. "
+                "Do not make one here with --update: goldens rendered by the renderer under test would "
+                "compare it with itself");
+  // Which goldens this device is checked against (or, updating, writes): golden_device.h.
+  auto ctx = gl::sharedContext();
+  if (!ctx) return fail(ctx.error());
+  sel.renderer = (*ctx)->info().renderer;
+  sel.drawnOn = describeGl((*ctx)->info());
+  sel.llvmpipeGoldenDir = sel.goldenDir;
+  const bool devicePresent =
+      fs::exists(fs::path(golden::deviceGoldenDir(sel.goldenDir, sel.renderer)) / golden::kManifest);
+  sel.goldens = golden::chooseGoldens(sel.goldenDir, sel.renderer, devicePresent, args.has("update"));
+  sel.goldenDir = sel.goldens.dir;
+  std::printf("%s\n", golden::describeChoice(sel.goldens, sel.llvmpipeGoldenDir, sel.renderer, sel.drawnOn).c_str());
   return args.has("update") ? update(sel) : check(sel);
 }
 
@@ -293,6 +339,16 @@ int runCheck(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(check, "check",
-           "[--golden DIR] [--scenes a,b] [--pipelines p,q] [--out DIR] [--shader-dir DIR] [--update] [--shard I/N]",
+           "[--golden DIR] [--scenes a,b] [--pipelines p,q] [--out DIR] [--shader-dir DIR] [--update] [--shard I/N] "
+           "[--gpu auto|llvmpipe|N]",
            "compare renders with the golden images (exit 1 on a threshold, 2 on a missing golden)",
            mb::runCheck);
+MB_COMMAND_HELP(check, "check",
+               "  --golden DIR       the golden folder: golden.json + one PNG per scene, pose and pipeline\n"
+               "                     (default tests/golden from the repository root)\n"
+               "  --scenes a,b       only these scenes;  --pipelines p,q  only these pipelines\n"
+               "  --out DIR          actual, expected and diff images of failures, summary.html, check.json\n"
+               "  --update           re-render the selection into --golden and rewrite golden.json\n"
+               "  --shader-dir DIR   run against a modified copy of shaders/\n"
+               "  --shard I/N        only every N-th golden from the I-th\n",
+                "motorbench check --scenes normal_torus --out out/check", true);

@@ -14,9 +14,11 @@
 #include "harness/claims/claims_layout.h"
 #include "harness/claims/claims_sources.h"
 #include "harness/cli/command.h"
+#include "harness/cli/output_paths.h"
 #include "harness/bench/report_bench.h"
 #include "harness/document/report_format.h"
 #include "harness/report/report_machine.h"
+#include "harness/render/gpu_option.h"
 #include "harness/render/render_frame.h"
 #include "harness/timing/report_timing.h"
 #include "pipelines/pipeline.h"
@@ -150,10 +152,16 @@ claims::SpeedInputs speedInputs(const Args& args, json& sources) {
 }
 
 int runClaims(const std::vector<std::string>& argv) {
-  const Args args(argv, {{"o", "output", "json", "report", "bench-json", "corpus", "frames"}, {"no-run"}, {}});
+  const Args args(argv, {{"o", "output", "json", "report", "bench-json", "corpus", "frames", "gpu"}, {"no-run"}, {}});
   if (!args.error().empty()) return fail(args.error());
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
+  if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());  // the report it runs inherits MB_GPU
   args.integer("frames", 20, 1, 100000);  // checked here; speedInputs reads it
+  // Both outputs are checked (folders created) before minutes of measuring.
+  for (const char* key : {"json", "o", "output"})
+    if (auto path = args.get(key))
+      if (Status ok = prepareOutputFile(std::string(key) == "o" ? "-o" : std::string("--") + key, *path); !ok)
+        return fail(ok.error());
   const std::string corpus = args.get("corpus", "../shared/corpus");
   json sources = {{"opCounts", "shaders/pga.glsl, shaders/matrix_transform.glsl, shaders/motor_transform.glsl "
                                 "executed on mb::Counted; SPIR-V via glslangValidator + spirv-opt"},
@@ -215,6 +223,20 @@ int runClaims(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(claims, "claims",
-           "[-o FILE] [--json FILE] [--report report.json] [--bench-json FILE] [--corpus DIR] [--frames N] [--no-run]",
+           "[-o FILE] [--json FILE] [--report report.json] [--bench-json FILE] [--corpus DIR] [--frames N] [--no-run] [--gpu auto|llvmpipe|N]",
            "every quantitative claim of the paper: paper value, measured value, method, verdict (Markdown/JSON)",
            mb::runClaims);
+MB_COMMAND_HELP(claims, "claims",
+               "  -o FILE            claims.md (default: stdout);  --json FILE  claims.json\n"
+               "                     (missing folders are created; both checked before the work)\n"
+               "  --report FILE      kernel ratios and frame timings from a report.json\n"
+               "  --bench-json FILE  kernel ratios from a `motorbench bench --out` file\n"
+               "  --corpus DIR       the real glTF files for the statistics and skinning rows (default ../shared/corpus)\n"
+               "  --frames N         frames per pipeline when claims times scenes itself (default 20)\n"
+               "  --no-run           run no benchmark and time no frame: speed rows come only from --report or\n"
+               "                     --bench-json (else \"not measurable here\"). Everything else is still measured:\n"
+               "                     op counts (shim and SPIR-V, glslangValidator + spirv-opt per shader variant),\n"
+               "                     uploads of the built-in scenes, conversions, the handedness rule over every\n"
+               "                     built-in frame, blending, the corpus statistics and the curved-space rows;\n"
+               "                     this takes minutes (3 min on a 2-core machine), printed step by step on stderr.\n",
+                "motorbench claims --no-run --json out/claims.json -o out/claims.md", false);

@@ -4,36 +4,48 @@
 // thresholds are exceeded. Units: --fail and --hardfail are channel differences as a fraction
 // of full scale (0..1; 1/255 = one byte step), --failpercent a percentage of pixels (0..100).
 // Only the thresholds given judge: --hardfail alone fails only on the largest difference.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
 #include "harness/cli/command.h"
+#include "harness/cli/output_paths.h"
 #include "harness/options/args.h"
 #include "harness/render/counter_glossary.h"
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
+#include "harness/report/report_sources.h"
+#include "pipelines/scene/scene_stats.h"
 
 namespace mb {
 namespace {
 
-std::string summaryLine(const std::string& scene, const std::string& a, const std::string& b,
-                        const ImageMetrics& m, const Verdict* v) {
-  char psnr[32];
-  if (m.rmse == 0.0) std::snprintf(psnr, sizeof psnr, "inf");
-  else std::snprintf(psnr, sizeof psnr, "%.2f", m.psnr);
-  char line[512];
-  std::snprintf(line, sizeof line,
-                "%s: %s vs %s %dx%d: PSNR %s dB, RMSE %.6f, max %.0f/255 at (%d,%d), "
-                ">1/255 %.3f%%, >2/255 %.3f%%, >4/255 %.3f%%",
-                scene.c_str(), a.c_str(), b.c_str(), m.width, m.height, psnr, m.rmse,
-                std::round(m.maxError * 255.0), m.maxX, m.maxY, 100 * m.fractionOver1,
-                100 * m.fractionOver2, 100 * m.fractionOver4);
-  std::string s = line;
-  if (!v) s += " -> no threshold given, not judged (--fail/--failpercent/--hardfail judge; exit 0)";
-  else s += v->failed ? " -> FAIL (" + v->reason + ")" : " -> PASS (within the thresholds given)";
-  return s;
+// The measured differences, one quantity per line, every channel difference in both units
+// (byte steps /255 and fraction of full scale); "identical" when every byte agrees (as the report).
+std::vector<std::string> metricLines(const ImageMetrics& m) {
+  if (m.rmse == 0.0) return {"identical: every byte of the two images agrees"};
+  char b[3][256];
+  std::snprintf(b[0], sizeof b[0], "PSNR %.2f dB; RMSE %s; mean error %s", m.psnr, differenceText(m.rmse).c_str(),
+                differenceText(m.meanError).c_str());
+  static const char* const kChannel[] = {"R", "G", "B", "A"};
+  std::snprintf(b[1], sizeof b[1], "max error %s at (%d,%d) channel %s", differenceText(m.maxError).c_str(), m.maxX,
+                m.maxY, kChannel[std::clamp(m.maxChannel, 0, 3)]);
+  std::snprintf(b[2], sizeof b[2], "pixels off by more than 1/255: %.3f %%, 2/255: %.3f %%, 4/255: %.3f %%",
+                100 * m.fractionOver1, 100 * m.fractionOver2, 100 * m.fractionOver4);
+  return {b[0], b[1], b[2]};
+}
+
+// "matrix blends joints with linear blend skinning, motor blends joint motors": set when the
+// scene draws a skinned mesh and the two pipelines blend joints by different methods.
+std::string skinningMethodNote(const Scene& scene, const std::string& a, const std::string& b) {
+  const std::string ma = report::skinBlendOf(a), mbl = report::skinBlendOf(b);
+  if (computeFileStats(scene).skinnedPrimitives == 0 || ma.empty() || mbl.empty() || ma == mbl) return "";
+  return "skinned scene: " + a + " blends joints by " + ma + ", " + b + " by " + mbl +
+         "; the two methods pose a skinned mesh differently by design (LBS loses volume where joints turn far "
+         "apart), so differences there are the methods' expected difference, not an error (motorbench report "
+         "measures them apart: summary.skinningMethodImages)";
 }
 
 int runCompare(const std::vector<std::string>& argv) {
@@ -45,6 +57,7 @@ int runCompare(const std::vector<std::string>& argv) {
     const std::vector<std::string> given = splitList(args.get("pipelines", ""));
     if (given.size() != 2) return fail("--pipelines needs exactly two names, e.g. matrix,motor");
     if (given[0] == given[1]) return fail("--pipelines " + given[0] + "," + given[1] + ": two different pipelines");
+    if (Status ok = checkPipelineNames("--pipelines", given); !ok) return fail(ok.error());
   }
   const bool thresholdsGiven = args.has("fail") || args.has("failpercent") || args.has("hardfail");
   Thresholds t;
@@ -59,6 +72,12 @@ int runCompare(const std::vector<std::string>& argv) {
     std::error_code ec;
     if (!dir.empty() && fs::exists(dir, ec) && !fs::is_directory(dir, ec))
       return fail("-o " + dir + ": is a file; compare writes a folder (images, diff, metrics.json)");
+    // The scene's name first (cheap), then the folder: created now, before the renders.
+    if (args.positional().size() == 1)
+      if (Status ok = checkSceneSpec(args.positional()[0]); !ok) return fail(ok.error());
+    if (!dir.empty())
+      if (Status ok = prepareOutputFolder("-o", dir, "A.png, B.png, diff.png, diff_legend.png, metrics.json"); !ok)
+        return fail(ok.error());
   }
   auto cmd = parseSceneCommand(args, "DIR");
   if (!cmd) return fail(cmd.error());
@@ -81,9 +100,13 @@ int runCompare(const std::vector<std::string>& argv) {
     if (!frame) return fail(frame.error());
     frames.push_back(frame.take());
   }
+  commandNotes("compare", {"drawn on " + describeGl(frames[0].gl) + " (both pipelines: one process, one device)"});
   auto metrics = compareImages(frames[0].image, frames[1].image);
   if (!metrics) return fail(metrics.error());
   Verdict verdict = judge(frames[0].image, frames[1].image, t);
+  const int64_t drawn[2] = {drawnPixels(frames[0].image), drawnPixels(frames[1].image)};
+  const std::string skinning = skinningMethodNote(scene, names[0], names[1]);
+  const bool nothingDrawn = drawn[0] == 0 && drawn[1] == 0;
 
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -114,27 +137,50 @@ int runCompare(const std::vector<std::string>& argv) {
                                          {"time", settings.anim.time}}},
       {"loaderFallbacks", loaderFallbackJson(scene)},
       {"view", toJson(frames[0].view)},
-      {"gl", {{"renderer", frames[0].glRenderer}, {"version", frames[0].glVersion},
-              {"backend", frames[0].glBackend}}},
+      {"gl", toJson(frames[0].gl)},  // both images: one device (the equivalence figures)
       {"metrics", toJson(*metrics)},
+      {"drawnPixels", {{names[0], drawn[0]}, {names[1], drawn[1]}, {"total", int64_t(metrics->width) * metrics->height}}},
+      {"skinningMethods", {{names[0], report::skinBlendOf(names[0])}, {names[1], report::skinBlendOf(names[1])},
+                           {"differByDesign", !skinning.empty()}}},
       {"thresholds", {{"applied", thresholdsGiven},
                       {"units", "fail, hardfail: channel difference / 255 (0..1); failpercent: % of pixels"},
                       {"fail", t.fail},
                       {"failpercent", t.failPercent},
                       {"hardfail", std::isinf(t.hardFail) ? nlohmann::json(nullptr)
                                                           : nlohmann::json(t.hardFail)}}},
-      {"verdict", {{"judged", thresholdsGiven},
-                   {"text", !thresholdsGiven ? "no threshold given" : verdict.failed ? "fail" : "pass"},
-                   {"failed", thresholdsGiven && verdict.failed},
+      {"verdict", {{"judged", thresholdsGiven && !nothingDrawn},
+                   {"text", nothingDrawn ? "nothing drawn" : !thresholdsGiven ? "no threshold given" : verdict.failed ? "fail" : "pass"},
+                   {"failed", nothingDrawn || (thresholdsGiven && verdict.failed)},
                    {"failPercent", verdict.failPercent},
-                   {"reason", thresholdsGiven ? nlohmann::json(verdict.reason) : nlohmann::json(nullptr)}}},
+                   {"reason", nothingDrawn ? nlohmann::json("neither image drew any pixel")
+                              : thresholdsGiven ? nlohmann::json(verdict.reason) : nlohmann::json(nullptr)}}},
       {"stats", {toJson(frames[0].stats), toJson(frames[1].stats)}}};  // in --pipelines order
   std::string jsonPath = (fs::path(dir) / "metrics.json").string();
   std::ofstream out(jsonPath);
   out << j.dump(2) << "\n";
   if (!out.good()) return fail(jsonPath + ": write failed");
-  std::printf("%s\n", summaryLine(scene.source, names[0], names[1], *metrics,
-                                  thresholdsGiven ? &verdict : nullptr).c_str());
+  // What was measured, one line each, then the verdict line.
+  std::printf("%s: %s vs %s, %dx%d\n", scene.source.c_str(), names[0].c_str(), names[1].c_str(), metrics->width,
+              metrics->height);
+  std::printf("  drawn pixels (not background): %s %lld, %s %lld of %lld\n", names[0].c_str(), (long long)drawn[0],
+              names[1].c_str(), (long long)drawn[1], (long long)metrics->width * metrics->height);
+  for (const std::string& line : metricLines(*metrics)) std::printf("  %s\n", line.c_str());
+  if (!skinning.empty()) std::printf("  note: %s\n", skinning.c_str());
+  // Two background-only frames agree trivially: nothing was compared.
+  if (nothingDrawn) {
+    std::printf("%s: %s vs %s -> NOT COMPARED\n", scene.source.c_str(), names[0].c_str(), names[1].c_str());
+    return fail("neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are background only: the " +
+                "scene is off screen, empty or scaled to zero at this pose); nothing to compare, so no PASS");
+  }
+  if (const double most = double(std::max(drawn[0], drawn[1])); std::abs(double(drawn[0] - drawn[1])) > 0.01 * most)
+    commandNotes("compare", {"warning: the two pipelines drew different numbers of pixels (" + names[0] + " " +
+                             std::to_string(drawn[0]) + ", " + names[1] + " " + std::to_string(drawn[1]) +
+                             ": more than 1 % apart): they did not draw the same shape"});
+  std::string verdictText = " -> no threshold given, not judged (--fail/--failpercent/--hardfail judge; exit 0)";
+  if (thresholdsGiven)
+    verdictText = verdict.failed ? " -> FAIL (" + verdict.reason + (skinning.empty() ? "" : "; the skinning methods differ by design, see the note") + ")"
+                                 : " -> PASS (within the thresholds given)";
+  std::printf("%s: %s vs %s%s\n", scene.source.c_str(), names[0].c_str(), names[1].c_str(), verdictText.c_str());
   return thresholdsGiven && verdict.failed ? 1 : 0;
 }
 
@@ -143,7 +189,18 @@ int runCompare(const std::vector<std::string>& argv) {
 
 MB_COMMAND(compare, "compare",
            "SCENE [--pipelines matrix,motor] [--anim A] [--time T] [--anim2 B --time2 T2 --blend W] "
-           "[--camera C] [--size WxH] [--instances N] [--fail F(0..1)] [--failpercent P(0..100)] [--hardfail H(0..1)] -o DIR",
+           "[--camera C] [--size WxH] [--instances N] [--fail F(0..1)] [--failpercent P(0..100)] [--hardfail H(0..1)] "
+           "[--gpu auto|llvmpipe|N] -o DIR",
            "render a scene with two pipelines; write both images, diff.png, diff_legend.png and "
            "metrics.json; exit 1 when a threshold given is exceeded (F, H: channel difference / 255)",
            mb::runCompare);
+MB_COMMAND_HELP(compare, "compare",
+               "  SCENE              a .gltf/.glb file or a built-in scene name\n"
+               "  -o, --output DIR   a folder (created): A.png, B.png, diff.png, diff_legend.png, metrics.json\n"
+               "  --pipelines A,B    the two pipelines (default matrix,motor; curved scenes: their space's pair)\n"
+               "  --fail F           a channel difference (fraction of full scale, 0..1; 1/255 = one byte step)\n"
+               "  --failpercent P    % of pixels (0..100) allowed over F\n"
+               "  --hardfail H       the largest channel difference allowed anywhere (0..1)\n"
+               "  --anim A, --time T, --anim2 B, --time2 T2, --blend W, --camera C, --size WxH   as render\n"
+               "  Exit 0 pass (or not judged), 1 a threshold exceeded, 2 an error or nothing drawn in either image.\n",
+                "motorbench compare textured_box --failpercent 0.1 -o out/box", true);

@@ -59,3 +59,7 @@ int runDrift(const std::vector<std::string>& argv) {
 MB_COMMAND(drift, "drift", "[--steps N] [--json FILE]",
            "curved-space camera drift: matrix vs motor after N float steps, raw and renormalised",
            mb::runDrift);
+MB_COMMAND_HELP(drift, "drift",
+               "  --steps N          camera steps (default 1000000)\n"
+               "  --json FILE        the result as JSON\n",
+                "motorbench drift --steps 10000", false);

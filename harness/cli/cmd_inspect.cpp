@@ -13,6 +13,7 @@
 #include "harness/options/shard.h"
 #include "harness/report/report_inputs.h"
 #include "harness/cli/command.h"
+#include "harness/cli/output_paths.h"
 #include "harness/render/frame_options.h"
 #include "harness/render/scene_inputs.h"
 #include "pipelines/scene/builtin_scenes.h"
@@ -91,7 +92,8 @@ void printAggregate(const nlohmann::json& a) {
   auto pct = [&](const char* count) {
     int n = a[count];
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%d/%d files (%.1f %%)", n, loaded, loaded ? 100.0 * n / loaded : 0.0);
+    if (loaded == 0) return std::string("- (no file loaded)");
+    std::snprintf(buf, sizeof buf, "%d/%d files (%.1f %%)", n, loaded, 100.0 * n / loaded);
     return std::string(buf);
   };
   std::printf("\naggregate over %d files: %d loaded, %d failed\n", int(a["files"]), loaded, int(a["failed"]));
@@ -124,6 +126,11 @@ int runInspect(const std::vector<std::string>& argv) {
     }
     shard = *parsed;
   }
+  if (auto path = args.get("json"))
+    if (mb::Status ok = mb::prepareOutputFile("--json", *path); !ok) {
+      std::fprintf(stderr, "motorbench inspect: error: %s\n", ok.error().c_str());
+      return 2;
+    }
   for (const std::string& w : mb::emptyInputWarnings(args.positional()))
     std::fprintf(stderr, "motorbench inspect: warning: %s\n", w.c_str());
   const std::vector<std::string> all = expand(args.positional());
@@ -131,6 +138,8 @@ int runInspect(const std::vector<std::string>& argv) {
   nlohmann::json files = nlohmann::json::array();
   int failed = 0;
   const std::vector<size_t> mine = mb::shardPositions(all, shard);
+  if (const std::string note = mb::emptyShardNote(shard, all.size(), mine.size()); !note.empty())
+    std::fprintf(stderr, "motorbench inspect: %s\n", note.c_str());
   for (size_t k : mine) {
     const std::string& file = all[k];
     mb::Status spec = mb::checkSceneSpec(file);  // "no such file, and not a built-in (built-in: ...)"
@@ -174,3 +183,8 @@ MB_COMMAND(inspect, "inspect", "FILE|DIR|BUILTIN... [--json FILE] [--shard I/N]"
            "glTF statistics: geometry, skins, animations (name, duration, channels), cameras, scale "
            "classes, unsupported features, fallbacks; exit 1 when any input failed to load",
            runInspect);
+MB_COMMAND_HELP(inspect, "inspect",
+               "  FILE|DIR|BUILTIN...  files, folders (searched for .gltf/.glb) or built-in scene names\n"
+               "  --json FILE        everything as JSON (missing folders are created; checked before the work)\n"
+               "  --shard I/N        only every N-th input from the I-th (merge puts shards together)\n",
+                "motorbench inspect skinned_tube crowd --json out/inspect.json", false);

@@ -12,6 +12,7 @@
 
 #include "harness/check/check_merge.h"
 #include "harness/cli/command.h"
+#include "harness/cli/output_paths.h"
 #include "harness/options/args.h"
 #include "harness/options/shard.h"
 #include "harness/report/report_merge.h"
@@ -53,7 +54,7 @@ int mergeInspectRuns(const std::vector<std::string>& inputs, const std::string& 
                  {"shard", {{"count", parts[0].count}, {"inputs", parts[0].inputs}, {"merged", inputs}}}};
   std::ofstream o(out);
   o << merged.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
-  if (!o.flush()) return fail(out + ": cannot write");
+  if (!o.flush()) return fail(out + ": cannot write the merged JSON file");
   std::printf("merge: %d shard(s), %zu file(s), %d failed -> %s\n", parts[0].count, files.size(), failed, out.c_str());
   return failed ? 1 : 0;
 }
@@ -65,23 +66,32 @@ int runMerge(const std::vector<std::string>& argv) {
   const std::vector<std::string>& inputs = args.positional();
   const std::string out = args.get("o", args.get("output", ""));
   if (inputs.empty() || out.empty()) return fail("expected shard outputs and -o OUT");
+  std::error_code ec;
+  for (const std::string& in : inputs)
+    if (!fs::exists(in, ec)) return fail(in + ": not found (give the shard outputs: report or check folders, or inspect --json files)");
   auto all = [&](auto pred) {
     for (const std::string& in : inputs)
       if (!pred(fs::path(in))) return false;
     return true;
   };
-  std::error_code ec;
   if (all([&](const fs::path& p) { return fs::exists(p / "report.json", ec); })) {
+    if (Status ok = prepareOutputFolder("-o", out, "the merged report: report.json, report.md, report.html, images/"); !ok)
+      return fail(ok.error());
     report::Options o;
     o.outDir = out;
     o.plots = !args.has("no-plots");
     o.python = args.get("python", "");
     return report::mergeReports(inputs, o);
   }
-  if (all([&](const fs::path& p) { return fs::exists(p / "check.json", ec); }))
+  if (all([&](const fs::path& p) { return fs::exists(p / "check.json", ec); })) {
+    if (Status ok = prepareOutputFolder("-o", out, "the merged check.json and summary"); !ok) return fail(ok.error());
     return mergeCheckRuns(inputs, out);
-  if (all([&](const fs::path& p) { return fs::is_regular_file(p, ec) && p.extension() == ".json"; }))
+  }
+  if (all([&](const fs::path& p) { return fs::is_regular_file(p, ec) && p.extension() == ".json"; })) {
+    if (Status ok = prepareOutputFile("-o", out); !ok)
+      return fail(ok.error() + " (merging inspect --json files writes one JSON file)");
     return mergeInspectRuns(inputs, out);
+  }
   return fail("every input must be a report folder (report.json), a check folder (check.json) or an "
               "inspect --json file, all of one kind");
 }
@@ -92,3 +102,8 @@ int runMerge(const std::vector<std::string>& argv) {
 MB_COMMAND(merge, "merge", "DIR|FILE... -o OUT [--no-plots] [--python P]",
            "combine the outputs of --shard I/N runs of report, check or inspect into one",
            mb::runMerge);
+MB_COMMAND_HELP(merge, "merge",
+               "  DIR|FILE...        the shard outputs: report folders, check folders, or inspect --json files\n"
+               "  -o, --output OUT   a report or check folder, or one inspect JSON file (missing folders are created)\n"
+               "  --no-plots         no plots for a merged report;  --python P  the python with matplotlib\n",
+                "motorbench merge out/shards/1 out/shards/2 out/shards/3 -o out/merged", false);

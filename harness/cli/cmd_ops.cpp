@@ -10,7 +10,9 @@
 #include "harness/cli/command.h"
 #include "harness/ops/op_count.h"
 #include "harness/ops/op_kernels.h"
+#include "harness/isa/isa_ops.h"
 #include "harness/ops/ops_vertex.h"
+#include "harness/ops/pipeline_ops.h"
 
 namespace {
 
@@ -39,6 +41,15 @@ int runOps(const std::vector<std::string>& argv) {
   const mb::opsv::VertexOps perVertex = mb::opsv::measureVertexOps();
   std::printf("\n");
   std::fputs(mb::opsv::formatVertexOps(perVertex).c_str(), stdout);
+  const std::vector<mb::opsv::PipelineOps> perPipeline = mb::opsv::pipelineOps(perVertex);
+  std::printf("\n");
+  std::fputs(mb::opsv::formatPipelineOps(perPipeline).c_str(), stdout);
+
+  // The same variants as AMD's compiler builds them (harness/isa), when RADV is installed.
+  std::fflush(stdout);
+  const auto isa = mb::isa::runIsa({});
+  if (isa) std::fputs(mb::isa::formatIsaBesideOps(perVertex, *isa).c_str(), stdout);
+  else std::printf("\nNo ISA columns: %s\n", isa.error().c_str());
 
   if (const auto path = args.get("json")) {
     nlohmann::json j = {
@@ -48,6 +59,8 @@ int runOps(const std::vector<std::string>& argv) {
         {"source", "shaders/pga.glsl"},
         {"kernels", mb::ops::toJson(rows)},
         {"per_vertex", mb::opsv::toJson(perVertex)},
+        {"per_pipeline", mb::opsv::toJson(perPipeline)},
+        {"isa", isa ? mb::isa::isaBesideOpsJson(perVertex, *isa) : nlohmann::json{{"error", isa.error()}}},
     };
     std::ofstream out(*path);
     if (!out || !(out << j.dump(2) << "\n")) {
@@ -63,3 +76,6 @@ int runOps(const std::vector<std::string>& argv) {
 MB_COMMAND(ops, "ops", "[--json FILE]",
            "count mul/add/div/sqrt per PGA kernel and matrix op, next to the paper's claims; ops per "
            "vertex of each pipeline, counted and from SPIR-V", runOps);
+MB_COMMAND_HELP(ops, "ops",
+               "  --json FILE        every count as JSON\n",
+                "motorbench ops --json out/ops.json", false);

@@ -10,6 +10,8 @@
 
 #include "harness/options/args.h"
 #include "harness/cli/command.h"
+#include "harness/render/gpu_option.h"
+#include "harness/cli/output_paths.h"
 #include "harness/render/render_frame.h"
 #include "harness/render/scene_inputs.h"
 #include "harness/document/report_format.h"
@@ -68,11 +70,13 @@ int runWorker(const Args& args, const report::Options& o) {
 int runReportCommand(const std::vector<std::string>& argv) {
   const Args args(argv, {{"o", "output", "jobs", "size", "frames", "bench-json", "bench-min-time", "pipelines",
                           "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
-                          "worker-index", "worker-total", "shard", "anim", "worker-anims", "instances"},
+                          "worker-index", "worker-total", "shard", "anim", "worker-anims", "instances", "gpu",
+                          "isa-json"},
                          {"no-bench", "no-plots"},
                          {},
                          {"anim"}});
   if (!args.error().empty()) return fail(args.error());
+  if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());  // workers inherit MB_GPU
   report::Options o;
   o.scenes = args.positional();
   o.outDir = args.get("o", args.get("output", ""));
@@ -118,6 +122,16 @@ int runReportCommand(const std::vector<std::string>& argv) {
     if (nlohmann::json::parse(in, nullptr, false).is_discarded())
       return fail("--bench-json " + o.benchJson + ": not JSON (expected a `motorbench bench --out` file)");
   }
+  if (auto isa = args.get("isa-json")) {
+    std::ifstream in(*isa);
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (!in.is_open()) return fail("--isa-json " + *isa + ": no such file (write one with `motorbench isa --json FILE`)");
+    if (j.is_discarded() || !j.is_object() || j.value("schema", "") != "motorbench-isa/1")
+      return fail("--isa-json " + *isa + ": not a `motorbench isa --json` file (schema motorbench-isa/1)");
+    o.isaJson = *isa;
+  }
+  if (Status ok = prepareOutputFolder("-o", o.outDir, "report.json, report.md, report.html, images/, plots/"); !ok)
+    return fail(ok.error());
   for (const std::string& w : emptyInputWarnings(o.scenes)) std::fprintf(stderr, "motorbench report: warning: %s\n", w.c_str());
   return report::runReport(o);
 }
@@ -128,7 +142,20 @@ int runReportCommand(const std::vector<std::string>& argv) {
 MB_COMMAND(report, "report",
            "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--no-bench | "
            "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--anim [SCENE:]NAME|INDEX|all,...] "
-           "[--time-size WxH] [--instances N] [--no-plots] [--shard I/N]",
+           "[--time-size WxH] [--instances N] [--no-plots] [--shard I/N] [--gpu auto|llvmpipe|N] [--isa-json FILE]",
            "measure scenes with every pipeline of their space: images, diffs, memory, ops, timing, kernel "
            "ratios -> report.json/.md/.html",
            mb::runReportCommand);
+MB_COMMAND_HELP(report, "report",
+               "  SCENE|FILE|DIR...  scenes (default: the built-in ones, then s3_tiling and h3_tiling)\n"
+               "  -o, --output DIR   the report folder: report.json/.md/.html, images/, plots/\n"
+               "  --jobs N           scenes measured at once (default 1)\n"
+               "  --size WxH         image size (default 256x192);  --time-size WxH  timing viewport\n"
+               "  --frames N         timed frames per pipeline (0: no timing)\n"
+               "  --no-bench | --bench-json FILE   skip the kernel ratios, or read them from `bench --out`\n"
+               "  --bench-min-time S Google Benchmark min time per kernel (default 0.05)\n"
+               "  --pipelines a,b    pipelines (default: every pipeline of each scene's space)\n"
+               "  --anim ITEMS       animations shown: NAME, INDEX, all or SCENE:NAME, comma-separated\n"
+               "  --no-plots         no plots;  --python P  the python with matplotlib;  --timeout S  per worker\n"
+               "  --shard I/N        only every N-th scene from the I-th (merge puts shards together)\n",
+                "motorbench report textured_box --frames 0 --no-bench -o out/report", true);

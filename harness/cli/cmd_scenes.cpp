@@ -49,3 +49,7 @@ int runScenes(const std::vector<std::string>& argv) {
 
 MB_COMMAND(scenes, "scenes", "-o DIR [NAME...]",
            "write the built-in procedural scenes as DIR/<name>.glb", runScenes);
+MB_COMMAND_HELP(scenes, "scenes",
+               "  -o DIR             the folder for DIR/<name>.glb\n"
+               "  NAME...            only these built-in scenes (default: all)\n",
+                "motorbench scenes -o out/scenes crowd", false);

@@ -20,10 +20,13 @@
 #include "harness/options/args.h"
 #include "harness/process/progress.h"
 #include "harness/cli/command.h"
+#include "harness/cli/output_paths.h"
 #include "harness/ops/patch_memory.h"
 #include "harness/timing/frame_timing.h"
+#include "harness/timing/timing_text.h"
 #include "harness/process/report_workers.h"
 #include "harness/render/frame_options.h"
+#include "harness/render/gpu_option.h"
 #include "harness/render/scene_inputs.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/gl/patch_geometry.h"
@@ -33,70 +36,13 @@
 namespace mb {
 namespace {
 
-// "median [q1-q3]" of a spread in ms, shown scaled by `scale` (1: ms, 1000: us).
-std::string cell(const timing::Spread& s, double scale = 1.0) {
-  char b[64];
-  std::snprintf(b, sizeof b, scale > 1 ? "%.2f [%.2f-%.2f]" : "%.3f [%.3f-%.3f]", s.median * scale,
-                s.q1 * scale, s.q3 * scale);
-  return b;
-}
-
-std::string ratio(double r) {
-  if (r <= 0) return "-";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3f", r);
-  return b;
-}
-
 // A worker (one scene) that runs longer than this is killed and reported as an error.
 constexpr double kWorkerTimeoutS = 3600;
 
-const char* const kRowFormat = "%-17s %-13s %-8s %-25s %-25s %7s %7s %7s  %-22s %-22s %7s\n";
-
+// One block per scene and configuration: every pipeline with its ratios to matrix and their
+// spread (harness/timing/timing_text.h).
 void printRow(const timing::ConfigTiming& c) {
-  const timing::PipelineTiming* side[2] = {nullptr, nullptr};
-  for (const auto& t : c.pipelines) {
-    // The pair of the scene's space: matrix / motor, s3_matrix / s3_motor, h3_matrix / h3_motor.
-    if (t.pipeline == "matrix" || t.pipeline.ends_with("_matrix")) side[0] = &t;
-    if (t.pipeline == "motor" || t.pipeline.ends_with("_motor")) side[1] = &t;
-  }
-  auto frame = [](const timing::PipelineTiming* t) {
-    return !t ? std::string("-") : !t->error.empty() ? "error" : cell(t->frame);
-  };
-  auto update = [](const timing::PipelineTiming* t) {
-    return !t || !t->error.empty() ? std::string("-") : cell(t->update, 1000.0);
-  };
-  const std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
-  const std::string scene = c.patchLevel ? c.scene + " N=" + std::to_string(c.patchLevel) : c.scene;
-  std::printf(kRowFormat, scene.c_str(), c.config.c_str(), size.c_str(), frame(side[0]).c_str(),
-              frame(side[1]).c_str(), ratio(c.pairedFrameRatio).c_str(), ratio(c.frameRatio).c_str(),
-              ratio(c.pairedCpuRatio).c_str(), update(side[0]).c_str(), update(side[1]).c_str(),
-              ratio(c.updateRatio).c_str());
-  for (const auto& t : c.pipelines)
-    if (!t.error.empty()) std::printf("    %s: %s\n", t.pipeline.c_str(), t.error.c_str());
-  // The update phase by phase, every pipeline (medians, us per call).
-  std::string phases;
-  for (const auto& t : c.pipelines) {
-    if (!t.error.empty()) continue;
-    char b[160];
-    std::snprintf(b, sizeof b, "%s%s %.2f/%.2f/%.2f/%.2f/%.2f", phases.empty() ? "" : "; ", t.pipeline.c_str(),
-                  1e3 * t.phases[0].median, 1e3 * t.phases[1].median, 1e3 * t.phases[2].median,
-                  1e3 * t.phases[3].median, 1e3 * t.phases[4].median);
-    phases += b;
-  }
-  if (!phases.empty())
-    std::printf("    update phases us (sampling/blending/conversion/hierarchy/palette): %s\n", phases.c_str());
-  // Vertices drawn (instances counted) per microsecond of median frame time, every pipeline.
-  std::string rates;
-  for (const auto& t : c.pipelines) {
-    if (!t.error.empty()) continue;
-    char b[96];
-    std::snprintf(b, sizeof b, "%s%s %.1f", rates.empty() ? "" : "; ", t.pipeline.c_str(), timing::verticesPerUs(t));
-    rates += b;
-  }
-  if (!rates.empty() && !c.pipelines.empty())
-    std::printf("    vertices per us of frame time (%llu drawn vertices): %s\n",
-                static_cast<unsigned long long>(c.pipelines.front().stats.drawnVertices), rates.c_str());
+  std::printf("%s\n", timing::timingBlock(c).c_str());
   std::fflush(stdout);
 }
 
@@ -166,8 +112,12 @@ int runTime(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "motorbench time: error: %s\n", m.c_str());
     return 2;
   };
-  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level", "instances"}, {}, {}});
+  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level",
+                          "instances", "gpu"},
+                         {},
+                         {}});
   if (!args.error().empty()) return fail(args.error());
+  if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());  // workers inherit MB_GPU
 
   timing::Settings normal, tiny;
   normal.frames = int(args.integer("frames", 30, 1, 100000));
@@ -203,6 +153,9 @@ int runTime(const std::vector<std::string>& argv) {
   for (const std::string& w : warnings) std::fprintf(stderr, "motorbench time: warning: %s\n", w.c_str());
   if (args.positional().empty()) names = builtinSceneNames();
   if (names.empty()) return fail("no scenes to time (the folders given hold no .gltf or .glb files)");
+  // The --json file's folder is created and checked now, not after every scene was timed.
+  if (auto path = args.get("json"); path && !args.has("worker"))
+    if (Status ok = prepareOutputFile("--json", *path); !ok) return fail(ok.error());
   if (auto file = args.get("worker")) {
     if (names.size() != 1) return fail("--worker times exactly one scene");
     return timeOneScene(names[0], normal, tiny, levels, args, *file);
@@ -211,25 +164,27 @@ int runTime(const std::vector<std::string>& argv) {
   auto machine = timing::machineInfo();
   if (!machine) return fail(machine.error());
   std::printf("motorbench time: %d frames per pipeline after %d warm-up, pipelines interleaved "
-              "frame by frame (alternating order); frame = clear + render + glFinish (wall "
-              "clock, fastest of %d back-to-back renders); update = Pipeline::update (hierarchy, "
+              "frame by frame (alternating order); frame = clear + render (%s, fastest of %d "
+              "back-to-back renders); update = Pipeline::update (hierarchy, "
               "animation, skin palette; matrix forms: + the drawn nodes' normal matrices) timed apart, per call (fastest block, same count); median "
               "[first-third quartile]\n",
-              normal.frames, normal.warmup, normal.bestOf);
-  std::printf("machine: %s, %u cores; GL_RENDERER %s; GL_VERSION %s; LP_NUM_THREADS %s; "
-              "GL timer queries: %s\n\n",
+              normal.frames, normal.warmup,
+              machine->realGpu ? "GL_TIME_ELAPSED timer query; wall clock to glFinish beside it in --json"
+                               : "wall clock to glFinish",
+              normal.bestOf);
+  std::printf("machine: %s, %u cores; GL_RENDERER %s; GL_VERSION %s; device %s; LP_NUM_THREADS %s; "
+              "frame time from: %s\n\n",
               machine->cpuModel.c_str(), machine->cores, machine->glRenderer.c_str(),
-              machine->glVersion.c_str(), machine->lpNumThreads.c_str(),
-              machine->realGpu ? "yes (real GPU)" : "no (software renderer: wall clock only)");
-  std::printf(kRowFormat, "scene", "config", "size", "matrix frame ms", "motor frame ms",
-              "motor/", "of", "CPU", "matrix update us", "motor update us", "update");
-  std::printf(kRowFormat, "", "", "", "", "", "matrix", "medians", "time", "", "", "ratio");
+              machine->glVersion.c_str(), machine->gl.deviceText().c_str(), machine->lpNumThreads.c_str(),
+              machine->realGpu ? "GPU timer queries (a real GPU)"
+                               : "the wall clock (a CPU rasterizer: its timer queries time no GPU)");
+  std::printf("%s\n", timing::timingLegend().c_str());
 
   nlohmann::json results = nlohmann::json::array(), patchMemory = nlohmann::json::array();
   int status = 0;
   const std::string scratch = (std::filesystem::temp_directory_path() /
                                ("motorbench-time-" + std::to_string(::getpid()) + ".json")).string();
-  Progress progress("time", "scenes timed", names.size(), false);
+  Progress progress("time", "scenes done", names.size(), false);
   for (const std::string& name : names) {
     std::vector<std::string> child = {"time", name, "--worker", scratch};
     for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level", "instances"})
@@ -248,19 +203,21 @@ int runTime(const std::vector<std::string>& argv) {
       progress.done(name + ": failed");
       continue;
     }
-    progress.done(name);
-    if (!how.empty()) status = 2;
+    // A scene that failed (it could not load, or a pipeline could not run) is not "timed".
+    bool failed = !how.empty();
+    for (const auto& r : rows) failed = failed || r.contains("error");
+    progress.done(name + (failed ? ": failed, see the error above" : ": timed"));
+    if (failed) status = 2;
     for (auto& r : rows) results.push_back(std::move(r));
     if (const nlohmann::json m = worker.value("patchMemory", nlohmann::json()); m.is_array())
       patchMemory.push_back({{"scene", name}, {"rows", m}});
   }
   std::filesystem::remove(scratch);
-  std::printf("\nmotor/matrix: median of the per-frame ratios (both pipelines render the same "
-              "frame back to back); of medians: ratio of the two medians; CPU time: the paired "
-              "ratio of process CPU time per frame (llvmpipe threads included); update ratio: "
-              "paired, per update call; update phases: medians per call of a separate block of "
-              "updates timed with the phase clock on (pipelines/update_phases.h). < 1: motor "
-              "faster.\n");
+  std::printf("frame/matrix and motor/matrix: paired per-frame ratios (both pipelines render the same frame "
+              "back to back); of the medians: ratio of the two medians; CPU time: the paired ratio of process CPU "
+              "time per frame (llvmpipe threads included); update/matrix: paired, per update call; update phases: "
+              "medians per call of a separate block of updates timed with the phase clock on "
+              "(pipelines/update_phases.h). < 1: motor (or the pipeline) faster; noise: q1 <= 1 <= q3.\n");
 
   if (auto path = args.get("json")) {
     const nlohmann::json j = {
@@ -271,7 +228,9 @@ int runTime(const std::vector<std::string>& argv) {
           {"size", {normal.width, normal.height}},
           {"vertex_bound_size", {tiny.width, tiny.height}},
           {"method", "pipelines interleaved frame by frame in alternating order; frame = clear + "
-                     "render + glFinish (steady_clock), fastest of best_of renders; also process "
+                     "render, timed as each result's frameTimeSource says (gpu-timer: GL_TIME_ELAPSED, "
+                     "read after glFinish, wall_ms beside it; wall-clock: steady_clock to glFinish), "
+                     "fastest of best_of renders; also process "
                      "CPU time; update = Pipeline::update per call; update_phases_ms = a further "
                      "block of update calls with the phase clock on, per call"}}},
         {"results", results},
@@ -289,8 +248,19 @@ int runTime(const std::vector<std::string>& argv) {
 
 MB_COMMAND(time, "time",
            "[SCENE|DIR...] [--frames N] [--warmup W] [--best-of K] [--size WxH] [--tiny WxH] "
-           "[--level N[,M...]] [--instances N] [--lp-threads N] [--json FILE]",
+           "[--level N[,M...]] [--instances N] [--lp-threads N] [--gpu auto|llvmpipe|N] [--json FILE]",
            "frame time (glFinish wall clock) and CPU update time of every pipeline; motor/matrix "
            "ratios from one interleaved run; scenes with >= 10 drawn vertices per tiny-viewport pixel "
            "(the crowd) also at that viewport (vertex-bound)",
            mb::runTime);
+MB_COMMAND_HELP(time, "time",
+               "  SCENE|DIR...       scenes to time (default: the built-in scenes)\n"
+               "  --frames N         measured frames per pipeline (default 30);  --warmup W  dropped first (default 5)\n"
+               "  --best-of K        renders per frame, the fastest kept (default 3)\n"
+               "  --size WxH         viewport (default 512x512);  --tiny WxH  the vertex-bound viewport (default 64x64)\n"
+               "  --level N[,M...]   refinement levels of Bezier patch scenes (teapot)\n"
+               "  --lp-threads N     LP_NUM_THREADS for llvmpipe\n"
+               "  --json FILE        every sample, spread and ratio as JSON (missing folders are created; checked first)\n"
+               "  Ratios are motor/matrix (< 1: motor faster) with their spread [q1-q3]; \"noise\" marks a ratio\n"
+               "  whose quartiles lie on both sides of 1.\n",
+                "motorbench time normal_torus --frames 5 --warmup 1 --json out/time.json", false);

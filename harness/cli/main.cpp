@@ -17,14 +17,31 @@ std::vector<Command>& commands() {
 }  // namespace mb
 
 static void usage() {
-  std::printf("usage: motorbench <command> [options]   (motorbench --version; motorbench <command> --help)\n\ncommands:\n");
+  std::printf("usage: motorbench <command> [options]   (motorbench --version; motorbench <command> --help or "
+              "motorbench help <command>: options, pipeline names, an example)\n\ncommands:\n");
   auto cmds = mb::commands();
   std::sort(cmds.begin(), cmds.end(),
             [](const mb::Command& a, const mb::Command& b) { return std::strcmp(a.name, b.name) < 0; });
   for (const auto& c : cmds) std::printf("  %-9s %s\n            %s\n", c.name, c.usage, c.summary);
 }
 
+static const mb::Command* findCommand(const char* name) {
+  for (const auto& c : mb::commands())
+    if (!std::strcmp(name, c.name)) return &c;
+  return nullptr;
+}
+
 int main(int argc, char** argv) {
+  // `motorbench help CMD`: that command's help, as `motorbench CMD --help`.
+  if (argc == 3 && !std::strcmp(argv[1], "help")) {
+    const mb::Command* c = findCommand(argv[2]);
+    if (!c) {
+      std::fprintf(stderr, "motorbench help: unknown command '%s' (motorbench --help lists them)\n", argv[2]);
+      return 2;
+    }
+    mb::printCommandHelp(*c);
+    return 0;
+  }
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") ||
       !std::strcmp(argv[1], "help")) {
     usage();
@@ -39,7 +56,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 2, argv + argc);
     // No command takes --help as a value, so it always asks for this command's usage.
     if (std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; })) {
-      std::printf("usage: motorbench %s %s\n  %s\n", c.name, c.usage, c.summary);
+      mb::printCommandHelp(c);
       return 0;
     }
     try {

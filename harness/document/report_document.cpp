@@ -24,8 +24,15 @@ void push(std::vector<double>& v, double x) {
   if (x == x) v.push_back(x);
 }
 
+// A spread plus "none": the scenes where the pipeline uploaded no value of it at all.
+json withNone(json spread, int none) {
+  spread["none"] = none;
+  return spread;
+}
+
 json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
   std::vector<double> bpv, bpvAll, bpvNm, bpvPlain, fpv, fpt, fptScale, fpj, conv, bpi;
+  int noTransform = 0;  // scenes where the pipeline uploaded no node transform (skinned or instanced draws only)
   for (const json& s : scenes) {
     if (!s.contains("pipelines") || !s["pipelines"].contains(p)) continue;
     const json& pj = s["pipelines"][p];
@@ -38,6 +45,7 @@ json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
     push(fpv, number(pj, {"memory", "floatsPerVertex"}));
     const double t = number(pj, {"memory", "floatsPerTransform"});
     if (t > 0) fpt.push_back(t);
+    else if (pj.contains("memory") && pj.value("error", json()).is_null()) ++noTransform;
     const double jn = number(pj, {"memory", "floatsPerJoint"});
     if (jn > 0) fpj.push_back(jn);
     push(conv, number(pj, {"conversionMs", "median"}));
@@ -46,7 +54,7 @@ json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
   return {{"bytesPerVertex", spread(bpv)}, {"bytesPerVertexAll", spread(bpvAll)},
           {"bytesPerVertexNormalMapped", spread(bpvNm)}, {"bytesPerVertexNotNormalMapped", spread(bpvPlain)},
           {"floatsPerTransformWithScale", spread(fptScale)},
-          {"floatsPerVertex", spread(fpv)}, {"floatsPerTransform", spread(fpt)},
+          {"floatsPerVertex", spread(fpv)}, {"floatsPerTransform", withNone(spread(fpt), noTransform)},
           {"floatsPerJoint", spread(fpj)}, {"conversionMs", spread(conv)}, {"bytesPerInstance", spread(bpi)}};
 }
 

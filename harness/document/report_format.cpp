@@ -46,6 +46,12 @@ std::string spreadText(const json& s, int digits) {
   return lo == hi ? med : med + " (" + lo + ".." + hi + ")";
 }
 
+std::string noneText(const json& spread, const std::string& why) {
+  const int none = spread.is_object() ? spread.value("none", 0) : 0;
+  if (none == 0) return "";
+  return "; none on " + std::to_string(none) + " scene" + (none == 1 ? " " : "s ") + why;
+}
+
 std::string opsText(const json& o, int decimals) {
   if (!o.is_object()) return "-";
   std::string s = fixed(o.value("mul", json()), decimals) + " mul / " + fixed(o.value("add", json()), decimals) + " add";
@@ -67,6 +73,13 @@ const json& at(const json& j, std::initializer_list<const char*> path) {
 
 std::string dumpJson(const json& j, int indent) {
   return j.dump(indent, ' ', false, json::error_handler_t::replace);
+}
+
+std::string frameTimeOn(const nlohmann::json& gl) {
+  if (!gl.is_object() || !gl.contains("renderer") || !gl["renderer"].is_string()) return "Frame time (device not recorded)";
+  const bool gpu = gl.value("kind", "") == "gpu";
+  return "Frame time on " + gl["renderer"].get<std::string>() +
+         (gpu ? " (GPU timer queries)" : " \u2014 a CPU rasterizer (wall clock)");
 }
 
 std::string html(const std::string& s) {
@@ -92,6 +105,13 @@ std::string cell(const std::string& s) {
     else out += c;
   }
   return out;
+}
+
+std::string cpuMachineText(const json& cpu, const json& cores, const json& simdTarget) {
+  auto text = [](const json& v) {
+    return v.is_string() ? v.get<std::string>() : v.is_number() ? std::to_string(v.get<long long>()) : std::string("unknown");
+  };
+  return "CPU: " + text(cpu) + ", " + text(cores) + " logical cores; SIMD kernels: Highway " + text(simdTarget);
 }
 
 }  // namespace mb::report

@@ -20,14 +20,25 @@ std::string psnrText(const nlohmann::json& metrics);
 std::string percent(const nlohmann::json& fraction, int decimals = 2);
 // min / median / max of report_document's spread(): "36" when all equal, else "36 (32..40)".
 std::string spreadText(const nlohmann::json& spread, int digits = 3);
+// "; none on N scene(s) <why>" for a spread's "none" count (scenes where a pipeline has no such
+// value at all, e.g. no node transform on a skinned-only scene); "" when 0.
+std::string noneText(const nlohmann::json& spread, const std::string& why);
 // mul/add of an ops object ({"mul", "add", ...}), plus "+N div/sqrt/other" when present.
 std::string opsText(const nlohmann::json& ops, int decimals = 0);
+// The line above every CPU table: "CPU: <model>, <n> logical cores; SIMD kernels: Highway <target>"
+// ("unknown" for what is not given); CPU ratios hold for the CPU named.
+std::string cpuMachineText(const nlohmann::json& cpu, const nlohmann::json& cores, const nlohmann::json& simdTarget);
 // A value at a path of object keys, or null.
 const nlohmann::json& at(const nlohmann::json& j, std::initializer_list<const char*> path);
 
 // json::dump that never throws on strings that are not UTF-8 (file names, loader messages):
 // invalid bytes become U+FFFD. indent < 0: one line.
 std::string dumpJson(const nlohmann::json& j, int indent = -1);
+
+// Whose frame times a table shows, from a device record (report.json's machine.gl, a scene's
+// timing.gl): "Frame time on llvmpipe (LLVM 15.0.6, 256 bits) — a CPU rasterizer (wall clock)"
+// or, for "kind": "gpu", "Frame time on NVIDIA H100 80GB HBM3/PCIe/SSE2 (GPU timer queries)".
+std::string frameTimeOn(const nlohmann::json& gl);
 
 // HTML text escaping (&, <, >, ").
 std::string html(const std::string& s);

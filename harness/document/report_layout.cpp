@@ -5,6 +5,7 @@
 
 #include "harness/document/report_document.h"
 #include "harness/document/report_format.h"
+#include "harness/document/report_isa.h"
 
 namespace mb::report {
 namespace {
@@ -93,7 +94,11 @@ void summary(Document& d, const json& r) {
   row("bytes per vertex, primitives without normal map", fromSpread("bytesPerVertexNotNormalMapped", 3));
   row("bytes per vertex incl. skin + extra streams", fromSpread("bytesPerVertexAll", 3));
   row("floats per vertex", fromSpread("floatsPerVertex", 3));
-  row("floats per transform", fromSpread("floatsPerTransform", 3));
+  row("floats per transform", [&sum](const std::string& p) {
+    const json& spread = at(sum, {"pipelines"})[p]["floatsPerTransform"];
+    return spreadText(spread, 3) + scenesText(spread) +
+           noneText(spread, "whose every draw is skinned (the joint palette moves the mesh)");
+  });
   row("floats per transform incl. the per-draw scale", fromSpread("floatsPerTransformWithScale", 3));
   row("floats per joint (skinned scenes)", fromSpread("floatsPerJoint", 3));
   row("load-time conversion [ms]", fromSpread("conversionMs", 3));
@@ -138,7 +143,8 @@ void summary(Document& d, const json& r) {
   std::string kr;
   for (const auto& [k, v] : members(sum, "kernelRatios").items())
     if (k.rfind("vertex_frame", 0) == 0 || k.rfind("skinned_vertex", 0) == 0) kr += (kr.empty() ? "" : ", ") + k + " " + ratio(v);
-  lines.push_back("CPU kernel throughput motor / matrix (items/s, > 1: motor faster): " +
+  lines.push_back("CPU kernel throughput motor / matrix (items/s, > 1: motor faster; skinned pairs in matched "
+                  "configurations: skinned_vertex world palette, skinned_vertex_reference the references' form): " +
                   (kr.empty() ? str(at(r, {"kernels", "error"}), "not measured") : kr) + ".");
   d.bullets(lines);
 }
@@ -208,6 +214,7 @@ void sceneTable(Document& d, const json& r) {
   for (const std::string& p : pipes) head.push_back(p + " frame ms");
   head.push_back("frame time motor/matrix");
   for (size_t i = 1; i < pipes.size(); ++i) head.insert(head.end(), {pipes[i] + " worst PSNR", pipes[i] + " px > 1/255"});
+  d.paragraph(frameTimeOn(at(r, {"machine", "gl"})) + ": the frame ms columns and motor/matrix below.");
   head.push_back("fallbacks (last pipeline)");
   std::vector<std::vector<Cell>> rows;
   for (const json& s : r["scenes"]) {
@@ -269,6 +276,7 @@ void curvedSection(Document& d, const json& r) {
                        {first ? "" : ratio(at(c, {"frameTimeRatio", "vertexBound"}))}});
     }
   }
+  d.paragraph(frameTimeOn(at(r, {"machine", "gl"})) + ": the two motor/matrix columns.");
   d.table({"scene", "space", "pipeline", "floats per instance", "ops per vertex (counted)", "ops per vertex (SPIR-V)",
            "images vs matrix side", "frame time motor/matrix", "vertex-bound motor/matrix"},
           table);
@@ -437,7 +445,10 @@ void sceneSection(Document& d, const json& r, const json& s) {
     const json& t = at(s, {"timing", "pipelines"}).is_object() && s["timing"]["pipelines"].contains(p) ? s["timing"]["pipelines"][p] : json();
     const json& o = at(s, {"opsPerVertex"}).is_object() && s["opsPerVertex"].contains(p) ? s["opsPerVertex"][p] : json();
     prow.push_back({{p}, {fmt(mem.value("bytesPerVertex", json()))}, {fmt(mem.value("floatsPerVertex", json()))},
-                    {fmt(mem.value("floatsPerTransform", json()))}, {fmt(mem.value("floatsPerJoint", json()))},
+                    {mem.value("floatsPerTransform", json()).is_null() && mem.contains("floatsPerTransform")
+                         ? std::string("none (skinned or instanced draws only)")
+                         : fmt(mem.value("floatsPerTransform", json()))},
+                    {fmt(mem.value("floatsPerJoint", json()))},
                     {str(mem.value("vertexBytes", json())) + " / " + str(mem.value("skinVertexBytes", json())) + " / " +
                      str(mem.value("indexBytes", json())) + " / " + str(mem.value("textureBytes", json()))},
                     {str(mem.value("uniformBytesPerFrame", json())) + " / " + str(mem.value("skinBytesPerFrame", json()))},
@@ -449,12 +460,15 @@ void sceneSection(Document& d, const json& r, const json& s) {
                     {t.is_object() ? fmt(t.value("updateMedianMs", json()), 3) : "-"},
                     {pj["error"].is_string() ? pj["error"].get<std::string>() : ""}});
   }
-  if (!prow.empty())
+  if (!prow.empty()) {
+    d.paragraph(frameTimeOn(at(s, {"timing", "gl"}).is_object() ? at(s, {"timing", "gl"}) : at(r, {"machine", "gl"})) +
+                ": the frame ms column.");
     d.table({"pipeline", "B/vertex", "floats/vertex", "floats/transform", "floats/joint",
              "bytes: vertex / skin / index / texture", "bytes per frame: uniforms / joint palette", "draws",
              "conversion ms (median)", "fallbacks", "ops/vertex (counted, mean)", "frame ms median (min..max)",
              "vertices/us (drawn vertices x instances / median frame)", "CPU update ms", "error"},
             prow);
+  }
   // Instanced draws: what each pipeline streams per instance (measured: bytes handed to GL).
   std::vector<std::vector<Cell>> irow;
   for (const std::string& p : pipes) {
@@ -484,6 +498,9 @@ void sceneSection(Document& d, const json& r, const json& s) {
     urow.push_back(row);
   }
   if (!urow.empty()) {
+    const json& m = r["machine"];
+    d.paragraph("Measured on " + cpuMachineText(m["cpu"], m["logicalCores"], m["simdTarget"]) +
+                " (CPU times hold for this CPU).");
     d.paragraph("CPU update by phase: microseconds per update call, medians over the timed frames, from a block "
                 "of updates timed with the pipelines' phase clock on (apart from the whole-update timing, whose "
                 "median is the last column; the phases include their clock reads). The matrix forms' hierarchy "
@@ -504,7 +521,8 @@ void sceneSection(Document& d, const json& r, const json& s) {
                ratio(at(c, {"update", "ratio_motor_matrix"}));
       };
       const json& vb = timing.value("vertexBound", json());
-      d.paragraph("Frame timing: " + str(timing["summary"]) + " Motor / matrix: " + ratios(timing) +
+      d.paragraph(frameTimeOn(timing.value("gl", at(r, {"machine", "gl"}))) + ": " + str(timing["summary"]) +
+                  " Motor / matrix: " + ratios(timing) +
                   "; vertex-bound: " + (vb.contains("skipped") ? str(vb["skipped"]) : ratios(vb)) + ".");
     }
   }
@@ -519,6 +537,17 @@ void opsSection(Document& d, const json& r) {
               "matrix instructions expanded to scalar operations." +
               (ops.value("toolsProblem", "").empty() ? std::string() : " SPIR-V not counted: " + str(ops["toolsProblem"])));
   std::vector<std::vector<Cell>> rows;
+  // One row per registered pipeline (harness/ops/pipeline_ops.h): what the README's table quotes.
+  auto figure = [](const json& f, const char* way) { return f.is_object() ? opsText(f[way]) : std::string("-"); };
+  for (const json& p : ops.value("perPipeline", json::array()))
+    rows.push_back({{str(p["pipeline"])}, {figure(p["rigid"], "counted")}, {figure(p["skinned"], "counted")},
+                    {figure(p["toClip"], "counted")}, {figure(p["toClip"], "spirv")}, {figure(p["patch"], "counted")},
+                    {str(p["problem"], "")}});
+  if (!rows.empty())
+    d.table({"pipeline", "rigid (transform)", "skinned (transform, 4 joints)", "rigid to clip", "to clip (SPIR-V probes)",
+             "bezier patch to clip", "problem"},
+            rows);
+  rows.clear();
   for (const json& v : ops.value("variants", json::array()))
     rows.push_back({{str(v["pipeline"])}, {str(v["label"])}, {str(v["shader"])}, {opsText(v["counted"])},
                     {opsText(v["spirv"])}, {str(v["difference"], "")}});
@@ -537,13 +566,23 @@ void kernelSection(Document& d, const json& r) {
     d.paragraph("Not available: " + k["error"].get<std::string>() + ".");
     return;
   }
+  // The machine the bench ran on (its JSON's context; a file written before issue 26 lacks it).
+  const json& ctx = k.value("context", json::object());
+  d.paragraph("Measured on " +
+              (ctx.contains("cpu_model")
+                   ? cpuMachineText(ctx["cpu_model"], ctx["logical_cores"], ctx["simd_target"])
+                   : "an unnamed CPU (the bench file does not name it; this report ran on " +
+                         cpuMachineText(r["machine"]["cpu"], r["machine"]["logicalCores"], r["machine"]["simdTarget"]) + ")") +
+              " (CPU kernel ratios hold for the CPU named).");
   d.paragraph("motorbench bench (" + std::string(k.value("source", "") == "run" ? "run by this report" : "read from " + str(k["file"])) +
               "): matrix and motor kernels compiled from the same shader source through the shim with "
               "float; glm = GLM's own operators (extra baseline); simd_matrix / simd_motor = kernels/simd, the same math "
               "hand-vectorised with Highway (compose also has simd_affine, the mat4x3 product, and lanes_motor, the "
               "4-lane motor product of the motor pipelines' CPU update). Out of cache = arrays "
               "of at least 256 MiB; "
-              "bw = bytes/s over the STREAM probe. Ratios of items/s: > 1 means faster than matrix.");
+              "bw = bytes/s over the STREAM probe. Ratios of items/s: > 1 means faster than matrix. Skinned vertices in "
+              "matched configurations: skinned_vertex with a world-space palette on every side, "
+              "skinned_vertex_reference in the references' form (the node's transform after the blend) on every side.");
   std::vector<std::vector<Cell>> rows;
   for (const json& p : k.value("pairs", json::array())) {
     auto ips = [&](const char* side) { return fmt(at(p, {side, "items_per_second"}), 4); };
@@ -579,7 +618,8 @@ void method(Document& d) {
       "and cross-checked in the optimised SPIR-V of the real vertex shaders; per scene, the mean over drawn "
       "vertices, weighted by the variant (rigid, skinned, scaled fallback) each vertex goes through.",
       "Frame timing (harness/timing/frame_timing.h, as `motorbench time`): per scene, in a worker process that runs "
-      "alone (never alongside other scenes); wall clock around update + render + glFinish after warm-up, each "
+      "alone (never alongside other scenes); on a CPU rasterizer the wall clock around update + render + glFinish, "
+      "on a real GPU GL_TIME_ELAPSED timer queries (wall clock beside them), after warm-up, each "
       "frame the fastest of a few renders, pipelines interleaved; process CPU time and the CPU update beside "
       "it; ratios are motor / matrix from the same process.",
       "Kernel throughput: Google Benchmark via `motorbench bench` (JSON kept next to the report).",
@@ -600,6 +640,7 @@ Document reportDocument(const json& r) {
   statisticsSection(d, r);
   for (const json& s : r["scenes"]) sceneSection(d, r, s);
   opsSection(d, r);
+  isaSection(d, r);
   kernelSection(d, r);
   method(d);
   glossary(d, r);

@@ -65,8 +65,10 @@ json makePlots(const std::string& pythonArg, const std::string& script, const st
     return r;
   }
   if (index.contains("error") && !index["error"].is_null()) r["error"] = index["error"];
+  r["index"] = "plots/index.json";  // each plot's bars as drawn ("bars"), kept there only
   for (json f : index.value("files", json::array())) {
     f["file"] = "plots/" + f.value("file", "");
+    f.erase("bars");
     r["files"].push_back(f);
   }
   r["available"] = !r["files"].empty();

@@ -16,7 +16,8 @@ std::string defaultPlotScript();
 std::string defaultPython();
 
 // Runs `python script reportJson outDir/plots`. Returns {"available": bool, "error": null or
-// why not, "files": [{"name", "file" (relative to outDir), "title", "caption"}...]}.
+// why not, "index": "plots/index.json" (where each plot's bars are listed as drawn), "files":
+// [{"name", "file" (relative to outDir), "title", "caption"}...]}.
 nlohmann::json makePlots(const std::string& python, const std::string& script,
                          const std::string& reportJson, const std::string& outDir);
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "harness/ops/ops_text.h"
 #include "pipelines/gl/shader_source.h"
 
 namespace mb::opsv {
@@ -13,11 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using spirv::Counts;
-
-std::string text(const OpCounts& c) {
-  return std::to_string(c.mul) + "/" + std::to_string(c.add) + "/" + std::to_string(c.div) +
-         "/" + std::to_string(c.sqrt) + "/" + std::to_string(c.other);
-}
 
 bool same(const OpCounts& a, const Counts& b) {
   return a.mul == b.mul && a.add == b.add && a.div == b.div && a.sqrt == b.sqrt &&
@@ -118,43 +114,63 @@ std::string variantWhy(const VariantRow& v) {
   return why;
 }
 
-std::string describeDefines(const ShaderVariant& v) {
-  std::string s;
-  for (const auto& [name, value] : v.defines) s += (s.empty() ? "" : " ") + name + (value.empty() ? "" : "=" + value);
-  return s.empty() ? "-" : s;
-}
 
 }  // namespace
 
-VertexOps measureVertexOps() {
+const KernelRow* findKernel(const std::vector<KernelRow>& kernels, const std::string& pipeline,
+                            const std::string& function) {
+  const KernelRow* only = nullptr;
+  int matches = 0;
+  for (const KernelRow& k : kernels) {
+    if (k.kernel.function != function) continue;
+    if (k.kernel.pipeline == pipeline) return &k;
+    only = &k, ++matches;
+  }
+  return matches == 1 ? only : nullptr;
+}
+
+VertexOps measureVertexOps(SpirvDepth depth, const OpsStep& step) {
   VertexOps ops;
   const spirv::Tools tools = spirv::findTools();
-  ops.toolsProblem = spirv::toolsProblem(tools);
-  for (const VertexKernel& k : vertexKernels()) {
+  ops.toolsProblem = depth == SpirvDepth::None ? "SPIR-V not counted in this run" : spirv::toolsProblem(tools);
+  const bool full = depth == SpirvDepth::Full;
+  const std::vector<VertexKernel> kernels = vertexKernels();
+  const std::vector<ShaderVariant> variants = shaderVariants();
+  size_t done = 0;
+  auto stepDone = [&](const std::string& what) {
+    if (step) step(++done, kernels.size() + variants.size(), what);
+  };
+  for (const VertexKernel& k : kernels) {
     KernelRow r{k, countVertexKernel(k), std::nullopt, std::nullopt, std::nullopt, "", ""};
     if (ops.toolsProblem.empty()) {
-      auto full = countProbe(k, spirv::Optimise::Full);
-      auto inl = countProbe(k, spirv::Optimise::InlineOnly);
-      auto noFold = countProbe(k, spirv::Optimise::NoFold);
-      if (full) r.optimised = *full;
-      else r.error = full.error();
-      if (inl) r.inlined = *inl;
-      if (noFold) r.noFold = *noFold;
-      r.why = kernelWhy(r);
+      auto optimised = countProbe(k, spirv::Optimise::Full);
+      if (optimised) r.optimised = *optimised;
+      else r.error = optimised.error();
+      if (full) {
+        if (auto inl = countProbe(k, spirv::Optimise::InlineOnly)) r.inlined = *inl;
+        if (auto noFold = countProbe(k, spirv::Optimise::NoFold)) r.noFold = *noFold;
+        r.why = kernelWhy(r);
+      }
     }
     ops.kernels.push_back(std::move(r));
+    stepDone(k.pipeline + " " + k.kernel);
   }
-  for (const ShaderVariant& v : shaderVariants()) {
+  for (const ShaderVariant& v : variants) {
     VariantRow row{v, {}, Counts{}, std::nullopt, "", ""};
-    for (const std::string& fn : v.kernels)
-      for (const KernelRow& k : ops.kernels)
-        if (k.kernel.function == fn && k.kernel.pipeline == v.pipeline) {  // once each
-          row.counted += k.counted;
-          if (row.probes && k.optimised) *row.probes += *k.optimised;
-          else row.probes.reset();
-          break;
-        }
-    if (ops.toolsProblem.empty()) {
+    for (const std::string& fn : v.kernels) {
+      const KernelRow* k = findKernel(ops.kernels, v.pipeline, fn);
+      if (!k) {
+        row.error = "no single counted kernel " + fn + " for " + v.pipeline;
+        row.kernelsResolved = false;
+        row.counted = {};
+        row.probes.reset();
+        break;
+      }
+      row.counted += k->counted;
+      if (row.probes && k->optimised) *row.probes += *k->optimised;
+      else row.probes.reset();
+    }
+    if (full && ops.toolsProblem.empty() && row.kernelsResolved) {
       auto expanded = gl::expandShaderFile(v.file, v.defines);
       if (!expanded) {
         row.error = expanded.error();
@@ -165,81 +181,11 @@ VertexOps measureVertexOps() {
         else row.error = c.error();
       }
     }
-    if (row.shader) row.why = variantWhy(row);
+    if (row.shader && row.error.empty()) row.why = variantWhy(row);
     ops.variants.push_back(std::move(row));
+    stepDone(v.pipeline + " " + v.label + " vertex shader");
   }
   return ops;
-}
-
-std::string formatVertexOps(const VertexOps& ops) {
-  std::string out;
-  auto line = [&](const char* fmt, auto... a) {
-    char buf[1024];
-    std::snprintf(buf, sizeof buf, fmt, a...);
-    out += buf;
-  };
-  out += "Ops per vertex, measured two ways (mul/add/div/sqrt/other):\n"
-         "  counted: the pipeline's GLSL function executed once on mb::Counted through the shim\n"
-         "  SPIR-V:  the same function called from a probe vertex shader, glslangValidator -G,\n"
-         "           spirv-opt -O, vector and matrix instructions expanded to scalar ops\n";
-  if (!ops.toolsProblem.empty()) out += "  (no SPIR-V column: " + ops.toolsProblem + ")\n";
-  out += "\n";
-  line("%-14s %-26s %-20s %-14s %-14s %-5s %s\n", "pipeline", "kernel", "function", "counted",
-       "SPIR-V", "agree", "why they differ");
-  for (const KernelRow& r : ops.kernels) {
-    const std::string sp = r.optimised ? spirv::shortText(*r.optimised) : "-";
-    const char* agree = !r.optimised ? "-" : r.why.empty() ? "yes" : "no";
-    line("%-14s %-26s %-20s %-14s %-14s %-5s %s\n", r.kernel.pipeline.c_str(),
-         r.kernel.kernel.c_str(), r.kernel.function.c_str(), text(r.counted).c_str(), sp.c_str(),
-         agree, r.error.empty() ? r.why.c_str() : r.error.c_str());
-    if (!r.kernel.note.empty()) line("%-14s   note: %s\n", "", r.kernel.note.c_str());
-  }
-  out += "\nWhole vertex-shader variants (main(), spirv-opt -O) vs the counted kernels they call\n"
-         "(transform + world to clip); 'int' = integer index arithmetic, not in the columns:\n\n";
-  line("%-9s %-10s %-30s %-34s %-14s %-14s %4s  %s\n", "pipeline", "shader", "defines", "variant",
-       "counted", "SPIR-V", "int", "difference");
-  for (const VariantRow& v : ops.variants) {
-    line("%-9s %-10s %-30s %-34s %-14s %-14s %4s  %s\n", v.variant.pipeline.c_str(), v.variant.file.c_str(),
-         describeDefines(v.variant).c_str(), v.variant.label.c_str(), text(v.counted).c_str(),
-         v.shader ? spirv::shortText(*v.shader).c_str() : "-",
-         v.shader ? std::to_string(v.shader->intOps).c_str() : "-",
-         !v.error.empty() ? v.error.c_str() : v.why.empty() ? "none" : v.why.c_str());
-    if (!v.variant.note.empty()) line("%-20s   note: %s\n", "", v.variant.note.c_str());
-  }
-  return out;
-}
-
-nlohmann::json toJson(const VertexOps& ops) {
-  auto counted = [](const OpCounts& c) {
-    return nlohmann::json{{"mul", c.mul}, {"add", c.add}, {"div", c.div}, {"sqrt", c.sqrt},
-                          {"other", c.other}, {"other_calls", c.otherCalls()}};
-  };
-  auto sp = [](const std::optional<Counts>& c) -> nlohmann::json {
-    if (!c) return nullptr;
-    return {{"mul", c->mul}, {"add", c->add}, {"div", c->div}, {"sqrt", c->sqrt},
-            {"other", c->other}, {"int", c->intOps}, {"instructions", c->histogram}};
-  };
-  nlohmann::json kernels = nlohmann::json::array(), variants = nlohmann::json::array();
-  for (const KernelRow& r : ops.kernels)
-    kernels.push_back({{"pipeline", r.kernel.pipeline}, {"kernel", r.kernel.kernel},
-                       {"function", r.kernel.function}, {"counted", counted(r.counted)},
-                       {"spirv", sp(r.optimised)}, {"spirv_inlined_only", sp(r.inlined)},
-                       {"spirv_no_folding", sp(r.noFold)},
-                       {"agree", r.optimised ? nlohmann::json(r.why.empty()) : nlohmann::json()},
-                       {"why", r.why}, {"note", r.kernel.note}, {"error", r.error}});
-  for (const VariantRow& v : ops.variants)
-    variants.push_back({{"pipeline", v.variant.pipeline}, {"shader", v.variant.file},
-                        {"defines", describeDefines(v.variant)}, {"variant", v.variant.label},
-                        {"kernels", v.variant.kernels}, {"counted", counted(v.counted)},
-                        {"spirv", sp(v.shader)}, {"spirv_kernel_probes", sp(v.probes)},
-                        {"difference", v.why}, {"note", v.variant.note}, {"error", v.error}});
-  return {{"method",
-           {{"counted", "per-vertex GLSL function executed on mb::Counted (shaders/shim)"},
-            {"spirv", "glslangValidator -G --aml, spirv-opt -O, spirv-dis; vector/matrix "
-                      "instructions expanded to scalar mul/add (harness/ops/spirv_count.h)"}}},
-          {"tools_problem", ops.toolsProblem},
-          {"kernels", kernels},
-          {"variants", variants}};
 }
 
 }  // namespace mb::opsv

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -176,18 +177,21 @@ bool runs(const std::string& tool, const std::string& versionFlag) {
   return std::system((quote(tool) + " " + versionFlag + " > /dev/null 2>&1").c_str()) == 0;
 }
 
-// A private temporary folder, removed when the object goes away.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "motorbench-spirv-XXXXXX").string();
-    if (mkdtemp(tmpl.data())) path = tmpl;
+// Writes `source` into `dir` and compiles it with glslangValidator `flags` into dir/shader.spv;
+// "" or the error with the compiler's log.
+std::string glslang(const fs::path& dir, const std::string& source, const std::string& stage,
+                    const std::string& flags, const std::string& name, const Tools& tools) {
+  const fs::path src = dir / ("shader." + stage), spv = dir / "shader.spv", log = dir / "log.txt";
+  {
+    std::ofstream out(src, std::ios::binary);
+    out << source;
+    if (!out) return name + ": cannot write " + src.string();
   }
-  ~TempDir() {
-    std::error_code ec;
-    if (!path.empty()) fs::remove_all(path, ec);
-  }
-};
+  if (run(quote(tools.glslang) + " " + flags + " -S " + stage + " -o " + quote(spv.string()) + " " +
+              quote(src.string()), log) != 0)
+    return name + ": glslangValidator failed:\n" + readFile(log);
+  return "";
+}
 
 // spirv-opt -O (SPIRV-Tools 2023) as listed by --print-all, without simplify-instructions.
 const char* kNoFoldPasses =
@@ -216,6 +220,16 @@ std::string passesFor(Optimise opt) {
 }
 
 }  // namespace
+
+TempDir::TempDir(const std::string& prefix) {
+  std::string tmpl = (fs::temp_directory_path() / (prefix + "-XXXXXX")).string();
+  if (mkdtemp(tmpl.data())) path = tmpl;
+}
+
+TempDir::~TempDir() {
+  std::error_code ec;
+  if (!path.empty()) fs::remove_all(path, ec);
+}
 
 Counts& Counts::operator+=(const Counts& o) {
   mul += o.mul, add += o.add, div += o.div, sqrt += o.sqrt, other += o.other, intOps += o.intOps;
@@ -298,18 +312,11 @@ Result<std::string> compileToDisassembly(const std::string& source, const std::s
   using R = Result<std::string>;
   TempDir tmp;
   if (tmp.path.empty()) return R::fail(name + ": cannot create a temporary folder");
-  const fs::path src = tmp.path / ("shader." + stage), spv = tmp.path / "shader.spv",
-                 opt_spv = tmp.path / "opt.spv", dis = tmp.path / "opt.spvasm",
-                 log = tmp.path / "log.txt";
-  {
-    std::ofstream out(src, std::ios::binary);
-    out << source;
-    if (!out) return R::fail(name + ": cannot write " + src.string());
-  }
+  const fs::path spv = tmp.path / "shader.spv", opt_spv = tmp.path / "opt.spv",
+                 dis = tmp.path / "opt.spvasm", log = tmp.path / "log.txt";
   // -G: SPIR-V for OpenGL (plain uniforms allowed); --aml: locations for those uniforms.
-  if (run(quote(tools.glslang) + " -G --aml -S " + stage + " -o " + quote(spv.string()) + " " +
-              quote(src.string()), log) != 0)
-    return R::fail(name + ": glslangValidator failed:\n" + readFile(log));
+  if (std::string e = glslang(tmp.path, source, stage, "-G --aml", name, tools); !e.empty())
+    return R::fail(e);
   if (run(quote(tools.spirvOpt) + " " + passesFor(opt) + " " + quote(spv.string()) + " -o " +
               quote(opt_spv.string()), log) != 0)
     return R::fail(name + ": spirv-opt failed:\n" + readFile(log));
@@ -317,6 +324,20 @@ Result<std::string> compileToDisassembly(const std::string& source, const std::s
               quote(opt_spv.string()), log) != 0)
     return R::fail(name + ": spirv-dis failed:\n" + readFile(log));
   return readFile(dis);
+}
+
+Result<std::vector<uint32_t>> compileToBinary(const std::string& source, const std::string& stage,
+                                              const std::string& flags, const std::string& name,
+                                              const Tools& tools) {
+  using R = Result<std::vector<uint32_t>>;
+  TempDir tmp;
+  if (tmp.path.empty()) return R::fail(name + ": cannot create a temporary folder");
+  if (std::string e = glslang(tmp.path, source, stage, flags, name, tools); !e.empty()) return R::fail(e);
+  const std::string bytes = readFile(tmp.path / "shader.spv");
+  if (bytes.empty() || bytes.size() % 4) return R::fail(name + ": glslangValidator wrote no SPIR-V");
+  std::vector<uint32_t> words(bytes.size() / 4);
+  std::memcpy(words.data(), bytes.data(), bytes.size());
+  return words;
 }
 
 Result<Counts> countSource(const std::string& source, const std::string& stage, Optimise opt,

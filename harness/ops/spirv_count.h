@@ -21,8 +21,10 @@
 // GLSL.std.450 name) so differences between two counts can be listed.
 #pragma once
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "pipelines/result.h"
 
@@ -54,6 +56,16 @@ Result<Counts> countDisassembly(const std::string& text);
 // folding, which is where spirv-opt fuses a * b + c into Fma). Full: spirv-opt -O.
 enum class Optimise { InlineOnly, NoFold, Full };
 
+// A private temporary folder <tmp>/<prefix>-XXXXXX, removed with the object; `path` is empty
+// when it could not be made.
+struct TempDir {
+  explicit TempDir(const std::string& prefix = "motorbench-spirv");
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  std::filesystem::path path;
+};
+
 struct Tools {
   std::string glslang, spirvOpt, spirvDis;
 };
@@ -69,6 +81,12 @@ std::string toolsProblem(const Tools& tools);
 Result<std::string> compileToDisassembly(const std::string& source, const std::string& stage,
                                          Optimise opt, const std::string& name,
                                          const Tools& tools = findTools());
+
+// Compiles one GLSL stage with glslangValidator and `flags` (e.g. "-V -R --aml --amb": Vulkan
+// SPIR-V with relaxed rules, for harness/isa) and returns the SPIR-V words, unoptimised.
+Result<std::vector<uint32_t>> compileToBinary(const std::string& source, const std::string& stage,
+                                              const std::string& flags, const std::string& name,
+                                              const Tools& tools = findTools());
 
 // compileToDisassembly + countDisassembly.
 Result<Counts> countSource(const std::string& source, const std::string& stage, Optimise opt,

@@ -27,6 +27,13 @@ std::vector<size_t> shardPositions(const std::vector<std::string>& items, const 
   return mine;
 }
 
+std::string emptyShardNote(const Shard& shard, size_t inputs, size_t mine) {
+  if (mine > 0 || inputs == 0) return "";
+  return "shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) + " holds none of the " +
+         std::to_string(inputs) + " input(s) (more shards than inputs): nothing to do; its (empty) output still " +
+         "goes to merge with the others";
+}
+
 }  // namespace mb
 
 namespace mb {

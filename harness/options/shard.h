@@ -22,6 +22,11 @@ std::optional<Shard> parseShard(const std::string& text, std::string* error);
 // then every count-th from index-1. Deterministic for a given list.
 std::vector<size_t> shardPositions(const std::vector<std::string>& items, const Shard& shard);
 
+// The note an empty shard prints (more shards than inputs): "shard 3/3 holds none of the 2
+// inputs (more shards than inputs): nothing to do; its (empty) output still goes to merge";
+// "" when the shard holds some input. An empty shard exits 0: it is a valid part of the set.
+std::string emptyShardNote(const Shard& shard, size_t inputs, size_t mine);
+
 }  // namespace mb
 
 namespace mb {

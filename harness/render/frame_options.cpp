@@ -6,7 +6,10 @@
 #include <filesystem>
 #include <sstream>
 
+#include "harness/render/gpu_option.h"
+#include "pipelines/pipeline.h"
 #include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/scene/curved_space.h"
 #include "pipelines/scene/instancing.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scene_stats.h"
@@ -62,12 +65,19 @@ Result<float> timeFor(const Args& args, const std::string& timeKey, double fallb
   return float(t);
 }
 
+// The glTF built-ins, then the curved-space ones (s3_tiling, h3_tiling).
+std::vector<std::string> everyBuiltinName() {
+  std::vector<std::string> names = builtinSceneNames();
+  names.insert(names.end(), curvedSceneNames().begin(), curvedSceneNames().end());
+  return names;
+}
+
 }  // namespace
 
 OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags) {
   OptionSpec spec;
   spec.values = std::move(values);
-  spec.values.insert({"o", "output", "anim", "time", "anim2", "time2", "blend", "camera", "size", "instances"});
+  spec.values.insert({"o", "output", "anim", "time", "anim2", "time2", "blend", "camera", "size", "instances", "gpu"});
   spec.flags = std::move(flags);
   const std::string once =
       "a run draws one frame per pipeline: run the command once per time (report draws three times per scene)";
@@ -85,7 +95,15 @@ Status checkSceneSpec(const std::string& spec) {
                                "(inspect, report and time take folders)");
   if (!fs::exists(spec, ec))
     return Status::fail(spec + ": no such file, and not a built-in scene (built-in: " +
-                        joinNames(builtinSceneNames()) + ")");
+                        joinNames(everyBuiltinName()) + ")");
+  return Status();
+}
+
+Status checkPipelineNames(const std::string& option, const std::vector<std::string>& names) {
+  const std::vector<std::string> known = allPipelineNames();
+  for (const std::string& n : names)
+    if (std::find(known.begin(), known.end(), n) == known.end())
+      return Status::fail(option + " " + n + ": unknown pipeline (registered: " + joinNames(known) + ")");
   return Status();
 }
 
@@ -167,6 +185,7 @@ Result<SceneCommand> parseSceneCommand(const Args& args, const std::string& outp
   SceneCommand c;
   c.output = args.get("o", args.get("output", ""));
   if (c.output.empty()) return R::fail("missing -o " + outputWhat);
+  if (Status gpu = applyGpuOption(args); !gpu) return R::fail(gpu.error());
   if (Status ok = checkSceneSpec(args.positional()[0]); !ok) return R::fail(ok.error());
   auto scene = loadScene(args.positional()[0]);
   if (!scene) return R::fail(scene.error());

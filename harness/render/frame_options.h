@@ -28,7 +28,8 @@ Result<int> applyInstancesOption(const Args& args, Scene& scene, std::vector<std
 
 // The option spec of a command that renders one SCENE to -o/--output: `values` and `flags`
 // plus -o/--output and the frame options --anim A --time T [--anim2 B --time2 T2 --blend W]
-// --camera C --size WxH --instances N. A repeated --time is an error (one frame per run).
+// --camera C --size WxH --instances N --gpu (gpu_option.h). A repeated --time is an error (one
+// frame per run).
 OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags = {});
 
 // Reads the frame options against `scene`. Animations and cameras are indices or names. Rules
@@ -47,9 +48,14 @@ Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene
 // name (listing the built-in names). Success for an existing file or a built-in name.
 Status checkSceneSpec(const std::string& spec);
 
+// Checks pipeline names given to `option` (e.g. "--pipeline") against the registry before any
+// scene is loaded: "--pipeline Motor: unknown pipeline (registered: matrix, motor, ...)".
+Status checkPipelineNames(const std::string& option, const std::vector<std::string>& names);
+
 // The start of every command that renders one SCENE to an output (-o / --output): rejects a
 // parse error (args.error()), anything but one SCENE, a missing output (`outputWhat` names it
-// in the message, e.g. "out.png"); then checks and loads the scene and reads the frame options.
+// in the message, e.g. "out.png"), a bad --gpu (applyGpuOption); then checks and loads the
+// scene and reads the frame options.
 struct SceneCommand {
   std::string output;
   Scene scene;

@@ -121,6 +121,23 @@ Result<ImageMetrics> compareImages(const RgbaImage& a, const RgbaImage& b) {
   return m;
 }
 
+int64_t countPixelsOtherThan(const RgbaImage& image, const std::array<uint8_t, 3>& background) {
+  int64_t n = 0;
+  for (size_t i = 0; i + 3 < image.rgba.size(); i += 4)
+    n += image.rgba[i] != background[0] || image.rgba[i + 1] != background[1] || image.rgba[i + 2] != background[2];
+  return n;
+}
+
+std::string differenceText(double fraction) {
+  char buf[96];
+  const double steps = fraction * 255.0;
+  if (steps >= 0.5 && std::abs(steps - std::round(steps)) < 1e-4)  // OIIO computes in float
+    std::snprintf(buf, sizeof buf, "%.0f/255 (%.4g of full scale)", std::round(steps), fraction);
+  else
+    std::snprintf(buf, sizeof buf, "%.4g/255 (%.4g of full scale)", steps, fraction);
+  return buf;
+}
+
 Verdict judge(const RgbaImage& a, const RgbaImage& b, const Thresholds& t) {
   Verdict v;
   if (!sameSize(a, b)) {
@@ -134,12 +151,13 @@ Verdict judge(const RgbaImage& a, const RgbaImage& b, const Thresholds& t) {
   v.failPercent = 100.0 * double(r.nfail) / pixels;
   char buf[200];
   if (double(r.nfail) > t.failPercent / 100.0 * pixels) {
-    std::snprintf(buf, sizeof buf, "%.4f%% of pixels differ by more than %g (allowed %g%%)",
-                  v.failPercent, t.fail, t.failPercent);
+    std::snprintf(buf, sizeof buf, "%.4f%% of pixels differ by more than %s (allowed %g%%)", v.failPercent,
+                  differenceText(t.fail).c_str(), t.failPercent);
     v.failed = true;
     v.reason = buf;
   } else if (r.maxerror > t.hardFail) {
-    std::snprintf(buf, sizeof buf, "max error %g exceeds --hardfail %g", double(r.maxerror), t.hardFail);
+    std::snprintf(buf, sizeof buf, "max error %s exceeds --hardfail %s", differenceText(double(r.maxerror)).c_str(),
+                  differenceText(t.hardFail).c_str());
     v.failed = true;
     v.reason = buf;
   }

@@ -52,6 +52,13 @@ struct Verdict {
   std::string reason;      // "" when passed, else which threshold and by how much
 };
 
+// Pixels of `image` whose RGB differs from `background` (bytes): the pixels some primitive
+// covered, for frames cleared to `background` (render_frame.h: drawnPixels).
+int64_t countPixelsOtherThan(const RgbaImage& image, const std::array<uint8_t, 3>& background);
+
+// A channel difference as people read it, in both units: "171/255 (0.671 of full scale)".
+std::string differenceText(double fraction);
+
 // Compares two images of the same size (error naming both sizes otherwise).
 Result<ImageMetrics> compareImages(const RgbaImage& a, const RgbaImage& b);
 

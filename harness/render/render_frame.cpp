@@ -64,6 +64,7 @@ Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
   frame.glRenderer = (*ctx)->info().renderer;
   frame.glVersion = (*ctx)->info().version;
   frame.glBackend = (*ctx)->info().backend;
+  frame.gl = (*ctx)->info();
   Status prepared = p->prepare(scene);
   if (!prepared) return R::fail(where + prepared.error());
   p->update(settings.anim);
@@ -78,7 +79,15 @@ Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
   return frame;
 }
 
+int64_t drawnPixels(const RgbaImage& image) {
+  std::array<uint8_t, 3> background;
+  for (int c = 0; c < 3; ++c) background[size_t(c)] = uint8_t(std::lround(kBackground[c] * 255.0f));
+  return countPixelsOtherThan(image, background);
+}
+
 nlohmann::json toJson(const PipelineStats& s) {
+  const bool timed = s.updatePhases.total() > 0;  // phases are timed only with the phase clock on
+  auto phase = [timed](double ms) { return timed ? nlohmann::json(ms) : nlohmann::json(nullptr); };
   return {{"vertexBytes", s.vertexBytes}, {"skinVertexBytes", s.skinVertexBytes},
           {"extraVertexBytes", s.extraVertexBytes}, {"patchBytes", s.patchBytes}, {"patchPatternBytes", s.patchPatternBytes}, {"indexBytes", s.indexBytes},
           {"textureBytes", s.textureBytes}, {"uniformBytesPerFrame", s.uniformBytesPerFrame},
@@ -90,14 +99,25 @@ nlohmann::json toJson(const PipelineStats& s) {
           {"floatsPerTransformWithScale", s.floatsPerTransformWithScale},
           {"floatsPerJoint", s.floatsPerJoint}, {"draws", s.draws},
           {"conversionMs", s.conversionMs}, {"updateMs", s.updateMs},
-          {"updateSamplingMs", s.updatePhases.samplingMs}, {"updateBlendingMs", s.updatePhases.blendingMs},
-          {"updateConversionMs", s.updatePhases.conversionMs}, {"updateHierarchyMs", s.updatePhases.hierarchyMs},
-          {"updatePaletteMs", s.updatePhases.paletteMs},
+          {"updateSamplingMs", phase(s.updatePhases.samplingMs)}, {"updateBlendingMs", phase(s.updatePhases.blendingMs)},
+          {"updateConversionMs", phase(s.updatePhases.conversionMs)},
+          {"updateHierarchyMs", phase(s.updatePhases.hierarchyMs)}, {"updatePaletteMs", phase(s.updatePhases.paletteMs)},
           {"nonUniformScaleNodes", s.nonUniformScaleNodes},
           {"negativeScaleNodes", s.negativeScaleNodes},
           {"shearMatrixNodes", s.shearMatrixNodes}, {"zeroScalarFrames", s.zeroScalarFrames},
           {"biasedFrames", s.biasedFrames}, {"scaleFallbackInstances", s.scaleFallbackInstances}};
 }
+
+nlohmann::json toJson(const gl::ContextInfo& gl) {
+  using nlohmann::json;
+  return {{"backend", gl.backend}, {"renderer", gl.renderer}, {"version", gl.version}, {"vendor", gl.vendor},
+          {"realGpu", gl.realGpu()}, {"kind", gl.realGpu() ? "gpu" : "cpu-rasterizer"},
+          {"device", {{"index", gl.deviceIndex >= 0 ? json(gl.deviceIndex) : json(nullptr)},
+                      {"software", gl.deviceSoftware},
+                      {"drm", gl.drm.empty() ? json(nullptr) : json(gl.drm)}}}};
+}
+
+std::string describeGl(const gl::ContextInfo& gl) { return gl.renderer + " on " + gl.deviceText(); }
 
 nlohmann::json toJson(const FrameSettings& s) {
   nlohmann::json j = {{"anim", s.anim.anim}, {"time", s.anim.time}, {"anim2", s.anim.anim2},

@@ -6,6 +6,8 @@
 #include <ctime>
 #include <string>
 
+#include "harness/bench/cpu_machine.h"
+#include "harness/render/render_frame.h"
 #include "harness/timing/frame_timing.h"
 
 namespace mb::report {
@@ -33,7 +35,8 @@ nlohmann::json machineJson() {
   nlohmann::json j = {{"os", std::string(u.sysname) + " " + u.release + " " + u.machine},
                       {"compiler", std::string("gcc-compatible ") + __VERSION__},
                       {"build", build},
-                      {"date", utcNow()}};
+                      {"date", utcNow()},
+                      {"simdTarget", bench::cpuMachine().simdTarget}};
   // CPU, cores, GL and LP_NUM_THREADS as `motorbench time` records them (frame_timing.h).
   auto m = timing::machineInfo();
   if (!m) {
@@ -44,8 +47,7 @@ nlohmann::json machineJson() {
   j["cpu"] = m->cpuModel;
   j["logicalCores"] = m->cores;
   j["lpNumThreads"] = m->lpNumThreads == "unset" ? nlohmann::json(nullptr) : nlohmann::json(m->lpNumThreads);
-  j["gl"] = {{"renderer", m->glRenderer}, {"version", m->glVersion}, {"backend", m->glBackend},
-             {"realGpu", m->realGpu}};
+  j["gl"] = toJson(m->gl);  // renderer, version, vendor, backend, realGpu, kind, device
   return j;
 }
 

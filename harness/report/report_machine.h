@@ -5,9 +5,11 @@
 
 namespace mb::report {
 
-// CPU model, logical cores, LP_NUM_THREADS (null when unset) and "gl" {renderer, version,
-// backend, realGpu} from frame_timing.h's machineInfo() (creates the shared GL context; "gl"
-// holds {"error"} when that fails), plus kernel (uname), compiler, build type and UTC time.
+// CPU model, logical cores, LP_NUM_THREADS (null when unset) and "gl" (render_frame.h's
+// toJson(gl::ContextInfo): renderer, version, vendor, backend, realGpu, kind, device) from
+// frame_timing.h's machineInfo() (creates the shared GL context; "gl" holds {"error"} when that
+// fails), plus kernel (uname), compiler, build type, UTC time and "simdTarget" (the Highway
+// target kernels/simd dispatches to here).
 nlohmann::json machineJson();
 
 }  // namespace mb::report

@@ -103,11 +103,14 @@ int mergeReports(const std::vector<std::string>& dirs, const Options& o) {
   settings["shard"]["merged"] = dirs;
   json report = assembleReport(first["machine"], settings, std::move(scenes), first["opsPerVertex"], kernels);
   report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files
-  for (const ShardRun& r : runs)  // the curved drift: measured by every shard with a curved scene, alike
-    if (r.report.contains("curved")) {
-      report["curved"] = r.report["curved"];
-      break;
-    }
+  // Alike in every shard that has them: the curved drift (measured by every shard with a curved
+  // scene) and motorbench isa's file (--isa-json).
+  for (const char* key : {"curved", "isa"})
+    for (const ShardRun& r : runs)
+      if (r.report.contains(key)) {
+        report[key] = r.report[key];
+        break;
+      }
   std::fprintf(stderr, "merge: %d shard(s), %zu scene(s) -> %s\n", count, report["scenes"].size(), o.outDir.c_str());
   return writeReportFolder(std::move(report), o);
 }

@@ -1,6 +1,11 @@
 #include "harness/report/report_ops.h"
 
+#include <chrono>
+#include <cstdio>
+
 #include "harness/ops/ops_vertex.h"
+#include "harness/ops/pipeline_ops.h"
+#include "harness/process/progress.h"
 #include "pipelines/pipeline.h"
 
 namespace mb::report {
@@ -26,7 +31,20 @@ const json* findVariant(const json& ops, const std::string& pipeline, const std:
 }  // namespace
 
 json measureOpsPerVertex() {
-  const opsv::VertexOps ops = opsv::measureVertexOps();
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  Clock::time_point shown = start;
+  const opsv::VertexOps ops = opsv::measureVertexOps(opsv::SpirvDepth::Full, [&](size_t done, size_t total, const std::string& what) {
+    const Clock::time_point now = Clock::now();
+    if (done < total && now - shown < std::chrono::seconds(5)) return;  // a line every 5 s, and the last
+    shown = now;
+    const double elapsed = std::chrono::duration<double>(now - start).count();
+    std::string line = "report: counting ops per vertex: " + std::to_string(done) + "/" + std::to_string(total) +
+                       " kernels and shader variants (" + what + "), " + durationText(elapsed) + " elapsed";
+    if (done < total) line += ", about " + durationText(elapsed / double(done) * double(total - done)) + " left";
+    std::fprintf(stderr, "%s\n", line.c_str());
+    std::fflush(stderr);
+  });
   json full = opsv::toJson(ops);
   // A flat, stable view of the variants (ops_vertex's own JSON may grow other fields).
   json variants = json::array();
@@ -55,7 +73,7 @@ json measureOpsPerVertex() {
     kernels.push_back(row);
   }
   return {{"kernels", kernels}, {"variants", variants}, {"toolsProblem", ops.toolsProblem},
-          {"detail", full}};
+          {"perPipeline", opsv::toJson(opsv::pipelineOps(ops))}, {"detail", full}};
 }
 
 json sceneOpsPerVertex(const json& ops, const json& mix) {

@@ -7,9 +7,12 @@
 
 namespace mb::report {
 
-// {"kernels": [...], "variants": [...], "toolsProblem": ...} with, for every variant (one
-// pipeline's rigid / skinned / scaled-fallback vertex shader incl. world to clip), "counted"
-// and "spirv" mul/add/div/sqrt/other.
+// {"kernels": [...], "variants": [...], "toolsProblem": ..., "perPipeline": [...]} with, for
+// every variant (one pipeline's rigid / skinned / scaled-fallback vertex shader incl. world to
+// clip), "counted" and "spirv" mul/add/div/sqrt/other; "perPipeline": harness/ops/pipeline_ops.h's
+// rows (rigid, skinned, to clip, patch of every registered pipeline).
+// Progress goes to stderr ("report: counting ops per vertex: 23/71 (...), 20 s elapsed, about
+// 40 s left") every few seconds: compiling every probe and variant takes a minute or more.
 nlohmann::json measureOpsPerVertex();
 
 // Per pipeline, the mean ops of one drawn vertex of a scene with `mix` ({"rigid", "skinned",

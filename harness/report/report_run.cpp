@@ -224,6 +224,10 @@ int runReport(const Options& o) {
                                std::move(kernelJson));
   report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files
   if (anyCurved) report["curved"] = curvedExtra;
+  if (!o.isaJson.empty()) {  // checked by the command before the run (schema motorbench-isa/1)
+    std::ifstream in(o.isaJson);
+    report["isa"] = json::parse(in, nullptr, false);
+  }
   const int status = writeReportFolder(std::move(report), o);
   fs::remove_all(work, ec);
   return status;

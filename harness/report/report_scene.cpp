@@ -47,8 +47,11 @@ json memoryJson(const PipelineStats& s) {
                ? json(double(s.vertexBytes - s.normalMappedVertexBytes) / double(s.vertices - s.normalMappedVertices))
                : json(nullptr)},
           {"floatsPerVertex", s.floatsPerVertex},
-          {"floatsPerTransform", s.floatsPerTransform},
-          {"floatsPerTransformWithScale", s.floatsPerTransformWithScale},
+          // null: no node transform uploaded (every draw skinned, or every draw instanced: the
+          // joint palette or the per-instance stream moves the mesh), not a transform of 0 floats.
+          {"floatsPerTransform", s.floatsPerTransform > 0 ? json(s.floatsPerTransform) : json(nullptr)},
+          {"floatsPerTransformWithScale",
+           s.floatsPerTransformWithScale > 0 ? json(s.floatsPerTransformWithScale) : json(nullptr)},
           {"floatsPerJoint", s.floatsPerJoint},
           // Instanced draws: the per-instance transforms of one frame and their size each.
           {"instances", s.instances},
@@ -186,7 +189,7 @@ json measureScene(const SceneJob& job) {
                                                              ? " (" + scene->animations[size_t(a)].name + ")" : "");
     json frame = {{"time", shots[k].time}, {"animation", a >= 0 ? json(a) : json(nullptr)},
                   {"images", json::object()}, {"diffs", json::object()},
-                  {"metrics", json::object()}, {"errors", json::object()}};
+                  {"metrics", json::object()}, {"drawnPixels", json::object()}, {"errors", json::object()}};
     std::map<std::string, RgbaImage> images;
     for (const std::string& p : job.pipelines) {
       ++framesTried;
@@ -207,6 +210,7 @@ json measureScene(const SceneJob& job) {
       }
       ++framesOk;
       frame["images"][p] = file;
+      frame["drawnPixels"][p] = drawnPixels(f->image);  // 0: background only
       conversion[p].push_back(f->stats.conversionMs);
       json& pj = out["pipelines"][p];
       if (!pj.contains("memory")) {  // the uploads do not depend on the time; keep the first
@@ -216,7 +220,7 @@ json measureScene(const SceneJob& job) {
         pj["draws"] = f->stats.draws;
         pj["skinBlend"] = skinBlendOf(p);
         if (!out.contains("gl"))
-          out["gl"] = {{"renderer", f->glRenderer}, {"version", f->glVersion}, {"backend", f->glBackend}};
+          out["gl"] = toJson(f->gl);  // the device record (render_frame.h)
       }
       images.emplace(p, std::move(f->image));
     }

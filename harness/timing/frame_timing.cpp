@@ -31,14 +31,6 @@ double processCpuMs() {
   return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
 }
 
-// Per-frame ratios b[i] / a[i] of two sample series.
-std::vector<double> pairedRatios(const std::vector<double>& a, const std::vector<double>& b) {
-  std::vector<double> r;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
-    if (a[i] > 0) r.push_back(b[i] / a[i]);
-  return r;
-}
-
 // Linear-interpolated quantile of sorted samples.
 double quantile(const std::vector<double>& s, double q) {
   if (s.empty()) return 0;
@@ -58,10 +50,11 @@ std::string cpuModel() {
   return "unknown";
 }
 
-bool softwareRenderer(const std::string& renderer) {
-  for (const char* sw : {"llvmpipe", "softpipe", "swrast", "lavapipe", "SwiftShader", "Software"})
-    if (renderer.find(sw) != std::string::npos) return true;
-  return false;
+// Bits of the GL_TIME_ELAPSED counter (0: the implementation has no timer).
+int timerBits() {
+  GLint bits = 0;
+  glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
+  return bits;
 }
 
 // The animation state of frame `i`: animation 0 playing at 60 Hz (wrapped), blended halfway
@@ -81,6 +74,13 @@ AnimState stateForFrame(const Scene& scene, int i) {
 double ratioOf(double motor, double matrix) { return motor > 0 && matrix > 0 ? motor / matrix : -1; }
 
 }  // namespace
+
+std::vector<double> pairedRatios(const std::vector<double>& a, const std::vector<double>& b) {
+  std::vector<double> r;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+    if (a[i] > 0) r.push_back(b[i] / a[i]);
+  return r;
+}
 
 Spread spreadOf(std::vector<double> s) {
   Spread r;
@@ -105,10 +105,19 @@ Result<MachineInfo> machineInfo() {
   m.glRenderer = (*ctx)->info().renderer;
   m.glVersion = (*ctx)->info().version;
   m.glBackend = (*ctx)->info().backend;
+  m.gl = (*ctx)->info();
   const char* lp = std::getenv("LP_NUM_THREADS");
   m.lpNumThreads = lp ? lp : "unset";
-  m.realGpu = !softwareRenderer(m.glRenderer);
+  m.realGpu = m.gl.realGpu();
   return m;
+}
+
+const char* toString(FrameTimeSource source) {
+  return source == FrameTimeSource::GpuTimer ? "gpu-timer" : "wall-clock";
+}
+
+FrameTimeSource chooseFrameTimeSource(bool realGpu, int timerBits, bool forced) {
+  return (realGpu || forced) && timerBits > 0 ? FrameTimeSource::GpuTimer : FrameTimeSource::WallClock;
 }
 
 bool drawsVertexBoundAt(const Scene& scene, int width, int height) {
@@ -150,8 +159,10 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   // A fixed camera (the rest pose's framing): the same view for every frame and pipeline.
   const View view = frameScene(scene, stateForFrame(scene, 0),
                                float(settings.width) / float(settings.height));
+  out.source = chooseFrameTimeSource(machine->realGpu, timerBits(), settings.forceTimerQueries);
+  // One query object, reused: each result is read after the glFinish that ends its sample.
   GLuint query = 0;
-  if (machine->realGpu) glGenQueries(1, &query);
+  if (out.source == FrameTimeSource::GpuTimer) glGenQueries(1, &query);
   const int total = settings.warmup + settings.frames;
   for (int i = 0; i < total; ++i) {
     const AnimState st = stateForFrame(scene, i);
@@ -178,7 +189,7 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
         for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) phases[k2] += ph.*kUpdatePhases[k2].field;
       }
       p.timeUpdatePhases(false);
-      double frameMs = 0, cpuMs = 0, gpuMs = 0;
+      double wallMs = 0, cpuMs = 0, gpuMs = 0;
       for (int rep = 0; rep < std::max(1, settings.bestOf); ++rep) {
         const auto r0 = Clock::now();
         const double c0 = processCpuMs();
@@ -188,11 +199,18 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
         if (query) glEndQuery(GL_TIME_ELAPSED);
         glFinish();
         const double wall = ms(r0, Clock::now()), cpu = processCpuMs() - c0;
-        GLuint64 ns = 0;
-        if (query) glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
-        frameMs = rep ? std::min(frameMs, wall) : wall;
+        double gpu = 0;
+        if (query) {  // after glFinish the result is there: reading it waits for nothing
+          GLint available = 0;
+          glGetQueryObjectiv(query, GL_QUERY_RESULT_AVAILABLE, &available);
+          if (!available) return R::fail(sceneName + ": GL_TIME_ELAPSED result not available after glFinish");
+          GLuint64 ns = 0;
+          glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+          gpu = double(ns) * 1e-6;
+        }
+        wallMs = rep ? std::min(wallMs, wall) : wall;
         cpuMs = rep ? std::min(cpuMs, cpu) : cpu;
-        gpuMs = rep ? std::min(gpuMs, double(ns) * 1e-6) : double(ns) * 1e-6;
+        gpuMs = rep ? std::min(gpuMs, gpu) : gpu;
       }
       if (i < settings.warmup) {
         // Calibrate R on the warm-up: enough calls for a block of kMinUpdateBlockMs.
@@ -202,9 +220,10 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
       }
       t.updateMs.push_back(updateMs);
       for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) t.phaseMs[k2].push_back(phases[k2] / t.updateRepeats);
-      t.frameMs.push_back(frameMs);
+      t.frameMs.push_back(query ? gpuMs : wallMs);
+      t.wallMs.push_back(wallMs);
       t.cpuMs.push_back(cpuMs);
-      if (query && i > 0) t.gpuMs.push_back(gpuMs);  // frame 0's queries dropped
+      if (query) t.gpuMs.push_back(gpuMs);  // the warm-up frames above absorb first-use costs
     }
   }
   if (query) glDeleteQueries(1, &query);
@@ -214,6 +233,7 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   for (size_t k = 0; k < live.size(); ++k) {
     PipelineTiming& t = out.pipelines[slots[k]];
     t.frame = spreadOf(t.frameMs), t.update = spreadOf(t.updateMs), t.gpu = spreadOf(t.gpuMs);
+    t.wall = spreadOf(t.wallMs);
     t.cpu = spreadOf(t.cpuMs);
     for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) t.phases[k2] = spreadOf(t.phaseMs[k2]);
     t.stats = live[k]->stats();
@@ -257,7 +277,8 @@ nlohmann::json updatePhasesJson(const PipelineTiming& t) {
 nlohmann::json toJson(const MachineInfo& m) {
   return {{"cpu_model", m.cpuModel}, {"cores", m.cores}, {"GL_RENDERER", m.glRenderer},
           {"GL_VERSION", m.glVersion}, {"gl_backend", m.glBackend},
-          {"LP_NUM_THREADS", m.lpNumThreads}, {"gpu_timer_queries", m.realGpu}};
+          {"LP_NUM_THREADS", m.lpNumThreads}, {"gpu_timer_queries", m.realGpu},
+          {"gl", mb::toJson(m.gl)}};
 }
 
 double verticesPerUs(const PipelineTiming& t, bool gpu) {
@@ -270,7 +291,8 @@ nlohmann::json toJson(const ConfigTiming& c) {
   for (const PipelineTiming& t : c.pipelines) {
     nlohmann::json j = {{"error", t.error.empty() ? nlohmann::json() : nlohmann::json(t.error)}};
     if (t.error.empty()) {
-      j["frame_ms"] = toJson(t.frame);
+      j["frame_ms"] = toJson(t.frame);  // the figure: frameTimeSource's samples
+      j["wall_ms"] = toJson(t.wall);
       j["frame_cpu_ms"] = toJson(t.cpu);
       j["update_ms"] = toJson(t.update);
       j["update_calls_per_block"] = t.updateRepeats;
@@ -294,6 +316,7 @@ nlohmann::json toJson(const ConfigTiming& c) {
           {"width", c.width},
           {"height", c.height},
           {"patchLevel", c.patchLevel ? nlohmann::json(c.patchLevel) : nlohmann::json()},
+          {"frameTimeSource", toString(c.source)},
           {"pipelines", pipelines},
           {"ratio_motor_over_matrix", num(c.frameRatio)},
           {"paired_ratio_motor_over_matrix", num(c.pairedFrameRatio)},

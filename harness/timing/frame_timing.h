@@ -16,14 +16,17 @@
 //  - W warm-up frames are dropped, then N frames give median, quartiles and MAD;
 //  - ratios: of the medians, and the median of the per-frame ratios (both pipelines render the
 //    same frame back to back, so a slow spell of the machine hits both samples of a pair);
-//  - GL timer queries (GL_TIME_ELAPSED) are used as an extra column only when GL_RENDERER is a
-//    real GPU (llvmpipe's are not trustworthy), the first query discarded.
+//  - the frame-time figure (frameTimeSource): on a real GPU the GL_TIME_ELAPSED timer query
+//    around clear + render, read after the glFinish that ends the wall-clock sample (so reading
+//    it never stalls a measured frame), with the wall clock beside it; on a CPU rasteriser the
+//    wall clock (llvmpipe's timer queries do not time a GPU: README.md).
 #pragma once
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "pipelines/gl/context.h"
 #include "pipelines/pipeline.h"
 #include "pipelines/result.h"
 #include "pipelines/scene/scene.h"
@@ -37,16 +40,28 @@ struct Spread {
 };
 // Median, quartiles (linear interpolation) and median absolute deviation of `samples`.
 Spread spreadOf(std::vector<double> samples);
+// Per-frame ratios b[i] / a[i] of two sample series (frames where a[i] > 0).
+std::vector<double> pairedRatios(const std::vector<double>& a, const std::vector<double>& b);
 
 struct MachineInfo {
   std::string cpuModel;    // /proc/cpuinfo "model name"
   unsigned cores = 0;      // hardware threads
   std::string glRenderer, glVersion, glBackend;
   std::string lpNumThreads;  // LP_NUM_THREADS as set, or "unset"
-  bool realGpu = false;      // GL_RENDERER is not a software rasteriser
+  bool realGpu = false;      // neither the device nor GL_RENDERER is a software rasteriser
+  gl::ContextInfo gl;        // the whole record (device index, DRM node, vendor)
 };
 // Needs the shared GL context (creates it on first use).
 Result<MachineInfo> machineInfo();
+
+// Where a frame-time figure comes from: GL_TIME_ELAPSED ("gpu-timer") or steady_clock around
+// clear + render + glFinish ("wall-clock").
+enum class FrameTimeSource { GpuTimer, WallClock };
+const char* toString(FrameTimeSource source);
+// The rule: timer queries on a real GPU whose GL_TIME_ELAPSED counter has bits
+// (GL_QUERY_COUNTER_BITS > 0), the wall clock elsewhere; `forced` (tests only) takes the timer
+// queries on any renderer that has them.
+FrameTimeSource chooseFrameTimeSource(bool realGpu, int timerBits, bool forced = false);
 
 struct Settings {
   int frames = 30, warmup = 5;
@@ -56,6 +71,8 @@ struct Settings {
   int width = 512, height = 512;
   std::string config = "normal";  // label: "normal", "vertex-bound"
   PipelineOptions options;        // given to every pipeline (e.g. the same SkinSpace for both)
+  // Tests only: time with GL timer queries on a CPU rasteriser too (chooseFrameTimeSource).
+  bool forceTimerQueries = false;
 };
 
 inline constexpr double kMinUpdateBlockMs = 0.25;
@@ -73,9 +90,10 @@ inline constexpr int kUpdatePhaseCount = int(sizeof kUpdatePhases / sizeof kUpda
 
 struct PipelineTiming {
   std::string pipeline;
-  // Per measured frame: wall clock, process CPU time, CPU update (per call), GPU timer query.
-  std::vector<double> frameMs, cpuMs, updateMs, gpuMs;
-  Spread frame, cpu, update, gpu;
+  // Per measured frame: the frame-time figure (ConfigTiming::source: GPU timer or wall clock),
+  // wall clock, process CPU time, CPU update (per call), GPU timer query (empty without).
+  std::vector<double> frameMs, wallMs, cpuMs, updateMs, gpuMs;
+  Spread frame, wall, cpu, update, gpu;
   // Per measured frame and phase (kUpdatePhases order): ms per update call, from the block
   // timed with the phase clock on; their spreads.
   std::vector<double> phaseMs[kUpdatePhaseCount];
@@ -89,6 +107,7 @@ struct ConfigTiming {
   std::string scene, config;
   int width = 0, height = 0;
   int patchLevel = 0;  // Scene::patchLevel when the scene has Bezier patches, else 0
+  FrameTimeSource source = FrameTimeSource::WallClock;  // of every PipelineTiming::frameMs
   std::vector<PipelineTiming> pipelines;  // registry order, matrix first
   // motor / matrix, negative when either side is missing. frameRatio: of the frame-time
   // medians; pairedFrameRatio (spread: pairedFrame): the median of the per-frame ratios;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "harness/render/render_frame.h"
 #include "harness/timing/frame_timing.h"
 
 namespace mb::report {
@@ -16,7 +17,8 @@ constexpr int kTiny = 64;
 // One configuration in the report's shape (frame_timing's own JSON also keeps every sample,
 // which the report does not need).
 json configJson(const timing::ConfigTiming& c, const std::vector<std::string>& pipelines) {
-  json out = {{"width", c.width}, {"height", c.height}, {"config", c.config}, {"pipelines", json::object()}};
+  json out = {{"width", c.width}, {"height", c.height}, {"config", c.config},
+              {"frameTimeSource", timing::toString(c.source)}, {"pipelines", json::object()}};
   for (const timing::PipelineTiming& t : c.pipelines) {
     if (std::find(pipelines.begin(), pipelines.end(), t.pipeline) == pipelines.end()) continue;
     if (!t.error.empty()) {
@@ -25,7 +27,9 @@ json configJson(const timing::ConfigTiming& c, const std::vector<std::string>& p
     }
     out["pipelines"][t.pipeline] = {{"medianMs", t.frame.median}, {"q1Ms", t.frame.q1}, {"q3Ms", t.frame.q3},
                                     {"madMs", t.frame.mad}, {"minMs", t.frame.min}, {"maxMs", t.frame.max},
-                                    {"frames", t.frame.n}, {"cpuMedianMs", t.cpu.median},
+                                    {"frames", t.frame.n}, {"wallMedianMs", t.wall.median},
+                                    {"gpuMedianMs", t.gpuMs.empty() ? json() : json(t.gpu.median)},
+                                    {"cpuMedianMs", t.cpu.median},
                                     {"updateMedianMs", t.update.median},
                                     {"drawnVertices", t.stats.drawnVertices},
                                     {"verticesPerUs", timing::verticesPerUs(t)}};
@@ -64,16 +68,20 @@ json timeScene(const Scene& scene, const std::vector<std::string>& pipelines, in
                                           ": fewer than " + std::to_string(timing::kVertexBoundVerticesPerPixel) +
                                           " drawn vertices per pixel"}};
   }
+  if (auto m = timing::machineInfo()) out["gl"] = toJson(m->gl);  // the device every figure above is from
   out["frames"] = normal.frames;
   out["warmup"] = normal.warmup;
   out["bestOf"] = normal.bestOf;
   out["error"] = nullptr;
-  char summary[256];
+  const bool gpuTimer = out["frameTimeSource"] == "gpu-timer";
+  char summary[384];
   std::snprintf(summary, sizeof summary,
                 "%d frames per pipeline after %d warm-up at %dx%d, each the fastest of %d renders, pipelines "
-                "interleaved in alternating order (harness/timing/frame_timing.h); vertex-bound: the same at %dx%d "
-                "where the scene draws enough vertices.",
-                normal.frames, normal.warmup, width, height, normal.bestOf, kTiny, kTiny);
+                "interleaved in alternating order (harness/timing/frame_timing.h); frame time: %s; vertex-bound: "
+                "the same at %dx%d where the scene draws enough vertices.",
+                normal.frames, normal.warmup, width, height, normal.bestOf,
+                gpuTimer ? "GL_TIME_ELAPSED timer queries (wall clock beside it)" : "wall clock around render + glFinish",
+                kTiny, kTiny);
   out["summary"] = summary;
   return out;
 }

@@ -56,7 +56,7 @@ void Hierarchy(ConstPlanes trs, const int32_t* parent, const uint32_t* levelEnd,
         gatherPlanes(d, ConstPlanes(world), hn::LoadU(di, parent + k), pw);
         if constexpr (kMotor) {
           // The parent's scale applies to the local translation (the motor's e0 half).
-          for (size_t c = 4; c < 8; ++c) l[c] = hn::Mul(l[c], pw[8]);
+          MB_UNROLL for (size_t c = 4; c < 8; ++c) l[c] = hn::Mul(l[c], pw[8]);
           motorProduct(pw, l, o);
           o[8] = hn::Mul(pw[8], s);
         } else {

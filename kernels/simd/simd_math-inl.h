@@ -18,6 +18,13 @@ HWY_BEFORE_NAMESPACE();
 namespace mb::simd::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// MB_UNROLL before a loop over planes, rows or components: the count is a small constant and
+// the loop must vanish, so its arrays (uniforms, vertex planes, results) live in registers.
+// GCC at -O2 peels such loops only when that does not grow the code: the matrix vertex kept
+// three 3-trip row loops over stack arrays, reloading every uniform and input from the stack
+// and storing every result to it (issue 26; kernels/simd/README.md has the measurement).
+#define MB_UNROLL _Pragma("GCC unroll 16")
+
 // Input planes are prefetched this many floats ahead (1 KiB per plane: enough to cover the
 // memory latency at one core's bandwidth; 20 planes x 1 KiB stay well inside L1).
 constexpr size_t kPrefetchAhead = 256;
@@ -49,23 +56,23 @@ template <class Range> HWY_INLINE void forEachBatch(size_t n, bool stream, const
 
 // Prefetches `count` planes of `p` at item i + kPrefetchAhead.
 HWY_INLINE void prefetchPlanes(ConstPlanes p, size_t count, size_t i) {
-  for (size_t c = 0; c < count; ++c) hwy::Prefetch(p[c] + i + kPrefetchAhead);
+  MB_UNROLL for (size_t c = 0; c < count; ++c) hwy::Prefetch(p[c] + i + kPrefetchAhead);
 }
 
 template <class D, size_t C> HWY_INLINE void loadPlanes(D d, ConstPlanes p, size_t i, hn::Vec<D> (&v)[C]) {
-  for (size_t c = 0; c < C; ++c) v[c] = hn::LoadU(d, p[c] + i);
+  MB_UNROLL for (size_t c = 0; c < C; ++c) v[c] = hn::LoadU(d, p[c] + i);
 }
 template <class D, size_t C>
 HWY_INLINE void storePlanes(D d, Planes p, size_t i, const hn::Vec<D> (&v)[C], bool stream) {
   if (stream) {
-    for (size_t c = 0; c < C; ++c) hn::Stream(v[c], d, p[c] + i);
+    MB_UNROLL for (size_t c = 0; c < C; ++c) hn::Stream(v[c], d, p[c] + i);
   } else {
-    for (size_t c = 0; c < C; ++c) hn::StoreU(v[c], d, p[c] + i);
+    MB_UNROLL for (size_t c = 0; c < C; ++c) hn::StoreU(v[c], d, p[c] + i);
   }
 }
 // Per-draw uniforms broadcast to every lane.
 template <class D, size_t C> HWY_INLINE void broadcast(D d, const float* u, hn::Vec<D> (&v)[C]) {
-  for (size_t c = 0; c < C; ++c) v[c] = hn::Set(d, u[c]);
+  MB_UNROLL for (size_t c = 0; c < C; ++c) v[c] = hn::Set(d, u[c]);
 }
 
 // ---- matrix side -----------------------------------------------------------------------------
@@ -73,12 +80,12 @@ template <class D, size_t C> HWY_INLINE void broadcast(D d, const float* u, hn::
 // Affine point: rows 0..2 of m * (p, 1), m a mat4x3 (or the first 12... of a column-major mat4
 // read with column stride `cs`: 3 for mat4x3, 4 for mat4).
 template <class V> HWY_INLINE void affinePoint(const V* m, size_t cs, V x, V y, V z, V* o) {
-  for (size_t r = 0; r < 3; ++r)
+  MB_UNROLL for (size_t r = 0; r < 3; ++r)
     o[r] = hn::MulAdd(m[r], x, hn::MulAdd(m[cs + r], y, hn::MulAdd(m[2 * cs + r], z, m[3 * cs + r])));
 }
 // Linear part only: rows 0..2 of m * (v, 0).
 template <class V> HWY_INLINE void linearDirection(const V* m, size_t cs, V x, V y, V z, V* o) {
-  for (size_t r = 0; r < 3; ++r)
+  MB_UNROLL for (size_t r = 0; r < 3; ++r)
     o[r] = hn::MulAdd(m[r], x, hn::MulAdd(m[cs + r], y, hn::Mul(m[2 * cs + r], z)));
 }
 
@@ -106,7 +113,7 @@ template <class V> HWY_INLINE void cofactor(const V* m, V* c) {
 
 // a * b for mat4x3 operands (an affine product; 36 mul, 27 add).
 template <class V> HWY_INLINE void affineProduct(const V* a, const V* b, V* o) {
-  for (size_t j = 0; j < 3; ++j) linearDirection(a, 3, b[3 * j], b[3 * j + 1], b[3 * j + 2], o + 3 * j);
+  MB_UNROLL for (size_t j = 0; j < 3; ++j) linearDirection(a, 3, b[3 * j], b[3 * j + 1], b[3 * j + 2], o + 3 * j);
   affinePoint(a, 3, b[9], b[10], b[11], o + 9);
 }
 
@@ -204,13 +211,13 @@ template <class D, class V> HWY_INLINE void motorNormalize(D d, V* m) {
   m[5] = hn::Mul(hn::MulAdd(dd, m[2], m[5]), s);
   m[6] = hn::Mul(hn::MulAdd(dd, m[3], m[6]), s);
   m[7] = hn::Mul(hn::NegMulAdd(dd, m[0], m[7]), s);
-  for (int c = 0; c < 4; ++c) m[c] = hn::Mul(m[c], s);
+  MB_UNROLL for (int c = 0; c < 4; ++c) m[c] = hn::Mul(m[c], s);
 }
 
 // Gathers component planes [0, C) of a palette at the lanes' indices.
 template <class D, class VI, size_t C>
 HWY_INLINE void gatherPlanes(D d, ConstPlanes palette, VI idx, hn::Vec<D> (&v)[C]) {
-  for (size_t c = 0; c < C; ++c) v[c] = hn::GatherIndex(d, palette[c], idx);
+  MB_UNROLL for (size_t c = 0; c < C; ++c) v[c] = hn::GatherIndex(d, palette[c], idx);
 }
 
 // Joint indices of plane k at item i as int32 lanes.

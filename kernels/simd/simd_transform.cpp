@@ -49,8 +49,8 @@ void DirectionsMotor(const float* motor, ConstPlanes in, Planes out, size_t n) {
 
 // a * b for mat4 operands (matrixCompose: 16 mul + 48 fused).
 template <class V> HWY_INLINE void mat4Product(const V* x, const V* y, V* o) {
-  for (size_t j = 0; j < 4; ++j)
-    for (size_t r = 0; r < 4; ++r)
+  MB_UNROLL for (size_t j = 0; j < 4; ++j)
+    MB_UNROLL for (size_t r = 0; r < 4; ++r)
       o[4 * j + r] = hn::MulAdd(x[r], y[4 * j], hn::MulAdd(x[4 + r], y[4 * j + 1],
                      hn::MulAdd(x[8 + r], y[4 * j + 2], hn::Mul(x[12 + r], y[4 * j + 3]))));
 }

@@ -63,7 +63,7 @@ HWY_INLINE void loadSkinned(D d, bool main, ConstPlanes in, ConstPlanes weights,
                             hn::Vec<D> (&v)[C], hn::Vec<D> (&w)[4]) {
   if (main) {
     prefetchPlanes(in, C, i), prefetchPlanes(weights, 4, i);
-    for (size_t k = 0; k < 4; ++k) hwy::Prefetch(joints[k] + i + kPrefetchAhead);
+    MB_UNROLL for (size_t k = 0; k < 4; ++k) hwy::Prefetch(joints[k] + i + kPrefetchAhead);
   }
   loadPlanes(d, in, i, v);
   loadPlanes(d, weights, i, w);
@@ -79,10 +79,10 @@ void SkinnedVertexMatrix(ConstPlanes palette, float mirror, ConstPlanes in, Join
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
       loadSkinned(d, main, in, weights, joints, i, v, w);
       gatherPlanes(d, palette, jointIndices(d, joints, 0, i), j);
-      for (size_t c = 0; c < 12; ++c) skin[c] = hn::Mul(w[0], j[c]);
-      for (size_t k = 1; k < 4; ++k) {
+      MB_UNROLL for (size_t c = 0; c < 12; ++c) skin[c] = hn::Mul(w[0], j[c]);
+      MB_UNROLL for (size_t k = 1; k < 4; ++k) {
         gatherPlanes(d, palette, jointIndices(d, joints, k, i), j);
-        for (size_t c = 0; c < 12; ++c) skin[c] = hn::MulAdd(w[k], j[c], skin[c]);
+        MB_UNROLL for (size_t c = 0; c < 12; ++c) skin[c] = hn::MulAdd(w[k], j[c], skin[c]);
       }
       cofactor(skin, cof);
       affineVertex(skin, cof, mir, v, v + 3, v + 6, o);
@@ -102,13 +102,13 @@ void SkinnedVertexMotor(ConstPlanes palette, float scale, ConstPlanes in, JointP
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
       loadSkinned(d, main, in, weights, joints, i, v, w);
       gatherPlanes(d, palette, jointIndices(d, joints, 0, i), j);
-      for (size_t k = 0; k < 8; ++k) r[k] = hn::Mul(j[k], w[0]);
-      for (size_t k = 1; k < 4; ++k) {
+      MB_UNROLL for (size_t k = 0; k < 8; ++k) r[k] = hn::Mul(j[k], w[0]);
+      MB_UNROLL for (size_t k = 1; k < 4; ++k) {
         gatherPlanes(d, palette, jointIndices(d, joints, k, i), j);
         // Hemisphere rule: the weight is negated when dot(r rotor half, joint rotor half) <= 0.
         const V dot = hn::MulAdd(r[0], j[0], hn::MulAdd(r[1], j[1], hn::MulAdd(r[2], j[2], hn::Mul(r[3], j[3]))));
         const V wk = hn::IfThenElse(hn::Le(dot, zero), hn::Neg(w[k]), w[k]);
-        for (size_t q = 0; q < 8; ++q) r[q] = hn::MulAdd(j[q], wk, r[q]);
+        MB_UNROLL for (size_t q = 0; q < 8; ++q) r[q] = hn::MulAdd(j[q], wk, r[q]);
       }
       motorNormalize(d, r);
       c[0] = hn::Mul(r[7], r[1]), c[1] = hn::Mul(r[7], r[2]), c[2] = hn::Mul(r[7], r[3]);

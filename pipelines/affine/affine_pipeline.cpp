@@ -13,13 +13,13 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "pipelines/affine/qtangent_vertices.h"
+#include "pipelines/gl/frame_vertices.h"
 #include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/instance_stream.h"
 #include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
-#include "pipelines/affine/affine_vertices.h"
 #include "pipelines/scene/transform.h"
 
 namespace mb::affine {
@@ -66,8 +66,9 @@ private:
   FrameFormat format_;
   std::unique_ptr<Poser> poser_;
   const Scene* scene_ = nullptr;
-  std::unique_ptr<gl::Program> rigid_, skinned_;
-  std::unique_ptr<gl::Program> instanced_;                // MB_INSTANCED
+  // [rigid, skinned, instanced (MB_INSTANCED)][no tangent] (qtangent: [.][0] only); the
+  // instanced row only for scenes with instances.
+  std::unique_ptr<gl::Program> programs_[3][2];
   std::vector<std::vector<glm::mat4>> instanceMatrices_;  // per node: trsMatrix(instance)
   gl::InstanceStream instances_;
   std::unique_ptr<gl::Program> patch_;  // affine_patch.vs, only for scenes with patches
@@ -85,26 +86,22 @@ Status AffinePipeline::prepare(const Scene& scene) {
   release();
   scene_ = &scene;
   stats_ = PipelineStats{};
-  gl::Defines defines;
-  if (format_ == FrameFormat::QTangent) defines.push_back({"MB_QTANGENT", ""});
-  auto rigid = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
-  if (!rigid) return Status::fail(rigid.error());
-  if (gl::hasInstances(scene)) {
-    gl::Defines instanced = defines;
-    instanced.push_back({"MB_INSTANCED", ""});
-    auto program = gl::Program::fromFiles("affine.vs", "forward.fs", instanced);
-    if (!program) return Status::fail(program.error());
-    instanced_ = program.take();
-  }
+  const bool qtangent = format_ == FrameFormat::QTangent;
+  for (int kind = 0; kind < (gl::hasInstances(scene) ? 3 : 2); ++kind)
+    for (int noTangent = 0; noTangent < (qtangent ? 1 : 2); ++noTangent) {
+      gl::Defines defines;
+      if (qtangent) defines.push_back({"MB_QTANGENT", ""});
+      if (kind == 1) defines.push_back({"MB_SKINNED", ""});
+      if (kind == 2) defines.push_back({"MB_INSTANCED", ""});
+      if (noTangent) defines.push_back({"MB_NO_TANGENT", ""});
+      auto program = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
+      if (!program) return Status::fail(program.error());
+      programs_[kind][noTangent] = program.take();
+      if (kind == 1) programs_[kind][noTangent]->bindStorageBlock("AffineJoints", 0);
+    }
   instanceMatrices_.assign(scene.nodes.size(), {});
   for (size_t n = 0; n < scene.nodes.size(); ++n)
     for (const TRS& t : scene.nodes[n].instances) instanceMatrices_[n].push_back(trsMatrix(t));
-  defines.push_back({"MB_SKINNED", ""});
-  auto skinned = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
-  if (!skinned) return Status::fail(skinned.error());
-  rigid_ = rigid.take();
-  skinned_ = skinned.take();
-  skinned_->bindStorageBlock("AffineJoints", 0);
   if (Status fits = gl::checkPaletteSize(scene, 12 * sizeof(float)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
   if (gl::hasPatches(scene)) {
@@ -124,7 +121,7 @@ Status AffinePipeline::prepare(const Scene& scene) {
     };
     geometry_.uploadPacked(scene, interleave, qtangentAttributes(), stats_);
   } else {
-    geometry_.upload(scene, interleaveFullFrame, {3, 3, 4, 2}, stats_);  // pos, n, t, uv
+    geometry_.upload(scene, gl::floatFrameFormat, stats_);  // as matrix: tangent only where needed
   }
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
@@ -193,12 +190,13 @@ void AffinePipeline::render(const View& view) {
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (as matrix and
   // motor do: a program the frame does not use uploads nothing).
-  bool frameSet[4] = {};  // rigid, skinned, patch, instanced
-  auto useProgram = [&](int which) -> const gl::Program& {
-    gl::Program& p = which == 0 ? *rigid_ : which == 1 ? *skinned_ : which == 2 ? *patch_ : *instanced_;
+  // kind -1: the Bezier patch program; 0 rigid, 1 skinned, 2 instanced.
+  bool frameSet[4][2] = {};
+  auto useProgram = [&](int kind, int noTangent) -> const gl::Program& {
+    gl::Program& p = kind < 0 ? *patch_ : *programs_[kind][noTangent];
     p.use();
-    if (!frameSet[which]) {
-      frameSet[which] = true;
+    if (!frameSet[kind + 1][noTangent]) {
+      frameSet[kind + 1][noTangent] = true;
       gl::uniformMatrix4(p.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
                          stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
@@ -215,9 +213,10 @@ void AffinePipeline::render(const View& view) {
     GLuint palette = 0;
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = palettes_[i];
+    const int noTangent = g.variant == 1 ? 1 : 0;
     const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
     if (!groups.empty()) {
-      const gl::Program& program = useProgram(3);
+      const gl::Program& program = useProgram(2, noTangent);
       textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
       for (const gl::InstanceGroup& group : groups) {
         gl::setWinding(group.key == 1);
@@ -226,7 +225,7 @@ void AffinePipeline::render(const View& view) {
       }
       continue;
     }
-    const gl::Program& program = useProgram(patch ? 2 : palette ? 1 : 0);
+    const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, noTangent);
     const glm::mat4x3& model = pose_.world[size_t(d.node)];
     const float sign = pose_.mirrors[size_t(d.node)];
     if (palette) {
@@ -255,9 +254,8 @@ void AffinePipeline::release() {
   palettes_.release();
   textures_.release();
   instances_.release();
-  instanced_.reset();
-  rigid_.reset();
-  skinned_.reset();
+  for (auto& row : programs_)
+    for (auto& p : row) p.reset();
   scene_ = nullptr;
 }
 

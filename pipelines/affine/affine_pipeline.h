@@ -13,7 +13,7 @@ namespace mb {
 namespace affine {
 
 enum class FrameFormat {
-  Float,     // interleaveFullFrame: position, normal, tangent, uv (48 bytes)
+  Float,     // gl::floatFrameFormat: position, normal, [tangent,] uv (48 or 32 bytes)
   QTangent,  // interleaveQTangent: position, int16x4 quaternion, uv (28 bytes)
 };
 

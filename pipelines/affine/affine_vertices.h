@@ -1,8 +1,7 @@
-// The affine pipelines' float vertex: position, normal, tangent (xyz + handedness w), uv0 on
-// every primitive, 12 floats (48 bytes), as the matrix pipeline uploaded before issue 18 made
-// its tangent per primitive. A missing tangent becomes any unit vector perpendicular to the
-// normal (w = +1; no normal map samples it), missing uv0 (0, 0), a missing normal (0, 0, 1).
-// qtangent packs the same frames (interleaveQTangent).
+// The full frame qtangent packs (interleaveQTangent): position, normal, tangent (xyz +
+// handedness w), uv0 on every primitive, 12 floats. A missing tangent becomes any unit vector
+// perpendicular to the normal (w = +1; no normal map samples it), missing uv0 (0, 0), a missing
+// normal (0, 0, 1). `affine` itself uploads pipelines/gl/frame_vertices.h's vertex (issue 26).
 #pragma once
 #include <vector>
 

@@ -9,7 +9,9 @@
 #include <cstring>
 #include <vector>
 
+#include "pipelines/gl/egl_devices.h"
 #include "pipelines/gl/gl_api.h"
+#include "pipelines/gl/gpu_choice.h"
 
 namespace mb::gl {
 
@@ -60,34 +62,20 @@ std::string eglErrorText(const char* what) {
 void* eglProc(const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); }
 void* osmesaProc(const char* name) { return osmesa::getProc(name); }
 
-bool hasExtension(const char* list, const char* ext) {
-  if (!list) return false;
-  size_t n = std::strlen(ext);
-  for (const char* p = list; (p = std::strstr(p, ext)); p += n)
-    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
-  return false;
-}
-
-// EGL on the surfaceless platform: no window system, no pbuffer; the context is made current
-// with no surface (EGL_KHR_surfaceless_context) and renders into FBOs only.
-std::string startEgl(Context::Impl& s) {
-  const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  if (!hasExtension(clientExts, "EGL_MESA_platform_surfaceless"))
-    return "EGL_MESA_platform_surfaceless not available";
-  auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-      eglGetProcAddress("eglGetPlatformDisplayEXT"));
-  if (!getPlatformDisplay) return "eglGetPlatformDisplayEXT not available";
-  s.display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-  if (s.display == EGL_NO_DISPLAY) return eglErrorText("eglGetPlatformDisplayEXT(surfaceless)");
+// The GL 4.5 core context on an EGL display of a platform without windows (surfaceless, or
+// one device): no surface at all (EGL_KHR_surfaceless_context), rendering into FBOs only.
+std::string startEglContext(Context::Impl& s, const char* platform) {
+  if (s.display == EGL_NO_DISPLAY)
+    return eglErrorText((std::string("eglGetPlatformDisplayEXT(") + platform + ")").c_str());
   EGLint major = 0, minor = 0;
   if (!eglInitialize(s.display, &major, &minor)) return eglErrorText("eglInitialize");
   const char* exts = eglQueryString(s.display, EGL_EXTENSIONS);
-  if (!hasExtension(exts, "EGL_KHR_surfaceless_context"))
+  if (!eglExtensionListed(exts, "EGL_KHR_surfaceless_context"))
     return "EGL_KHR_surfaceless_context not available";
   if (!eglBindAPI(EGL_OPENGL_API)) return eglErrorText("eglBindAPI(EGL_OPENGL_API)");
 
   EGLConfig config = nullptr;  // EGL_NO_CONFIG_KHR
-  if (!hasExtension(exts, "EGL_KHR_no_config_context")) {
+  if (!eglExtensionListed(exts, "EGL_KHR_no_config_context")) {
     const EGLint want[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
     EGLint count = 0;
     if (!eglChooseConfig(s.display, want, &config, 1, &count) || count < 1)
@@ -99,6 +87,31 @@ std::string startEgl(Context::Impl& s) {
   s.context = eglCreateContext(s.display, config, EGL_NO_CONTEXT, attribs);
   if (s.context == EGL_NO_CONTEXT) return eglErrorText("eglCreateContext(GL 4.5 core)");
   return s.makeCurrent();
+}
+
+PFNEGLGETPLATFORMDISPLAYEXTPROC platformDisplayFn() {
+  return reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+}
+
+// Mesa's surfaceless platform (llvmpipe where no hardware driver claims it).
+std::string startSurfaceless(Context::Impl& s) {
+  if (!eglExtensionListed(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_MESA_platform_surfaceless"))
+    return "EGL_MESA_platform_surfaceless not available";
+  auto getPlatformDisplay = platformDisplayFn();
+  if (!getPlatformDisplay) return "eglGetPlatformDisplayEXT not available";
+  s.display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  return startEglContext(s, "surfaceless");
+}
+
+// One EGL device (EGL_EXT_platform_device): how NVIDIA's EGL, which has no surfaceless
+// platform, offers a headless context; Mesa offers its software device the same way.
+std::string startDevice(Context::Impl& s, const EglDevice& device) {
+  if (!eglExtensionListed(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_EXT_platform_device"))
+    return "EGL_EXT_platform_device not available";
+  auto getPlatformDisplay = platformDisplayFn();
+  if (!getPlatformDisplay) return "eglGetPlatformDisplayEXT not available";
+  s.display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device.handle, nullptr);
+  return startEglContext(s, ("device " + std::to_string(device.index)).c_str());
 }
 
 std::string startOsmesa(Context::Impl& s) {
@@ -133,7 +146,7 @@ std::string Context::Impl::makeCurrent() {
   // and skip re-installing its dispatch; releasing first forces a full bind.
   if (gPointersLoadedFor != this && context != EGL_NO_CONTEXT)
     eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-  if (!bind()) return context != EGL_NO_CONTEXT ? eglErrorText("eglMakeCurrent(surfaceless)")
+  if (!bind()) return context != EGL_NO_CONTEXT ? eglErrorText("eglMakeCurrent(no surface)")
                                                 : "OSMesaMakeCurrent failed";
   if (gPointersLoadedFor == this) return "";
   std::string missing = loadGlFunctions(context != EGL_NO_CONTEXT ? eglProc : osmesaProc);
@@ -155,35 +168,83 @@ Context::~Context() {
 
 bool Context::makeCurrent() { return impl_ && impl_->makeCurrent().empty(); }
 
+namespace {
+
+// Drops whatever an EGL attempt got half-way, so the next one starts from a fresh state.
+void discardEgl(std::unique_ptr<Context::Impl>& impl) {
+  if (impl->context != EGL_NO_CONTEXT) {
+    eglMakeCurrent(impl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(impl->display, impl->context);
+  }
+  impl = std::make_unique<Context::Impl>();
+}
+
+}  // namespace
+
 Result<std::unique_ptr<Context>> Context::create() {
+  using R = Result<std::unique_ptr<Context>>;
   const char* force = std::getenv("MB_GL_BACKEND");
   std::string want = force ? force : "";
   if (!want.empty() && want != "egl" && want != "osmesa")
-    return Result<std::unique_ptr<Context>>::fail("MB_GL_BACKEND=" + want +
-                                                  ": expected egl or osmesa");
+    return R::fail("MB_GL_BACKEND=" + want + ": expected egl or osmesa");
+  auto choice = gpuChoiceFromEnvironment();
+  if (!choice) return R::fail(choice.error());
   std::unique_ptr<Context> ctx(new Context());
   ctx->impl_ = std::make_unique<Impl>();
-  std::string eglWhy, osWhy;
-  if (want != "osmesa") eglWhy = startEgl(*ctx->impl_);
-  else eglWhy = "skipped (MB_GL_BACKEND=osmesa)";
-  if (!eglWhy.empty()) {
-    // Drop whatever EGL got half-way, then try the fallback with a fresh state.
-    if (ctx->impl_->context != EGL_NO_CONTEXT) {
-      eglMakeCurrent(ctx->impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-      eglDestroyContext(ctx->impl_->display, ctx->impl_->context);
+  ContextInfo& info = ctx->info_;
+
+  if (choice->kind == GpuChoice::Kind::Device) {  // asked for by index: that device or an error
+    if (want == "osmesa")
+      return R::fail("GPU " + choice->text() + " (--gpu / MB_GPU): MB_GL_BACKEND=osmesa has no EGL devices");
+    auto d = findEglDevice(*choice);
+    if (!d) return R::fail(d.error());
+    if (std::string why = startDevice(*ctx->impl_, *d); !why.empty())
+      return R::fail("cannot create a GL 4.5 core context on EGL device " + choice->text() + ": " + why);
+    info.backend = "egl-device " + choice->text();
+    info.deviceIndex = d->index, info.deviceSoftware = d->software, info.drm = d->drm;
+  } else {
+    std::string eglWhy, osWhy;
+    if (choice->kind == GpuChoice::Kind::Auto && want != "osmesa") {  // first hardware device
+      for (const EglDevice& d : listEglDevices(nullptr)) {
+        if (d.software) continue;
+        const std::string why = startDevice(*ctx->impl_, d);
+        if (why.empty()) {
+          info.backend = "egl-device " + std::to_string(d.index);
+          info.deviceIndex = d.index, info.deviceSoftware = false, info.drm = d.drm;
+          break;
+        }
+        eglWhy += "EGL device " + std::to_string(d.index) + ": " + why + "; ";
+        discardEgl(ctx->impl_);
+      }
     }
-    ctx->impl_ = std::make_unique<Impl>();
-    osWhy = want == "egl" ? "skipped (MB_GL_BACKEND=egl)" : startOsmesa(*ctx->impl_);
-    if (!osWhy.empty())
-      return Result<std::unique_ptr<Context>>::fail("cannot create a GL 4.5 core context: EGL: " +
-                                                    eglWhy + "; OSMesa: " + osWhy);
+    if (info.backend.empty()) {
+      // llvmpipe asked for: Mesa's surfaceless platform must not pick a hardware driver.
+      if (choice->kind == GpuChoice::Kind::Llvmpipe) setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
+      const std::string why = want != "osmesa" ? startSurfaceless(*ctx->impl_) : "skipped (MB_GL_BACKEND=osmesa)";
+      eglWhy += why;
+      if (why.empty()) info.backend = "egl-surfaceless";
+    }
+    if (info.backend.empty()) {
+      discardEgl(ctx->impl_);
+      osWhy = want == "egl" ? "skipped (MB_GL_BACKEND=egl)" : startOsmesa(*ctx->impl_);
+      if (!osWhy.empty())
+        return R::fail("cannot create a GL 4.5 core context: EGL: " + eglWhy + "; OSMesa: " + osWhy);
+      info.backend = "osmesa";
+    }
+    info.eglError = eglWhy;  // why earlier choices were passed over ("" when none was)
   }
-  ctx->info_.backend = eglWhy.empty() ? "egl-surfaceless" : "osmesa";
-  ctx->info_.eglError = eglWhy;
-  ctx->info_.renderer = glString(GL_RENDERER);
-  ctx->info_.version = glString(GL_VERSION);
-  ctx->info_.vendor = glString(GL_VENDOR);
+  info.renderer = glString(GL_RENDERER);
+  info.version = glString(GL_VERSION);
+  info.vendor = glString(GL_VENDOR);
+  if (info.deviceIndex < 0) info.deviceSoftware = isSoftwareRenderer(info.renderer);
   return ctx;
+}
+
+bool ContextInfo::realGpu() const { return !deviceSoftware && !isSoftwareRenderer(renderer); }
+
+std::string ContextInfo::deviceText() const {
+  if (deviceIndex < 0) return backend;
+  return backend + (deviceSoftware ? ", software" : ", hardware") + (drm.empty() ? "" : " " + drm);
 }
 
 Result<Context*> sharedContext() {

@@ -3,7 +3,7 @@
 // GPU: shaders/matrix.vs (+ SKINNED variant) and the shared shaders/forward.fs.
 // Per draw it uploads u_ModelMatrix and u_NormalMatrix (2 x mat4 = 32 floats, skinned draws
 // included, as the Sample Viewer does); per joint a joint matrix and a joint normal matrix.
-// Vertex format per primitive as the Sample Viewer's (matrix_vertices.h): a tangent only where
+// Vertex format per primitive as the Sample Viewer's (pipelines/gl/frame_vertices.h): a tangent only where
 // the primitive has one (authored, or generated for a normal map); the MB_NO_TANGENT shader
 // variant draws the others. Skinning: SkinSpace::Reference by default (the Sample Viewer's);
 // WorldPalette on request (configure()). Instanced nodes (Node::instances): the same two
@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "pipelines/gl/frame_vertices.h"
 #include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/instance_stream.h"
 #include "pipelines/gl/patch_geometry.h"
@@ -21,7 +22,6 @@
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
 #include "pipelines/matrix/matrix_pose.h"
-#include "pipelines/matrix/matrix_vertices.h"
 #include "pipelines/scene/transform.h"
 
 namespace mb {
@@ -102,17 +102,7 @@ Status MatrixPipeline::prepare(const Scene& scene) {
     if (Status up = patches_.upload(scene, stats_); !up) return up;
   }
   auto t0 = gl::Clock::now();
-  geometry_.upload(
-      scene,
-      [](const Primitive& p) {
-        // locations: 0 position, 1 normal, 2 tangent (when uploaded), 3 uv0; variant 1 = none
-        const bool tangent = matrix::uploadsTangent(p);
-        std::vector<gl::VertexAttribute> attributes{{0, 3}, {1, 3}};
-        if (tangent) attributes.push_back({2, 4});
-        attributes.push_back({3, 2});
-        return gl::VertexFormat{matrix::interleaveVertices(p), attributes, tangent ? 0 : 1};
-      },
-      stats_);
+  geometry_.upload(scene, gl::floatFrameFormat, stats_);  // variant 1: no tangent
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
   prepareMatrixPose(scene, work_);

@@ -98,7 +98,6 @@ Status MotorPipeline::prepare(const Scene& scene) {
       if (skinned) defines.push_back({"MB_SKINNED", ""});
       if (skinned && referenceSkin_) defines.push_back({"MB_SKIN_REFERENCE", ""});
       if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
-      if (variant_.projectionConstants) defines.push_back({"MB_PROJECT_CONSTANTS", ""});
       auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
       if (!program) return Status::fail(program.error());
       programs_[skinned][fallback] = program.take();
@@ -107,7 +106,6 @@ Status MotorPipeline::prepare(const Scene& scene) {
   for (int fallback = 0; fallback < 2 && gl::hasInstances(scene); ++fallback) {
     gl::Defines defines{{"MB_INSTANCED", ""}};
     if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
-    if (variant_.projectionConstants) defines.push_back({"MB_PROJECT_CONSTANTS", ""});
     auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
     if (!program) return Status::fail(program.error());
     instanced_[fallback] = program.take();
@@ -208,8 +206,7 @@ void MotorPipeline::render(const View& view) {
   uploadPalettes();
   streamInstances();
   const motor::CameraMotor camera = motor::cameraFromView(view);
-  const float projection[4] = {camera.znear, camera.zfar, camera.yfov, camera.aspect};
-  const MK::vec4 k =  // once per frame, not per vertex as project() does
+  const MK::vec4 k =  // once per frame, not per vertex as the paper listing's project() does
       mk().motorProjectionConstants(camera.znear, camera.zfar, camera.yfov, camera.aspect);
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (unused variants
@@ -224,9 +221,7 @@ void MotorPipeline::render(const View& view) {
     if (!frameSet[skinned + 1][fallback]) {
       frameSet[skinned + 1][fallback] = true;
       gl::uniform4fv(p.uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
-      gl::uniform4f(p.uniform("u_Projection"), projection, stats_.uniformBytesPerFrame);
-      if (variant_.projectionConstants && skinned >= 0)
-        gl::uniform4f(p.uniform("u_ProjectionK"), &k[0], stats_.uniformBytesPerFrame);
+      gl::uniform4f(p.uniform("u_ProjectionK"), &k[0], stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
     }
     return p;
@@ -304,7 +299,7 @@ std::unique_ptr<Pipeline> makeMotorPipeline(const MotorVariant& variant) {
 }
 std::unique_ptr<Pipeline> makeMotorPipeline() { return makeMotorPipeline(MotorVariant{}); }
 std::unique_ptr<Pipeline> makeMotorQPipeline() {
-  return makeMotorPipeline(MotorVariant{"motor_q", true, true});
+  return makeMotorPipeline(MotorVariant{"motor_q", true});
 }
 
 }  // namespace mb

@@ -9,12 +9,10 @@ namespace mb {
 // What distinguishes the motor pipelines (issue 16): `motor` is the paper's form.
 struct MotorVariant {
   std::string name = "motor";
-  bool quantizedFrame = false;       // tangent rotor as int16x4 SNORM (motor_q_vertices.h)
-  bool projectionConstants = false;  // world to clip with per-frame constants
-                                     // (motorWorldToClipConstants) instead of project()
+  bool quantizedFrame = false;  // tangent rotor as int16x4 SNORM (motor_q_vertices.h)
 };
 
 std::unique_ptr<Pipeline> makeMotorPipeline(const MotorVariant& variant);
 std::unique_ptr<Pipeline> makeMotorPipeline();   // the paper's form
-std::unique_ptr<Pipeline> makeMotorQPipeline();  // motor_q: quantized frame + constants
+std::unique_ptr<Pipeline> makeMotorQPipeline();  // motor_q: quantized frame
 }

@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -50,6 +52,21 @@ TEST(CliBench, OneCheapKernelWritesJsonWithItemsPerSecond) {
     if (b["name"].get<std::string>().find("simd_") != std::string::npos) EXPECT_FALSE(b.value("label", "").empty()) << b.dump();
   EXPECT_NE(log.find("motor/matrix"), std::string::npos) << log;
   EXPECT_NE(log.find("best motor / fastest matrix"), std::string::npos) << log;
+  // Issue 26: the machine above the summary and in the JSON's context: /proc/cpuinfo's model
+  // name, the logical cores, the Highway target the simd sides' labels name.
+  std::string model;
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; model.empty() && std::getline(cpuinfo, line);)
+    if (line.rfind("model name", 0) == 0) model = line.substr(line.find_first_not_of(' ', line.find(':') + 1));
+  const nlohmann::json& ctx = j["context"];
+  if (!model.empty()) EXPECT_EQ(ctx.value("cpu_model", ""), model);
+  EXPECT_EQ(ctx.value("logical_cores", ""), std::to_string(std::thread::hardware_concurrency()));
+  for (const auto& b : j["benchmarks"])
+    if (b["name"] == "compose/simd_motor") EXPECT_EQ(ctx.value("simd_target", ""), b.value("label", "")) << b.dump();
+  EXPECT_NE(log.find("Measured on CPU: " + ctx.value("cpu_model", "?") + ", " + ctx.value("logical_cores", "?") +
+                     " logical cores; SIMD kernels: Highway " + ctx.value("simd_target", "?")),
+            std::string::npos)
+      << log;
   fs::remove(out);
 }
 

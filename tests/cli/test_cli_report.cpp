@@ -5,9 +5,11 @@
 // measured value and a verdict. Never asserts timings or ratios, only that they are there.
 #include <gtest/gtest.h>
 
+
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <string>
 
@@ -105,6 +107,35 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
     EXPECT_NE(text.find("Diff heat maps:"), std::string::npos) << doc;
   }
   EXPECT_TRUE(r["glossary"]["PipelineStats"].contains("zeroScalarFrames")) << r["glossary"].dump();
+
+  // Issue 28: the ops step (a minute or more) reports progress up to its last item; every frame
+  // records the pixels each pipeline drew (the box covers part of the image, never all of it).
+  EXPECT_TRUE(std::regex_search(log, std::regex("report: counting ops per vertex: ([0-9]+)/\\1 kernels and shader variants")))
+      << log;
+  for (const json& f : box["frames"])
+    for (const std::string& p : mb::pipelineNames()) {
+      ASSERT_TRUE(f["drawnPixels"][p].is_number_integer()) << f.dump();
+      EXPECT_GT(f["drawnPixels"][p].get<int64_t>(), 0) << p;
+      EXPECT_LT(f["drawnPixels"][p].get<int64_t>(), 64 * 48) << p;
+    }
+  // Issue 28: image_error is grouped, one bar per compared pipeline on the scene, each at its
+  // own x, read from the data plots/index.json records (when matplotlib is there).
+  if (r["plots"]["available"] == true) {
+    const json index = readJson(out / "plots" / "index.json");
+    ASSERT_FALSE(index.is_discarded());
+    json bars;
+    for (const json& f : index["files"])
+      if (f["name"] == "image_error") bars = f["bars"];
+    ASSERT_TRUE(bars.is_array()) << index.dump(1);
+    std::set<std::string> series;
+    std::set<double> xs;
+    for (const json& b : bars)
+      if (b["panel"] == "psnr" && b["label"] == "textured_box") series.insert(b["series"].get<std::string>()), xs.insert(b["x"].get<double>());
+    std::vector<std::string> compared = mb::pipelineNames();
+    compared.erase(compared.begin());  // the baseline
+    EXPECT_EQ(series, std::set<std::string>(compared.begin(), compared.end())) << bars.dump();
+    EXPECT_EQ(xs.size(), compared.size()) << bars.dump();
+  }
   EXPECT_EQ(r["diffLegend"]["stops"].size(), 7u);
   fs::remove_all(dir);
 }

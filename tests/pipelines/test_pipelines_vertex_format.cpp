@@ -8,7 +8,7 @@
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/gl/gpu_geometry.h"
-#include "pipelines/matrix/matrix_vertices.h"
+#include "pipelines/gl/frame_vertices.h"
 #include "pipelines/scene/loader.h"
 
 using namespace mb;
@@ -57,13 +57,13 @@ TEST(MatrixVertexFormat, TangentOnlyWhereTheSampleViewerHasOne) {
   p.positions = {{1, 2, 3}, {4, 5, 6}};
   p.normals = {{0, 0, 1}, {0, 1, 0}};
   p.uv0 = {{0.25f, 0.5f}, {0.75f, 1.0f}};
-  EXPECT_FALSE(matrix::uploadsTangent(p));
+  EXPECT_FALSE(gl::uploadsTangent(p));
   // Hand-written layout: position, normal, uv.
-  EXPECT_EQ(matrix::interleaveVertices(p),
+  EXPECT_EQ(gl::interleaveVertices(p),
             (std::vector<float>{1, 2, 3, 0, 0, 1, 0.25f, 0.5f, 4, 5, 6, 0, 1, 0, 0.75f, 1.0f}));
   p.tangents = {{1, 0, 0, 1}, {0, 0, 1, -1}};
-  EXPECT_TRUE(matrix::uploadsTangent(p));
-  EXPECT_EQ(matrix::interleaveVertices(p),
+  EXPECT_TRUE(gl::uploadsTangent(p));
+  EXPECT_EQ(gl::interleaveVertices(p),
             (std::vector<float>{1, 2, 3, 0, 0, 1, 1, 0, 0, 1, 0.25f, 0.5f,  //
                                 4, 5, 6, 0, 1, 0, 0, 0, 1, -1, 0.75f, 1.0f}));
 }
@@ -104,6 +104,14 @@ TEST(MatrixVertexFormat, WithoutNormalMapOrTangentIs32BytesAndTheSameImage) {
     // The motor vertex keeps its 9 floats (the rotor carries the normal too).
     const Frame motor = render(bare, "motor", anim);
     EXPECT_EQ(motor.stats.vertexBytes, n * 36);
+    // Issue 26: affine uploads the same 8-float vertex (affine.vs MB_NO_TANGENT), 12 floats with
+    // an authored tangent, and the two draw bit-identical images.
+    const Frame affineBare = render(bare, "affine", anim);
+    const Frame affineAuthored = render(authored, "affine", anim);
+    EXPECT_EQ(affineBare.stats.vertexBytes, n * 32);
+    EXPECT_EQ(affineAuthored.stats.vertexBytes, n * 48);
+    EXPECT_DOUBLE_EQ(affineBare.stats.floatsPerVertex, 8.0);
+    EXPECT_EQ(affineBare.image.rgba, affineAuthored.image.rgba);
   }
 }
 

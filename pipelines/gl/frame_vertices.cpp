@@ -1,6 +1,6 @@
-#include "pipelines/matrix/matrix_vertices.h"
+#include "pipelines/gl/frame_vertices.h"
 
-namespace mb::matrix {
+namespace mb::gl {
 
 bool uploadsTangent(const Primitive& p) { return !p.tangents.empty(); }
 
@@ -23,4 +23,12 @@ std::vector<float> interleaveVertices(const Primitive& p) {
   return out;
 }
 
-}  // namespace mb::matrix
+VertexFormat floatFrameFormat(const Primitive& p) {
+  const bool tangent = uploadsTangent(p);
+  std::vector<VertexAttribute> attributes{{0, 3}, {1, 3}};
+  if (tangent) attributes.push_back({2, 4});
+  attributes.push_back({3, 2});
+  return VertexFormat{interleaveVertices(p), attributes, tangent ? 0 : 1};
+}
+
+}  // namespace mb::gl

@@ -1,14 +1,15 @@
-// The matrix pipeline's vertex layout, per primitive as the glTF-Sample-Viewer feeds its
-// matrix shaders: position, normal, [tangent (xyz + handedness w),] TEXCOORD_0 interleaved.
+// The float-frame vertex of the matrix forms (`matrix`, and `affine` since issue 26), per
+// primitive as the glTF-Sample-Viewer feeds its matrix shaders: position, normal, [tangent (xyz + handedness w),] TEXCOORD_0 interleaved.
 // The Sample Viewer has a tangent attribute only where the file authors TANGENT or the
 // material is normal-mapped (then it generates one); elsewhere its shader has no tangent
 // input. So: 12 floats (48 bytes) with a tangent, 8 floats (32 bytes) without.
 #pragma once
 #include <vector>
 
+#include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/scene/scene.h"
 
-namespace mb::matrix {
+namespace mb::gl {
 
 constexpr int kFloatsWithTangent = 12;    // strides; stats are still measured from upload sizes
 constexpr int kFloatsWithoutTangent = 8;
@@ -23,4 +24,8 @@ bool uploadsTangent(const Primitive& p);
 // a missing normal (0, 0, 1).
 std::vector<float> interleaveVertices(const Primitive& p);
 
-}  // namespace mb::matrix
+// interleaveVertices(p) with its attributes (locations 0 position, 1 normal, 2 tangent when
+// uploaded, 3 uv0) and variant 1 when it has no tangent (the shaders' MB_NO_TANGENT).
+VertexFormat floatFrameFormat(const Primitive& p);
+
+}  // namespace mb::gl

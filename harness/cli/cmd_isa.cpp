@@ -1,0 +1,73 @@
+// `motorbench isa [--family F,...] [--json FILE] [--isa-text DIR] [--device]`: AMD ISA
+// statistics of every pipeline's shaders from Mesa RADV's null device (harness/isa).
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "harness/cli/command.h"
+#include "harness/isa/isa_output.h"
+#include "harness/isa/isa_run.h"
+#include "harness/options/args.h"
+
+namespace {
+
+int runIsaCommand(const std::vector<std::string>& argv) {
+  const mb::Args args(argv, {{"family", "json", "isa-text", "jobs"}, {"device"}, {}, {"family"}});
+  if (!args.error().empty()) {
+    std::fprintf(stderr, "motorbench isa: %s\n", args.error().c_str());
+    return 2;
+  }
+  if (!args.positional().empty()) {
+    std::fprintf(stderr, "motorbench isa: unexpected argument '%s'\n", args.positional()[0].c_str());
+    return 2;
+  }
+  mb::isa::IsaOptions options;
+  options.device = args.has("device");
+  options.keepIsaText = args.has("isa-text");
+  options.jobs = int(args.integer("jobs", 0, 1, 64));
+  if (const auto list = args.get("family")) {
+    options.families.clear();
+    std::string known;
+    for (const auto& f : mb::isa::allFamilies()) known += (known.empty() ? "" : ", ") + f.id();
+    size_t start = 0;
+    while (start <= list->size()) {
+      const size_t comma = std::min(list->find(',', start), list->size());
+      const std::string name = list->substr(start, comma - start);
+      start = comma + 1;
+      bool found = false;
+      // "navi21" selects both NGG settings; "navi21-ngg" / "navi21-nonggc" one.
+      for (const auto& f : mb::isa::allFamilies())
+        if (f.name == name || f.id() == name) options.families.push_back(f), found = true;
+      if (!found) {
+        std::fprintf(stderr, "motorbench isa: --family: unknown family '%s' (known: %s)\n", name.c_str(), known.c_str());
+        return 2;
+      }
+    }
+  }
+  auto run = mb::isa::runIsa(options);
+  if (!run) {
+    std::fprintf(stderr, "motorbench isa: %s\n", run.error().c_str());
+    return 2;
+  }
+  std::fputs(mb::isa::formatTable(*run).c_str(), stdout);
+  if (const auto path = args.get("json")) {
+    std::ofstream out(*path);
+    if (!out || !(out << mb::isa::toJson(*run).dump(1) << "\n")) {
+      std::fprintf(stderr, "motorbench isa: cannot write %s\n", path->c_str());
+      return 2;
+    }
+  }
+  if (const auto dir = args.get("isa-text"))
+    if (mb::Status s = mb::isa::writeIsaText(*run, *dir); !s) {
+      std::fprintf(stderr, "motorbench isa: %s\n", s.error().c_str());
+      return 2;
+    }
+  return 0;
+}
+
+}  // namespace
+
+MB_COMMAND(isa, "isa", "[--family F,...] [--json FILE] [--isa-text DIR] [--device] [--jobs N]",
+           "AMD ISA statistics (instructions, registers, occupancy) of every pipeline's shaders "
+           "from Mesa RADV's null device, GCN 1 to RDNA 3", runIsaCommand);

@@ -1,0 +1,116 @@
+#include "harness/ops/shader_variants.h"
+
+namespace mb::opsv {
+namespace {
+
+using D = std::vector<std::pair<std::string, std::string>>;
+
+const std::string kMatrixMain =
+    "main() divides the position by w and normalises normal and tangent for the varyings "
+    "(motor.vs leaves normalisation to forward.fs, which normalises both anyway)";
+const std::string kAffineMain =
+    "main() normalises normal and tangent for the varyings, as matrix.vs (the position's w is 1: no divide)";
+const std::string kCurvedMain =
+    "main() adds the projection u_Projection * position (mat4 * vec4: 16 mul, 12 add), the same on both "
+    "sides of a space";
+const std::string kTexels = "the 16 control points are texelFetch (no arithmetic)";
+// Instanced draws (EXT_mesh_gpu_instancing, --instances): the rigid transform with its per-draw
+// data read from per-instance attributes; the same arithmetic as the non-instanced variant.
+const std::string kInstanced = "the per-draw transform read from per-instance attributes (divisor 1)";
+
+void matrixVariants(std::vector<ShaderVariant>& out) {
+  const std::string ref = "the Sample Viewer's: skin, then u_ModelMatrix per vertex";
+  const std::string world = "joint world * inverse bind; no model matrix per vertex";
+  const std::string clip = "matrixWorldToClip";
+  out.insert(out.end(), {
+      {"matrix", "matrix.vs", {}, "rigid", {"matrixRigidVertex", clip}, kMatrixMain},
+      {"matrix", "matrix.vs", {{"SKINNED", ""}}, "skinned", {"matrixSkinnedVertex", clip},
+       kMatrixMain + "; = skinned, reference"},
+      {"matrix", "matrix.vs", {{"SKINNED", ""}}, "skinned, reference", {"matrixSkinnedVertex", clip}, ref},
+      {"matrix", "matrix.vs", D{{"SKINNED", ""}, {"MB_WORLD_PALETTE", ""}}, "skinned, world palette",
+       {"matrixSkinnedVertexWorld", clip}, world},
+      {"matrix", "matrix.vs", D{{"MB_NO_TANGENT", ""}}, "rigid, no tangent", {"matrixRigidVertexNoTangent", clip}},
+      {"matrix", "matrix.vs", D{{"SKINNED", ""}, {"MB_NO_TANGENT", ""}}, "skinned, no tangent",
+       {"matrixSkinnedVertexNoTangent", clip}, ref},
+      {"matrix", "matrix.vs", D{{"SKINNED", ""}, {"MB_WORLD_PALETTE", ""}, {"MB_NO_TANGENT", ""}},
+       "skinned, world palette, no tangent", {"matrixSkinnedVertexWorldNoTangent", clip}, world},
+      {"matrix", "matrix_patch.vs", {}, "bezier patch", {"bezierPatch", "matrixPatchVertex", clip},
+       kMatrixMain + "; " + kTexels},
+      {"matrix", "matrix.vs", {{"MB_INSTANCED", ""}}, "rigid, instanced", {"matrixRigidVertex", clip},
+       kMatrixMain + "; " + kInstanced},
+      {"matrix", "matrix.vs", D{{"MB_INSTANCED", ""}, {"MB_NO_TANGENT", ""}}, "rigid, no tangent, instanced",
+       {"matrixRigidVertexNoTangent", clip}, kInstanced},
+  });
+}
+
+// affine, qtangent and hybrid share affine.vs; hybrid draws exactly as qtangent.
+void affineVariants(std::vector<ShaderVariant>& out) {
+  const std::string clip = "matrixWorldToClip";
+  out.insert(out.end(), {
+      {"affine", "affine.vs", {}, "rigid", {"matrixAffineVertex", clip}, kAffineMain},
+      {"affine", "affine.vs", {{"MB_SKINNED", ""}}, "skinned", {"affineSkinnedVertex", clip}, kAffineMain},
+      {"affine", "affine.vs", {{"MB_NO_TANGENT", ""}}, "rigid, no tangent", {"affineVertexNoTangent", clip},
+       "8-float vertex (position, normal, uv) as matrix.vs's MB_NO_TANGENT"},
+      {"affine", "affine.vs", D{{"MB_SKINNED", ""}, {"MB_NO_TANGENT", ""}}, "skinned, no tangent",
+       {"affineSkinnedVertexNoTangent", clip}, "8-float vertex"},
+      {"affine", "affine.vs", {{"MB_INSTANCED", ""}}, "rigid, instanced", {"matrixAffineVertex", clip},
+       kAffineMain + "; " + kInstanced},
+      {"affine", "affine.vs", D{{"MB_INSTANCED", ""}, {"MB_NO_TANGENT", ""}}, "rigid, no tangent, instanced",
+       {"affineVertexNoTangent", clip}, "8-float vertex; " + kInstanced},
+  });
+  for (const char* p : {"qtangent", "hybrid"}) {
+    const std::string note = kAffineMain + (std::string(p) == "hybrid" ? "; the GPU side of qtangent" : "");
+    out.insert(out.end(), {
+        {p, "affine.vs", {{"MB_QTANGENT", ""}}, "rigid", {"qtangentRigidVertex", clip}, note},
+        {p, "affine.vs", D{{"MB_QTANGENT", ""}, {"MB_SKINNED", ""}}, "skinned", {"qtangentSkinnedVertex", clip}, note},
+        {p, "affine.vs", D{{"MB_QTANGENT", ""}, {"MB_INSTANCED", ""}}, "rigid, instanced",
+         {"qtangentRigidVertex", clip}, note + "; " + kInstanced},
+    });
+  }
+}
+
+// motor and motor_q share motor.vs and motor_patch.vs (motor_q differs in the vertex format).
+void motorVariants(std::vector<ShaderVariant>& out) {
+  const std::string clip = "motorWorldToClipConstants";
+  for (const char* p : {"motor", "motor_q"}) {
+    out.insert(out.end(), {
+        {p, "motor.vs", {}, "rigid", {"motorRigidVertex", clip}},
+        {p, "motor.vs", {{"MB_SKINNED", ""}}, "skinned", {"motorSkinnedVertex", clip}, "= skinned, world palette"},
+        {p, "motor.vs", D{{"MB_SKINNED", ""}, {"MB_SKIN_REFERENCE", ""}}, "skinned, reference",
+         {"motorSkinnedVertexReference", clip}, "the paper's: gp(toWorld, blend) per vertex"},
+        {p, "motor.vs", {{"MB_SKINNED", ""}}, "skinned, world palette", {"motorSkinnedVertex", clip},
+         "joint world * inverse bind motors"},
+        {p, "motor.vs", {{"MB_SCALE_FALLBACK", ""}}, "scaled fallback", {"motorScaledVertex", clip}},
+        {p, "motor.vs", D{{"MB_SKINNED", ""}, {"MB_SCALE_FALLBACK", ""}}, "skinned+scaled",
+         {"motorBlendJoints", "motorScaledVertex", clip}},
+        {p, "motor_patch.vs", {}, "bezier patch", {"bezierPatch", "motorPatchVertex", clip}, kTexels},
+        {p, "motor_patch.vs", {{"MB_SCALE_FALLBACK", ""}}, "bezier patch, scaled fallback",
+         {"bezierPatch", "motorScaledPatchVertex", clip}, kTexels},
+        {p, "motor.vs", {{"MB_INSTANCED", ""}}, "rigid, instanced", {"motorRigidVertex", clip}, kInstanced},
+        {p, "motor.vs", D{{"MB_INSTANCED", ""}, {"MB_SCALE_FALLBACK", ""}}, "scaled fallback, instanced",
+         {"motorScaledVertex", clip}, kInstanced},
+    });
+  }
+}
+
+void curvedVariants(std::vector<ShaderVariant>& out) {
+  out.insert(out.end(), {
+      {"s3_matrix", "curved_matrix.vs", {{"MB_KAPPA", "1"}}, "S3 instance", {"curvedMatrixVertex"}, kCurvedMain},
+      {"s3_motor", "curved_motor.vs", {{"MB_KAPPA", "1"}}, "S3 instance", {"curvedMotorVertex"}, kCurvedMain},
+      {"h3_matrix", "curved_matrix.vs", {{"MB_KAPPA", "-1"}}, "H3 instance", {"curvedMatrixVertex"}, kCurvedMain},
+      {"h3_motor", "curved_motor.vs", {{"MB_KAPPA", "-1"}}, "H3 instance", {"curvedMotorVertex"}, kCurvedMain},
+  });
+}
+
+}  // namespace
+
+std::vector<ShaderVariant> shaderVariants() {
+  std::vector<ShaderVariant> out;
+  matrixVariants(out);
+  motorVariants(out);
+  affineVariants(out);
+  curvedVariants(out);
+  return out;
+}
+
+}  // namespace mb::opsv

@@ -1,0 +1,29 @@
+// Which kernels each registered pipeline draws: every real vertex-shader variant of every
+// pipeline (rigid, skinned, normal-mapped or not, scaled fallback, Bezier patch, curved
+// instance) with the counted kernels its main() calls. The one table every ops figure is
+// derived from (pipeline_ops.h: report, `motorbench ops`, claims, the README's table).
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mb::opsv {
+
+struct ShaderVariant {
+  std::string pipeline;  // a registered pipeline name (pipelines/registry.cpp)
+  std::string file;      // relative to the shader folder
+  std::vector<std::pair<std::string, std::string>> defines;
+  std::string label;     // "rigid", "skinned", ...
+  std::vector<std::string> kernels;  // VertexKernel::function names the variant's main() calls
+  std::string note = "";             // what main() does besides those kernels, "" when nothing
+};
+
+// Labels: "rigid", "skinned", "scaled fallback", "bezier patch" are what each pipeline draws by
+// default (the report weights them by its vertex mix). The skinned configurations of issue 18
+// are counted side by side for matrix and motor: "skinned, reference" (as the references do: the
+// node's transform after the blend) and "skinned, world palette" (neither reference); the
+// matrix default "skinned" is the former, the motor default the latter. "..., no tangent": the
+// float-frame matrix forms (matrix, affine) on primitives without TANGENT or normal map.
+std::vector<ShaderVariant> shaderVariants();
+
+}  // namespace mb::opsv

@@ -1,0 +1,79 @@
+// The counted per-vertex kernels of the motor forms: motor.vs (motor + uniform scale, tangent
+// rotor, motor skinning, world to clip).
+#include "harness/ops/vertex_inputs.h"
+#include "harness/ops/vertex_kernels.h"
+
+namespace mb::opsv::detail {
+
+std::vector<VertexKernel> motorKernels() {
+  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+  static PC P;
+  const std::string motorIncl = kMotorIncl, store = kStore3;
+  return {
+      {"motor", "rigid vertex with frame", "motorRigidVertex",
+       [&] { P.motorRigidVertex(in.toWorld, 1.25, in.position, in.rotor); },
+       "mat3x4 v = motorRigidVertex(motor(u_world[0], u_world[1]), u_scale, a_position, "
+       "a_tangentRotor);" + store,
+       motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform float u_scale;\n",
+       "paper 47/38 = sw_mp 21/18 + gp_rr 16/12 + extractNormalTangent 9/8 + 1 mul handedness; "
+       "here +3 mul: the uniform scale of the position, and the handedness is sign(1/x) "
+       "(1 div, 1 other: IEEE signed zero) instead of 1 mul"},
+      {"motor", "skinned vertex (4 joints)", "motorSkinnedVertex",
+       [&] {
+         P.motorSkinnedVertex(in.joints[0], in.joints[1], in.joints[2], in.joints[3],
+                              PC::vec4(0.4, 0.3, 0.2, 0.1), 1.25, in.position, in.rotor);
+       },
+       "mat3x4 v = motorSkinnedVertex(motor(u_j[0], u_j[1]), motor(u_j[2], u_j[3]), "
+       "motor(u_j[4], u_j[5]), motor(u_j[6], u_j[7]), a_weights, u_scale, a_position, "
+       "a_tangentRotor);" + store,
+       motorIncl + kMotorAttribs + "uniform vec4 u_j[8]; uniform float u_scale;\n", ""},
+      {"motor", "skinned vertex, reference", "motorSkinnedVertexReference",
+       [&] {
+         P.motorSkinnedVertexReference(in.toWorld, in.joints[0], in.joints[1], in.joints[2],
+                                       in.joints[3], PC::vec4(0.4, 0.3, 0.2, 0.1), 1.25,
+                                       in.position, in.rotor);
+       },
+       "mat3x4 v = motorSkinnedVertexReference(motor(u_world[0], u_world[1]), "
+       "motor(u_j[0], u_j[1]), motor(u_j[2], u_j[3]), motor(u_j[4], u_j[5]), "
+       "motor(u_j[6], u_j[7]), a_weights, u_scale, a_position, a_tangentRotor);" + store,
+       motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform vec4 u_j[8]; uniform float u_scale;\n",
+       "the paper's form: palette relative to the mesh node, toWorld = gp(toWorld, blend) per vertex"},
+      {"motor", "joint blend (4 joints)", "motorBlendJoints",
+       [&] {
+         P.motorBlendJoints(in.joints[0], in.joints[1], in.joints[2], in.joints[3],
+                            PC::vec4(0.4, 0.3, 0.2, 0.1));
+       },
+       "motor m = motorBlendJoints(motor(u_j[0], u_j[1]), motor(u_j[2], u_j[3]), "
+       "motor(u_j[4], u_j[5]), motor(u_j[6], u_j[7]), a_weights); o_0 = m[0]; o_1 = m[1];",
+       motorIncl + kMotorAttribs + "uniform vec4 u_j[8];\n",
+       "part of the skinned vertex: shortest-arc blend + normalize_m"},
+      {"motor", "world to clip", "motorWorldToClip",
+       [&] {
+         P.motorWorldToClip(in.camera, PC::vec3(1.5, 0.25, -3.0), 0.05, 100.0, 0.8, 1.5);
+       },
+       "gl_Position = motorWorldToClip(motor(u_camera[0], u_camera[1]), a_world, "
+       "u_projection.x, u_projection.y, u_projection.z, u_projection.w);",
+       motorIncl + "uniform vec4 u_camera[2]; uniform vec4 u_projection;\n"
+                   "layout(location = 0) in vec3 a_world;\n",
+       "the paper listing's form, not drawn since issue 26: project() recomputes its per-draw "
+       "constants (cot of half the fov, depth terms: 6 mul, 3 add, 4 div, 1 sin, 1 cos) per vertex; "
+       "per vertex proper: sw_mp + 3 mul, 1 add"},
+      {"motor, motor_q", "world to clip (per-frame constants)", "motorWorldToClipConstants",
+       [&] {
+         P.motorWorldToClipConstants(in.camera, PC::vec3(1.5, 0.25, -3.0),
+                                     PC::vec4(-1.2, 1.8, -0.1, -1.001));
+       },
+       "gl_Position = motorWorldToClipConstants(motor(u_camera[0], u_camera[1]), a_world, u_k);",
+       motorIncl + "uniform vec4 u_camera[2]; uniform vec4 u_k;\n"
+                   "layout(location = 0) in vec3 a_world;\n",
+       "drawn by motor.vs and motor_patch.vs: project() with its constants computed once per frame "
+       "(motorProjectionConstants), as the matrix side builds its projection matrix once per frame"},
+      {"motor", "scaled vertex (fallback)", "motorScaledVertex",
+       [&] { P.motorScaledVertex(in.toWorld, PC::vec3(1.0, -2.0, 0.5), in.position, in.rotor); },
+       "mat3x4 v = motorScaledVertex(motor(u_world[0], u_world[1]), u_scale3, a_position, "
+       "a_tangentRotor);" + store,
+       motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n", ""},
+  };
+}
+
+}  // namespace mb::opsv::detail

@@ -1,0 +1,105 @@
+#include "harness/timing/timing_text.h"
+
+#include <cstdio>
+
+namespace mb::timing {
+namespace {
+
+// "median [q1-q3]" of a spread in ms, shown scaled by `scale` (1: ms, 1000: us).
+std::string cell(const Spread& s, double scale = 1.0) {
+  char b[96];
+  std::snprintf(b, sizeof b, scale > 1 ? "%.2f [%.2f-%.2f]" : "%.3f [%.3f-%.3f]", s.median * scale, s.q1 * scale,
+                s.q3 * scale);
+  return b;
+}
+
+std::string format(const char* fmt, const std::string& a, const std::string& b, const std::string& c,
+                   const std::string& d, const std::string& e) {
+  char line[512];
+  std::snprintf(line, sizeof line, fmt, a.c_str(), b.c_str(), c.c_str(), d.c_str(), e.c_str());
+  return line;
+}
+
+const char* const kRow = "  %-10s %-24s %-22s %-28s %s\n";
+
+// The space's matrix and motor pipelines (matrix / motor, s3_matrix / s3_motor, ...).
+bool isMatrix(const std::string& p) { return p == "matrix" || p.ends_with("_matrix"); }
+bool isMotor(const std::string& p) { return p == "motor" || p.ends_with("_motor"); }
+
+}  // namespace
+
+std::string RatioText::text() const {
+  if (spread.n == 0) return "-";
+  char b[96];
+  std::snprintf(b, sizeof b, "%.3f [%.3f-%.3f]%s", spread.median, spread.q1, spread.q3, noise() ? " noise" : "");
+  return b;
+}
+
+RatioText pairedRatio(const std::vector<double>& baseline, const std::vector<double>& other) {
+  return {spreadOf(pairedRatios(baseline, other))};
+}
+
+std::string timingLegend() {
+  return "ratios: pipeline / matrix of the same space, < 1: motor (or the pipeline) faster; each is the median of "
+         "the per-frame ratios (both render the same frame back to back) with [q1-q3] of those ratios; \"noise\": "
+         "q1 <= 1 <= q3, the frames do not decide which is faster (time more --frames)\n";
+}
+
+std::string timingBlock(const ConfigTiming& c) {
+  std::string out = c.scene + (c.patchLevel ? " N=" + std::to_string(c.patchLevel) : "") + " (" + c.config + " " +
+                    std::to_string(c.width) + "x" + std::to_string(c.height) + ")\n";
+  out += format(kRow, "pipeline", "frame ms [q1-q3]", "update us [q1-q3]", "frame/matrix [q1-q3]",
+                "update/matrix [q1-q3]");
+  const PipelineTiming* matrix = nullptr;
+  const PipelineTiming* motor = nullptr;
+  for (const PipelineTiming& t : c.pipelines) {
+    if (!t.error.empty()) continue;
+    if (isMatrix(t.pipeline)) matrix = &t;
+    if (isMotor(t.pipeline)) motor = &t;
+  }
+  for (const PipelineTiming& t : c.pipelines) {
+    if (!t.error.empty()) {
+      out += format(kRow, t.pipeline, "error: " + t.error, "", "", "");
+      continue;
+    }
+    const bool base = &t == matrix;
+    const std::string frameRatio = base ? "1 (baseline)" : matrix ? pairedRatio(matrix->frameMs, t.frameMs).text() : "-";
+    const std::string updateRatio =
+        base ? "1 (baseline)" : matrix ? pairedRatio(matrix->updateMs, t.updateMs).text() : "-";
+    out += format(kRow, t.pipeline, cell(t.frame), cell(t.update, 1000.0), frameRatio, updateRatio);
+  }
+  if (matrix && motor) {
+    char ofMedians[32] = "-";
+    if (c.frameRatio > 0) std::snprintf(ofMedians, sizeof ofMedians, "%.3f", c.frameRatio);
+    out += "  " + motor->pipeline + "/" + matrix->pipeline + " frame: paired " +
+           pairedRatio(matrix->frameMs, motor->frameMs).text() + ", of the medians " + ofMedians +
+           "; process CPU time per frame: paired " + pairedRatio(matrix->cpuMs, motor->cpuMs).text() + "\n";
+  }
+  // The update phase by phase (medians, us per call), every pipeline.
+  std::string phases;
+  for (const PipelineTiming& t : c.pipelines) {
+    if (!t.error.empty()) continue;
+    char b[200];
+    std::snprintf(b, sizeof b, "    %-10s %.2f/%.2f/%.2f/%.2f/%.2f\n", t.pipeline.c_str(), 1e3 * t.phases[0].median,
+                  1e3 * t.phases[1].median, 1e3 * t.phases[2].median, 1e3 * t.phases[3].median,
+                  1e3 * t.phases[4].median);
+    phases += b;
+  }
+  if (!phases.empty())
+    out += "  update phases us (sampling/blending/conversion/hierarchy/palette; a separate block with the phase "
+           "clock on):\n" + phases;
+  // Vertices drawn (instances counted) per microsecond of median frame time, every pipeline.
+  std::string rates;
+  for (const PipelineTiming& t : c.pipelines) {
+    if (!t.error.empty()) continue;
+    char b[96];
+    std::snprintf(b, sizeof b, "%s%s %.1f", rates.empty() ? "" : "; ", t.pipeline.c_str(), verticesPerUs(t));
+    rates += b;
+  }
+  if (!rates.empty())
+    out += "  vertices per us of frame time (" + std::to_string(c.pipelines.front().stats.drawnVertices) +
+           " drawn vertices): " + rates + "\n";
+  return out;
+}
+
+}  // namespace mb::timing

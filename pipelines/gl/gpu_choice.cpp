@@ -1,0 +1,43 @@
+#include "pipelines/gl/gpu_choice.h"
+
+#include <cstdlib>
+
+namespace mb::gl {
+
+std::string GpuChoice::text() const {
+  switch (kind) {
+    case Kind::Auto: return "auto";
+    case Kind::Llvmpipe: return "llvmpipe";
+    case Kind::Device: return std::to_string(index);
+  }
+  return "auto";
+}
+
+Result<GpuChoice> parseGpuChoice(const std::string& text, const std::string& origin) {
+  GpuChoice c;
+  if (text.empty() || text == "auto") return c;
+  if (text == "llvmpipe") {
+    c.kind = GpuChoice::Kind::Llvmpipe;
+    return c;
+  }
+  const bool digits = text.size() <= 3 && text.find_first_not_of("0123456789") == std::string::npos;
+  if (!digits || std::stoi(text) > 255)
+    return Result<GpuChoice>::fail(origin + " " + text +
+                                   ": expected auto, llvmpipe or an EGL device index 0..255");
+  c.kind = GpuChoice::Kind::Device;
+  c.index = std::stoi(text);
+  return c;
+}
+
+Result<GpuChoice> gpuChoiceFromEnvironment() {
+  const char* env = std::getenv("MB_GPU");
+  return parseGpuChoice(env ? env : "", "MB_GPU");
+}
+
+bool isSoftwareRenderer(const std::string& renderer) {
+  for (const char* sw : {"llvmpipe", "softpipe", "swrast", "lavapipe", "SwiftShader", "Software"})
+    if (renderer.find(sw) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace mb::gl

@@ -1,0 +1,76 @@
+// Issue 28 items 6 and 10: `motorbench help CMD` and `CMD --help` print the command's options,
+// the pipeline names it accepts and one example; a pipeline name is checked before the scene is
+// loaded and framed.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "pipelines/pipeline.h"
+#include "tests/support/cli_issue_support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using mb::cli_test::contains;
+using mb::cli_test::quoted;
+using mb::cli_test::runMb;
+
+const std::vector<std::string> kCommands = {"bench", "check", "claims", "compare", "drift", "inspect",
+                                            "merge", "ops",   "render", "report",  "scenes", "time"};
+
+TEST(CliHelp, HelpCommandPrintsThatCommandsHelpNotTheGlobalOne) {
+  const auto help = runMb("help render");
+  EXPECT_EQ(help.rc, 0) << help.out;
+  EXPECT_EQ(help.out.rfind("usage: motorbench render SCENE", 0), 0u) << help.out;
+  EXPECT_FALSE(contains(help.out, "commands:")) << help.out;  // the global list
+  EXPECT_EQ(help.out, runMb("render --help").out);
+  const auto unknown = runMb("help nope");
+  EXPECT_EQ(unknown.rc, 2) << unknown.out;
+  EXPECT_TRUE(contains(unknown.out, "unknown command 'nope'")) << unknown.out;
+}
+
+TEST(CliHelp, EveryCommandListsItsOptionsAndOneExample) {
+  for (const std::string& c : kCommands) {
+    const auto help = runMb("help " + c);
+    EXPECT_EQ(help.rc, 0) << c << ": " << help.out;
+    EXPECT_TRUE(contains(help.out, "\noptions:\n  ")) << c << ": " << help.out;
+    EXPECT_TRUE(contains(help.out, "\nexample:\n  motorbench " + c + " ")) << c << ": " << help.out;
+  }
+  // Options as the parser knows them (one per line) and the command's own rules.
+  const auto time = runMb("help time");
+  for (const char* option : {"--frames N", "--warmup W", "--best-of K", "--json FILE", "< 1: motor faster"})
+    EXPECT_TRUE(contains(time.out, option)) << option << "\n" << time.out;
+  const auto claims = runMb("help claims");
+  EXPECT_TRUE(contains(claims.out, "--no-run")) << claims.out;
+  EXPECT_TRUE(contains(claims.out, "takes minutes")) << claims.out;
+}
+
+TEST(CliHelp, CommandsTakingPipelinesListEveryRegisteredName) {
+  for (const char* c : {"render", "compare", "report", "check"}) {
+    const auto help = runMb(std::string("help ") + c);
+    const size_t at = help.out.find("\npipelines: ");
+    ASSERT_NE(at, std::string::npos) << c << ": " << help.out;
+    const std::string line = help.out.substr(at + 1, help.out.find('\n', at + 1) - at - 1);
+    for (const std::string& p : mb::allPipelineNames()) EXPECT_TRUE(contains(line, p)) << c << ": " << p << " in " << line;
+  }
+  EXPECT_FALSE(contains(runMb("help inspect").out, "\npipelines: "));
+}
+
+// "`--pipeline Motor` prints the pose/camera/size lines, then 'unknown pipeline'."
+TEST(CliHelp, PipelineNameIsCheckedBeforeTheSceneIsLoaded) {
+  const fs::path dir = mb::cli_test::scratchDir("help_pipeline");
+  const auto render = runMb("render skinned_tube --time 0.5 --pipeline Motor -o " + quoted(dir / "x.png"));
+  EXPECT_EQ(render.rc, 2) << render.out;
+  EXPECT_TRUE(contains(render.out, "--pipeline Motor: unknown pipeline (registered: matrix, motor")) << render.out;
+  for (const char* framed : {"camera:", "size:", "animation 0", "pipeline: "})
+    EXPECT_FALSE(contains(render.out, framed)) << framed << " printed before the error:\n" << render.out;
+  const auto compare = runMb("compare skinned_tube --pipelines matrix,Motor -o " + quoted(dir / "c"));
+  EXPECT_EQ(compare.rc, 2) << compare.out;
+  EXPECT_TRUE(contains(compare.out, "--pipelines Motor: unknown pipeline (registered: ")) << compare.out;
+  EXPECT_FALSE(contains(compare.out, "camera:")) << compare.out;
+  EXPECT_FALSE(fs::exists(dir / "c")) << "the output folder was made for a refused run";
+  fs::remove_all(dir);
+}
+
+}  // namespace

@@ -1,0 +1,46 @@
+// Issue 28 item 7: floats per transform on a scene whose every draw is skinned. There the
+// pipelines with a world-space joint palette upload no node transform at all (report.json: null),
+// which the summary counts as "none" beside the spread instead of leaving it out silently (the
+// complaint: "matrix 32, every other pipeline 0, while the summary says 8 over 2 scenes").
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "harness/document/report_document.h"
+#include "harness/document/report_format.h"
+
+namespace {
+
+using json = nlohmann::json;
+
+json scene(const std::string& id, json matrixFloats, json motorFloats) {
+  auto pipe = [](json floats) {
+    return json{{"memory", {{"floatsPerTransform", floats}, {"bytesPerVertex", 36}}}, {"error", nullptr}};
+  };
+  return {{"id", id}, {"status", "ok"}, {"space", "Euclidean"}, {"origin", "file"},
+          {"pipelines", {{"matrix", pipe(matrixFloats)}, {"motor", pipe(motorFloats)}}}};
+}
+
+TEST(DocumentTransforms, SkinnedOnlySceneIsCountedAsNoneNotDropped) {
+  const json settings = {{"pipelines", {"matrix", "motor"}}, {"baseline", "matrix"}, {"width", 64}, {"height", 48},
+                         {"frames", 0}, {"jobs", 1}};
+  // Two rigid scenes (matrix 32, motor 8) and Fox-like: every draw skinned, matrix still sends
+  // its model and normal matrices (the Sample Viewer's skin-then-model), motor sends none.
+  const json r = mb::report::assembleReport(
+      json::object(), settings, {scene("box", 32, 8), scene("torus", 32, 8), scene("fox", 32, nullptr)}, json::object(),
+      json::object());
+  const json& motor = r["summary"]["pipelines"]["motor"]["floatsPerTransform"];
+  EXPECT_EQ(motor["n"], 2);
+  EXPECT_EQ(motor["median"], 8);
+  EXPECT_EQ(motor["none"], 1);
+  const json& matrix = r["summary"]["pipelines"]["matrix"]["floatsPerTransform"];
+  EXPECT_EQ(matrix["n"], 3);
+  EXPECT_EQ(matrix["none"], 0);
+  // The summary row: the spread, how many scenes it covers, and the scenes without any.
+  EXPECT_EQ(mb::report::spreadText(motor, 3) + " over 2 scenes" +
+                mb::report::noneText(motor, "whose every draw is skinned"),
+            "8 over 2 scenes; none on 1 scene whose every draw is skinned");
+  EXPECT_EQ(mb::report::noneText(matrix, "x"), "");
+}
+
+}  // namespace
