@@ -30,6 +30,13 @@ struct PipelineStats {
   uint64_t patchPatternBytes = 0;     // the patches' shared (u, v) refinement pattern: not a
                                       // vertex format, so neither in vertexBytes nor vertices
   uint64_t vertices = 0;              // vertices uploaded
+  // Instanced draws (Node::instances, pipelines/gl/instance_stream.h): the per-instance
+  // transforms of the last render() (each pipeline's per-draw transform, node world composed
+  // with the instance on the CPU), streamed once per frame, and how many instances they hold.
+  uint64_t instanceBytes = 0, instances = 0;
+  // Vertices the last render() drew: each draw's vertices times its instances (patches: the
+  // refinement pattern's vertices per patch).
+  uint64_t drawnVertices = 0;
   // Of vertexBytes / vertices: the primitives whose material has a normal texture, so that
   // bytes per vertex split normal-mapped / not (the paper's 12-vs-9 floats is the former).
   uint64_t normalMappedVertexBytes = 0, normalMappedVertices = 0;
@@ -50,6 +57,8 @@ struct PipelineStats {
   int zeroScalarFrames = 0;           // tangent rotors whose scalar part was exactly 0
   int biasedFrames = 0;               // frames whose scalar |s| (rotor) or |w| (quaternion) the
                                       // bias rule raised to 1/32767 so the handedness survives
+  int scaleFallbackInstances = 0;     // motor: instances of the last render() whose scale is
+                                      // non-uniform or negative (drawn as MB_SCALE_FALLBACK)
 };
 
 // Where a skinned vertex reaches world space (issue 18: compare both pipelines in the same

@@ -12,6 +12,8 @@
 //                -1..1) instead of normal + tangent: 28-byte vertices
 //   MB_NO_TANGENT float frame without tangent (no TANGENT, no normal map), as matrix.vs's:
 //                position + normal + uv, 32-byte vertices
+//   MB_INSTANCED model, normal matrix and mirror per instance (vertex attributes, divisor 1)
+//                instead of per draw: EXT_mesh_gpu_instancing / --instances
 #include "affine_transform.glsl"
 
 layout(location = 0) in vec3 a_position;
@@ -29,9 +31,20 @@ layout(location = 4) in vec2 a_uv1;    // locations 4..7: pipelines/gl/scene_tex
 layout(location = 5) in vec4 a_color;
 
 uniform mat4 u_ViewProjectionMatrix;
+#ifdef MB_INSTANCED
+// Per instance (divisor 1, pipelines/gl/instance_stream.h): what a draw's uniforms hold,
+// node world * instance TRS composed on the CPU; never with MB_SKINNED.
+layout(location = 8) in mat4x3 a_instanceModel;
+layout(location = 12) in mat3 a_instanceNormal;
+layout(location = 15) in float a_instanceMirror;
+#define u_ModelMatrix a_instanceModel
+#define u_NormalMatrix a_instanceNormal
+#define u_Mirror a_instanceMirror
+#else
 uniform mat4x3 u_ModelMatrix;
 uniform mat3 u_NormalMatrix;
 uniform float u_Mirror;
+#endif
 
 #ifdef MB_SKINNED
 layout(location = 6) in uvec4 a_joints;

@@ -12,6 +12,8 @@
 //   MB_WORLD_PALETTE  with SKINNED: the joint matrices are in world space (joint world *
 //                     inverse bind) and no model matrix is applied per vertex (issue 18's
 //                     symmetric configuration; the Sample Viewer applies it)
+//   MB_INSTANCED      model and normal matrix per instance (vertex attributes, divisor 1)
+//                     instead of per draw: EXT_mesh_gpu_instancing / --instances
 //
 // Handedness: u_NormalMatrix's last column is never used for a direction (w = 0), so its
 // [3][3] entry carries sign(det(model)); a mirrored node flips the tangent handedness, which
@@ -29,8 +31,17 @@ layout(location = 4) in vec2 a_uv1;
 layout(location = 5) in vec4 a_color;
 
 uniform mat4 u_ViewProjectionMatrix;
+#ifdef MB_INSTANCED
+// Per instance (divisor 1, pipelines/gl/instance_stream.h): the same two matrices a draw's
+// uniforms hold, node world * instance TRS composed on the CPU; never with SKINNED.
+layout(location = 8) in mat4 a_instanceModel;
+layout(location = 12) in mat4 a_instanceNormal;
+#define u_ModelMatrix a_instanceModel
+#define u_NormalMatrix a_instanceNormal
+#else
 uniform mat4 u_ModelMatrix;
 uniform mat4 u_NormalMatrix;
+#endif
 
 #ifdef SKINNED
 layout(location = 6) in uvec4 a_joints;

@@ -12,6 +12,8 @@
 //   MB_SKIN_REFERENCE with MB_SKINNED: the paper's form, joint motors relative to the mesh
 //                     node and toWorld = gp(u_World, blend) per vertex (issue 18; the default
 //                     palette is in world space and u_World is not used)
+//   MB_INSTANCED      motor and scale per instance (vertex attributes, divisor 1) instead of
+//                     per draw: EXT_mesh_gpu_instancing / --instances
 #include "pga.glsl"
 #include "motor_transform.glsl"
 
@@ -23,11 +25,24 @@ layout(location = 5) in vec4 a_color;
 
 // Per draw: object -> world motor (two vec4: [s,e23,e31,e12], [e01,e02,e03,e0123]) and the
 // scale applied to positions before it: one float, or per axis for MB_SCALE_FALLBACK.
+#ifdef MB_INSTANCED
+// Per instance (divisor 1, pipelines/gl/instance_stream.h): the same motor and scale, node
+// world * instance TRS composed on the CPU; never with MB_SKINNED.
+layout(location = 8) in vec4 a_instanceWorld0;
+layout(location = 9) in vec4 a_instanceWorld1;
+#ifdef MB_SCALE_FALLBACK
+layout(location = 10) in vec3 a_instanceScale;
+#else
+layout(location = 10) in float a_instanceScale;
+#endif
+#define u_Scale a_instanceScale
+#else
 uniform vec4 u_World[2];
 #ifdef MB_SCALE_FALLBACK
 uniform vec3 u_Scale;
 #else
 uniform float u_Scale;
+#endif
 #endif
 // Per frame: world -> view motor and the projection constants.
 uniform vec4 u_Camera[2];
@@ -49,7 +64,11 @@ out vec2 v_uv1;
 out vec4 v_color;
 
 void main() {
+#ifdef MB_INSTANCED
+  motor toWorld = motor(a_instanceWorld0, a_instanceWorld1);
+#else
   motor toWorld = motor(u_World[0], u_World[1]);
+#endif
 #ifdef MB_SKINNED
   // glTF: skinned meshes ignore their node's transform; the skin motors reach world space.
   motor blended = motorBlendJoints(jointMotor(a_joints.x), jointMotor(a_joints.y),

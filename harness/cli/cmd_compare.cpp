@@ -193,7 +193,7 @@ int runCompare(const std::vector<std::string>& argv) {
 
 MB_COMMAND(compare, "compare",
            "SCENE [--pipelines matrix,motor] [--anim A] [--time T] [--anim2 B --time2 T2 --blend W] "
-           "[--camera C] [--size WxH] [--fail F(0..1)] [--failpercent P(0..100)] [--hardfail H(0..1)] "
+           "[--camera C] [--size WxH] [--instances N] [--fail F(0..1)] [--failpercent P(0..100)] [--hardfail H(0..1)] "
            "[--gpu auto|llvmpipe|N] -o DIR",
            "render a scene with two pipelines; write both images, diff.png, diff_legend.png and "
            "metrics.json; exit 1 when a threshold given is exceeded (F, H: channel difference / 255)",

@@ -40,10 +40,16 @@ int runRender(const std::vector<std::string>& argv) {
   Status written = writeImage(out, frame->image);
   if (!written) return fail(written.error());
   const PipelineStats& s = frame->stats;
+  std::string instanced;  // instanced draws: how many and what each instance uploads
+  if (s.instances)
+    instanced = ", " + std::to_string(s.instances) + " instances x " +
+                std::to_string(s.instanceBytes / s.instances) + " bytes";
   const int64_t drawn = drawnPixels(frame->image);
-  std::printf("%s: %s %dx%d, %d draws, %lld drawn pixels (not background), %.0f floats/vertex, %llu vertex bytes -> %s (%s)\n",
+  std::printf("%s: %s %dx%d, %d draws, %llu vertices drawn%s, %lld drawn pixels (not background), %.0f floats/vertex, "
+              "%llu vertex bytes -> %s (%s)\n",
               scene.source.c_str(), pipeline.c_str(), frame->image.width, frame->image.height, s.draws,
-              (long long)drawn, s.floatsPerVertex, static_cast<unsigned long long>(s.vertexBytes), out.c_str(),
+              static_cast<unsigned long long>(s.drawnVertices), instanced.c_str(), (long long)drawn,
+              s.floatsPerVertex, static_cast<unsigned long long>(s.vertexBytes), out.c_str(),
               describeGl(frame->gl).c_str());
   // Written, but said: a background-only image is easy to take for a rendering.
   if (drawn == 0)
@@ -57,7 +63,7 @@ int runRender(const std::vector<std::string>& argv) {
 
 MB_COMMAND(render, "render",
            "SCENE [--pipeline NAME (default matrix; curved scenes: their space's matrix)] [--anim A] [--time T] [--anim2 B --time2 T2 "
-           "--blend W] [--camera C] [--size WxH] [--gpu auto|llvmpipe|N] -o out.png",
+           "--blend W] [--camera C] [--size WxH] [--instances N] [--gpu auto|llvmpipe|N] -o out.png",
            "render one frame of a scene (file or built-in name) with one pipeline to an image; "
            "--time alone poses animation 0; prints the animation, time and camera on stderr",
            mb::runRender);

@@ -19,6 +19,7 @@
 #include "harness/report/report_scene.h"
 #include "harness/timing/report_timing.h"
 #include "pipelines/pipeline.h"
+#include "pipelines/scene/instancing.h"
 #include "pipelines/scene/loader.h"
 
 namespace mb {
@@ -38,6 +39,7 @@ int runWorker(const Args& args, const report::Options& o) {
   job.total = std::atoi(args.get("worker-total", "1").c_str());
   job.outDir = o.outDir;
   job.width = o.width, job.height = o.height;
+  job.instances = o.instances;
   job.pipelines = report::scenePipelines(o, job.input.spec);  // the parent passes each scene's
   for (const std::string& a : splitList(args.get("worker-anims", ""))) job.animations.push_back(std::atoi(a.c_str()));
   json result;
@@ -47,6 +49,7 @@ int runWorker(const Args& args, const report::Options& o) {
   } else if (mode == "time") {
     report::progress(job, "timing " + std::to_string(o.frames) + " frames per pipeline");
     auto scene = loadScene(job.input.spec);
+    if (scene && scene->curved.space == Space::Euclidean) addGridInstances(*scene, o.instances);
     // Skinned scenes are timed with every pipeline in the same skinning configuration (as the
     // references do it), so the ratio compares like with like (issue 18); images keep each
     // pipeline's default.
@@ -67,7 +70,8 @@ int runWorker(const Args& args, const report::Options& o) {
 int runReportCommand(const std::vector<std::string>& argv) {
   const Args args(argv, {{"o", "output", "jobs", "size", "frames", "bench-json", "bench-min-time", "pipelines",
                           "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
-                          "worker-index", "worker-total", "shard", "anim", "worker-anims", "gpu", "isa-json"},
+                          "worker-index", "worker-total", "shard", "anim", "worker-anims", "instances", "gpu",
+                          "isa-json"},
                          {"no-bench", "no-plots"},
                          {},
                          {"anim"}});
@@ -90,6 +94,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
   std::tie(o.timeWidth, o.timeHeight) = args.size("time-size", o.timeWidth, o.timeHeight);
   o.jobs = int(args.integer("jobs", 1, 1, 256));
   o.frames = int(args.integer("frames", o.frames, 0, 100000));
+  o.instances = int(args.integer("instances", 1, 1, kMaxInstances));
   o.timeoutS = args.real("timeout", o.timeoutS, 1.0, 1e7, "seconds");
   o.benchMinTime = args.real("bench-min-time", o.benchMinTime, 0.0, 1e4, "seconds");
   if (args.has("no-bench") && args.has("bench-json"))
@@ -137,7 +142,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
 MB_COMMAND(report, "report",
            "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--no-bench | "
            "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--anim [SCENE:]NAME|INDEX|all,...] "
-           "[--time-size WxH] [--no-plots] [--shard I/N] [--gpu auto|llvmpipe|N] [--isa-json FILE]",
+           "[--time-size WxH] [--instances N] [--no-plots] [--shard I/N] [--gpu auto|llvmpipe|N] [--isa-json FILE]",
            "measure scenes with every pipeline of their space: images, diffs, memory, ops, timing, kernel "
            "ratios -> report.json/.md/.html",
            mb::runReportCommand);

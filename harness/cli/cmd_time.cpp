@@ -1,5 +1,5 @@
 // `motorbench time [SCENE|DIR...] [--frames N] [--warmup W] [--size WxH] [--tiny WxH]
-//  [--best-of K] [--level N[,M...]] [--lp-threads N] [--json FILE]`: frame time of every registered pipeline on each scene
+//  [--best-of K] [--level N[,M...]] [--instances N] [--lp-threads N] [--json FILE]`: frame time of every registered pipeline on each scene
 // (harness/timing/frame_timing.h), printed as medians with quartiles and as motor/matrix ratios
 // measured in the same run. No SCENE: every built-in scene. A scene that draws at least
 // timing::kVertexBoundVerticesPerPixel vertices per pixel of a tiny viewport (--tiny, default
@@ -52,7 +52,7 @@ void printRow(const timing::ConfigTiming& c) {
 // {"rows": [...], "patchMemory": [...] or null} to `resultPath` (patchMemory: the bytes table of
 // a Bezier patch scene timed with --level). Exit 0, or 2 when anything failed.
 int timeOneScene(const std::string& name, const timing::Settings& normal, const timing::Settings& tiny,
-                 const std::vector<int>& levels, const std::string& resultPath) {
+                 const std::vector<int>& levels, const Args& args, const std::string& resultPath) {
   nlohmann::json rows = nlohmann::json::array(), patchMemory = nullptr;
   int status = 0;
   const Status spec = checkSceneSpec(name);  // a misspelt name lists the built-ins
@@ -60,6 +60,12 @@ int timeOneScene(const std::string& name, const timing::Settings& normal, const 
   if (scene)  // a blank frame is no timing
     if (std::string why = whyNothingDrawn(*scene); !why.empty())
       scene = Result<Scene>::fail(scene->source + ": nothing to draw: " + why);
+  if (scene) {  // --instances N: every mesh node drawn N times (frame_options.h)
+    std::vector<std::string> notes;
+    auto instances = applyInstancesOption(args, *scene, &notes);
+    if (!instances) scene = Result<Scene>::fail(instances.error());
+    for (const std::string& note : notes) std::fprintf(stderr, "motorbench time: %s\n", note.c_str());
+  }
   if (!scene) {
     std::fprintf(stderr, "motorbench time: error: %s\n", scene.error().c_str());
     rows.push_back({{"scene", name}, {"error", scene.error()}});
@@ -110,7 +116,10 @@ int runTime(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "motorbench time: error: %s\n", m.c_str());
     return 2;
   };
-  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level", "gpu"}, {}, {}});
+  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level",
+                          "instances", "gpu"},
+                         {},
+                         {}});
   if (!args.error().empty()) return fail(args.error());
   if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());  // workers inherit MB_GPU
 
@@ -122,6 +131,7 @@ int runTime(const std::vector<std::string>& argv) {
   tiny = normal;
   tiny.config = "vertex-bound";
   std::tie(tiny.width, tiny.height) = args.size("tiny", 64, 64);
+  args.integer("instances", 1, 1, kMaxInstances);  // checked here; each worker applies it
   // llvmpipe reads LP_NUM_THREADS when the context is created, which has not happened yet.
   if (args.has("lp-threads"))
     setenv("LP_NUM_THREADS", std::to_string(args.integer("lp-threads", 0, 0, 1024)).c_str(), 1);
@@ -152,7 +162,7 @@ int runTime(const std::vector<std::string>& argv) {
     if (Status ok = prepareOutputFile("--json", *path); !ok) return fail(ok.error());
   if (auto file = args.get("worker")) {
     if (names.size() != 1) return fail("--worker times exactly one scene");
-    return timeOneScene(names[0], normal, tiny, levels, *file);
+    return timeOneScene(names[0], normal, tiny, levels, args, *file);
   }
 
   auto machine = timing::machineInfo();
@@ -181,7 +191,7 @@ int runTime(const std::vector<std::string>& argv) {
   Progress progress("time", "scenes done", names.size(), false);
   for (const std::string& name : names) {
     std::vector<std::string> child = {"time", name, "--worker", scratch};
-    for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level"})
+    for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level", "instances"})
       if (auto v = args.get(key)) child.insert(child.end(), {std::string("--") + key, *v});
     std::filesystem::remove(scratch);
     std::fflush(stdout);  // the child prints its rows to the same stdout
@@ -242,7 +252,7 @@ int runTime(const std::vector<std::string>& argv) {
 
 MB_COMMAND(time, "time",
            "[SCENE|DIR...] [--frames N] [--warmup W] [--best-of K] [--size WxH] [--tiny WxH] "
-           "[--level N[,M...]] [--lp-threads N] [--gpu auto|llvmpipe|N] [--json FILE]",
+           "[--level N[,M...]] [--instances N] [--lp-threads N] [--gpu auto|llvmpipe|N] [--json FILE]",
            "frame time (glFinish wall clock) and CPU update time of every pipeline; motor/matrix "
            "ratios from one interleaved run; scenes with >= 10 drawn vertices per tiny-viewport pixel "
            "(the crowd) also at that viewport (vertex-bound)",

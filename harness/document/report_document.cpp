@@ -31,8 +31,8 @@ json withNone(json spread, int none) {
 }
 
 json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
-  std::vector<double> bpv, bpvAll, bpvNm, bpvPlain, fpv, fpt, fptScale, fpj, conv;
-  int noTransform = 0;  // scenes where the pipeline uploaded no node transform (skinned draws only)
+  std::vector<double> bpv, bpvAll, bpvNm, bpvPlain, fpv, fpt, fptScale, fpj, conv, bpi;
+  int noTransform = 0;  // scenes where the pipeline uploaded no node transform (skinned or instanced draws only)
   for (const json& s : scenes) {
     if (!s.contains("pipelines") || !s["pipelines"].contains(p)) continue;
     const json& pj = s["pipelines"][p];
@@ -49,12 +49,13 @@ json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
     const double jn = number(pj, {"memory", "floatsPerJoint"});
     if (jn > 0) fpj.push_back(jn);
     push(conv, number(pj, {"conversionMs", "median"}));
+    push(bpi, number(pj, {"memory", "bytesPerInstance"}));  // NaN (skipped) without instances
   }
   return {{"bytesPerVertex", spread(bpv)}, {"bytesPerVertexAll", spread(bpvAll)},
           {"bytesPerVertexNormalMapped", spread(bpvNm)}, {"bytesPerVertexNotNormalMapped", spread(bpvPlain)},
           {"floatsPerTransformWithScale", spread(fptScale)},
           {"floatsPerVertex", spread(fpv)}, {"floatsPerTransform", withNone(spread(fpt), noTransform)},
-          {"floatsPerJoint", spread(fpj)}, {"conversionMs", spread(conv)}};
+          {"floatsPerJoint", spread(fpj)}, {"conversionMs", spread(conv)}, {"bytesPerInstance", spread(bpi)}};
 }
 
 // Image agreement of `p` with the baseline over the frames of `scenes` for which

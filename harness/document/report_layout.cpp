@@ -446,7 +446,7 @@ void sceneSection(Document& d, const json& r, const json& s) {
     const json& o = at(s, {"opsPerVertex"}).is_object() && s["opsPerVertex"].contains(p) ? s["opsPerVertex"][p] : json();
     prow.push_back({{p}, {fmt(mem.value("bytesPerVertex", json()))}, {fmt(mem.value("floatsPerVertex", json()))},
                     {mem.value("floatsPerTransform", json()).is_null() && mem.contains("floatsPerTransform")
-                         ? std::string("none (skinned draws only)")
+                         ? std::string("none (skinned or instanced draws only)")
                          : fmt(mem.value("floatsPerTransform", json()))},
                     {fmt(mem.value("floatsPerJoint", json()))},
                     {str(mem.value("vertexBytes", json())) + " / " + str(mem.value("skinVertexBytes", json())) + " / " +
@@ -456,6 +456,7 @@ void sceneSection(Document& d, const json& r, const json& s) {
                     {fallbacksText(pj)}, {o.is_object() ? opsText(o["counted"], 1) : "-"},
                     {t.is_object() ? fixed(t.value("medianMs", json()), 2) + " (" + fixed(t.value("minMs", json()), 2) + ".." +
                                          fixed(t.value("maxMs", json()), 2) + ")" : "-"},
+                    {t.is_object() ? fixed(t.value("verticesPerUs", json()), 1) : "-"},
                     {t.is_object() ? fmt(t.value("updateMedianMs", json()), 3) : "-"},
                     {pj["error"].is_string() ? pj["error"].get<std::string>() : ""}});
   }
@@ -465,8 +466,24 @@ void sceneSection(Document& d, const json& r, const json& s) {
     d.table({"pipeline", "B/vertex", "floats/vertex", "floats/transform", "floats/joint",
              "bytes: vertex / skin / index / texture", "bytes per frame: uniforms / joint palette", "draws",
              "conversion ms (median)", "fallbacks", "ops/vertex (counted, mean)", "frame ms median (min..max)",
-             "CPU update ms", "error"},
+             "vertices/us (drawn vertices x instances / median frame)", "CPU update ms", "error"},
             prow);
+  }
+  // Instanced draws: what each pipeline streams per instance (measured: bytes handed to GL).
+  std::vector<std::vector<Cell>> irow;
+  for (const std::string& p : pipes) {
+    const json& mem = at(s, {"pipelines"}).is_object() && s["pipelines"].contains(p) ? s["pipelines"][p].value("memory", json::object()) : json();
+    if (!mem.is_object() || !mem.contains("instances") || !mem["instances"].is_number() || mem["instances"].get<double>() == 0) continue;
+    const json& fb = s["pipelines"][p].value("fallbacks", json::object());
+    irow.push_back({{p}, {str(mem["instances"])}, {fmt(mem.value("bytesPerInstance", json()))}, {str(mem.value("instanceBytes", json()))},
+                    {str(fb.value("scaleFallbackInstances", json(0)))}});
+  }
+  if (!irow.empty()) {
+    d.paragraph("Instance memory (EXT_mesh_gpu_instancing or --instances): the per-instance transforms every "
+                "pipeline streams once per frame, node world x instance composed on the CPU in the pipeline's "
+                "own form (matrix: model + normal mat4; affine family: mat4x3 + mat3 + mirror; motor family: "
+                "motor + scale, a vec3 scale on the scale fallback).");
+    d.table({"pipeline", "instances", "bytes per instance", "instance bytes per frame", "scale-fallback instances"}, irow);
   }
   // The CPU update phase by phase (harness/timing: a block of updates with the phase clock on).
   std::vector<std::vector<Cell>> urow;

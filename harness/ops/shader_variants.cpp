@@ -14,6 +14,9 @@ const std::string kCurvedMain =
     "main() adds the projection u_Projection * position (mat4 * vec4: 16 mul, 12 add), the same on both "
     "sides of a space";
 const std::string kTexels = "the 16 control points are texelFetch (no arithmetic)";
+// Instanced draws (EXT_mesh_gpu_instancing, --instances): the rigid transform with its per-draw
+// data read from per-instance attributes; the same arithmetic as the non-instanced variant.
+const std::string kInstanced = "the per-draw transform read from per-instance attributes (divisor 1)";
 
 void matrixVariants(std::vector<ShaderVariant>& out) {
   const std::string ref = "the Sample Viewer's: skin, then u_ModelMatrix per vertex";
@@ -33,6 +36,10 @@ void matrixVariants(std::vector<ShaderVariant>& out) {
        "skinned, world palette, no tangent", {"matrixSkinnedVertexWorldNoTangent", clip}, world},
       {"matrix", "matrix_patch.vs", {}, "bezier patch", {"bezierPatch", "matrixPatchVertex", clip},
        kMatrixMain + "; " + kTexels},
+      {"matrix", "matrix.vs", {{"MB_INSTANCED", ""}}, "rigid, instanced", {"matrixRigidVertex", clip},
+       kMatrixMain + "; " + kInstanced},
+      {"matrix", "matrix.vs", D{{"MB_INSTANCED", ""}, {"MB_NO_TANGENT", ""}}, "rigid, no tangent, instanced",
+       {"matrixRigidVertexNoTangent", clip}, kInstanced},
   });
 }
 
@@ -48,6 +55,10 @@ void affineVariants(std::vector<ShaderVariant>& out) {
        {"affineSkinnedVertexNoTangent", clip}, "8-float vertex"},
       {"affine", "affine_patch.vs", {}, "bezier patch", {"bezierPatch", "affinePatchVertex", clip},
        kAffineMain + "; " + kTexels},
+      {"affine", "affine.vs", {{"MB_INSTANCED", ""}}, "rigid, instanced", {"matrixAffineVertex", clip},
+       kAffineMain + "; " + kInstanced},
+      {"affine", "affine.vs", D{{"MB_INSTANCED", ""}, {"MB_NO_TANGENT", ""}}, "rigid, no tangent, instanced",
+       {"affineVertexNoTangent", clip}, "8-float vertex; " + kInstanced},
   });
   for (const char* p : {"qtangent", "hybrid"}) {
     const std::string note = kAffineMain + (std::string(p) == "hybrid" ? "; the GPU side of qtangent" : "");
@@ -56,6 +67,8 @@ void affineVariants(std::vector<ShaderVariant>& out) {
         {p, "affine.vs", D{{"MB_QTANGENT", ""}, {"MB_SKINNED", ""}}, "skinned", {"qtangentSkinnedVertex", clip}, note},
         {p, "affine_patch.vs", {}, "bezier patch", {"bezierPatch", "affinePatchVertex", clip},
          note + "; a patch vertex stores no frame: affine_patch.vs, as affine; " + kTexels},
+        {p, "affine.vs", D{{"MB_QTANGENT", ""}, {"MB_INSTANCED", ""}}, "rigid, instanced",
+         {"qtangentRigidVertex", clip}, note + "; " + kInstanced},
     });
   }
 }
@@ -77,6 +90,9 @@ void motorVariants(std::vector<ShaderVariant>& out) {
         {p, "motor_patch.vs", {}, "bezier patch", {"bezierPatch", "motorPatchVertex", clip}, kTexels},
         {p, "motor_patch.vs", {{"MB_SCALE_FALLBACK", ""}}, "bezier patch, scaled fallback",
          {"bezierPatch", "motorScaledPatchVertex", clip}, kTexels},
+        {p, "motor.vs", {{"MB_INSTANCED", ""}}, "rigid, instanced", {"motorRigidVertex", clip}, kInstanced},
+        {p, "motor.vs", D{{"MB_INSTANCED", ""}, {"MB_SCALE_FALLBACK", ""}}, "scaled fallback, instanced",
+         {"motorScaledVertex", clip}, kInstanced},
     });
   }
 }

@@ -11,7 +11,9 @@
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/curved_space.h"
 #include "pipelines/scene/drawable.h"
+#include "pipelines/scene/instancing.h"
 #include "pipelines/scene/loader.h"
+#include "pipelines/scene/scene_stats.h"
 
 namespace mb {
 namespace {
@@ -76,7 +78,7 @@ std::vector<std::string> everyBuiltinName() {
 OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags) {
   OptionSpec spec;
   spec.values = std::move(values);
-  spec.values.insert({"o", "output", "anim", "time", "anim2", "time2", "blend", "camera", "size", "gpu"});
+  spec.values.insert({"o", "output", "anim", "time", "anim2", "time2", "blend", "camera", "size", "instances", "gpu"});
   spec.flags = std::move(flags);
   const std::string once =
       "a run draws one frame per pipeline: run the command once per time (report draws three times per scene)";
@@ -151,6 +153,29 @@ Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene
   return s;
 }
 
+Result<int> applyInstancesOption(const Args& args, Scene& scene, std::vector<std::string>* notes) {
+  if (!args.has("instances")) return 1;
+  const long n = args.integer("instances", 1, 1, kMaxInstances);
+  if (scene.curved.space != Space::Euclidean)
+    return Result<int>::fail("--instances " + std::to_string(n) + ": " + scene.source +
+                             " is a curved-space scene (already drawn as instances of one triangle list)");
+  const FileStats was = computeFileStats(scene);
+  const long long total = (long long)std::max(1, was.instances + was.meshNodes - was.instancedNodes) * n;
+  if (total > kMaxInstances * 16)
+    return Result<int>::fail("--instances " + std::to_string(n) + ": " + scene.source + " would draw " +
+                             std::to_string(total) + " instances; the limit is " + std::to_string(kMaxInstances * 16));
+  const int before = was.instances;
+  const int drawnOnce = addGridInstances(scene, int(n));
+  if (notes && n > 1) {
+    const FileStats f = computeFileStats(scene);
+    notes->push_back("--instances " + std::to_string(n) + ": " + std::to_string(f.instancedNodes) +
+                     " mesh node(s) drawn as " + std::to_string(f.instances) + " instances (" +
+                     std::to_string(before) + " before), " + std::to_string(f.drawnVertices) + " vertices per frame" +
+                     (drawnOnce ? "; " + std::to_string(drawnOnce) + " node(s) drawn once (skinned or Bezier patches)" : ""));
+  }
+  return int(n);
+}
+
 Result<SceneCommand> parseSceneCommand(const Args& args, const std::string& outputWhat) {
   using R = Result<SceneCommand>;
   if (!args.error().empty()) return R::fail(args.error());
@@ -171,6 +196,9 @@ Result<SceneCommand> parseSceneCommand(const Args& args, const std::string& outp
   auto settings = frameSettingsFromArgs(args, c.scene, &c.notes);
   if (!settings) return R::fail(settings.error());
   c.settings = *settings;
+  auto instances = applyInstancesOption(args, c.scene, &c.notes);
+  if (!instances) return R::fail(instances.error());
+  c.settings.instances = *instances;
   return c;
 }
 

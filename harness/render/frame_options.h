@@ -17,11 +17,19 @@ struct FrameSettings {
   AnimState anim;       // animation indices already resolved against the scene
   int camera = -1;      // glTF camera index, -1 = automatic framing (camera_rule.h)
   int width = 512, height = 512;
+  int instances = 1;    // --instances N: every mesh node drawn N times (addGridInstances)
 };
+
+// --instances N (1..kMaxInstances, default 1): read from `args` and applied to `scene` with
+// addGridInstances (pipelines/scene/instancing.h); a note says what it did (nodes instanced,
+// nodes left drawn once). Returns N, or an error naming the option.
+constexpr long kMaxInstances = 1 << 20;
+Result<int> applyInstancesOption(const Args& args, Scene& scene, std::vector<std::string>* notes);
 
 // The option spec of a command that renders one SCENE to -o/--output: `values` and `flags`
 // plus -o/--output and the frame options --anim A --time T [--anim2 B --time2 T2 --blend W]
-// --camera C --size WxH --gpu (gpu_option.h). A repeated --time is an error (one frame per run).
+// --camera C --size WxH --instances N --gpu (gpu_option.h). A repeated --time is an error (one
+// frame per run).
 OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags = {});
 
 // Reads the frame options against `scene`. Animations and cameras are indices or names. Rules

@@ -92,6 +92,7 @@ nlohmann::json toJson(const PipelineStats& s) {
           {"extraVertexBytes", s.extraVertexBytes}, {"patchBytes", s.patchBytes}, {"patchPatternBytes", s.patchPatternBytes}, {"indexBytes", s.indexBytes},
           {"textureBytes", s.textureBytes}, {"uniformBytesPerFrame", s.uniformBytesPerFrame},
           {"skinBytesPerFrame", s.skinBytesPerFrame}, {"vertices", s.vertices},
+          {"instanceBytes", s.instanceBytes}, {"instances", s.instances}, {"drawnVertices", s.drawnVertices},
           {"normalMappedVertexBytes", s.normalMappedVertexBytes},
           {"normalMappedVertices", s.normalMappedVertices},
           {"floatsPerVertex", s.floatsPerVertex}, {"floatsPerTransform", s.floatsPerTransform},
@@ -104,7 +105,7 @@ nlohmann::json toJson(const PipelineStats& s) {
           {"nonUniformScaleNodes", s.nonUniformScaleNodes},
           {"negativeScaleNodes", s.negativeScaleNodes},
           {"shearMatrixNodes", s.shearMatrixNodes}, {"zeroScalarFrames", s.zeroScalarFrames},
-          {"biasedFrames", s.biasedFrames}};
+          {"biasedFrames", s.biasedFrames}, {"scaleFallbackInstances", s.scaleFallbackInstances}};
 }
 
 nlohmann::json toJson(const gl::ContextInfo& gl) {
@@ -119,9 +120,11 @@ nlohmann::json toJson(const gl::ContextInfo& gl) {
 std::string describeGl(const gl::ContextInfo& gl) { return gl.renderer + " on " + gl.deviceText(); }
 
 nlohmann::json toJson(const FrameSettings& s) {
-  return {{"anim", s.anim.anim}, {"time", s.anim.time}, {"anim2", s.anim.anim2},
-          {"time2", s.anim.time2}, {"blend", s.anim.blend}, {"camera", s.camera},
-          {"width", s.width}, {"height", s.height}};
+  nlohmann::json j = {{"anim", s.anim.anim}, {"time", s.anim.time}, {"anim2", s.anim.anim2},
+                      {"time2", s.anim.time2}, {"blend", s.anim.blend}, {"camera", s.camera},
+                      {"width", s.width}, {"height", s.height}};
+  if (s.instances > 1) j["instances"] = s.instances;  // --instances N (absent: 1, as the goldens)
+  return j;
 }
 
 nlohmann::json toJson(const View& v) {

@@ -57,6 +57,7 @@ std::vector<std::string> workerArgs(const Options& o, const Input& in, int index
   std::string a;
   for (int i : anims) a += (a.empty() ? "" : ",") + std::to_string(i);
   if (!a.empty()) args.insert(args.end(), {"--worker-anims", a});
+  if (o.instances > 1) args.insert(args.end(), {"--instances", std::to_string(o.instances)});
   args.push_back(in.spec);
   return args;
 }
@@ -218,7 +219,7 @@ int runReport(const Options& o) {
                    {"anim", o.anim.empty() ? json(nullptr) : json(o.anim)},
                    {"width", o.width}, {"height", o.height}, {"frames", o.frames},
                    {"timeWidth", o.timeWidth}, {"timeHeight", o.timeHeight},
-                   {"jobs", o.jobs}, {"arguments", o.scenes}, {"shard", shard}};
+                   {"instances", o.instances}, {"jobs", o.jobs}, {"arguments", o.scenes}, {"shard", shard}};
   json report = assembleReport(machineJson(), settings, std::move(scenes), std::move(ops),
                                std::move(kernelJson));
   report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files

@@ -32,6 +32,7 @@ struct Options {
   std::string plotScript;            // "" = scripts/plot.py of this source tree
   double timeoutS = 900;             // per worker process
   Shard shard;                       // --shard I/N: this run's part of the input list
+  int instances = 1;                 // --instances N: every mesh node drawn N times (frame_options.h)
 };
 
 // Camera steps of the curved-space drift the report measures when it has a curved scene (the

@@ -13,6 +13,7 @@
 #include "harness/render/render_frame.h"
 #include "pipelines/scene/curved_space.h"
 #include "pipelines/scene/drawable.h"
+#include "pipelines/scene/instancing.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scale_analysis.h"
 #include "pipelines/scene/scene_stats.h"
@@ -47,12 +48,16 @@ json memoryJson(const PipelineStats& s) {
                ? json(double(s.vertexBytes - s.normalMappedVertexBytes) / double(s.vertices - s.normalMappedVertices))
                : json(nullptr)},
           {"floatsPerVertex", s.floatsPerVertex},
-          // null: no node transform uploaded (every draw skinned: the joint palette moves the
-          // mesh), not a transform of 0 floats.
+          // null: no node transform uploaded (every draw skinned, or every draw instanced: the
+          // joint palette or the per-instance stream moves the mesh), not a transform of 0 floats.
           {"floatsPerTransform", s.floatsPerTransform > 0 ? json(s.floatsPerTransform) : json(nullptr)},
           {"floatsPerTransformWithScale",
            s.floatsPerTransformWithScale > 0 ? json(s.floatsPerTransformWithScale) : json(nullptr)},
-          {"floatsPerJoint", s.floatsPerJoint}};
+          {"floatsPerJoint", s.floatsPerJoint},
+          // Instanced draws: the per-instance transforms of one frame and their size each.
+          {"instances", s.instances},
+          {"instanceBytes", s.instanceBytes},
+          {"bytesPerInstance", s.instances ? json(double(s.instanceBytes) / double(s.instances)) : json(nullptr)}};
 }
 
 json fallbacksJson(const PipelineStats& s) {
@@ -60,7 +65,8 @@ json fallbacksJson(const PipelineStats& s) {
           {"negativeScaleNodes", s.negativeScaleNodes},
           {"shearMatrixNodes", s.shearMatrixNodes},
           {"zeroScalarFrames", s.zeroScalarFrames},
-          {"biasedFrames", s.biasedFrames}};
+          {"biasedFrames", s.biasedFrames},
+          {"scaleFallbackInstances", s.scaleFallbackInstances}};
 }
 
 std::string timeText(float t) {
@@ -102,7 +108,8 @@ json vertexMix(const Scene& scene) {
     for (const Primitive& p : scene.meshes[size_t(node.mesh)].primitives) {
       // Bezier patches: (N+1)^2 pattern vertices per patch, through the patch vertex shaders.
       patch += long(p.patchPoints.size() / 16) * long(scene.patchLevel + 1) * long(scene.patchLevel + 1);
-      const long count = long(p.positions.size());
+      // Instanced nodes (never skinned) run the rigid vertex once per instance.
+      const long count = long(p.positions.size()) * long(std::max<size_t>(1, node.instances.size()));
       if (node.skin >= 0 && !p.joints.empty()) skinned += count;
       else {
         rigid += count;
@@ -128,6 +135,7 @@ json measureScene(const SceneJob& job) {
               {"error", nullptr}, {"frames", json::array()}, {"pipelines", json::object()}};
   progress(job, "loading " + job.input.spec);
   auto scene = loadScene(job.input.spec);
+  if (scene && scene->curved.space == Space::Euclidean) addGridInstances(*scene, job.instances);
   if (!scene) {
     out["error"] = scene.error();
     out["stats"] = toJson(failedFileStats(job.input.spec, scene.error()));

@@ -22,6 +22,7 @@ struct SceneJob {
   int width = 256, height = 192;
   std::vector<std::string> pipelines;   // first = baseline of the diffs
   std::vector<int> animations;          // --anim, resolved (report_anim_select.h); empty: the first
+  int instances = 1;                    // --instances N (addGridInstances)
 };
 
 // Animation times the images are taken at: animation `anim` at 0, 1/3 and 2/3 of its

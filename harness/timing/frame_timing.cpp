@@ -289,6 +289,11 @@ nlohmann::json toJson(const MachineInfo& m) {
           {"gl", mb::toJson(m.gl)}};
 }
 
+double verticesPerUs(const PipelineTiming& t, bool gpu) {
+  const double ms = gpu ? (t.gpuMs.empty() ? 0.0 : t.gpu.median) : t.frame.median;
+  return ms > 0 ? double(t.stats.drawnVertices) / (ms * 1000.0) : 0.0;
+}
+
 nlohmann::json toJson(const ConfigTiming& c) {
   nlohmann::json pipelines = nlohmann::json::object();
   for (const PipelineTiming& t : c.pipelines) {
@@ -306,6 +311,10 @@ nlohmann::json toJson(const ConfigTiming& c) {
       j["gpu_ms"] = t.gpuMs.empty() ? nlohmann::json() : toJson(t.gpu);
       j["vertices"] = t.stats.vertices;
       j["draws"] = t.stats.draws;
+      j["drawn_vertices"] = t.stats.drawnVertices;
+      j["instances"] = t.stats.instances;
+      j["vertices_per_us"] = verticesPerUs(t);
+      j["gpu_vertices_per_us"] = t.gpuMs.empty() ? nlohmann::json() : nlohmann::json(verticesPerUs(t, true));
     }
     pipelines[t.pipeline] = j;
   }

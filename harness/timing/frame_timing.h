@@ -132,6 +132,10 @@ bool drawsVertexBoundAt(const Scene& scene, int width, int height);
 Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
                                const Settings& settings);
 
+// Vertices drawn per microsecond of frame time: PipelineStats::drawnVertices (instances
+// counted) / (median ms x 1000); 0 without samples. `gpu`: of the GPU timer-query median.
+double verticesPerUs(const PipelineTiming& t, bool gpu = false);
+
 nlohmann::json toJson(const Spread& s);
 nlohmann::json toJson(const MachineInfo& m);
 // {phase: Spread (ms per update call)} in kUpdatePhases order, plus "sum_of_medians".

@@ -30,7 +30,9 @@ json configJson(const timing::ConfigTiming& c, const std::vector<std::string>& p
                                     {"frames", t.frame.n}, {"wallMedianMs", t.wall.median},
                                     {"gpuMedianMs", t.gpuMs.empty() ? json() : json(t.gpu.median)},
                                     {"cpuMedianMs", t.cpu.median},
-                                    {"updateMedianMs", t.update.median}};
+                                    {"updateMedianMs", t.update.median},
+                                    {"drawnVertices", t.stats.drawnVertices},
+                                    {"verticesPerUs", timing::verticesPerUs(t)}};
     json phases = json::object();  // the update's phases, median ms per call
     for (int k = 0; k < timing::kUpdatePhaseCount; ++k) phases[timing::kUpdatePhases[k].key] = t.phases[k].median;
     out["pipelines"][t.pipeline]["updatePhasesMedianMs"] = phases;

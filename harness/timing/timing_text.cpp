@@ -94,6 +94,17 @@ std::string timingBlock(const ConfigTiming& c) {
   if (!phases.empty())
     out += "  update phases us (sampling/blending/conversion/hierarchy/palette; a separate block with the phase "
            "clock on):\n" + phases;
+  // Vertices drawn (instances counted) per microsecond of median frame time, every pipeline.
+  std::string rates;
+  for (const PipelineTiming& t : c.pipelines) {
+    if (!t.error.empty()) continue;
+    char b[96];
+    std::snprintf(b, sizeof b, "%s%s %.1f", rates.empty() ? "" : "; ", t.pipeline.c_str(), verticesPerUs(t));
+    rates += b;
+  }
+  if (!rates.empty())
+    out += "  vertices per us of frame time (" + std::to_string(c.pipelines.front().stats.drawnVertices) +
+           " drawn vertices): " + rates + "\n";
   return out;
 }
 

@@ -4,6 +4,9 @@
 // palette (12 floats per joint, stored as rows) and upload no transform, as glTF ignores a
 // skinned node's own transform. The projection matrix is built once per frame. Bezier patch
 // primitives are drawn rigidly by their node with affine_patch.vs (the same per-draw uniforms).
+// Instanced nodes (Node::instances): the same model, normal matrix and mirror per instance,
+// node world * instance composed per frame (MB_INSTANCED, pipelines/gl/instance_stream.h:
+// 22 floats, 88 bytes per instance).
 #include "pipelines/affine/affine_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -12,10 +15,12 @@
 #include "pipelines/affine/qtangent_vertices.h"
 #include "pipelines/gl/frame_vertices.h"
 #include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/instance_stream.h"
 #include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
+#include "pipelines/scene/transform.h"
 
 namespace mb::affine {
 namespace {
@@ -54,13 +59,18 @@ public:
 
 private:
   void uploadPalettes();
+  void streamInstances();
   void release();
 
   std::string name_;
   FrameFormat format_;
   std::unique_ptr<Poser> poser_;
   const Scene* scene_ = nullptr;
-  std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][no tangent] (qtangent: [.][0] only)
+  // [rigid, skinned, instanced (MB_INSTANCED)][no tangent] (qtangent: [.][0] only); the
+  // instanced row only for scenes with instances.
+  std::unique_ptr<gl::Program> programs_[3][2];
+  std::vector<std::vector<glm::mat4>> instanceMatrices_;  // per node: trsMatrix(instance)
+  gl::InstanceStream instances_;
   std::unique_ptr<gl::Program> patch_;  // affine_patch.vs, only for scenes with patches
   gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
@@ -77,17 +87,21 @@ Status AffinePipeline::prepare(const Scene& scene) {
   scene_ = &scene;
   stats_ = PipelineStats{};
   const bool qtangent = format_ == FrameFormat::QTangent;
-  for (int skinned = 0; skinned < 2; ++skinned)
+  for (int kind = 0; kind < (gl::hasInstances(scene) ? 3 : 2); ++kind)
     for (int noTangent = 0; noTangent < (qtangent ? 1 : 2); ++noTangent) {
       gl::Defines defines;
       if (qtangent) defines.push_back({"MB_QTANGENT", ""});
-      if (skinned) defines.push_back({"MB_SKINNED", ""});
+      if (kind == 1) defines.push_back({"MB_SKINNED", ""});
+      if (kind == 2) defines.push_back({"MB_INSTANCED", ""});
       if (noTangent) defines.push_back({"MB_NO_TANGENT", ""});
       auto program = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
       if (!program) return Status::fail(program.error());
-      programs_[skinned][noTangent] = program.take();
-      if (skinned) programs_[skinned][noTangent]->bindStorageBlock("AffineJoints", 0);
+      programs_[kind][noTangent] = program.take();
+      if (kind == 1) programs_[kind][noTangent]->bindStorageBlock("AffineJoints", 0);
     }
+  instanceMatrices_.assign(scene.nodes.size(), {});
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    for (const TRS& t : scene.nodes[n].instances) instanceMatrices_[n].push_back(trsMatrix(t));
   if (Status fits = gl::checkPaletteSize(scene, 12 * sizeof(float)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
   if (gl::hasPatches(scene)) {
@@ -141,11 +155,34 @@ void AffinePipeline::uploadPalettes() {
   stats_.floatsPerJoint = gl::floatsPer(stats_.skinBytesPerFrame, joints);
 }
 
+// Per instance: model = node world * instance (mat4x3), its normal matrix and mirror; key 1:
+// mirrored (the winding flips).
+void AffinePipeline::streamInstances() {
+  instances_.begin(scene_->nodes.size());
+  for (size_t n = 0; n < instanceMatrices_.size(); ++n) {
+    const std::vector<glm::mat4>& local = instanceMatrices_[n];
+    if (local.empty()) continue;
+    const glm::mat4 world(pose_.world[n]);
+    instances_.addNode(int(n), local.size(), [&](size_t i, std::vector<float>& out) {
+      const glm::mat4x3 model(world * local[i]);
+      const glm::mat3 normal = normalMatrix(model);
+      const float sign = mirror(model);
+      out.insert(out.end(), glm::value_ptr(model), glm::value_ptr(model) + 12);
+      out.insert(out.end(), glm::value_ptr(normal), glm::value_ptr(normal) + 9);
+      out.push_back(sign);
+      return sign < 0.0f ? 1 : 0;
+    });
+  }
+  instances_.upload(stats_);
+}
+
 void AffinePipeline::render(const View& view) {
   if (!scene_) return;
   stats_.uniformBytesPerFrame = 0;
   stats_.draws = 0;
+  stats_.drawnVertices = 0;
   uploadPalettes();
+  streamInstances();
   const glm::mat4 viewMatrix = glm::inverse(glm::translate(glm::mat4(1.0f), view.eye) *
                                             glm::mat4_cast(view.orientation));
   const glm::mat4 viewProjection =
@@ -153,13 +190,13 @@ void AffinePipeline::render(const View& view) {
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (as matrix and
   // motor do: a program the frame does not use uploads nothing).
-  // skinned -1: the Bezier patch program.
-  bool frameSet[3][2] = {};
-  auto useProgram = [&](int skinned, int noTangent) -> const gl::Program& {
-    gl::Program& p = skinned < 0 ? *patch_ : *programs_[skinned][noTangent];
+  // kind -1: the Bezier patch program; 0 rigid, 1 skinned, 2 instanced.
+  bool frameSet[4][2] = {};
+  auto useProgram = [&](int kind, int noTangent) -> const gl::Program& {
+    gl::Program& p = kind < 0 ? *patch_ : *programs_[kind][noTangent];
     p.use();
-    if (!frameSet[skinned + 1][noTangent]) {
-      frameSet[skinned + 1][noTangent] = true;
+    if (!frameSet[kind + 1][noTangent]) {
+      frameSet[kind + 1][noTangent] = true;
       gl::uniformMatrix4(p.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
                          stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
@@ -176,7 +213,19 @@ void AffinePipeline::render(const View& view) {
     GLuint palette = 0;
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = palettes_[i];
-    const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, g.variant == 1 ? 1 : 0);
+    const int noTangent = g.variant == 1 ? 1 : 0;
+    const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
+    if (!groups.empty()) {
+      const gl::Program& program = useProgram(2, noTangent);
+      textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
+      for (const gl::InstanceGroup& group : groups) {
+        gl::setWinding(group.key == 1);
+        stats_.drawnVertices += instances_.draw(g, group, {3, 3, 3, 3, 3, 3, 3, 1});
+        ++stats_.draws;
+      }
+      continue;
+    }
+    const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, noTangent);
     const glm::mat4x3& model = pose_.world[size_t(d.node)];
     const float sign = pose_.mirrors[size_t(d.node)];
     if (palette) {
@@ -190,10 +239,7 @@ void AffinePipeline::render(const View& view) {
     gl::uniform1f(program.uniform("u_Mirror"), sign, stats_.uniformBytesPerFrame);
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(sign < 0.0f);
-    if (patch)
-      patches_.draw(d);
-    else
-      g.draw();
+    stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
     ++stats_.draws;
   }
   gl::endDraws();
@@ -207,6 +253,7 @@ void AffinePipeline::release() {
   patch_.reset();
   palettes_.release();
   textures_.release();
+  instances_.release();
   for (auto& row : programs_)
     for (auto& p : row) p.reset();
   scene_ = nullptr;

@@ -6,10 +6,18 @@
 
 namespace mb::gl {
 
-void GpuPrimitive::draw() const {
+uint64_t GpuPrimitive::draw() const {
   glBindVertexArray(vao);
   extra.setDefaults();
   glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+  return uint64_t(vertexCount);
+}
+
+uint64_t GpuPrimitive::drawInstanced(GLsizei instances) const {
+  glBindVertexArray(vao);
+  extra.setDefaults();
+  glDrawElementsInstanced(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr, instances);
+  return uint64_t(vertexCount) * uint64_t(instances);
 }
 
 void GpuPrimitive::release() {
@@ -73,6 +81,7 @@ void SceneGeometry::upload(const Scene& scene, const Format& format, PipelineSta
       g.indexCount = GLsizei(p.indices.size());
       glBindVertexArray(0);
       stats.vertices += p.positions.size();
+      g.vertexCount = GLsizei(p.positions.size());
       meshes_.back().push_back(g);
     }
   }

@@ -20,9 +20,13 @@ struct GpuPrimitive {
   GLsizei indexCount = 0;
   bool skinned = false;  // drawn by a skinned node and has joints + weights
   int variant = 0;       // the pipeline's vertex-format variant (VertexFormat::variant)
+  GLsizei vertexCount = 0;  // vertices uploaded (PipelineStats::drawnVertices per draw)
   ExtraStreams extra;
-  // Binds the VAO, sets the defaults of absent streams, draws the triangles.
-  void draw() const;
+  // Binds the VAO, sets the defaults of absent streams, draws the triangles; returns the
+  // vertices drawn.
+  uint64_t draw() const;
+  // The same, `instances` times (the caller has set the per-instance attributes).
+  uint64_t drawInstanced(GLsizei instances) const;
   void release();
 };
 

@@ -41,6 +41,7 @@ void SceneGeometry::uploadPacked(const Scene& scene, const PackedInterleave& int
       g.indexCount = GLsizei(p.indices.size());
       glBindVertexArray(0);
       stats.vertices += p.positions.size();
+      g.vertexCount = GLsizei(p.positions.size());
       meshes_.back().push_back(g);
     }
   }

@@ -45,6 +45,7 @@ Status PatchGeometry::upload(const Scene& scene, PipelineStats& stats) {
   glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
   indices_ = createBuffer(GL_ELEMENT_ARRAY_BUFFER, pattern.indices, stats.indexBytes);
   indexCount_ = GLsizei(pattern.indices.size());
+  patternVertices_ = GLsizei(pattern.uv.size());
   glBindVertexArray(0);
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     meshes_.emplace_back();
@@ -75,7 +76,7 @@ bool PatchGeometry::has(const DrawItem& d) const {
          meshes_[size_t(d.mesh)][size_t(d.primitive)].count > 0;
 }
 
-void PatchGeometry::draw(const DrawItem& d) const {
+uint64_t PatchGeometry::draw(const DrawItem& d) const {
   const Patches& p = meshes_[size_t(d.mesh)][size_t(d.primitive)];
   glBindVertexArray(vao_);
   glActiveTexture(GL_TEXTURE0 + kUnitControlPoints);
@@ -83,6 +84,7 @@ void PatchGeometry::draw(const DrawItem& d) const {
   glDrawElementsInstanced(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr, p.count);
   glBindTexture(GL_TEXTURE_BUFFER, 0);
   glActiveTexture(GL_TEXTURE0);
+  return uint64_t(patternVertices_) * uint64_t(p.count);
 }
 
 void PatchGeometry::release() {

@@ -47,8 +47,8 @@ public:
   // Whether draw `d` is a patch primitive.
   bool has(const DrawItem& d) const;
   // Binds the pattern and the primitive's control points and draws all its patches. The
-  // caller's patch program must be in use with its uniforms set.
-  void draw(const DrawItem& d) const;
+  // caller's patch program must be in use with its uniforms set. Returns the vertices drawn.
+  uint64_t draw(const DrawItem& d) const;
   int level() const { return level_; }
   void release();
 
@@ -60,6 +60,7 @@ private:
   std::vector<std::vector<Patches>> meshes_;  // [mesh][primitive]; count 0 = not patches
   GLuint vao_ = 0, uv_ = 0, indices_ = 0;
   GLsizei indexCount_ = 0;
+  GLsizei patternVertices_ = 0;  // (level + 1)^2
   int level_ = 0;
 };
 

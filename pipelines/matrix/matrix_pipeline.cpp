@@ -6,7 +6,9 @@
 // Vertex format per primitive as the Sample Viewer's (pipelines/gl/frame_vertices.h): a tangent only where
 // the primitive has one (authored, or generated for a normal map); the MB_NO_TANGENT shader
 // variant draws the others. Skinning: SkinSpace::Reference by default (the Sample Viewer's);
-// WorldPalette on request (configure()).
+// WorldPalette on request (configure()). Instanced nodes (Node::instances): the same two
+// matrices per instance, node world * instance composed per frame (MB_INSTANCED,
+// pipelines/gl/instance_stream.h: 128 bytes per instance).
 #include "pipelines/matrix/matrix_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -14,11 +16,13 @@
 
 #include "pipelines/gl/frame_vertices.h"
 #include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/instance_stream.h"
 #include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
 #include "pipelines/matrix/matrix_pose.h"
+#include "pipelines/scene/transform.h"
 
 namespace mb {
 namespace {
@@ -41,10 +45,14 @@ public:
 
 private:
   void uploadPalettes();
+  void streamInstances();
   void release();
 
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][no tangent]
+  std::unique_ptr<gl::Program> instanced_[2];    // MB_INSTANCED [no tangent]
+  std::vector<std::vector<glm::mat4>> instanceMatrices_;  // per node: trsMatrix(instance)
+  gl::InstanceStream instances_;
   bool worldPalette_ = false;
   std::unique_ptr<gl::Program> patch_;  // matrix_patch.vs, only for scenes with patches
   gl::PatchGeometry patches_;
@@ -74,6 +82,16 @@ Status MatrixPipeline::prepare(const Scene& scene) {
       programs_[skinned][noTangent] = program.take();
       if (skinned) programs_[skinned][noTangent]->bindStorageBlock("JointPalette", 0);
     }
+  instanceMatrices_.assign(scene.nodes.size(), {});
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    for (const TRS& t : scene.nodes[n].instances) instanceMatrices_[n].push_back(trsMatrix(t));
+  for (int noTangent = 0; noTangent < 2 && gl::hasInstances(scene); ++noTangent) {
+    gl::Defines defines{{"MB_INSTANCED", ""}};
+    if (noTangent) defines.push_back({"MB_NO_TANGENT", ""});
+    auto program = gl::Program::fromFiles("matrix.vs", "forward.fs", defines);
+    if (!program) return Status::fail(program.error());
+    instanced_[noTangent] = program.take();
+  }
   if (Status fits = gl::checkPaletteSize(scene, 2 * sizeof(glm::mat4)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
 
@@ -114,11 +132,31 @@ void MatrixPipeline::uploadPalettes() {
   stats_.floatsPerJoint = gl::floatsPer(stats_.skinBytesPerFrame, joints);
 }
 
+// Per instance: model = node world * instance, and its normal matrix (sign(det) in [3][3]);
+// key 1: mirrored (the winding flips).
+void MatrixPipeline::streamInstances() {
+  instances_.begin(scene_->nodes.size());
+  for (size_t n = 0; n < instanceMatrices_.size(); ++n) {
+    const std::vector<glm::mat4>& local = instanceMatrices_[n];
+    if (local.empty()) continue;
+    instances_.addNode(int(n), local.size(), [&](size_t i, std::vector<float>& out) {
+      const glm::mat4 model = pose_.world[n] * local[i];
+      const glm::mat4 normal = matrix::normalMatrix(model);
+      out.insert(out.end(), glm::value_ptr(model), glm::value_ptr(model) + 16);
+      out.insert(out.end(), glm::value_ptr(normal), glm::value_ptr(normal) + 16);
+      return normal[3][3] < 0.0f ? 1 : 0;
+    });
+  }
+  instances_.upload(stats_);
+}
+
 void MatrixPipeline::render(const View& view) {
   if (!scene_) return;
   stats_.uniformBytesPerFrame = 0;
   stats_.draws = 0;
+  stats_.drawnVertices = 0;
   uploadPalettes();
+  streamInstances();
   glm::mat4 viewMatrix = glm::inverse(glm::translate(glm::mat4(1.0f), view.eye) *
                                       glm::mat4_cast(view.orientation));
   glm::mat4 viewProjection =
@@ -126,10 +164,10 @@ void MatrixPipeline::render(const View& view) {
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (unused variants
   // upload nothing, so uniformBytesPerFrame counts what a frame needs).
-  // skinned -1: the Bezier patch program (matrix_patch.vs).
-  bool frameSet[3][2] = {};
+  // skinned -1: the Bezier patch program (matrix_patch.vs); 2: instanced (MB_INSTANCED).
+  bool frameSet[4][2] = {};
   auto useProgram = [&](int skinned, int noTangent) -> const gl::Program& {
-    gl::Program& p = skinned < 0 ? *patch_ : *programs_[skinned][noTangent];
+    gl::Program& p = skinned < 0 ? *patch_ : skinned == 2 ? *instanced_[noTangent] : *programs_[skinned][noTangent];
     p.use();
     if (!frameSet[skinned + 1][noTangent]) {
       frameSet[skinned + 1][noTangent] = true;
@@ -139,7 +177,7 @@ void MatrixPipeline::render(const View& view) {
     }
     return p;
   };
-  uint64_t transformBytes = 0;
+  uint64_t transformBytes = 0, transformDraws = 0;
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.at(d);
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
@@ -149,23 +187,32 @@ void MatrixPipeline::render(const View& view) {
     GLuint palette = 0;
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = palettes_[i];
+    const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
+    if (!groups.empty()) {
+      const gl::Program& program = useProgram(2, g.variant == 1 ? 1 : 0);
+      textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
+      for (const gl::InstanceGroup& group : groups) {
+        gl::setWinding(group.key == 1);
+        stats_.drawnVertices += instances_.draw(g, group, {4, 4, 4, 4, 4, 4, 4, 4});
+        ++stats_.draws;
+      }
+      continue;
+    }
     const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, g.variant == 1 ? 1 : 0);
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
     const glm::mat4& model = pose_.world[size_t(d.node)];
     const glm::mat4& normal = pose_.normals[size_t(d.node)];
     gl::uniformMatrix4(program.uniform("u_ModelMatrix"), 1, glm::value_ptr(model), transformBytes);
     gl::uniformMatrix4(program.uniform("u_NormalMatrix"), 1, glm::value_ptr(normal), transformBytes);
+    ++transformDraws;
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(normal[3][3] < 0.0f);  // sign(det(model)) as stored by normalMatrix()
-    if (patch)
-      patches_.draw(d);
-    else
-      g.draw();
+    stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
     ++stats_.draws;
   }
   gl::endDraws();
   stats_.uniformBytesPerFrame += transformBytes;
-  stats_.floatsPerTransform = gl::floatsPer(transformBytes, uint64_t(stats_.draws));
+  stats_.floatsPerTransform = gl::floatsPer(transformBytes, uint64_t(transformDraws));
   stats_.floatsPerTransformWithScale = stats_.floatsPerTransform;  // the scale is in the matrices
 }
 
@@ -175,6 +222,8 @@ void MatrixPipeline::release() {
   patch_.reset();
   palettes_.release();
   textures_.release();
+  instances_.release();
+  for (auto& p : instanced_) p.reset();
   for (auto& row : programs_)
     for (auto& p : row) p.reset();
   scene_ = nullptr;

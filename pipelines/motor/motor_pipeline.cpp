@@ -12,9 +12,13 @@
 // uniformBytesPerFrame. Skinning: SkinSpace::WorldPalette by default (joint motors in world
 // space, no node motor per vertex); Reference on request (configure()): the paper's form,
 // joint motors relative to the mesh node and gp(u_World, blend) per vertex (MB_SKIN_REFERENCE).
+// Instanced nodes (Node::instances): the same motor and scale per instance, node world
+// composed with the instance's motor per frame (MB_INSTANCED, pipelines/gl/instance_stream.h:
+// 9 floats, 36 bytes; 11 on the scale fallback, PipelineStats::scaleFallbackInstances).
 #include "pipelines/motor/motor_pipeline.h"
 
 #include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/instance_stream.h"
 #include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
@@ -61,11 +65,15 @@ public:
 
 private:
   void uploadPalettes();
+  void streamInstances();
   void release();
 
   MotorVariant variant_;
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][scale fallback]
+  std::unique_ptr<gl::Program> instanced_[2];    // MB_INSTANCED [scale fallback]
+  std::vector<std::vector<motor::ScaledMotor>> instanceMotors_;  // per node: fromTRS(instance)
+  gl::InstanceStream instances_;
   bool referenceSkin_ = false;
   std::unique_ptr<gl::Program> patchPrograms_[2];  // motor_patch.vs [scale fallback], scenes with patches
   gl::PatchGeometry patches_;
@@ -95,6 +103,13 @@ Status MotorPipeline::prepare(const Scene& scene) {
       programs_[skinned][fallback] = program.take();
       if (skinned) programs_[skinned][fallback]->bindStorageBlock("MotorJoints", 0);
     }
+  for (int fallback = 0; fallback < 2 && gl::hasInstances(scene); ++fallback) {
+    gl::Defines defines{{"MB_INSTANCED", ""}};
+    if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
+    auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
+    if (!program) return Status::fail(program.error());
+    instanced_[fallback] = program.take();
+  }
   if (Status fits = gl::checkPaletteSize(scene, 8 * sizeof(float)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
   if (gl::hasPatches(scene)) {
@@ -111,6 +126,9 @@ Status MotorPipeline::prepare(const Scene& scene) {
   // Load-time conversion: transforms and inverse binds to motors, frames to rotors.
   auto t0 = gl::Clock::now();
   rig_ = motor::buildRig(scene);
+  instanceMotors_.assign(scene.nodes.size(), {});
+  for (size_t n = 0; n < scene.nodes.size(); ++n)  // an instance is a leaf: its residual is exact
+    for (const TRS& t : scene.nodes[n].instances) instanceMotors_[n].push_back(motor::fromTRS(t, true));
   auto interleave = [this](const Primitive& p) {
     motor::VertexStream stream = motor::interleaveVertices(p);
     stats_.zeroScalarFrames += stream.zeroScalarFrames;
@@ -159,21 +177,46 @@ void MotorPipeline::uploadPalettes() {
   stats_.floatsPerJoint = gl::floatsPer(stats_.skinBytesPerFrame, joints);
 }
 
+// Per instance: node world composed with the instance (composeInto), then its motor and the
+// scale a draw would get; key bit 0: scale fallback (vec3 scale), bit 1: mirrored winding.
+void MotorPipeline::streamInstances() {
+  instances_.begin(scene_->nodes.size());
+  stats_.scaleFallbackInstances = 0;
+  motor::ScaledMotor composed;
+  for (size_t n = 0; n < instanceMotors_.size(); ++n) {
+    const std::vector<motor::ScaledMotor>& local = instanceMotors_[n];
+    if (local.empty()) continue;
+    instances_.addNode(int(n), local.size(), [&](size_t i, std::vector<float>& out) {
+      motor::composeInto(pose_.world[n], local[i], composed);
+      const DrawScale scale = drawScale(composed.scale, composed.residual);
+      out.insert(out.end(), &composed.motor[0][0], &composed.motor[0][0] + 8);
+      out.insert(out.end(), &scale.value[0], &scale.value[0] + (scale.fallback ? 3 : 1));
+      stats_.scaleFallbackInstances += scale.fallback;
+      return (scale.fallback ? 1 : 0) | (scale.mirrored ? 2 : 0);
+    });
+  }
+  instances_.upload(stats_);
+}
+
 void MotorPipeline::render(const View& view) {
   if (!scene_) return;
   stats_.uniformBytesPerFrame = 0;
   stats_.draws = 0;
+  stats_.drawnVertices = 0;
   uploadPalettes();
+  streamInstances();
   const motor::CameraMotor camera = motor::cameraFromView(view);
   const MK::vec4 k =  // once per frame, not per vertex as the paper listing's project() does
       mk().motorProjectionConstants(camera.znear, camera.zfar, camera.yfov, camera.aspect);
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (unused variants
   // upload nothing, so uniformBytesPerFrame counts what a frame needs).
-  // skinned -1: the Bezier patch program (motor_patch.vs) of that scale form.
-  bool frameSet[3][2] = {};
+  // skinned -1: the Bezier patch program (motor_patch.vs) of that scale form; 2: MB_INSTANCED.
+  bool frameSet[4][2] = {};
   auto useProgram = [&](int skinned, int fallback) -> const gl::Program& {
-    gl::Program& p = skinned < 0 ? *patchPrograms_[fallback] : *programs_[skinned][fallback];
+    gl::Program& p = skinned < 0    ? *patchPrograms_[fallback]
+                     : skinned == 2 ? *instanced_[fallback]
+                                    : *programs_[skinned][fallback];
     p.use();
     if (!frameSet[skinned + 1][fallback]) {
       frameSet[skinned + 1][fallback] = true;
@@ -189,6 +232,18 @@ void MotorPipeline::render(const View& view) {
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
     const bool patch = patches_.has(d);  // Bezier patches: drawn rigidly by their node (never skinned)
     if (!patch && !g.indexCount) continue;
+    const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
+    if (!groups.empty()) {
+      for (const gl::InstanceGroup& group : groups) {
+        const bool fallback = group.key & 1;
+        const gl::Program& program = useProgram(2, fallback ? 1 : 0);
+        textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
+        gl::setWinding(group.key & 2);
+        stats_.drawnVertices += instances_.draw(g, group, {4, 4, fallback ? 3 : 1});
+        ++stats_.draws;
+      }
+      continue;
+    }
     // A mesh shared by a skinned and an unskinned node is drawn rigidly on the latter.
     const motor::JointPalette* palette = nullptr;
     GLuint paletteBuffer = 0;
@@ -215,10 +270,7 @@ void MotorPipeline::render(const View& view) {
     if (!palette || referenceSkin_) transformScaleBytes += scaleBytes;  // draws with a transform
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(scale.mirrored);
-    if (patch)
-      patches_.draw(d);
-    else
-      g.draw();
+    stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
     ++stats_.draws;
   }
   gl::endDraws();
@@ -233,6 +285,8 @@ void MotorPipeline::release() {
   for (auto& p : patchPrograms_) p.reset();
   paletteBuffers_.release();
   textures_.release();
+  instances_.release();
+  for (auto& p : instanced_) p.reset();
   for (auto& row : programs_)
     for (auto& p : row) p.reset();
   scene_ = nullptr;

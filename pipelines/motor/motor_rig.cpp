@@ -46,7 +46,8 @@ Rig buildRig(const Scene& scene) {
   rig.leaf.assign(count_, 1);
   rig.matrixNode.assign(count_, 0);
   for (size_t n = 0; n < count_; ++n)
-    if (!scene.nodes[n].children.empty()) rig.leaf[n] = 0;
+    // An instanced node's scale sits under each instance's rotation: not a leaf either.
+    if (!scene.nodes[n].children.empty() || !scene.nodes[n].instances.empty()) rig.leaf[n] = 0;
   // A joint is posed through its palette motor: a residual scale there could not reach the
   // vertices, so joints are converted as inner nodes.
   for (const Skin& s : scene.skins)

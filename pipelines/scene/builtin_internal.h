@@ -14,6 +14,7 @@ void buildSkinnedTube(GlbBuilder& b);
 void buildScaledHierarchy(GlbBuilder& b);
 void buildCrowd(GlbBuilder& b);
 void buildTeapot(GlbBuilder& b);
+void buildInstancedGrid(GlbBuilder& b);
 
 // Tangent-space normal map (RGBA8, size x size) of a height field of sin bumps with the given
 // number of periods along u and v; deterministic.

@@ -18,6 +18,7 @@ Builder builderFor(const std::string& name) {
   if (name == "crowd") return &buildCrowd;
   if (name == "dense_torus") return &buildDenseTorus;
   if (name == "teapot") return &buildTeapot;
+  if (name == "instanced_grid") return &buildInstancedGrid;
   return nullptr;
 }
 
@@ -25,7 +26,8 @@ Builder builderFor(const std::string& name) {
 
 const std::vector<std::string>& builtinSceneNames() {
   static const std::vector<std::string> names = {"normal_torus", "textured_box", "skinned_tube",
-                                                 "scaled_hierarchy", "crowd", "dense_torus", "teapot"};
+                                                 "scaled_hierarchy", "crowd", "dense_torus", "teapot",
+                                                 "instanced_grid"};
   return names;
 }
 

@@ -7,6 +7,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "pipelines/scene/instancing.h"
+#include "pipelines/scene/transform.h"
+
 
 namespace mb {
 namespace {
@@ -36,6 +39,16 @@ struct Bounds {
 void addMesh(const Scene& scene, const std::vector<glm::mat4>& world, int n, Bounds& b) {
   const Node& node = scene.nodes[size_t(n)];
   if (node.mesh < 0 || size_t(node.mesh) >= scene.meshes.size()) return;
+  if (!node.instances.empty()) {  // never skinned: the corners of the mesh bounds per instance
+    const MeshBounds m = meshBounds(scene.meshes[size_t(node.mesh)]);
+    if (m.empty()) return;
+    for (const TRS& instance : node.instances) {
+      const glm::mat4 toWorld = world[size_t(n)] * trsMatrix(instance);
+      for (int c = 0; c < 8; ++c)
+        b.add(glm::vec3(toWorld * glm::vec4(c & 1 ? m.hi.x : m.lo.x, c & 2 ? m.hi.y : m.lo.y, c & 4 ? m.hi.z : m.lo.z, 1.0f)));
+    }
+    return;
+  }
   const Skin* skin = node.skin >= 0 && size_t(node.skin) < scene.skins.size()
                          ? &scene.skins[size_t(node.skin)] : nullptr;
   std::vector<glm::mat4> joints;  // world-space skinning matrices (glTF: node transform unused)

@@ -26,6 +26,12 @@ constexpr const char* kBezierPatchesExtension = "MB_bezier_patches";
 Result<Primitive> convertPatchPrimitive(const tinygltf::Model& model,
                                         const tinygltf::Primitive& primitive, int materialCount);
 
+// EXT_mesh_gpu_instancing on node `node` (gltf_instancing.cpp): its per-instance TRS accessors
+// -> scene.nodes[node].instances (types, equal counts and finite values checked). Call after
+// the node's mesh and skin are set.
+constexpr const char* kInstancingExtension = "EXT_mesh_gpu_instancing";
+Status convertInstancing(const tinygltf::Model& model, size_t node, Scene& scene);
+
 // All animations (T/R/S channels; weights channels are recorded as unsupported).
 Status convertAnimations(const tinygltf::Model& model, Scene& scene);
 

@@ -15,6 +15,7 @@
 #include "pipelines/scene/compressed_geometry.h"
 #include "pipelines/scene/gltf_convert.h"
 #include "pipelines/scene/image_decode.h"
+#include "pipelines/scene/instancing.h"
 #include "pipelines/scene/preflight.h"
 
 namespace mb {
@@ -87,14 +88,12 @@ std::string firstLines(std::string s) {
 void noteExtensions(const tinygltf::Model& m, Scene& scene) {
   static const std::set<std::string> supported = {"KHR_mesh_quantization", kBezierPatchesExtension,
                                                   "KHR_draco_mesh_compression", "EXT_meshopt_compression",
-                                                  "KHR_meshopt_compression", "EXT_texture_webp"};
-  static const std::set<std::string> geometry = {"EXT_mesh_gpu_instancing"};
+                                                  "KHR_meshopt_compression", "EXT_texture_webp", kInstancingExtension};
   std::set<std::string> seen;
   for (const auto* list : {&m.extensionsRequired, &m.extensionsUsed})
     for (const auto& ext : *list) {
       if (supported.count(ext) || !seen.insert(ext).second) continue;
-      scene.unsupported.push_back("extension " + ext + (geometry.count(ext) ? " changes geometry: not supported"
-                                                                            : " not supported (ignored)"));
+      scene.unsupported.push_back("extension " + ext + " not supported (ignored)");
     }
 }
 
@@ -121,6 +120,7 @@ Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadCon
     if (!mesh) return Result<Scene>::fail(name + ": " + mesh.error());
     scene.meshes.push_back(mesh.take());
   }
+  scene.stats.instancingDrawnOnce += dropUndrawableInstances(scene);
   if (s = convertAnimations(m, scene); !s) return Result<Scene>::fail(name + ": " + s.error());
   countAccessorBoundsMismatches(m, scene);
   return scene;

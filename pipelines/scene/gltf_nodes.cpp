@@ -73,8 +73,10 @@ Status convertNodes(const tinygltf::Model& m, Scene& scene) {
   scene.nodes.resize(n);
   for (size_t i = 0; i < n; ++i) {
     if (Status s = convertNode(m, i, &scene.nodes[i]); !s) return s;
+    if (Status s = convertInstancing(m, i, scene); !s) return s;
     for (const auto& [ext, v] : m.nodes[i].extensions)
-      scene.unsupported.push_back("node " + std::to_string(i) + ": extension " + ext + " ignored");
+      if (ext != kInstancingExtension)
+        scene.unsupported.push_back("node " + std::to_string(i) + ": extension " + ext + " ignored");
   }
   for (size_t i = 0; i < n; ++i) {
     for (int c : m.nodes[i].children) {

@@ -26,6 +26,10 @@ struct Node {
   int parent = -1;
   std::vector<int> children;
   int mesh = -1, skin = -1, camera = -1;
+  // EXT_mesh_gpu_instancing (gltf_instancing.cpp) or `--instances N` (instancing.h): the mesh
+  // is drawn once per entry, instance i at node world * instances[i]; empty: drawn once at the
+  // node's world. Never set on a skinned node or a Bezier patch mesh (instancing.h).
+  std::vector<TRS> instances;
 };
 
 struct Primitive {
@@ -151,6 +155,9 @@ struct LoadStats {
   int camerasRepaired = 0;            // cameras with zfar <= znear, bad znear or yfov (Camera)
   int binChunkUnaligned = 0;          // GLB BIN chunk length not a multiple of 4 (padded with zeros)
   int basisuTexturesNotDecoded = 0;   // KHR_texture_basisu sources (no decoder): fallback image or white
+  // EXT_mesh_gpu_instancing (gltf_instancing.cpp).
+  int instanceRotationsNormalised = 0;  // instance ROTATIONs off unit length by > 0.00769
+  int instancingDrawnOnce = 0;          // instanced skinned / Bezier patch nodes: drawn once
 };
 
 // Geometry and images the loader decoded from a compression or image-format extension

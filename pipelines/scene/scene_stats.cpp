@@ -39,7 +39,10 @@ FileStats computeFileStats(const Scene& s) {
     f.matrixNodes += n.hasMatrix;
     if (n.mesh >= 0) {
       ++f.meshNodes;
-      f.drawnVertices += meshVertices[size_t(n.mesh)];
+      const long long copies = n.instances.empty() ? 1 : (long long)n.instances.size();
+      f.instancedNodes += !n.instances.empty();
+      f.instances += n.instances.empty() ? 0 : int(copies);
+      f.drawnVertices = int(std::min<long long>(f.drawnVertices + copies * meshVertices[size_t(n.mesh)], 1LL << 30));
     }
   }
   // A curved-space scene draws its triangle list once per instance (no nodes or meshes).
@@ -87,7 +90,9 @@ nlohmann::json toJson(const LoadStats& s) {
           {"imagesNotDecoded", s.imagesNotDecoded}, {"accessorBoundsMismatch", s.accessorBoundsMismatch},
           {"keyframeTimesNotIncreasing", s.keyframeTimesNotIncreasing},
           {"rotationKeysNormalised", s.rotationKeysNormalised}, {"camerasRepaired", s.camerasRepaired},
-          {"binChunkUnaligned", s.binChunkUnaligned}, {"basisuTexturesNotDecoded", s.basisuTexturesNotDecoded}};
+          {"binChunkUnaligned", s.binChunkUnaligned}, {"basisuTexturesNotDecoded", s.basisuTexturesNotDecoded},
+          {"instanceRotationsNormalised", s.instanceRotationsNormalised},
+          {"instancingDrawnOnce", s.instancingDrawnOnce}};
 }
 
 nlohmann::json toJson(const CompressionStats& c) {
@@ -120,7 +125,8 @@ nlohmann::json toJson(const FileStats& f) {
   const ScaleReport& r = f.scale;
   j["geometry"] = {{"nodes", f.nodes}, {"matrixNodes", f.matrixNodes}, {"meshes", f.meshes},
                    {"primitives", f.primitives}, {"vertices", f.vertices}, {"triangles", f.triangles},
-                   {"meshNodes", f.meshNodes}, {"drawnVertices", f.drawnVertices}, {"patches", f.patches}};
+                   {"meshNodes", f.meshNodes}, {"drawnVertices", f.drawnVertices}, {"patches", f.patches},
+                   {"instancedNodes", f.instancedNodes}, {"instances", f.instances}};
   j["materials"] = {{"materials", f.materials}, {"textures", f.textures}, {"images", f.images},
                     {"normalMappedPrimitives", f.normalMappedPrimitives},
                     {"authoredTangentPrimitives", f.authoredTangentPrimitives}};

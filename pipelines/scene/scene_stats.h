@@ -19,7 +19,10 @@ struct FileStats {
   int nodes = 0, matrixNodes = 0, meshes = 0, primitives = 0, vertices = 0, triangles = 0;
   // drawnVertices: vertex-shader runs per frame: mesh vertices per instancing node, plus for
   // Bezier patch primitives (Primitive::patchPoints) (N+1)^2 per patch at N = Scene::patchLevel.
+  // Instances: EXT_mesh_gpu_instancing / --instances (Node::instances); an instanced node
+  // draws its mesh once per instance (drawnVertices counts each).
   int meshNodes = 0, drawnVertices = 0;
+  int instancedNodes = 0, instances = 0;
   int patches = 0;  // bicubic Bezier patches (meshes counted once)
   int materials = 0, textures = 0, images = 0, cameras = 0;
   int normalMappedPrimitives = 0, authoredTangentPrimitives = 0, skinnedPrimitives = 0;

@@ -58,7 +58,9 @@ std::string counterName(int mb::LoadStats::*c) {
       {&S::imagesNotDecoded, "imagesNotDecoded"},         {&S::accessorBoundsMismatch, "accessorBoundsMismatch"},
       {&S::keyframeTimesNotIncreasing, "keyframeTimesNotIncreasing"}, {&S::rotationKeysNormalised, "rotationKeysNormalised"},
       {&S::camerasRepaired, "camerasRepaired"},           {&S::binChunkUnaligned, "binChunkUnaligned"},
-      {&S::basisuTexturesNotDecoded, "basisuTexturesNotDecoded"}};
+      {&S::basisuTexturesNotDecoded, "basisuTexturesNotDecoded"},
+      {&S::camerasRepaired, "camerasRepaired"}, {&S::instanceRotationsNormalised, "instanceRotationsNormalised"},
+      {&S::instancingDrawnOnce, "instancingDrawnOnce"}};
   for (const auto& [p, n] : names)
     if (p == c) return n;
   return "";

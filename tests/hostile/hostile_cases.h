@@ -1230,11 +1230,87 @@ inline std::vector<Case> compressionCases() {
   return cs;
 }
 
+// EXT_mesh_gpu_instancing on the quad's node: per-instance TRANSLATION / ROTATION / SCALE.
+inline std::vector<Case> instancingCases() {
+  using namespace detail;
+  std::vector<Case> cs;
+  // The quad drawn as three instances; `edit` may change the accessors or the extension.
+  auto instanced = [](const std::function<void(Doc&, Json& attributes)>& edit) {
+    return toGlb(quadDoc([&](Doc& d, QuadIds&) {
+      Json attributes = {{"TRANSLATION", d.vec3({{0, 0, 0}, {3, 0, 0}, {6, 0, 0}})},
+                         {"ROTATION", d.vec4({{0, 0, 0, 1}, {0, 0.70710678f, 0, 0.70710678f}, {0, 0, 0, 1}})},
+                         {"SCALE", d.vec3({{1, 1, 1}, {2, 2, 2}, {1, 0.5f, 1}})}};
+      edit(d, attributes);
+      d.j["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"] = {{"attributes", attributes}};
+      d.j["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+    }));
+  };
+  {
+    Case c = loads("instancing_valid.glb", instanced([](Doc&, Json&) {}), "three instances: drawn three times");
+    c.check = [](const Scene& s) {
+      const auto& in = s.nodes[0].instances;
+      if (in.size() != 3) return std::string("expected 3 instances");
+      if (in[1].translation != glm::vec3(3, 0, 0) || in[1].scale != glm::vec3(2) || in[2].scale != glm::vec3(1, 0.5f, 1))
+        return std::string("instance TRS not as written");
+      return std::string(std::abs(in[1].rotation.y - 0.70710678f) < 1e-6f ? "" : "rotation not as written");
+    };
+    cs.push_back(c);
+  }
+  {
+    // ROTATION as normalized SHORT (allowed by the extension): 32767 reads as 1.
+    Case c = loads("instancing_rotation_short.glb", instanced([](Doc& d, Json& a) {
+                     const std::vector<int16_t> q = {0, 0, 0, 32767, 0, 0, 32767, 0, 0, 0, 0, 32767};
+                     int bv = d.view(q.data(), q.size() * 2);
+                     int acc = d.accessor(bv, kShort, 3, "VEC4");
+                     d.j["accessors"][acc]["normalized"] = true;
+                     a["ROTATION"] = acc;
+                   }),
+                   "instance ROTATION as normalized int16");
+    c.check = [](const Scene& s) {
+      const auto& in = s.nodes[0].instances;
+      return in.size() == 3 && in[1].rotation == glm::quat(0, 0, 0, 1) ? "" : "int16 rotation not decoded to (0,0,1,0)";
+    };
+    cs.push_back(c);
+  }
+  cs.push_back(error("instancing_count_mismatch.glb", instanced([](Doc& d, Json& a) { a["SCALE"] = d.vec3({{1, 1, 1}, {1, 1, 1}}); }),
+                     {"counts must agree"}, "SCALE has 2 instances, TRANSLATION and ROTATION 3"));
+  cs.push_back(error("instancing_rotation_vec3.glb", instanced([](Doc& d, Json& a) { a["ROTATION"] = d.vec3({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}); }),
+                     {"ROTATION accessor", "VEC4"}, "ROTATION accessor of type VEC3"));
+  cs.push_back(error("instancing_rotation_unnormalized_short.glb", instanced([](Doc& d, Json& a) {
+                       const std::vector<int16_t> q(12, 0);
+                       a["ROTATION"] = d.accessor(d.view(q.data(), q.size() * 2), kShort, 3, "VEC4");
+                     }),
+                     {"ROTATION accessor", "normalized"}, "ROTATION as int16 without normalized"));
+  cs.push_back(error("instancing_translation_nan.glb", instanced([](Doc& d, Json& a) {
+                       pokeBin(d, a["TRANSLATION"].get<int>(), 1, 0, std::numeric_limits<float>::quiet_NaN());
+                     }),
+                     {"non-finite"}, "TRANSLATION of instance 1 is NaN"));
+  cs.push_back(error("instancing_missing_accessor.glb", instanced([](Doc&, Json& a) { a["SCALE"] = 99; }),
+                     {"does not exist"}, "SCALE names accessor 99"));
+  cs.push_back(error("instancing_no_attributes.glb", instanced([](Doc&, Json& a) { a = Json::object(); }),
+                     {"no attributes"}, "the extension without any attribute"));
+  cs.push_back(fallback("instancing_zero_rotation.glb", instanced([](Doc& d, Json& a) {
+                          pokeBin(d, a["ROTATION"].get<int>(), 2, 3, 0.0f);
+                        }),
+                        &LoadStats::instanceRotationsNormalised, 1, "instance ROTATION (0,0,0,0): identity, counted"));
+  {
+    Doc d;
+    skinnedRibbon(d, 3);
+    d.j["nodes"][0]["extensions"]["EXT_mesh_gpu_instancing"] = {{"attributes", {{"TRANSLATION", d.vec3({{0, 0, 0}, {2, 0, 0}})}}}};
+    d.finish();
+    Case c = fallback("instancing_skinned.glb", toGlb(d), &LoadStats::instancingDrawnOnce, 1,
+                      "instancing on a skinned node: drawn once, counted and listed");
+    c.check = [](const Scene& s) { return s.nodes[0].instances.empty() ? "" : "a skinned node kept its instances"; };
+    cs.push_back(c);
+  }
+  return cs;
+}
+
 // Every hand-made case.
 inline std::vector<Case> allCases() {
   std::vector<Case> all;
   for (auto part : {containerCases, jsonCases, accessorCases, numericCases, graphCases, contentCases, conformanceCases,
-                    compressionCases}) {
+                    compressionCases, instancingCases}) {
     auto v = part();
     for (auto& c : v) all.push_back(std::move(c));
   }

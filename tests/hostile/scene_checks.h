@@ -48,6 +48,11 @@ inline std::string checkSceneInvariants(const Scene& s) {
         return (err << "node " << i << ": not listed exactly once among its parent's children", err.str());
     }
     if (!finite(n.local)) return (err << "node " << i << ": non-finite TRS", err.str());
+    for (const TRS& t : n.instances)  // EXT_mesh_gpu_instancing: finite, unit rotations
+      if (!finite(t) || std::abs(glm::length(t.rotation) - 1.0f) > 1e-5f)
+        return (err << "node " << i << ": instance TRS not finite or rotation not unit", err.str());
+    if (!n.instances.empty() && (n.mesh < 0 || n.skin >= 0))
+      return (err << "node " << i << ": instances on a node without mesh or with a skin", err.str());
   }
   // Acyclic: walking up from any node reaches a root. Linear: each node is walked once
   // (0 = not yet seen, 1 = on the current walk, 2 = known to reach a root).

@@ -111,7 +111,16 @@ TEST_P(BuiltinScene, RendersNonEmptyDeterministicWithMeasuredStats) {
     EXPECT_EQ(s.vertexBytes, s.vertices * 48);
     EXPECT_EQ(s.patchBytes, 0u);
   }
-  EXPECT_DOUBLE_EQ(s.floatsPerTransform, 32.0);
+  if (f.instancedNodes == f.meshNodes && f.instances > 0) {
+    // Every node instanced (instanced_grid): no per-draw transform; the same two mat4 (32
+    // floats) per instance instead.
+    EXPECT_DOUBLE_EQ(s.floatsPerTransform, 0.0);
+    EXPECT_EQ(s.instances, uint64_t(f.instances));
+    EXPECT_EQ(s.instanceBytes, s.instances * 32 * 4);
+  } else {
+    EXPECT_DOUBLE_EQ(s.floatsPerTransform, 32.0);
+    EXPECT_EQ(s.instances, 0u);
+  }
   EXPECT_GT(s.draws, 0);
   EXPECT_GT(s.indexBytes, 0u);
   if (!scene->skins.empty()) {

@@ -43,7 +43,7 @@ glm::mat4 world(const mb::Scene& s, const std::vector<mb::TRS>& pose, int node) 
 TEST(SceneBuiltin, NamesAreStable) {
   EXPECT_EQ(mb::builtinSceneNames(),
             (std::vector<std::string>{"normal_torus", "textured_box", "skinned_tube", "scaled_hierarchy", "crowd",
-                                      "dense_torus", "teapot"}));
+                                      "dense_torus", "teapot", "instanced_grid"}));
   EXPECT_TRUE(mb::isBuiltinScene("crowd"));
   EXPECT_FALSE(mb::isBuiltinScene("crowd.glb"));
   EXPECT_FALSE(mb::builtinSceneGlb("nope").ok());
@@ -75,6 +75,25 @@ TEST(SceneBuiltin, RoundTripStatisticsMatchGenerator) {
     EXPECT_EQ(mb::toJson(s.stats), mb::toJson(mb::LoadStats{})) << "no fallback needed";
     for (const auto& img : s.images) EXPECT_EQ(img.rgba.size(), size_t(img.width) * size_t(img.height) * 4);
   }
+}
+
+TEST(SceneBuiltin, InstancedGridHas256InstancesWithOneStretchedAndOneMirrored) {
+  mb::Scene s = writeAndLoad("instanced_grid");
+  int instanced = -1;
+  for (size_t n = 0; n < s.nodes.size(); ++n)
+    if (!s.nodes[n].instances.empty()) instanced = int(n);
+  ASSERT_GE(instanced, 0);
+  const auto& in = s.nodes[size_t(instanced)].instances;
+  ASSERT_EQ(in.size(), 256u);
+  EXPECT_EQ(s.nodes[size_t(instanced)].mesh, 0);
+  EXPECT_EQ(in[17].scale, glm::vec3(1.3f, 0.5f, 0.8f));
+  EXPECT_EQ(in[40].scale, glm::vec3(-0.8f, 0.8f, 0.8f));
+  int uniform = 0;
+  for (const auto& t : in) uniform += t.scale.x == t.scale.y && t.scale.y == t.scale.z && t.scale.x > 0.0f;
+  EXPECT_EQ(uniform, 254);
+  // Grid spacing 2.5 along x and z: instance 1 is one step from instance 0.
+  EXPECT_NEAR(glm::length(in[1].translation - in[0].translation), 2.5f, 1e-6f);
+  EXPECT_EQ(mb::computeFileStats(s).drawnVertices, 256 * 24);
 }
 
 TEST(SceneBuiltin, TorusHasMirroredHalf) {
