@@ -61,7 +61,7 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"LoadStats", "rotationKeysNormalised", "keyframes", "invalid file: rotation keyframes whose length differs from 1 by more than 0.00769 (the glTF validator's tolerance), normalised; zero -> identity"},
       {"LoadStats", "camerasRepaired", "cameras", "invalid file: cameras with zfar <= znear, a negative znear (perspective: <= 0) or yfov outside (0, pi): zfar made infinite (drawn at znear x 1e4), znear 0.01 (orthographic 0), yfov 0.8"},
       {"LoadStats", "binChunkUnaligned", "files", "invalid file: GLB BIN chunk length not a multiple of 4 (three.js and the Sample Viewer read it): the chunk zero-padded to the next multiple of 4"},
-      {"LoadStats", "basisuTexturesNotDecoded", "textures", "KHR_texture_basisu (KTX2) textures: no BasisU decoder in Debian; the texture's fallback image is used, else it is drawn untextured (listed under unsupported)"},,
+      {"LoadStats", "basisuTexturesNotDecoded", "textures", "KHR_texture_basisu (KTX2) textures: no BasisU decoder in Debian; the texture's fallback image is used, else it is drawn untextured (listed under unsupported)"},
       {"LoadStats", "instanceRotationsNormalised", "instances", "EXT_mesh_gpu_instancing: instance ROTATIONs whose length differs from 1 by more than 0.00769, normalised; zero -> identity"},
       {"LoadStats", "instancingDrawnOnce", "nodes", "EXT_mesh_gpu_instancing on a skinned node or a Bezier patch mesh: drawn once at the node, its instances ignored (listed under unsupported)"},
       // Image metrics (harness/render/image_metrics.h): compare, report and check.
