@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "harness/cli/command.h"
+#include "harness/cli/output_paths.h"
 #include "harness/isa/isa_output.h"
 #include "harness/isa/isa_run.h"
 #include "harness/options/args.h"
@@ -45,6 +46,12 @@ int runIsaCommand(const std::vector<std::string>& argv) {
       }
     }
   }
+  // Output paths are checked (and their folders made) before anything is compiled.
+  if (const auto path = args.get("json"))
+    if (mb::Status ok = mb::prepareOutputFile("--json", *path); !ok) {
+      std::fprintf(stderr, "motorbench isa: %s\n", ok.error().c_str());
+      return 2;
+    }
   auto run = mb::isa::runIsa(options);
   if (!run) {
     std::fprintf(stderr, "motorbench isa: %s\n", run.error().c_str());

@@ -8,6 +8,7 @@
 
 #include "harness/options/args.h"
 #include "harness/cli/command.h"
+#include "harness/cli/output_paths.h"
 #include "harness/ops/op_count.h"
 #include "harness/ops/op_kernels.h"
 #include "harness/isa/isa_ops.h"
@@ -26,6 +27,11 @@ int runOps(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "motorbench ops: unexpected argument '%s'\n", args.positional()[0].c_str());
     return 2;
   }
+  if (const auto path = args.get("json"))  // checked (folder made) before anything is counted
+    if (mb::Status ok = mb::prepareOutputFile("--json", *path); !ok) {
+      std::fprintf(stderr, "motorbench ops: %s\n", ok.error().c_str());
+      return 2;
+    }
   const std::vector<mb::ops::Row> rows = mb::ops::measureAll(mb::ops::allKernels());
 
   std::printf("Arithmetic per kernel, counted by executing shaders/pga.glsl and the GLSL matrix\n"

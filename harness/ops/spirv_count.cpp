@@ -1,5 +1,7 @@
 #include "harness/ops/spirv_count.h"
 
+#include "harness/ops/spirv_cache.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -310,6 +312,10 @@ Result<std::string> compileToDisassembly(const std::string& source, const std::s
                                          Optimise opt, const std::string& name,
                                          const Tools& tools) {
   using R = Result<std::string>;
+  // Same text, stage, passes and tools: the same disassembly (spirv_cache.h).
+  const std::string key = cacheKey(source, stage, "glslang -G --aml; spirv-opt " + passesFor(opt),
+                                   tools.glslang, tools.spirvOpt, tools.spirvDis);
+  if (auto cached = cachedDisassembly(key)) return *cached;
   TempDir tmp;
   if (tmp.path.empty()) return R::fail(name + ": cannot create a temporary folder");
   const fs::path spv = tmp.path / "shader.spv", opt_spv = tmp.path / "opt.spv",
@@ -323,7 +329,9 @@ Result<std::string> compileToDisassembly(const std::string& source, const std::s
   if (run(quote(tools.spirvDis) + " --no-color -o " + quote(dis.string()) + " " +
               quote(opt_spv.string()), log) != 0)
     return R::fail(name + ": spirv-dis failed:\n" + readFile(log));
-  return readFile(dis);
+  std::string text = readFile(dis);
+  storeDisassembly(key, text);
+  return text;
 }
 
 Result<std::vector<uint32_t>> compileToBinary(const std::string& source, const std::string& stage,

@@ -57,6 +57,25 @@ TEST(CliOutputs, ClaimsAndInspectCheckTheirFilesFirst) {
   fs::remove_all(dir);
 }
 
+// ops and isa write one --json file: a folder there, or a file where a folder must be, is refused
+// before anything is counted or compiled.
+TEST(CliOutputs, OpsAndIsaCheckTheirJsonFirst) {
+  const fs::path dir = mb::cli_test::scratchDir("outputs_ops_isa");
+  std::ofstream(dir / "plain") << "x";
+  for (const char* command : {"ops", "isa"}) {
+    const auto r = runMb(std::string(command) + " --json " + quoted(dir / "plain" / "x.json"));
+    EXPECT_EQ(r.rc, 2) << command << "\n" << r.out;
+    EXPECT_TRUE(contains(r.out, "--json " + (dir / "plain" / "x.json").string() + ": ")) << r.out;
+    EXPECT_TRUE(contains(r.out, "is a file, not a folder")) << r.out;
+    EXPECT_FALSE(contains(r.out, "Arithmetic per kernel")) << "counted before refusing:\n" << r.out;
+    EXPECT_FALSE(contains(r.out, "instructions")) << "compiled before refusing:\n" << r.out;
+    const auto folder = runMb(std::string(command) + " --json " + quoted(dir));
+    EXPECT_EQ(folder.rc, 2) << folder.out;
+    EXPECT_TRUE(contains(folder.out, "is a folder; it writes one file")) << folder.out;
+  }
+  fs::remove_all(dir);
+}
+
 // "`compare -o out.png` makes a folder named out.png."
 TEST(CliOutputs, CompareRefusesAFileLikeFolderName) {
   const fs::path dir = mb::cli_test::scratchDir("outputs_compare");

@@ -1,0 +1,109 @@
+#include "harness/ops/spirv_cache.h"
+
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace mb::spirv {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The tool as found on PATH (or as given, when it names a path), with its size and mtime.
+std::string toolIdentity(const std::string& tool) {
+  fs::path p = tool;
+  if (!p.has_parent_path())
+    if (const char* path = std::getenv("PATH")) {
+      std::istringstream dirs(path);
+      for (std::string d; std::getline(dirs, d, ':');)
+        if (!d.empty() && fs::exists(fs::path(d) / tool)) {
+          p = fs::path(d) / tool;
+          break;
+        }
+    }
+  std::error_code ec;
+  const fs::path real = fs::canonical(p, ec);
+  if (ec) return tool + " (not found)";
+  const auto size = fs::file_size(real, ec);
+  const auto time = fs::last_write_time(real, ec).time_since_epoch().count();
+  return real.string() + " " + std::to_string(size) + " " + std::to_string(time);
+}
+
+uint64_t fnv1a(const std::string& s) {
+  uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+// "" when the cache is off or has no place.
+fs::path cacheFolder() {
+  fs::path base;
+  if (const char* dir = std::getenv("MB_CACHE_DIR")) {
+    if (std::string(dir) == "off") return {};
+    base = dir;
+  } else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
+    base = fs::path(xdg) / "motorbench";
+  } else if (const char* home = std::getenv("HOME"); home && *home) {
+    base = fs::path(home) / ".cache" / "motorbench";
+  } else {
+    return {};
+  }
+  return base / "spirv";
+}
+
+fs::path entryPath(const std::string& key) {
+  const fs::path dir = cacheFolder();
+  if (dir.empty()) return {};
+  char name[32];
+  std::snprintf(name, sizeof name, "%016llx.spvasm", static_cast<unsigned long long>(fnv1a(key)));
+  return dir / name;
+}
+
+}  // namespace
+
+std::string cacheKey(const std::string& source, const std::string& stage, const std::string& passes,
+                     const std::string& glslang, const std::string& spirvOpt, const std::string& spirvDis) {
+  static const std::string tools = [&] {
+    return toolIdentity(glslang) + "\n" + toolIdentity(spirvOpt) + "\n" + toolIdentity(spirvDis);
+  }();
+  return "motorbench spirv cache 1\n" + tools + "\nstage " + stage + "\npasses " + passes + "\n" + source;
+}
+
+std::optional<std::string> cachedDisassembly(const std::string& key) {
+  const fs::path p = entryPath(key);
+  if (p.empty()) return std::nullopt;
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return std::nullopt;
+  // Entry: the key's length, newline, the key, the disassembly.
+  size_t length = 0;
+  if (!(in >> length) || in.get() != '\n' || length != key.size()) return std::nullopt;
+  std::string stored(length, '\0');
+  if (!in.read(stored.data(), std::streamsize(length)) || stored != key) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void storeDisassembly(const std::string& key, const std::string& text) {
+  const fs::path p = entryPath(key);
+  if (p.empty()) return;
+  std::error_code ec;
+  fs::create_directories(p.parent_path(), ec);
+  const fs::path tmp = p.string() + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    if (!(out << key.size() << '\n' << key << text)) {
+      fs::remove(tmp, ec);
+      return;
+    }
+  }
+  fs::rename(tmp, p, ec);
+  if (ec) fs::remove(tmp, ec);
+}
+
+}  // namespace mb::spirv

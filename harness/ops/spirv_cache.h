@@ -1,0 +1,25 @@
+// On-disk memo of compileToDisassembly (spirv_count.h): the disassembly of an optimised module is
+// a pure function of the GLSL text, the stage, the spirv-opt passes and the three tools, so it is
+// kept under a key made of exactly those (each tool by its path, size and modification time) and
+// read back instead of running glslang/spirv-opt/spirv-dis again. The whole key is stored in the
+// entry and compared on reading (no hash collision can return another shader's text).
+// Where: $MB_CACHE_DIR, else $XDG_CACHE_HOME/motorbench, else $HOME/.cache/motorbench (a
+// "spirv" folder inside). MB_CACHE_DIR=off turns it off; an unwritable folder just means no cache.
+#pragma once
+#include <optional>
+#include <string>
+
+namespace mb::spirv {
+
+// The key of one compilation: every input that decides its output.
+std::string cacheKey(const std::string& source, const std::string& stage, const std::string& passes,
+                     const std::string& glslang, const std::string& spirvOpt, const std::string& spirvDis);
+
+// The stored disassembly for `key`, if any.
+std::optional<std::string> cachedDisassembly(const std::string& key);
+
+// Stores `text` for `key` (written to a temporary file, then renamed: concurrent runs never
+// read half an entry). Failures are ignored: the cache only saves time.
+void storeDisassembly(const std::string& key, const std::string& text);
+
+}  // namespace mb::spirv
