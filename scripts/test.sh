@@ -9,10 +9,11 @@ cd "$(dirname "$0")/.."
 
 BUILD=build
 SANITIZE=0
-CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo)
+# No debug info (MB_DEBUG_INFO=OFF): the same -O2 code, a quarter less compile time on CI's 2 cores.
+CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_DEBUG_INFO=OFF)
 for a in "$@"; do
   case "$a" in
-    --sanitize) BUILD=build-asan; SANITIZE=1; CMAKE_ARGS+=(-DMB_SANITIZE=ON) ;;
+    --sanitize) BUILD=build-asan; SANITIZE=1; CMAKE_ARGS+=(-DMB_SANITIZE=ON -DMB_DEBUG_INFO=ON) ;;
     *) echo "test.sh: unknown option $a" >&2; exit 2 ;;
   esac
 done

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "harness/claims/claims_device.h"
 #include "harness/claims/claims_sources.h"
 #include "harness/ops/ops_vertex.h"
 #include "harness/render/render_frame.h"
@@ -121,7 +122,7 @@ std::vector<Claim> curvedClaims(bool runTiming, int frames) {
     out.push_back(failed(ft, "--no-run"));
   } else {
     json value = json::object();
-    std::string text, error;
+    std::string text, error, device;
     for (auto& sp : kSpaces) {
       auto scene = loadScene(sp[1]);
       if (!scene) { error = scene.error(); break; }
@@ -135,13 +136,17 @@ std::vector<Claim> curvedClaims(bool runTiming, int frames) {
       };
       const json normal = ratio(t), tiny = ratio(t.value("vertexBound", json()));
       if (normal.is_null()) { error = t.value("error", json("no ratio")).dump(); break; }
+      // The device that drew them (both spaces: one process, one device).
+      device = timingDevice(json{{"gl", t.value("gl", json())}}).label() + ", " +
+               t.value("frameTimeSource", std::string("wall-clock"));
       value[sp[0]] = {{"normal", normal}, {"vertexBound", tiny}};
       text += std::string(text.empty() ? "" : "; ") + sp[0] + ": " + num(normal.get<double>(), "%.2f") +
               " (64x64: " + (tiny.is_null() ? std::string("-") : num(tiny.get<double>(), "%.2f")) + ")";
     }
     if (!error.empty()) out.push_back(failed(ft, error));
     else {
-      ft.measured = text;
+      ft.measured = text + "; device: " + device;
+      value["device"] = device;
       ft.measuredValue = value;
       out.push_back(ft);
     }

@@ -178,7 +178,7 @@ std::vector<Claim> speedClaims(const SpeedInputs& in) {
       std::string zero;
       const auto values = opsPerPipeline(label, spirv, zero);
       if (!spirv) counted[label] = values;
-      Evidence e = fastestOf(std::string("ops per vertex, ") + label + (spirv ? ", SPIR-V" : ", counted"), values, "ops");
+      Evidence e = fastestOf(std::string("ops per vertex, ") + label + " to clip" + (spirv ? ", SPIR-V" : ", counted"), values, "ops");
       e.required = !spirv;
       if (!zero.empty()) e.detail += "; left out (0 ops: kernels not joined): " + zero;
       if (spirv && values.empty()) e.why = vertexOps().toolsProblem.empty() ? "no SPIR-V counts" : vertexOps().toolsProblem;

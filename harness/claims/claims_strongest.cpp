@@ -288,7 +288,23 @@ std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const 
       if (!zero.empty()) f.missing = "0 ops counted for " + zero + " (its kernels are not joined; left out)";
       if (spirvSide && !ops.toolsProblem.empty()) f.missing += (f.missing.empty() ? "" : "; ") + ops.toolsProblem;
       if (of.withClip && !spirvSide) clipOps = f.values;
-      out.push_back(judge(f));
+      Claim judged = judge(f);
+      // The matrix pipeline skins as the Sample Viewer does (palette relative to the mesh node),
+      // the motor pipeline with a world palette: the same configuration on both sides as well.
+      if (std::string(of.label) == "skinned" && judged.verdict != Verdict::NotMeasurable) {
+        auto total = [&](const char* fn) -> double {
+          const opsv::KernelRow* k = kernel(fn);
+          if (!k) return 0;
+          return spirvSide ? (k->optimised ? opsTotal(*k->optimised) : 0) : opsTotal(k->counted);
+        };
+        const double refM = total("matrixSkinnedVertex"), refQ = total("motorSkinnedVertexReference");
+        const double worldM = total("matrixSkinnedVertexWorld"), worldQ = total("motorSkinnedVertex");
+        if (refM > 0 && refQ > 0 && worldM > 0 && worldQ > 0)
+          judged.verdictText += "; matched configurations, motor vs matrix: palette relative to the mesh node " +
+                                num(refQ) + " vs " + num(refM) + " (" + pct(refQ, refM) + "), world palette " +
+                                num(worldQ) + " vs " + num(worldM) + " (" + pct(worldQ, worldM) + ")";
+      }
+      out.push_back(judged);
     }
 
   // ---- time: frame time per scene, vertex-bound, CPU update -------------------------------

@@ -295,6 +295,18 @@ double verticesPerUs(const PipelineTiming& t, bool gpu) {
 }
 
 nlohmann::json toJson(const ConfigTiming& c) {
+  // Each pipeline's ratios to its space's matrix pipeline ("matrix", "s3_matrix", ...), paired
+  // frame by frame as the text prints them, with their spread and the noise mark (q1 <= 1 <= q3).
+  const PipelineTiming* matrix = nullptr;
+  for (const PipelineTiming& t : c.pipelines)
+    if (t.error.empty() && (t.pipeline == "matrix" || t.pipeline.ends_with("_matrix"))) matrix = &t;
+  auto ratioJson = [](const std::vector<double>& base, const std::vector<double>& other) {
+    const Spread r = spreadOf(pairedRatios(base, other));
+    if (r.n == 0) return nlohmann::json();
+    nlohmann::json j = toJson(r);
+    j["noise"] = r.q1 <= 1.0 && r.q3 >= 1.0;
+    return j;
+  };
   nlohmann::json pipelines = nlohmann::json::object();
   for (const PipelineTiming& t : c.pipelines) {
     nlohmann::json j = {{"error", t.error.empty() ? nlohmann::json() : nlohmann::json(t.error)}};
@@ -315,6 +327,10 @@ nlohmann::json toJson(const ConfigTiming& c) {
       j["instances"] = t.stats.instances;
       j["vertices_per_us"] = verticesPerUs(t);
       j["gpu_vertices_per_us"] = t.gpuMs.empty() ? nlohmann::json() : nlohmann::json(verticesPerUs(t, true));
+      if (matrix) {
+        j["frame_ratio_to_matrix"] = ratioJson(matrix->frameMs, t.frameMs);
+        j["update_ratio_to_matrix"] = ratioJson(matrix->updateMs, t.updateMs);
+      }
     }
     pipelines[t.pipeline] = j;
   }

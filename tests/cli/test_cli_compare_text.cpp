@@ -3,6 +3,8 @@
 // count of the PNGs compare wrote.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <regex>
 #include <string>
@@ -42,6 +44,28 @@ fs::path zeroScaleFile(const fs::path& dir) {
   const mbtest::Bytes bytes = g.gltf();
   std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
   return file;
+}
+
+// Two pipelines that drew shapes of different size are warned about (more than 1 % apart), and
+// two that drew the same shape are not: candy_wrapper's half turn, where linear blend skinning
+// collapses the ring (matrix) and motor blending keeps it, against the same frame drawn by
+// affine (the same LBS, the same pixels). Counts checked against the PNGs compare wrote.
+TEST(CliCompareText, DifferentDrawnPixelCountsAreWarnedAbout) {
+  const fs::path dir = mb::cli_test::scratchDir("compare_drawn_apart");
+  const std::string frame = "compare skinned_tube --anim candy_wrapper --time 1.97 --size 128x128 ";
+  const auto apart = runMb(frame + "--pipelines matrix,motor -o " + quoted(dir / "apart"));
+  ASSERT_EQ(apart.rc, 0) << apart.out;
+  const int64_t m = nonBackground(dir / "apart" / "matrix.png"), q = nonBackground(dir / "apart" / "motor.png");
+  ASSERT_GT(m, 0);
+  ASSERT_GT(std::abs(double(q - m)), 0.01 * double(std::max(m, q))) << "the frame no longer separates the methods";
+  EXPECT_TRUE(contains(apart.out, "warning: the two pipelines drew different numbers of pixels (matrix " +
+                                      std::to_string(m) + ", motor " + std::to_string(q) + ": more than 1 % apart)"))
+      << apart.out;
+  const auto same = runMb(frame + "--pipelines matrix,affine -o " + quoted(dir / "same"));
+  ASSERT_EQ(same.rc, 0) << same.out;
+  EXPECT_EQ(nonBackground(dir / "same" / "matrix.png"), nonBackground(dir / "same" / "affine.png"));
+  EXPECT_FALSE(contains(same.out, "drew different numbers of pixels")) << same.out;
+  fs::remove_all(dir);
 }
 
 // "An empty frame passes a comparison: ... PSNR inf dB ... -> PASS".

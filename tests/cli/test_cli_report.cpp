@@ -205,6 +205,17 @@ TEST(CliClaims, JsonHoldsEveryClaimWithMeasuredValueAndVerdict) {
   EXPECT_EQ(byId["gp_mm"]["measuredValue"]["mul"], 48);
   EXPECT_EQ(byId["floats_per_vertex"]["measuredValue"]["motor"], 9.0);
   EXPECT_NE(readText(dir / "claims.md").find("gp_mm"), std::string::npos);
+  // Timed here: the curved frame-time row names the device that drew it.
+  ASSERT_TRUE(byId.count("curved_frame_time"));
+  const std::string curved = byId["curved_frame_time"]["measured"].get<std::string>();
+  EXPECT_TRUE(curved.find("device: CPU rasterizer (") != std::string::npos ||
+              curved.find("device: GPU (") != std::string::npos) << curved;
+  // The skinned ops row also compares the two pipelines in the same skinning configuration.
+  ASSERT_TRUE(byId.count("ops_skinned_vs_strongest"));
+  const std::string skinned = byId["ops_skinned_vs_strongest"]["verdictText"].get<std::string>();
+  EXPECT_NE(skinned.find("matched configurations, motor vs matrix: palette relative to the mesh node "),
+            std::string::npos) << skinned;
+  EXPECT_NE(skinned.find(", world palette "), std::string::npos) << skinned;
   fs::remove_all(dir);
 }
 

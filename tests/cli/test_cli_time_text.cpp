@@ -3,12 +3,16 @@
 // names that cannot shift the columns, and never "scenes timed" for a scene that failed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include "harness/timing/timing_text.h"
 #include "pipelines/pipeline.h"
 #include "tests/support/cli_issue_support.h"
+
+#include <nlohmann/json.hpp>
 
 namespace {
 
@@ -93,6 +97,36 @@ TEST(CliTimeText, TimePrintsEveryPipelineAndTheDirectionFirst) {
   for (const std::string& p : mb::pipelineNames()) EXPECT_TRUE(contains(r.out, "\n  " + p + " ")) << p << "\n" << r.out;
   EXPECT_TRUE(contains(r.out, "motor/matrix frame: paired ")) << r.out;
   EXPECT_TRUE(contains(r.out, "time: 1/1 scenes done (normal_torus: timed)")) << r.out;
+}
+
+// --json carries each pipeline's ratio to matrix with its spread and noise mark, as the text:
+// recomputed here from the per-frame samples the same file holds.
+TEST(CliTimeText, JsonHasEveryRatioWithItsSpread) {
+  const std::filesystem::path dir = mb::cli_test::scratchDir("time_ratio_json");
+  const auto r = runMb("time normal_torus --frames 5 --warmup 1 --json " + quoted(dir / "t.json"));
+  ASSERT_EQ(r.rc, 0) << r.out;
+  std::ifstream in(dir / "t.json");
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_FALSE(j.is_discarded());
+  const nlohmann::json& ps = j["results"][0]["pipelines"];
+  const std::vector<double> base = ps["matrix"]["frame_samples_ms"].get<std::vector<double>>();
+  for (const std::string& p : mb::pipelineNames()) {
+    const nlohmann::json& ratio = ps[p]["frame_ratio_to_matrix"];
+    ASSERT_TRUE(ratio.is_object()) << p;
+    std::vector<double> own = ps[p]["frame_samples_ms"].get<std::vector<double>>(), per;
+    ASSERT_EQ(own.size(), base.size());
+    for (size_t i = 0; i < own.size(); ++i) per.push_back(own[i] / base[i]);
+    std::sort(per.begin(), per.end());
+    EXPECT_NEAR(ratio["median"].get<double>(), per[per.size() / 2], 1e-12) << p;  // 5 frames: the middle one
+    EXPECT_LE(ratio["q1"].get<double>(), ratio["median"].get<double>()) << p;
+    EXPECT_GE(ratio["q3"].get<double>(), ratio["median"].get<double>()) << p;
+    EXPECT_NEAR(ratio["iqr"].get<double>(), ratio["q3"].get<double>() - ratio["q1"].get<double>(), 1e-12) << p;
+    EXPECT_EQ(ratio["noise"].get<bool>(), ratio["q1"].get<double>() <= 1.0 && ratio["q3"].get<double>() >= 1.0) << p;
+    EXPECT_TRUE(ps[p]["update_ratio_to_matrix"].is_object()) << p;
+  }
+  if (ps["matrix"]["frame_ratio_to_matrix"]["median"].is_number())
+    EXPECT_DOUBLE_EQ(ps["matrix"]["frame_ratio_to_matrix"]["median"].get<double>(), 1.0);
+  std::filesystem::remove_all(dir);
 }
 
 // "`time nope.glb` prints '1/1 scenes timed' before failing."
