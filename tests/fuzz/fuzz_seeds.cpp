@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "pipelines/scene/builtin_scenes.h"
+#include "tests/support/compressed_gltf.h"
 #include "tests/fuzz/seed_corpus_scenes.h"
 #include "tests/hostile/hostile_cases.h"
 
@@ -56,6 +57,12 @@ int main(int argc, char** argv) {
       return 2;
     }
     n += write(dir / ("builtin_" + name + ".glb"), *glb);
+    // The small scenes again through the codecs' own encoders, so the fuzzer starts inside valid
+    // Draco and meshopt streams (a mutation of them reaches the decoders' checks).
+    if (name == "textured_box" || name == "skinned_tube") {
+      n += write(dir / ("draco_" + name + ".glb"), mb::compressed::dracoCompressed(*glb));
+      n += write(dir / ("meshopt_" + name + ".glb"), mb::compressed::meshoptCompressed(*glb));
+    }
   }
   // Seeds should be small: libFuzzer mutates whole inputs, and its default max_len follows
   // the largest seed. Cases above 256 kB (deep hierarchies, JSON nesting) are left out.
