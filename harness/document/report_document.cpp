@@ -42,7 +42,8 @@ json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
     push(bpvPlain, number(pj, {"memory", "bytesPerVertexNotNormalMapped"}));
     const double ts = number(pj, {"memory", "floatsPerTransformWithScale"});
     if (ts > 0) fptScale.push_back(ts);
-    push(fpv, number(pj, {"memory", "floatsPerVertex"}));
+    // A scene of patches only (teapot) uploads control points, no mesh vertex: no figure, not 0.
+    if (const double fv = number(pj, {"memory", "floatsPerVertex"}); fv > 0) fpv.push_back(fv);
     const double t = number(pj, {"memory", "floatsPerTransform"});
     if (t > 0) fpt.push_back(t);
     else if (pj.contains("memory") && pj.value("error", json()).is_null()) ++noTransform;

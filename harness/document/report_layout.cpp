@@ -97,7 +97,7 @@ void summary(Document& d, const json& r) {
   row("floats per transform", [&sum](const std::string& p) {
     const json& spread = at(sum, {"pipelines"})[p]["floatsPerTransform"];
     return spreadText(spread, 3) + scenesText(spread) +
-           noneText(spread, "whose every draw is skinned (the joint palette moves the mesh)");
+           noneText(spread, "whose every draw is skinned or instanced (a joint palette or the per-instance stream moves the mesh)");
   });
   row("floats per transform incl. the per-draw scale", fromSpread("floatsPerTransformWithScale", 3));
   row("floats per joint (skinned scenes)", fromSpread("floatsPerJoint", 3));

@@ -16,6 +16,7 @@
 #include "harness/report/report_inputs.h"
 #include "harness/report/report_machine.h"
 #include "harness/document/report_layout.h"
+#include "harness/options/shard.h"
 #include "harness/report/report_ops.h"
 #include "harness/document/report_plots.h"
 #include "harness/process/report_workers.h"
@@ -165,6 +166,8 @@ int runReport(const Options& o) {
   if (o.shard.count > 1)
     say("shard " + std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count) + ": " +
         std::to_string(total) + " of " + std::to_string(all.size()) + " scene(s)");
+  if (const std::string note = emptyShardNote(o.shard, all.size(), inputs.size()); !note.empty())
+    say("warning: " + note);
   say(std::to_string(total) + " scene(s), pipelines " + joined(runPipelines(o)) + ", " +
       std::to_string(o.jobs) + " job(s), images " + std::to_string(o.width) + "x" +
       std::to_string(o.height) + " -> " + o.outDir);

@@ -43,4 +43,21 @@ TEST(DocumentTransforms, SkinnedOnlySceneIsCountedAsNoneNotDropped) {
   EXPECT_EQ(mb::report::noneText(matrix, "x"), "");
 }
 
+// A scene of Bezier patches only (teapot) uploads control points and no mesh vertex: its 0 floats
+// per vertex is no figure, so the summary's spread covers the mesh scenes only (not "12 (0..12)").
+TEST(DocumentTransforms, PatchOnlySceneHasNoFloatsPerVertex) {
+  const json settings = {{"pipelines", {"matrix", "motor"}}, {"baseline", "matrix"}, {"width", 64}, {"height", 48},
+                         {"frames", 0}, {"jobs", 1}};
+  json box = scene("box", 32, 8), teapot = scene("teapot", 32, 8);
+  box["pipelines"]["matrix"]["memory"]["floatsPerVertex"] = 12;
+  box["pipelines"]["motor"]["memory"]["floatsPerVertex"] = 9;
+  teapot["pipelines"]["matrix"]["memory"]["floatsPerVertex"] = 0;
+  teapot["pipelines"]["motor"]["memory"]["floatsPerVertex"] = 0;
+  const json r = mb::report::assembleReport(json::object(), settings, {box, teapot}, json::object(), json::object());
+  const json& matrix = r["summary"]["pipelines"]["matrix"]["floatsPerVertex"];
+  EXPECT_EQ(matrix["n"], 1);
+  EXPECT_EQ(matrix["min"], 12);
+  EXPECT_EQ(r["summary"]["pipelines"]["motor"]["floatsPerVertex"]["max"], 9);
+}
+
 }  // namespace
