@@ -48,6 +48,12 @@ struct SpeedInputs {
 };
 std::vector<Claim> speedClaims(const SpeedInputs& in);
 
+// The ISA kind of op evidence as rows of their own (issue 25 item 4), beside the counted and
+// SPIR-V ops rows: per vertex shader (rigid to clip, skinned) the instructions and VGPRs of the
+// cheapest motor-side pipeline against the cheapest matrix-side one on every family of `isa`
+// (SpeedInputs::isa); the worst family decides ("holds" when the motor side needs no more).
+std::vector<Claim> isaStrongestClaims(const nlohmann::json& isa, const std::string& isaSource);
+
 // The files the two scene-statistics rows are judged on (claims_corpus.cpp).
 struct CorpusInputs {
   nlohmann::json sceneGraphs;    // per-file inspect JSON of a scene-graph corpus (corpus_stats.h), or null

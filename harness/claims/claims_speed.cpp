@@ -161,6 +161,44 @@ Evidence frameEvidence(const SpeedInputs& in, const std::string& kind, const std
 
 }  // namespace
 
+std::vector<Claim> isaStrongestClaims(const json& isa, const std::string& isaSource) {
+  std::vector<Claim> out;
+  for (const char* program : {"rigid", "skinned"}) {
+    Claim c{std::string("ops_") + (std::string(program) == "rigid" ? "clip" : "skinned") + "_vs_strongest_isa",
+            "Against the strongest baseline",
+            std::string("AMD ISA of the ") + program + " vertex shader (instructions and VGPRs, RADV's compiler "
+            "on its null device): the cheapest motor side vs the cheapest matrix side"};
+    c.paper = "(not claimed; the paper counts ops per vertex)";
+    c.method = "motorbench isa (" + (isaSource.empty() ? std::string("the report's \"isa\"") : isaSource) +
+               "): each pipeline's " + program + " vertex shader as the GL pipeline loads it (normal-mapped form), "
+               "per family and NGG mode the fewest of each side; the worst family decides";
+    const Evidence instr = isaEvidence(isa, program, "instructions", "instructions");
+    const Evidence vgprs = isaEvidence(isa, program, "vgprs", "VGPRs");
+    if (instr.costRatio < 0) {
+      c.measured = "-";
+      c.measuredValue = nullptr;
+      c.verdict = Verdict::NotMeasurable;
+      c.verdictText = "not measurable here: " + instr.why;
+      out.push_back(c);
+      continue;
+    }
+    c.measured = "instructions " + x2(instr.costRatio) + " (" + instr.detail + ")";
+    c.measuredValue = {{"instructions", instr.costRatio}};
+    if (vgprs.costRatio >= 0) {
+      c.measured += "; VGPRs " + x2(vgprs.costRatio) + " (" + vgprs.detail + ")";
+      c.measuredValue["vgprs"] = vgprs.costRatio;
+    }
+    const bool holds = instr.costRatio <= 1.0;
+    c.verdict = holds ? Verdict::Reproduced : Verdict::Differs;
+    c.verdictText = std::string(holds ? "holds" : "does not hold") +
+                    " against the strongest baseline on every family: motor side / matrix side instructions " +
+                    x2(instr.costRatio) + " on the worst family" +
+                    (vgprs.costRatio >= 0 ? ", VGPRs " + x2(vgprs.costRatio) : std::string());
+    out.push_back(c);
+  }
+  return out;
+}
+
 std::vector<Claim> speedClaims(const SpeedInputs& in) {
   Claim c{"as_fast_as_matrices", "Speed",
           "motors transform mesh vertices (with tangent frame) as fast as 4x4 matrices"};

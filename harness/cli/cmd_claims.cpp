@@ -260,6 +260,7 @@ int runClaims(const std::vector<std::string>& argv) {
   add(all, claims::strongestBaselineClaims(speed.timings, sources["frameTiming"].get<std::string>(), speed.kernelPairs,
                                            speed.kernelSource, speed.sceneStats, speed.timingMachine),
       "vs strongest");
+  add(all, claims::isaStrongestClaims(speed.isa, speed.isaSource), "vs strongest");
 
   json machine = report::machineJson();
   json scope = {{"cpu", claims::cpuScope(speed.kernelMachine)},

@@ -120,6 +120,15 @@ TEST(ClaimsReport, RowsReadTheReportTheyAreGiven) {
   EXPECT_DOUBLE_EQ(v["ISA instructions, rigid vertex shader"]["costRatio"].get<double>(), 2.2);
   EXPECT_DOUBLE_EQ(v["ISA VGPRs, rigid vertex shader"]["costRatio"].get<double>(), 2.0);
   EXPECT_DOUBLE_EQ(v["CPU kernel vertex_frame vs the fastest matrix code measured"]["costRatio"].get<double>(), 0.8);
+  // The same ISA as rows of their own beside the counted and SPIR-V ops rows: rigid 2.2 / 2.0 on
+  // the one family given, does not hold; no skinned shader in the fixture: not measurable.
+  const json& isaRigid = byId["ops_clip_vs_strongest_isa"];
+  EXPECT_DOUBLE_EQ(isaRigid["measuredValue"]["instructions"].get<double>(), 2.2) << isaRigid;
+  EXPECT_DOUBLE_EQ(isaRigid["measuredValue"]["vgprs"].get<double>(), 2.0) << isaRigid;
+  EXPECT_EQ(isaRigid["verdict"], "differs") << isaRigid;
+  EXPECT_NE(isaRigid["measured"].get<std::string>().find("polaris10 rigid_normalmap: 2.20x motor_q / affine"),
+            std::string::npos) << isaRigid["measured"];
+  EXPECT_EQ(byId["ops_skinned_vs_strongest_isa"]["verdict"], "not measurable here") << byId["ops_skinned_vs_strongest_isa"];
   const json& frame = v["frame time, vertex-bound rigid normal-mapped"];
   ASSERT_TRUE(frame["caveat"].is_string()) << v.dump(2);
   EXPECT_NE(frame["caveat"].get<std::string>().find("unable to discriminate"), std::string::npos) << frame;
