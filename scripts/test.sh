@@ -9,11 +9,12 @@ cd "$(dirname "$0")/.."
 
 BUILD=build
 SANITIZE=0
-# No debug info (MB_DEBUG_INFO=OFF): the same -O2 code, a quarter less compile time on CI's 2 cores.
-CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_DEBUG_INFO=OFF)
+# MB_QUICK_BUILD: no debug info, the tests' own sources at -O1 (the code under test keeps -O2):
+# about a third less build time on CI's 2 cores (CMakeLists.txt).
+CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_QUICK_BUILD=ON)
 for a in "$@"; do
   case "$a" in
-    --sanitize) BUILD=build-asan; SANITIZE=1; CMAKE_ARGS+=(-DMB_SANITIZE=ON -DMB_DEBUG_INFO=ON) ;;
+    --sanitize) BUILD=build-asan; SANITIZE=1; CMAKE_ARGS+=(-DMB_SANITIZE=ON -DMB_QUICK_BUILD=OFF) ;;
     *) echo "test.sh: unknown option $a" >&2; exit 2 ;;
   esac
 done
