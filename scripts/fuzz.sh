@@ -2,7 +2,7 @@
 # Fuzzes the glTF loader and scene conversion (tests/fuzz/fuzz_loader.cpp) and image decoding
 # alone (tests/fuzz/fuzz_images.cpp) with libFuzzer, ASan and UBSan.
 #   scripts/fuzz.sh [SECONDS] [both|loader|images]
-# SECONDS: default 60 (what scripts/test.sh runs on CI); with `both` (the default) the loader gets
+# SECONDS: default 60 (scripts/test.sh, on CI, runs 30); with `both` (the default) the loader gets
 # three quarters of it and the image decoder the rest (60 -> 45 + 15); e.g. `600 loader` locally.
 # 0 only builds the targets and writes the seeds (to reproduce a finding).
 # Configures a separate clang build in build-fuzz/ (-DMB_FUZZ=ON) and builds only the fuzz
