@@ -28,7 +28,6 @@ vec3 compactPosition(vec3 q, vec4 dequant) {
 }
 
 // Unit normal from the two octahedral codes (511 is 0, 0 and 1022 are -1 and +1).
-// counted: 3 mul, 9 add, 1 sqrt, 1 div, 3 other (2 abs, max)
 vec3 compactOctNormal(float cx, float cy) {
   float x = cx - 511.0;
   float y = cy - 511.0;
@@ -42,7 +41,6 @@ vec3 compactOctNormal(float cx, float cy) {
 // Two unit axes of the plane perpendicular to unit `n`, continuous except across n.z = 0
 // (Duff et al. 2017, "Building an orthonormal basis, revisited"). The encoder uses the
 // decoded normal, so both sides take the same branch.
-// counted: 7 mul, 3 add, 1 div
 mat2x3 compactTangentBasis(vec3 n) {
   float s = n.z >= 0.0 ? 1.0 : -1.0;
   float a = -1.0 / (s + n.z);
@@ -51,7 +49,6 @@ mat2x3 compactTangentBasis(vec3 n) {
 }
 
 // The unnormalised 2D direction of a diamond code (0..1023 around the square |u| + |v| = 256).
-// counted: 1 mul, 3 add, 1 other (abs)
 vec2 compactDiamond(float c) {
   float u = c < 512.0 ? 256.0 - c : c - 768.0;
   return vec2(u, (c < 512.0 ? 1.0 : -1.0) * (256.0 - abs(u)));
@@ -59,7 +56,7 @@ vec2 compactDiamond(float c) {
 
 // matrix_c's frame: [0].xyz unit normal, [1].xyz tangent (NOT unit: the vertex shader
 // normalises after the transform), [1].w handedness.
-// counted: 18 mul, 19 add, 1 sqrt, 2 div, 4 other
+// counted: 23 mul, 17 add, 1 div, 5 other (normalize, abs x3, max)
 mat2x4 compactMatrixFrame(vec4 f) {
   vec3 n = compactOctNormal(f.x, f.y);
   mat2x3 b = compactTangentBasis(n);
@@ -68,7 +65,7 @@ mat2x4 compactMatrixFrame(vec4 f) {
 }
 
 // motor_c's frame: [0] the unit tangent rotor (s, e23, e31, e12) up to sign, [1].x handedness.
-// counted: 8 mul, 10 add, 1 sqrt, 2 other (step, max)
+// counted: 8 mul, 8 add, 1 sqrt, 1 other (max)
 mat2x4 compactRotor(vec4 f) {
   float mirrored = step(512.0, f.z);
   vec3 c = vec3((f.x - 511.0) * kRotorStep10, (f.y - 511.0) * kRotorStep10,

@@ -136,4 +136,13 @@ mat3x4 motorCompactSkinnedVertex(motor j0, motor j1, motor j2, motor j3, vec4 we
                             compactPosition(position, dequant), frame);
 }
 
+// The paper's skin form (MB_SKIN_REFERENCE) of motorCompactSkinnedVertex: toWorld composed per
+// vertex, as motorSkinnedVertexReference.
+mat3x4 motorCompactSkinnedVertexReference(motor toWorld, motor j0, motor j1, motor j2, motor j3,
+                                          vec4 weights, float scale, vec3 position, vec4 dequant,
+                                          vec4 frame) {
+  return motorCompactVertex(gp_mm(toWorld, motorBlendJoints(j0, j1, j2, j3, weights)), scale,
+                            compactPosition(position, dequant), frame);
+}
+
 #endif  // MB_MOTOR_TRANSFORM_GLSL

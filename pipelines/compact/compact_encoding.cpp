@@ -73,6 +73,15 @@ PositionCube positionCube(const std::vector<glm::vec3>& positions) {
   return cube;
 }
 
+std::vector<std::vector<PositionCube>> primitiveCubes(const Scene& scene) {
+  std::vector<std::vector<PositionCube>> out;
+  for (const Mesh& m : scene.meshes) {
+    out.emplace_back();
+    for (const Primitive& p : m.primitives) out.back().push_back(positionCube(p.positions));
+  }
+  return out;
+}
+
 void quantizePosition(const glm::vec3& p, const PositionCube& cube, int16_t out[4]) {
   const glm::vec3 q = (p - cube.center) / cube.extent;
   for (int i = 0; i < 3; ++i) out[i] = gl::snorm16(q[i]);

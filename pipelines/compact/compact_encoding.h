@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "pipelines/gl/packed_vertices.h"
+#include "pipelines/scene/scene.h"
 
 namespace mb::compact {
 
@@ -21,6 +22,8 @@ struct PositionCube {
   glm::vec4 dequant() const { return {center, extent}; }
 };
 PositionCube positionCube(const std::vector<glm::vec3>& positions);
+// Per mesh, per primitive: the cube its positions are quantised in (what its draws fold).
+std::vector<std::vector<PositionCube>> primitiveCubes(const Scene& scene);
 // SNORM16 of (p - center) / extent; w = 0.
 void quantizePosition(const glm::vec3& p, const PositionCube& cube, int16_t out[4]);
 // What the GPU reads back (GL's SNORM rule), dequantised.

@@ -1,13 +1,19 @@
 // The compact pipelines' encodings (issue 29, pipelines/compact/compact_encoding.h) against
 // closed-form error bounds, decoded by the shader's own functions (shaders/compact_frame.glsl
 // through the shim): octahedral normal, diamond tangent, smallest-three rotor with its
-// reflection bit (rotor scalar exactly +-0 included), int16 positions, the 16-byte layout.
+// reflection bit (rotor scalar exactly +-0 included, and normal_torus's such frames through
+// motor_c's vertex stream), int16 positions, the 16-byte layout.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include "pipelines/compact/compact_encoding.h"
+#include "pipelines/motor/companion.h"
+#include "pipelines/motor/motor_c_vertices.h"
+#include "pipelines/motor/motor_vertices.h"
+#include "pipelines/scene/loader.h"
 
 using namespace mb;
 
@@ -156,4 +162,36 @@ TEST(CompactEncoding, SixteenBytesPerVertexInTheWordLayoutGlReads) {
   EXPECT_EQ(frame, 7u);
   EXPECT_EQ(uv[0], 0x3800);  // half 0.5
   EXPECT_EQ(uv[1], 0x4000);  // half 2.0
+}
+
+// normal_torus has frames whose tangent rotor has a scalar part of exactly 0 (the paper's
+// signed-zero case, companion.h). Through motor_c's whole vertex path (the 16 bytes uploaded,
+// decoded by the shader's function) every frame keeps its handedness and its normal and tangent
+// stay within the rotor's bound, the zero-scalar frames included.
+TEST(CompactEncoding, NormalTorusZeroScalarFramesCorrectInFourBytes) {
+  auto scene = loadScene("normal_torus");
+  ASSERT_TRUE(scene) << scene.error();
+  const float bound = 0.0068f;  // SmallestThreeRotorWithinItsBound's rotation bound, rounded up
+  int zeroScalar = 0, checked = 0;
+  for (const Mesh& mesh : scene->meshes)
+    for (const Primitive& p : mesh.primitives) {
+      if (p.tangents.empty()) continue;
+      const motor::CompactStream stream = motor::interleaveCompact(p);
+      const motor::VertexStream floats = motor::interleaveVertices(p);
+      ASSERT_EQ(stream.bytes.size(), p.positions.size() * compact::kVertexBytes);
+      zeroScalar += stream.zeroScalarFrames;
+      for (size_t v = 0; v < p.positions.size(); ++v) {
+        uint32_t word = 0;
+        std::memcpy(&word, stream.bytes.data() + v * compact::kVertexBytes + 8, 4);
+        const compact::RotorFrame f = compact::decodeRotorFrame(word);
+        const glm::mat2x3 got = rotorFrame(f.rotor);
+        const bool zero = std::abs(floats.data[v * motor::kFloatsPerVertex]) == companion::kMinTangentScalar;
+        ASSERT_EQ(f.handedness, p.tangents[v].w < 0.0f ? -1.0f : 1.0f) << "vertex " << v << (zero ? " (zero scalar)" : "");
+        ASSERT_LT(angle(got[0], p.normals[v]), bound) << "vertex " << v;
+        ASSERT_LT(angle(got[1], glm::vec3(p.tangents[v])), bound) << "vertex " << v;
+        ++checked;
+      }
+    }
+  EXPECT_GT(zeroScalar, 0) << "normal_torus no longer has zero-scalar frames: the case is not exercised";
+  std::printf("[ compact ] normal_torus: %d frames checked, %d with scalar part exactly 0\n", checked, zeroScalar);
 }
