@@ -20,6 +20,8 @@ const Entry kPipelines[] = {
     {"qtangent", makeQtangentPipeline, Space::Euclidean},
     {"motor_q", makeMotorQPipeline, Space::Euclidean},
     {"hybrid", makeHybridPipeline, Space::Euclidean},
+    {"matrix_c", makeMatrixCPipeline, Space::Euclidean},
+    {"motor_c", makeMotorCPipeline, Space::Euclidean},
     {"s3_matrix", makeS3MatrixPipeline, Space::Spherical},
     {"s3_motor", makeS3MotorPipeline, Space::Spherical},
     {"h3_matrix", makeH3MatrixPipeline, Space::Hyperbolic},

@@ -10,6 +10,10 @@
 //                cofactor of the blended matrix
 //   MB_QTANGENT  the vertex frame is one quaternion (int16x4 SNORM, read as a vec4 in
 //                -1..1) instead of normal + tangent: 28-byte vertices
+//   MB_COMPACT   matrix_c (issue 29): position int16x4 SNORM, the frame in one 2_10_10_10
+//                word read as integers (compactMatrixFrame), uv half2: 16-byte vertices.
+//                Rigid draws get the mesh's dequantisation folded into u_ModelMatrix;
+//                skinned and instanced draws apply u_Dequant per vertex (compactPosition)
 //   MB_NO_TANGENT float frame without tangent (no TANGENT, no normal map), as matrix.vs's:
 //                position + normal + uv, 32-byte vertices
 //   MB_INSTANCED model, normal matrix and mirror per instance (vertex attributes, divisor 1)
@@ -20,6 +24,12 @@ layout(location = 0) in vec3 a_position;
 #ifdef MB_QTANGENT
 layout(location = 1) in vec4 a_qtangent;
 layout(location = 2) in vec2 a_uv0;
+#elif defined(MB_COMPACT)
+layout(location = 1) in vec4 a_compactFrame;  // integer fields as floats, not normalised
+layout(location = 2) in vec2 a_uv0;
+#if defined(MB_SKINNED) || defined(MB_INSTANCED)
+uniform vec4 u_Dequant;  // the mesh's cube: center xyz, half extent w
+#endif
 #else
 layout(location = 1) in vec3 a_normal;
 #ifndef MB_NO_TANGENT
@@ -62,7 +72,11 @@ out vec4 v_color;
 
 void main() {
 #ifdef MB_SKINNED
-#ifdef MB_QTANGENT
+#ifdef MB_COMPACT
+  mat3x4 v = compactSkinnedVertex(u_joints[a_joints.x], u_joints[a_joints.y],
+                                  u_joints[a_joints.z], u_joints[a_joints.w], a_weights,
+                                  u_Mirror, a_position, u_Dequant, a_compactFrame);
+#elif defined(MB_QTANGENT)
   mat3x4 v = qtangentSkinnedVertex(u_joints[a_joints.x], u_joints[a_joints.y],
                                    u_joints[a_joints.z], u_joints[a_joints.w], a_weights,
                                    u_Mirror, a_position, a_qtangent);
@@ -76,7 +90,12 @@ void main() {
                                  a_position, a_normal, a_tangent);
 #endif
 #else
-#ifdef MB_QTANGENT
+#if defined(MB_COMPACT) && defined(MB_INSTANCED)
+  mat3x4 v = compactRigidVertex(u_ModelMatrix, u_NormalMatrix, u_Mirror,
+                                compactPosition(a_position, u_Dequant), a_compactFrame);
+#elif defined(MB_COMPACT)
+  mat3x4 v = compactRigidVertex(u_ModelMatrix, u_NormalMatrix, u_Mirror, a_position, a_compactFrame);
+#elif defined(MB_QTANGENT)
   mat3x4 v = qtangentRigidVertex(u_ModelMatrix, u_NormalMatrix, u_Mirror, a_position, a_qtangent);
 #elif defined(MB_NO_TANGENT)
   mat3x4 v = affineVertexNoTangent(u_ModelMatrix, u_NormalMatrix, a_position, a_normal);

@@ -10,6 +10,7 @@
 #define MB_AFFINE_TRANSFORM_GLSL
 
 #include "matrix_transform.glsl"
+#include "compact_frame.glsl"
 
 // Cofactor matrix of a 3x3 linear map: det(m) * transpose(inverse(m)), whose columns are the
 // cross products of m's columns. It maps normals as the normal matrix does, up to the factor
@@ -110,6 +111,24 @@ mat3x4 qtangentSkinnedVertex(mat4x3 j0, mat4x3 j1, mat4x3 j2, mat4x3 j3, vec4 we
                              float mirror, vec3 position, vec4 qtangent) {
   mat2x4 f = qtangentFrame(qtangent);
   return affineSkinnedVertex(j0, j1, j2, j3, weights, mirror, position, vec3(f[0].xyz), f[1]);
+}
+
+// ---- matrix_c: octahedral normal + diamond tangent in 4 bytes (compact_frame.glsl) ----------
+
+// Rigid vertex of matrix_c: decode, then matrixAffineVertex. The position's dequantisation is
+// folded into `model` on the CPU (model * translate(center) * scale(extent)).
+mat3x4 compactRigidVertex(mat4x3 model, mat3 normalMatrix, float mirror, vec3 position,
+                          vec4 frame) {
+  mat2x4 f = compactMatrixFrame(frame);
+  return matrixAffineVertex(model, normalMatrix, mirror, position, vec3(f[0].xyz), f[1]);
+}
+
+// Skinned vertex of matrix_c: the position dequantised per vertex (see motorCompactSkinnedVertex).
+mat3x4 compactSkinnedVertex(mat4x3 j0, mat4x3 j1, mat4x3 j2, mat4x3 j3, vec4 weights,
+                            float mirror, vec3 position, vec4 dequant, vec4 frame) {
+  mat2x4 f = compactMatrixFrame(frame);
+  return affineSkinnedVertex(j0, j1, j2, j3, weights, mirror, compactPosition(position, dequant),
+                             vec3(f[0].xyz), f[1]);
 }
 
 #endif  // MB_AFFINE_TRANSFORM_GLSL

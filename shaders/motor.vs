@@ -12,13 +12,25 @@
 //   MB_SKIN_REFERENCE with MB_SKINNED: the paper's form, joint motors relative to the mesh
 //                     node and toWorld = gp(u_World, blend) per vertex (issue 18; the default
 //                     palette is in world space and u_World is not used)
+//   MB_COMPACT        motor_c (issue 29): position int16x4 SNORM, the tangent rotor in one
+//                     2_10_10_10 word read as integers (compactRotor: smallest three and an
+//                     explicit reflection bit), uv half2: 16-byte vertices. Rigid draws get
+//                     the mesh's dequantisation folded into u_World and u_Scale; skinned and
+//                     instanced draws apply u_Dequant per vertex (compactPosition)
 //   MB_INSTANCED      motor and scale per instance (vertex attributes, divisor 1) instead of
 //                     per draw: EXT_mesh_gpu_instancing / --instances
 #include "pga.glsl"
 #include "motor_transform.glsl"
 
 layout(location = 0) in vec3 a_position;
+#ifdef MB_COMPACT
+layout(location = 1) in vec4 a_compactFrame;  // integer fields as floats, not normalised
+#if defined(MB_SKINNED) || defined(MB_INSTANCED)
+uniform vec4 u_Dequant;  // the mesh's cube: center xyz, half extent w
+#endif
+#else
 layout(location = 1) in vec4 a_tangentRotor;  // handedness in the sign of .x (signed zero)
+#endif
 layout(location = 2) in vec2 a_uv0;
 layout(location = 4) in vec2 a_uv1;    // locations 4..7: pipelines/gl/scene_textures.h
 layout(location = 5) in vec4 a_color;
@@ -79,7 +91,18 @@ void main() {
   toWorld = blended;
 #endif
 #endif
+#ifdef MB_COMPACT
+#if defined(MB_SKINNED) || defined(MB_INSTANCED)
+  vec3 position = compactPosition(a_position, u_Dequant);
+#else
+  vec3 position = a_position;  // the mesh's cube is folded into u_World and u_Scale
+#endif
 #ifdef MB_SCALE_FALLBACK
+  mat3x4 v = motorCompactScaledVertex(toWorld, u_Scale, position, a_compactFrame);
+#else
+  mat3x4 v = motorCompactVertex(toWorld, u_Scale, position, a_compactFrame);
+#endif
+#elif defined(MB_SCALE_FALLBACK)
   mat3x4 v = motorScaledVertex(toWorld, u_Scale, a_position, a_tangentRotor);
 #else
   mat3x4 v = motorRigidVertex(toWorld, u_Scale, a_position, a_tangentRotor);

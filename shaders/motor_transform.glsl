@@ -7,6 +7,8 @@
 #ifndef MB_MOTOR_TRANSFORM_GLSL
 #define MB_MOTOR_TRANSFORM_GLSL
 
+#include "compact_frame.glsl"
+
 // A transformed vertex is returned as a mat3x4 (the shim's subset has no structs and no out
 // parameters): [0].xyz world position, [1].xyz world normal (any length; forward.fs
 // normalises), [2] = world tangent xyz and handedness w (+1 / -1). [0].w and [1].w are 0.
@@ -102,6 +104,45 @@ vec4 motorProjectionConstants(float znear, float zfar, float yfov, float aspect)
 vec4 motorWorldToClipConstants(motor camera, vec3 worldPosition, vec4 k) {
   vec3 p = sw_mp(camera, worldPosition);
   return vec4(p.xy * k.xy, k.z - k.w * p.z, p.z);
+}
+
+// ---- motor_c: the 4-byte tangent rotor (compact_frame.glsl) ---------------------------------
+
+// Rigid vertex of motor_c: motorRigidVertex with the frame decoded from compactRotor and its
+// handedness bit (no signed zero involved). The position's dequantisation is folded into
+// `toWorld` and `scale` on the CPU (scale * extent, and a translation by scale * center).
+mat3x4 motorCompactVertex(motor toWorld, float scale, vec3 position, vec4 frame) {
+  mat2x4 r = compactRotor(frame);
+  vec3 worldPosition = sw_mp(toWorld, position * scale);
+  mat2x3 nt = extractNormalTangent(gp_rr(toWorld, motor(r[0], vec4(0.0))));
+  return mat3x4(worldPosition, 0.0, nt[0], 0.0, nt[1], r[1].x);
+}
+
+// motorScaledVertex's fallback (non-uniform or negative scale) with the compact frame.
+mat3x4 motorCompactScaledVertex(motor toWorld, vec3 scale, vec3 position, vec4 frame) {
+  mat2x4 r = compactRotor(frame);
+  vec3 worldPosition = sw_mp(toWorld, position * scale);
+  mat2x3 nt = extractNormalTangent(motor(r[0], vec4(0.0)));
+  float mirror = sign(scale.x * scale.y * scale.z);
+  return mat3x4(worldPosition, 0.0, normalize(sw_md(toWorld, nt[0] / scale)), 0.0,
+                normalize(sw_md(toWorld, nt[1] * scale)), mirror * r[1].x);
+}
+
+// Skinned vertex of motor_c (world-space palette): the position dequantised per vertex (a
+// palette is shared by the skin's meshes, so the mesh's cube is not folded into it).
+mat3x4 motorCompactSkinnedVertex(motor j0, motor j1, motor j2, motor j3, vec4 weights,
+                                 float scale, vec3 position, vec4 dequant, vec4 frame) {
+  return motorCompactVertex(motorBlendJoints(j0, j1, j2, j3, weights), scale,
+                            compactPosition(position, dequant), frame);
+}
+
+// The paper's skin form (MB_SKIN_REFERENCE) of motorCompactSkinnedVertex: toWorld composed per
+// vertex, as motorSkinnedVertexReference.
+mat3x4 motorCompactSkinnedVertexReference(motor toWorld, motor j0, motor j1, motor j2, motor j3,
+                                          vec4 weights, float scale, vec3 position, vec4 dequant,
+                                          vec4 frame) {
+  return motorCompactVertex(gp_mm(toWorld, motorBlendJoints(j0, j1, j2, j3, weights)), scale,
+                            compactPosition(position, dequant), frame);
 }
 
 #endif  // MB_MOTOR_TRANSFORM_GLSL

@@ -11,6 +11,7 @@
 //   claims_conversion.cpp   quaternion -> rotor for free; the uniform-scale overhead
 //   claims_handedness.cpp   the paper's tangent-frame handedness rule on the built-in scenes
 //   claims_blending.cpp     motor blending vs slerp over the built-in animations
+//   claims_compact.cpp      the smallest motor vertex vs the smallest matrix vertex (issue 29)
 #pragma once
 #include <string>
 #include <vector>
@@ -66,6 +67,10 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in);
 
 // Skinning: ring radius of skinned_tube's candy_wrapper, LBS vs motor (claims_skinning.cpp).
 std::vector<Claim> skinningClaims();
+
+// motor_c vs matrix_c (issue 29): bytes from uploads, worst PSNR against matrix, counted ops,
+// ISA from `isa` (a `motorbench isa` JSON, or null: that row not measurable). Needs GL.
+std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& isaSource);
 
 // Reviewer baselines (Verdict::Baseline): counted and SPIR-V.
 std::vector<Claim> baselineClaims();

@@ -63,7 +63,7 @@ json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
 // methodDifference(scene) is `method`.
 template <class Pred>
 json imageSummary(const std::vector<json>& scenes, const std::string& p, Pred methodDifference, bool method) {
-  std::vector<double> psnr, over1, maxErr;
+  std::vector<double> psnr, over1, over4, maxErr;
   int identical = 0, compared = 0;
   for (const json& s : scenes) {
     if (methodDifference(s) != method) continue;
@@ -74,11 +74,12 @@ json imageSummary(const std::vector<json>& scenes, const std::string& p, Pred me
       if (m.value("identical", false)) ++identical;
       else push(psnr, number(m, {"psnr"}));
       push(over1, number(m, {"fractionOver1"}));
+      push(over4, number(m, {"fractionOver4"}));
       push(maxErr, number(m, {"maxError"}));
     }
   }
   return {{"comparedFrames", compared}, {"identicalFrames", identical}, {"psnr", spread(psnr)},
-          {"fractionOver1", spread(over1)}, {"maxError", spread(maxErr)}};
+          {"fractionOver1", spread(over1)}, {"fractionOver4", spread(over4)}, {"maxError", spread(maxErr)}};
 }
 
 // A curved scene's figures side by side (issue 15): its space's pipelines, floats per instance

@@ -6,11 +6,9 @@
 #include "harness/document/report_format.h"
 
 namespace mb::report {
-namespace {
 
 using nlohmann::json;
 
-// The isa row of (pipeline, variant label, stage vertex, family id), or null.
 const json* isaRow(const json& isa, const std::string& pipeline, const std::string& label,
                    const std::string& family) {
   if (!isa.contains("shaders") || !isa["shaders"].is_array()) return nullptr;
@@ -23,8 +21,6 @@ const json* isaRow(const json& isa, const std::string& pipeline, const std::stri
   }
   return nullptr;
 }
-
-}  // namespace
 
 void isaSection(Document& d, const json& r) {
   d.heading(2, "AMD ISA per vertex shader (RADV)", "isa");

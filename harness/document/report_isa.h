@@ -2,6 +2,8 @@
 // beside AMD's compiled shader per family (instructions, VGPRs, waves per SIMD), from the
 // `motorbench isa` JSON that `report --isa-json` embeds as report.json "isa".
 #pragma once
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "harness/document/report_model.h"
@@ -9,5 +11,10 @@
 namespace mb::report {
 
 void isaSection(Document& d, const nlohmann::json& report);
+
+// The vertex-shader row of `motorbench isa` JSON `isa` for (pipeline, variant label, family
+// id), or null (also used by the compact table and claims).
+const nlohmann::json* isaRow(const nlohmann::json& isa, const std::string& pipeline, const std::string& label,
+                             const std::string& family);
 
 }  // namespace mb::report

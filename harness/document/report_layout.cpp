@@ -5,6 +5,7 @@
 
 #include "harness/document/report_document.h"
 #include "harness/document/report_format.h"
+#include "harness/document/report_compact.h"
 #include "harness/document/report_isa.h"
 
 namespace mb::report {
@@ -640,6 +641,7 @@ Document reportDocument(const json& r) {
   statisticsSection(d, r);
   for (const json& s : r["scenes"]) sceneSection(d, r, s);
   opsSection(d, r);
+  compactSection(d, r);
   isaSection(d, r);
   kernelSection(d, r);
   method(d);

@@ -97,6 +97,41 @@ void motorVariants(std::vector<ShaderVariant>& out) {
   }
 }
 
+// matrix_c (affine.vs) and motor_c (motor.vs) with MB_COMPACT (issue 29): rigid draws fold the
+// mesh's cube into their transform, skinned and instanced draws run compactPosition.
+void compactVariants(std::vector<ShaderVariant>& out) {
+  const std::string mclip = "matrixWorldToClip", pclip = "motorWorldToClipConstants";
+  const std::string cube = "compactPosition";
+  out.insert(out.end(), {
+      {"matrix_c", "affine.vs", {{"MB_COMPACT", ""}}, "rigid", {"compactRigidVertex", mclip}, kAffineMain},
+      {"matrix_c", "affine.vs", D{{"MB_COMPACT", ""}, {"MB_SKINNED", ""}}, "skinned", {"compactSkinnedVertex", mclip},
+       kAffineMain},
+      {"matrix_c", "affine_patch.vs", {}, "bezier patch", {"bezierPatch", "affinePatchVertex", mclip},
+       kAffineMain + "; a patch vertex stores no frame: affine_patch.vs, as affine; " + kTexels},
+      {"matrix_c", "affine.vs", D{{"MB_COMPACT", ""}, {"MB_INSTANCED", ""}}, "rigid, instanced",
+       {cube, "compactRigidVertex", mclip}, kAffineMain + "; " + kInstanced},
+      {"motor_c", "motor.vs", {{"MB_COMPACT", ""}}, "rigid", {"motorCompactVertex", pclip}},
+      {"motor_c", "motor.vs", D{{"MB_COMPACT", ""}, {"MB_SKINNED", ""}}, "skinned",
+       {"motorCompactSkinnedVertex", pclip}, "= skinned, world palette"},
+      {"motor_c", "motor.vs", D{{"MB_COMPACT", ""}, {"MB_SKINNED", ""}, {"MB_SKIN_REFERENCE", ""}},
+       "skinned, reference", {"motorCompactSkinnedVertexReference", pclip},
+       "the paper's: gp(toWorld, blend) per vertex"},
+      {"motor_c", "motor.vs", D{{"MB_COMPACT", ""}, {"MB_SCALE_FALLBACK", ""}}, "scaled fallback",
+       {"motorCompactScaledVertex", pclip}},
+      {"motor_c", "motor.vs", D{{"MB_COMPACT", ""}, {"MB_SKINNED", ""}, {"MB_SCALE_FALLBACK", ""}}, "skinned+scaled",
+       {"motorBlendJoints", cube, "motorCompactScaledVertex", pclip}},
+      {"motor_c", "motor_patch.vs", {}, "bezier patch", {"bezierPatch", "motorPatchVertex", pclip}, kTexels},
+      {"motor_c", "motor.vs", D{{"MB_COMPACT", ""}, {"MB_SKINNED", ""}}, "skinned, world palette",
+       {"motorCompactSkinnedVertex", pclip}, "joint world * inverse bind motors"},
+      {"motor_c", "motor_patch.vs", {{"MB_SCALE_FALLBACK", ""}}, "bezier patch, scaled fallback",
+       {"bezierPatch", "motorScaledPatchVertex", pclip}, kTexels},
+      {"motor_c", "motor.vs", D{{"MB_COMPACT", ""}, {"MB_INSTANCED", ""}}, "rigid, instanced",
+       {cube, "motorCompactVertex", pclip}, kInstanced},
+      {"motor_c", "motor.vs", D{{"MB_COMPACT", ""}, {"MB_INSTANCED", ""}, {"MB_SCALE_FALLBACK", ""}},
+       "scaled fallback, instanced", {cube, "motorCompactScaledVertex", pclip}, kInstanced},
+  });
+}
+
 void curvedVariants(std::vector<ShaderVariant>& out) {
   out.insert(out.end(), {
       {"s3_matrix", "curved_matrix.vs", {{"MB_KAPPA", "1"}}, "S3 instance", {"curvedMatrixVertex"}, kCurvedMain},
@@ -113,6 +148,7 @@ std::vector<ShaderVariant> shaderVariants() {
   matrixVariants(out);
   motorVariants(out);
   affineVariants(out);
+  compactVariants(out);
   curvedVariants(out);
   return out;
 }

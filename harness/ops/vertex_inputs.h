@@ -30,6 +30,10 @@ struct VertexInputs {
   MC::vec4 tangent, weights, world;
   PC::motor toWorld, camera, joints[4];
   PC::vec4 rotor;
+  // Compact (issue 29): 2_10_10_10 words as the shader reads them (integer-valued floats) and
+  // a mesh cube; generic codes: tangent and rotor on their second branch, handedness -1.
+  MC::vec4 compactMatrixFrame{700.0, 300.0, 900.0, 1.0}, compactRotor{700.0, 300.0, 900.0, 1.0};
+  MC::vec4 dequant{0.1, -0.2, 0.3, 2.5};
   VertexInputs() {
     auto mat = [](double seed) {
       MC::mat4 m;
@@ -108,6 +112,12 @@ inline const char* kStore3 = "o_0 = v[0]; o_1 = v[1]; o_2 = v[2];";
 inline const char* kQTangentAttribs =
     "layout(location = 0) in vec3 a_position; layout(location = 1) in vec4 a_qtangent;\n"
     "layout(location = 7) in vec4 a_weights;\n"
+    "layout(location = 0) out vec4 o_0; layout(location = 1) out vec4 o_1;\n"
+    "layout(location = 2) out vec4 o_2;\n";
+
+inline const char* kCompactAttribs =
+    "layout(location = 0) in vec3 a_position; layout(location = 1) in vec4 a_compactFrame;\n"
+    "layout(location = 7) in vec4 a_weights; uniform vec4 u_dequant;\n"
     "layout(location = 0) out vec4 o_0; layout(location = 1) out vec4 o_1;\n"
     "layout(location = 2) out vec4 o_2;\n";
 

@@ -1,5 +1,5 @@
 // The counted per-vertex kernels of the matrix forms: matrix.vs (the Sample Viewer's mat4s) and
-// affine.vs (mat4x3 + mat3, float frame or int16 quaternion).
+// affine.vs (mat4x3 + mat3, float frame, int16 quaternion, or matrix_c's 4-byte frame).
 #include "harness/ops/vertex_inputs.h"
 #include "harness/ops/vertex_kernels.h"
 
@@ -147,6 +147,28 @@ std::vector<VertexKernel> matrixKernels() {
        "mat3x4 v = qtangentSkinnedVertex(u_j[0], u_j[1], u_j[2], u_j[3], a_weights, u_mirror, "
        "a_position, a_qtangent);" + store,
        affineIncl + kQTangentAttribs + affineJoints, "qtangentFrame + affineSkinnedVertex"},
+      {"matrix_c, motor_c", "position dequantisation (skinned, instanced)", "compactPosition",
+       [&] { A.compactPosition(in.position, in.dequant); },
+       "o_0 = vec4(compactPosition(a_position, u_dequant), 1.0);", affineIncl + kCompactAttribs,
+       "int16 position in the mesh's cube; rigid draws fold it into their transform (0 per vertex)"},
+      {"matrix_c", "frame decode (4 bytes)", "compactMatrixFrame",
+       [&] { A.compactMatrixFrame(in.compactMatrixFrame); },
+       "mat2x4 f = compactMatrixFrame(a_compactFrame); o_0 = f[0]; o_1 = f[1];",
+       affineIncl + kCompactAttribs,
+       "octahedral normal (normalised), Duff et al. tangent basis, diamond tangent (unnormalised)"},
+      {"matrix_c", "rigid vertex with frame", "compactRigidVertex",
+       [&] { A.compactRigidVertex(in.affine, in.affineNormal, 1.0, in.position, in.compactMatrixFrame); },
+       "mat3x4 v = compactRigidVertex(u_model, u_normal, u_mirror, a_position, a_compactFrame);" + store,
+       affineIncl + kCompactAttribs + "uniform mat4x3 u_model; uniform mat3 u_normal; uniform float u_mirror;\n",
+       "compactMatrixFrame + matrixAffineVertex"},
+      {"matrix_c", "skinned vertex (4 joints)", "compactSkinnedVertex",
+       [&] {
+         A.compactSkinnedVertex(aj[0], aj[1], aj[2], aj[3], in.weights, 1.0, in.position, in.dequant,
+                                in.compactMatrixFrame);
+       },
+       "mat3x4 v = compactSkinnedVertex(u_j[0], u_j[1], u_j[2], u_j[3], a_weights, u_mirror, "
+       "a_position, u_dequant, a_compactFrame);" + store,
+       affineIncl + kCompactAttribs + affineJoints, "compactMatrixFrame + compactPosition + affineSkinnedVertex"},
   };
 }
 

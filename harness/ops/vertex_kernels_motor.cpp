@@ -73,6 +73,42 @@ std::vector<VertexKernel> motorKernels() {
        "mat3x4 v = motorScaledVertex(motor(u_world[0], u_world[1]), u_scale3, a_position, "
        "a_tangentRotor);" + store,
        motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n", ""},
+      {"motor_c", "rotor decode (4 bytes)", "compactRotor", [&] { P.compactRotor(in.compactRotor); },
+       "mat2x4 r = compactRotor(a_compactFrame); o_0 = r[0]; o_1 = r[1];", motorIncl + kCompactAttribs,
+       "smallest three (10, 10, 9 bits) and the reflection bit: no sign of a zero"},
+      {"motor_c", "rigid vertex with frame", "motorCompactVertex",
+       [&] { P.motorCompactVertex(in.toWorld, 1.25, in.position, in.compactRotor); },
+       "mat3x4 v = motorCompactVertex(motor(u_world[0], u_world[1]), u_scale, a_position, "
+       "a_compactFrame);" + store,
+       motorIncl + kCompactAttribs + "uniform vec4 u_world[2]; uniform float u_scale;\n",
+       "compactRotor + motorRigidVertex's sandwich, gp_rr and extraction; the handedness is the bit"},
+      {"motor_c", "skinned vertex (4 joints)", "motorCompactSkinnedVertex",
+       [&] {
+         P.motorCompactSkinnedVertex(in.joints[0], in.joints[1], in.joints[2], in.joints[3],
+                                     PC::vec4(0.4, 0.3, 0.2, 0.1), 1.25, in.position, in.dequant,
+                                     in.compactRotor);
+       },
+       "mat3x4 v = motorCompactSkinnedVertex(motor(u_j[0], u_j[1]), motor(u_j[2], u_j[3]), "
+       "motor(u_j[4], u_j[5]), motor(u_j[6], u_j[7]), a_weights, u_scale, a_position, u_dequant, "
+       "a_compactFrame);" + store,
+       motorIncl + kCompactAttribs + "uniform vec4 u_j[8]; uniform float u_scale;\n",
+       "motorBlendJoints + compactPosition + motorCompactVertex"},
+      {"motor_c", "skinned vertex, reference", "motorCompactSkinnedVertexReference",
+       [&] {
+         P.motorCompactSkinnedVertexReference(in.toWorld, in.joints[0], in.joints[1], in.joints[2],
+                                              in.joints[3], PC::vec4(0.4, 0.3, 0.2, 0.1), 1.25,
+                                              in.position, in.dequant, in.compactRotor);
+       },
+       "mat3x4 v = motorCompactSkinnedVertexReference(motor(u_world[0], u_world[1]), "
+       "motor(u_j[0], u_j[1]), motor(u_j[2], u_j[3]), motor(u_j[4], u_j[5]), "
+       "motor(u_j[6], u_j[7]), a_weights, u_scale, a_position, u_dequant, a_compactFrame);" + store,
+       motorIncl + kCompactAttribs + "uniform vec4 u_world[2]; uniform vec4 u_j[8]; uniform float u_scale;\n",
+       "the paper's form with the compact vertex"},
+      {"motor_c", "scaled vertex (fallback)", "motorCompactScaledVertex",
+       [&] { P.motorCompactScaledVertex(in.toWorld, PC::vec3(1.0, -2.0, 0.5), in.position, in.compactRotor); },
+       "mat3x4 v = motorCompactScaledVertex(motor(u_world[0], u_world[1]), u_scale3, a_position, "
+       "a_compactFrame);" + store,
+       motorIncl + kCompactAttribs + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n", ""},
   };
 }
 

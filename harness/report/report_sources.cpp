@@ -8,11 +8,11 @@ namespace mb::report {
 std::string sceneOrigin(const std::string& spec) { return isBuiltinScene(spec) ? "built-in" : "file"; }
 
 std::string skinBlendOf(const std::string& pipeline) {
-  // From each pipeline's vertex shader: matrix.vs and affine.vs (affine, qtangent, hybrid) blend
-  // a matrix palette; motor.vs (motor, motor_q) blends joint motors.
-  for (const char* lbs : {"matrix", "affine", "qtangent", "hybrid"})
+  // From each pipeline's vertex shader: matrix.vs and affine.vs (affine, qtangent, hybrid,
+  // matrix_c) blend a matrix palette; motor.vs (motor, motor_q, motor_c) blends joint motors.
+  for (const char* lbs : {"matrix", "affine", "qtangent", "hybrid", "matrix_c"})
     if (pipeline == lbs) return "linear blend skinning";
-  for (const char* motor : {"motor", "motor_q"})
+  for (const char* motor : {"motor", "motor_q", "motor_c"})
     if (pipeline == motor) return "motor blending";
   return "";
 }

@@ -6,13 +6,17 @@
 // primitives are drawn rigidly by their node with affine_patch.vs (the same per-draw uniforms).
 // Instanced nodes (Node::instances): the same model, normal matrix and mirror per instance,
 // node world * instance composed per frame (MB_INSTANCED, pipelines/gl/instance_stream.h:
-// 22 floats, 88 bytes per instance).
+// 22 floats, 88 bytes per instance). matrix_c (FrameFormat::Compact, issue 29): rigid draws
+// get the mesh's quantisation cube folded into u_ModelMatrix (model * translate * scale);
+// skinned and instanced draws get it as u_Dequant (a vec4 per draw, in uniformBytesPerFrame).
 #include "pipelines/affine/affine_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "pipelines/affine/compact_vertices.h"
 #include "pipelines/affine/qtangent_vertices.h"
+#include "pipelines/compact/compact_encoding.h"
 #include "pipelines/gl/frame_vertices.h"
 #include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/instance_stream.h"
@@ -60,6 +64,7 @@ public:
 private:
   void uploadPalettes();
   void streamInstances();
+  void setDequant(const gl::Program& program, const gl::DrawItem& d);
   void release();
 
   std::string name_;
@@ -75,6 +80,7 @@ private:
   gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
   gl::SceneGeometry geometry_;
+  std::vector<std::vector<compact::PositionCube>> cubes_;  // matrix_c: per mesh, per primitive
   gl::PaletteBuffers palettes_;  // one per pose_.palettes entry
   std::vector<gl::DrawItem> draws_;
   Pose pose_;
@@ -86,11 +92,12 @@ Status AffinePipeline::prepare(const Scene& scene) {
   release();
   scene_ = &scene;
   stats_ = PipelineStats{};
-  const bool qtangent = format_ == FrameFormat::QTangent;
+  const bool qtangent = format_ == FrameFormat::QTangent, compact = format_ == FrameFormat::Compact;
   for (int kind = 0; kind < (gl::hasInstances(scene) ? 3 : 2); ++kind)
-    for (int noTangent = 0; noTangent < (qtangent ? 1 : 2); ++noTangent) {
+    for (int noTangent = 0; noTangent < (qtangent || compact ? 1 : 2); ++noTangent) {
       gl::Defines defines;
       if (qtangent) defines.push_back({"MB_QTANGENT", ""});
+      if (compact) defines.push_back({"MB_COMPACT", ""});
       if (kind == 1) defines.push_back({"MB_SKINNED", ""});
       if (kind == 2) defines.push_back({"MB_INSTANCED", ""});
       if (noTangent) defines.push_back({"MB_NO_TANGENT", ""});
@@ -120,6 +127,9 @@ Status AffinePipeline::prepare(const Scene& scene) {
       return std::move(s.bytes);
     };
     geometry_.uploadPacked(scene, interleave, qtangentAttributes(), stats_);
+  } else if (compact) {
+    cubes_ = compact::primitiveCubes(scene);
+    geometry_.uploadPacked(scene, interleaveCompact, compact::attributes(), stats_);
   } else {
     geometry_.upload(scene, gl::floatFrameFormat, stats_);  // as matrix: tangent only where needed
   }
@@ -217,6 +227,7 @@ void AffinePipeline::render(const View& view) {
     const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
     if (!groups.empty()) {
       const gl::Program& program = useProgram(2, noTangent);
+      if (format_ == FrameFormat::Compact) setDequant(program, d);
       textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
       for (const gl::InstanceGroup& group : groups) {
         gl::setWinding(group.key == 1);
@@ -226,10 +237,15 @@ void AffinePipeline::render(const View& view) {
       continue;
     }
     const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, noTangent);
-    const glm::mat4x3& model = pose_.world[size_t(d.node)];
+    glm::mat4x3 model = pose_.world[size_t(d.node)];
     const float sign = pose_.mirrors[size_t(d.node)];
+    if (format_ == FrameFormat::Compact && !patch && !palette) {  // the mesh's cube folded in
+      const compact::PositionCube& cube = cubes_[size_t(d.mesh)][size_t(d.primitive)];
+      model = model * glm::scale(glm::translate(glm::mat4(1.0f), cube.center), glm::vec3(cube.extent));
+    }
     if (palette) {
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
+      if (format_ == FrameFormat::Compact) setDequant(program, d);
     } else {
       const glm::mat3& normal = pose_.normals[size_t(d.node)];
       gl::uniformMatrix4x3(program.uniform("u_ModelMatrix"), 1, glm::value_ptr(model), transformBytes);
@@ -245,6 +261,12 @@ void AffinePipeline::render(const View& view) {
   gl::endDraws();
   stats_.uniformBytesPerFrame += transformBytes;
   stats_.floatsPerTransform = gl::floatsPer(transformBytes, transforms);
+}
+
+// matrix_c's draws that cannot fold the mesh's cube (skinned, instanced) dequantise per vertex.
+void AffinePipeline::setDequant(const gl::Program& program, const gl::DrawItem& d) {
+  const glm::vec4 q = cubes_[size_t(d.mesh)][size_t(d.primitive)].dequant();
+  gl::uniform4f(program.uniform("u_Dequant"), &q[0], stats_.uniformBytesPerFrame);
 }
 
 void AffinePipeline::release() {
@@ -276,5 +298,8 @@ std::unique_ptr<Pipeline> makeAffinePipeline() {
 }
 std::unique_ptr<Pipeline> makeQtangentPipeline() {
   return affine::makePipeline("qtangent", affine::FrameFormat::QTangent, affine::makeMatrixPoser());
+}
+std::unique_ptr<Pipeline> makeMatrixCPipeline() {
+  return affine::makePipeline("matrix_c", affine::FrameFormat::Compact, affine::makeMatrixPoser());
 }
 }  // namespace mb

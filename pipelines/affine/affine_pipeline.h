@@ -15,6 +15,7 @@ namespace affine {
 enum class FrameFormat {
   Float,     // gl::floatFrameFormat: position, normal, [tangent,] uv (48 or 32 bytes)
   QTangent,  // interleaveQTangent: position, int16x4 quaternion, uv (28 bytes)
+  Compact,   // matrix_c, interleaveCompact: int16x4 position, 4-byte frame, half2 uv (16 bytes)
 };
 
 // Poses a scene for the pipeline; what differs between `affine` and `hybrid`.
@@ -39,5 +40,6 @@ std::unique_ptr<Pipeline> makePipeline(const std::string& name, FrameFormat form
 
 std::unique_ptr<Pipeline> makeAffinePipeline();
 std::unique_ptr<Pipeline> makeQtangentPipeline();
+std::unique_ptr<Pipeline> makeMatrixCPipeline();  // matrix_c: 16-byte vertex, 4-byte frame
 
 }  // namespace mb

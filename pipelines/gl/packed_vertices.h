@@ -18,9 +18,10 @@ struct PackedAttribute {
   GLint size = 4;
   GLenum type = GL_FLOAT;
   bool normalized = false;
-  // Bytes of one attribute value.
+  // Bytes of one attribute value (a packed 2_10_10_10 type is one 4-byte word).
   size_t bytes() const {
-    const size_t c = type == GL_SHORT || type == GL_UNSIGNED_SHORT ? 2
+    if (type == GL_UNSIGNED_INT_2_10_10_10_REV || type == GL_INT_2_10_10_10_REV) return 4;
+    const size_t c = type == GL_SHORT || type == GL_UNSIGNED_SHORT || type == GL_HALF_FLOAT ? 2
                    : type == GL_BYTE || type == GL_UNSIGNED_BYTE   ? 1
                                                                    : 4;
     return c * size_t(size);

@@ -15,14 +15,20 @@
 // Instanced nodes (Node::instances): the same motor and scale per instance, node world
 // composed with the instance's motor per frame (MB_INSTANCED, pipelines/gl/instance_stream.h:
 // 9 floats, 36 bytes; 11 on the scale fallback, PipelineStats::scaleFallbackInstances).
+// motor_c (MotorVariant::compact, issue 29): the 16-byte vertex (motor_c_vertices.h, MB_COMPACT);
+// rigid draws upload the world motor composed with a translation by scale * the primitive's
+// cube center and the scale times its extent, so no dequantisation runs per vertex; skinned and
+// instanced draws upload the cube as u_Dequant.
 #include "pipelines/motor/motor_pipeline.h"
 
+#include "pipelines/compact/compact_encoding.h"
 #include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/instance_stream.h"
 #include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
+#include "pipelines/motor/motor_c_vertices.h"
 #include "pipelines/motor/motor_camera.h"
 #include "pipelines/motor/motor_rig.h"
 #include "pipelines/motor/motor_q_vertices.h"
@@ -66,6 +72,7 @@ public:
 private:
   void uploadPalettes();
   void streamInstances();
+  void setDequant(const gl::Program& program, const gl::DrawItem& d);
   void release();
 
   MotorVariant variant_;
@@ -79,6 +86,7 @@ private:
   gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
   gl::SceneGeometry geometry_;
+  std::vector<std::vector<compact::PositionCube>> cubes_;  // motor_c: per mesh, per primitive
   gl::PaletteBuffers paletteBuffers_;             // one per pose_.palettes entry
   std::vector<gl::DrawItem> draws_;
   motor::Rig rig_;
@@ -98,6 +106,7 @@ Status MotorPipeline::prepare(const Scene& scene) {
       if (skinned) defines.push_back({"MB_SKINNED", ""});
       if (skinned && referenceSkin_) defines.push_back({"MB_SKIN_REFERENCE", ""});
       if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
+      if (variant_.compact) defines.push_back({"MB_COMPACT", ""});
       auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
       if (!program) return Status::fail(program.error());
       programs_[skinned][fallback] = program.take();
@@ -106,6 +115,7 @@ Status MotorPipeline::prepare(const Scene& scene) {
   for (int fallback = 0; fallback < 2 && gl::hasInstances(scene); ++fallback) {
     gl::Defines defines{{"MB_INSTANCED", ""}};
     if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
+    if (variant_.compact) defines.push_back({"MB_COMPACT", ""});
     auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
     if (!program) return Status::fail(program.error());
     instanced_[fallback] = program.take();
@@ -135,7 +145,15 @@ Status MotorPipeline::prepare(const Scene& scene) {
     stats_.biasedFrames += motor::countBiasedFrames(stream.data);
     return std::move(stream.data);
   };
-  if (variant_.quantizedFrame) {
+  if (variant_.compact) {
+    cubes_ = compact::primitiveCubes(scene);
+    auto packed = [this](const Primitive& p) {
+      motor::CompactStream stream = motor::interleaveCompact(p);
+      stats_.zeroScalarFrames += stream.zeroScalarFrames;
+      return std::move(stream.bytes);
+    };
+    geometry_.uploadPacked(scene, packed, compact::attributes(), stats_);
+  } else if (variant_.quantizedFrame) {
     auto packed = [this](const Primitive& p) {
       motor::PackedStream stream = motor::interleaveQuantized(p);
       stats_.zeroScalarFrames += stream.zeroScalarFrames;
@@ -237,6 +255,7 @@ void MotorPipeline::render(const View& view) {
       for (const gl::InstanceGroup& group : groups) {
         const bool fallback = group.key & 1;
         const gl::Program& program = useProgram(2, fallback ? 1 : 0);
+        if (variant_.compact) setDequant(program, d);
         textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
         gl::setWinding(group.key & 2);
         stats_.drawnVertices += instances_.draw(g, group, {4, 4, fallback ? 3 : 1});
@@ -249,16 +268,25 @@ void MotorPipeline::render(const View& view) {
     GLuint paletteBuffer = 0;
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = &pose_.palettes[i], paletteBuffer = paletteBuffers_[i];
-    const motor::ScaledMotor& world = pose_.world[size_t(d.node)];
-    const DrawScale scale = palette ? drawScale(palette->scale, glm::vec3(1.0f))
-                                    : drawScale(world.scale, world.residual);
+    const motor::ScaledMotor* world = &pose_.world[size_t(d.node)];
+    DrawScale scale = palette ? drawScale(palette->scale, glm::vec3(1.0f))
+                              : drawScale(world->scale, world->residual);
+    motor::ScaledMotor folded;  // motor_c's rigid draws: the mesh's cube in the transform
+    if (variant_.compact && !patch && !palette) {
+      const compact::PositionCube& cube = cubes_[size_t(d.mesh)][size_t(d.primitive)];
+      motor::composeInto({world->motor, 1.0f, glm::vec3(1.0f)},
+                         motor::fromTRS(TRS{scale.value * cube.center}, true), folded);
+      scale = drawScale(world->scale * cube.extent, world->residual);
+      world = &folded;
+    }
     const gl::Program& program = patch ? useProgram(-1, scale.fallback ? 1 : 0)
                                        : useProgram(palette ? 1 : 0, scale.fallback ? 1 : 0);
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
+    if (palette && variant_.compact) setDequant(program, d);
     // glTF: a skinned mesh ignores its node's transform, so with a world-space palette only
     // rigid draws upload one; the reference form composes it per vertex.
     if (!palette || referenceSkin_) {
-      gl::uniform4fv(program.uniform("u_World"), 2, &world.motor[0][0], transformBytes);
+      gl::uniform4fv(program.uniform("u_World"), 2, &world->motor[0][0], transformBytes);
       ++transforms;
     }
     uint64_t scaleBytes = 0;
@@ -277,6 +305,12 @@ void MotorPipeline::render(const View& view) {
   stats_.uniformBytesPerFrame += transformBytes;
   stats_.floatsPerTransform = gl::floatsPer(transformBytes, transforms);
   stats_.floatsPerTransformWithScale = gl::floatsPer(transformBytes + transformScaleBytes, transforms);
+}
+
+// motor_c's draws that cannot fold the mesh's cube (skinned, instanced) dequantise per vertex.
+void MotorPipeline::setDequant(const gl::Program& program, const gl::DrawItem& d) {
+  const glm::vec4 q = cubes_[size_t(d.mesh)][size_t(d.primitive)].dequant();
+  gl::uniform4f(program.uniform("u_Dequant"), &q[0], stats_.uniformBytesPerFrame);
 }
 
 void MotorPipeline::release() {
@@ -300,6 +334,9 @@ std::unique_ptr<Pipeline> makeMotorPipeline(const MotorVariant& variant) {
 std::unique_ptr<Pipeline> makeMotorPipeline() { return makeMotorPipeline(MotorVariant{}); }
 std::unique_ptr<Pipeline> makeMotorQPipeline() {
   return makeMotorPipeline(MotorVariant{"motor_q", true});
+}
+std::unique_ptr<Pipeline> makeMotorCPipeline() {
+  return makeMotorPipeline(MotorVariant{"motor_c", false, true});
 }
 
 }  // namespace mb

@@ -10,9 +10,11 @@ namespace mb {
 struct MotorVariant {
   std::string name = "motor";
   bool quantizedFrame = false;  // tangent rotor as int16x4 SNORM (motor_q_vertices.h)
+  bool compact = false;         // motor_c: 16-byte vertices (motor_c_vertices.h, MB_COMPACT)
 };
 
 std::unique_ptr<Pipeline> makeMotorPipeline(const MotorVariant& variant);
 std::unique_ptr<Pipeline> makeMotorPipeline();   // the paper's form
 std::unique_ptr<Pipeline> makeMotorQPipeline();  // motor_q: quantized frame
+std::unique_ptr<Pipeline> makeMotorCPipeline();  // motor_c: 16-byte vertex, 4-byte rotor
 }

@@ -1,0 +1,169 @@
+// The smallest motor vertex against the smallest matrix vertex (issue 29): motor_c (4-byte
+// tangent rotor) and matrix_c (octahedral normal + diamond tangent), both 16 bytes with int16
+// positions and half uvs. Bytes from the uploads, image cost from renders compared with matrix,
+// ops counted through the shim, ISA from a `motorbench isa` JSON when one is given.
+#include <algorithm>
+#include <cmath>
+
+#include "harness/claims/claims_sources.h"
+#include "harness/claims/claims_vertex_ops.h"
+#include "harness/document/report_isa.h"
+#include "harness/ops/pipeline_ops.h"
+#include "harness/render/image_metrics.h"
+#include "harness/render/render_frame.h"
+#include "pipelines/scene/loader.h"
+
+namespace mb::claims {
+namespace {
+
+const char* kMotor = "motor_c";
+const char* kMatrix = "matrix_c";
+
+Claim row(const std::string& id, const std::string& statement, const std::string& method) {
+  Claim c{id, "Compact vertices", statement};
+  c.paper = "- (not claimed by the paper)";
+  c.method = method;
+  c.origin = "compact";
+  return c;
+}
+
+void notMeasurable(Claim& c, const std::string& why) {
+  c.verdict = Verdict::NotMeasurable;
+  c.verdictText = "not measurable here: " + why;
+  c.measured = "-";
+}
+
+// Worst PSNR against matrix over the scenes at rest (skinned meshes in their bind pose, where
+// both skinning methods agree), per pipeline.
+Result<std::pair<double, double>> worstPsnr(const std::vector<std::string>& scenes) {
+  double worst[2] = {1e300, 1e300};
+  for (const std::string& name : scenes) {
+    auto scene = loadScene(name);
+    if (!scene) return Result<std::pair<double, double>>::fail(scene.error());
+    FrameSettings s;
+    s.width = s.height = 128;
+    auto base = renderFrame(*scene, "matrix", s);
+    if (!base) return Result<std::pair<double, double>>::fail(base.error());
+    for (int i = 0; i < 2; ++i) {
+      auto f = renderFrame(*scene, i ? kMatrix : kMotor, s);
+      if (!f) return Result<std::pair<double, double>>::fail(f.error());
+      auto m = compareImages(base->image, f->image);
+      if (!m) return Result<std::pair<double, double>>::fail(m.error());
+      if (std::isfinite(m->psnr)) worst[i] = std::min(worst[i], m->psnr);
+    }
+  }
+  return std::pair<double, double>{worst[0], worst[1]};
+}
+
+std::string psnrText(double v) { return v > 1e299 ? std::string("identical") : fmt("%.1f dB", v); }
+
+// "instructions / VGPRs" of a pipeline's rigid vertex shader on one family of the isa JSON.
+std::string isaCell(const nlohmann::json& isa, const std::string& pipeline, const std::string& family) {
+  const nlohmann::json* s = report::isaRow(isa, pipeline, "rigid", family);
+  return s ? s->value("instructions", nlohmann::json()).dump() + " / " + s->value("vgprs", nlohmann::json()).dump()
+           : "-";
+}
+
+}  // namespace
+
+std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& isaSource) {
+  std::vector<Claim> out;
+  Claim bytes = row("compact_bytes_per_vertex",
+                    "the smallest motor vertex vs the smallest matrix vertex: bytes per normal-mapped vertex",
+                    "PipelineStats.normalMappedVertexBytes / normalMappedVertices of motor_c and matrix_c on the "
+                    "built-in normal_torus (int16x4 position, 4-byte frame, half2 uv), beside motor and matrix");
+  auto scene = loadScene("normal_torus");
+  double b[4] = {0, 0, 0, 0};
+  std::string error = scene ? "" : scene.error();
+  const char* names[4] = {kMotor, kMatrix, "motor", "matrix"};
+  for (int i = 0; i < 4 && error.empty(); ++i) {
+    FrameSettings s;
+    s.width = s.height = 32;  // the uploads do not depend on the image size
+    auto f = renderFrame(*scene, names[i], s);
+    if (!f) error = f.error();
+    else if (f->stats.normalMappedVertices)
+      b[i] = double(f->stats.normalMappedVertexBytes) / double(f->stats.normalMappedVertices);
+  }
+  if (!error.empty()) {
+    notMeasurable(bytes, error);
+  } else {
+    bytes.measured = fmt("%g", b[0]) + " vs " + fmt("%g", b[1]) + " bytes/vertex (motor " + fmt("%g", b[2]) +
+                     ", matrix " + fmt("%g", b[3]) + ")";
+    bytes.measuredValue = {{kMotor, b[0]}, {kMatrix, b[1]}, {"motor", b[2]}, {"matrix", b[3]}};
+    bytes.verdict = Verdict::Baseline;
+    bytes.verdictText = b[0] == b[1] ? "baseline: at their smallest both sides need the same bytes; only the frame's "
+                                       "encoding and its unpacking differ"
+                                     : std::string("baseline: the ") + (b[0] < b[1] ? "motor" : "matrix") +
+                                           " vertex is smaller";
+  }
+  out.push_back(bytes);
+
+  const std::vector<std::string> scenes = {"normal_torus", "textured_box", "skinned_tube", "dense_torus", "crowd"};
+  Claim image = row("compact_image_cost", "image cost of the smallest vertices: worst PSNR against matrix",
+                    "renders at rest (skinned meshes in their bind pose: no skinning-method difference) of the "
+                    "built-in normal_torus, textured_box, skinned_tube, dense_torus and crowd at 128x128, "
+                    "compared with matrix (OpenImageIO); the worst scene per pipeline");
+  if (auto w = worstPsnr(scenes); !w) {
+    notMeasurable(image, w.error());
+  } else {
+    image.measured = psnrText(w->first) + " vs " + psnrText(w->second);
+    image.measuredValue = {{kMotor, w->first > 1e299 ? nlohmann::json() : nlohmann::json(w->first)},
+                           {kMatrix, w->second > 1e299 ? nlohmann::json() : nlohmann::json(w->second)}};
+    image.verdict = Verdict::Baseline;
+    image.verdictText = std::string("baseline: ") +
+                        (std::abs(w->first - w->second) < 1.0 ? "within 1 dB of each other"
+                         : w->first > w->second                ? "the 4-byte rotor costs less image"
+                                                               : "the octahedral frame costs less image");
+  }
+  out.push_back(image);
+
+  Claim ops = row("compact_ops", "ops per vertex of the smallest vertices: frame decode and rigid vertex to clip",
+                  "counted through the shim (shaders/compact_frame.glsl, motor_transform.glsl, affine_transform.glsl): "
+                  "compactRotor vs compactMatrixFrame, and the rigid shader variant object to clip");
+  OpCounts decode[2];
+  for (const opsv::KernelRow& k : vertexOps().kernels) {
+    if (k.kernel.function == "compactRotor") decode[0] = k.counted;
+    if (k.kernel.function == "compactMatrixFrame") decode[1] = k.counted;
+  }
+  std::string zero;
+  const std::map<std::string, double> rigid = opsPerPipeline("rigid", false, zero);
+  if (!rigid.count(kMotor) || !rigid.count(kMatrix)) {
+    notMeasurable(ops, "no counted rigid variant" + (zero.empty() ? "" : " (" + zero + ")"));
+  } else {
+    ops.measured = "decode " + opsText(decode[0]) + " vs " + opsText(decode[1]) + "; rigid to clip " +
+                   fmt("%g", rigid.at(kMotor)) + " vs " + fmt("%g", rigid.at(kMatrix)) + " ops/vertex";
+    ops.measuredValue = {{"decode", {{kMotor, opsJson(decode[0])}, {kMatrix, opsJson(decode[1])}}},
+                         {"rigidToClip", {{kMotor, rigid.at(kMotor)}, {kMatrix, rigid.at(kMatrix)}}}};
+    const uint64_t dm = opsv::total(decode[0]), dx = opsv::total(decode[1]);
+    ops.verdict = Verdict::Baseline;
+    ops.verdictText = "baseline: the frame decode costs " + fmt("%g", double(dm)) + " vs " + fmt("%g", double(dx)) +
+                      " ops; the whole rigid vertex to clip is " +
+                      (rigid.at(kMotor) < rigid.at(kMatrix) ? "cheaper" : "dearer") + " on the motor side";
+  }
+  out.push_back(ops);
+
+  Claim isaRow = row("compact_isa", "AMD ISA of the smallest vertices' rigid vertex shader: instructions / VGPRs",
+                     "`motorbench isa` (RADV/ACO on its null device) of the rigid variants of motor_c and matrix_c, "
+                     "per family; the vertex fetch's format conversion is not in these (the typed fetch does it)");
+  if (!isa.is_object()) {
+    notMeasurable(isaRow, "no isa JSON (claims --isa FILE, or a report with --isa-json)");
+  } else {
+    std::string text;
+    nlohmann::json values = nlohmann::json::object();
+    for (const nlohmann::json& f : isa.value("families", nlohmann::json::array())) {
+      const std::string id = f.value("id", "");
+      const std::string m = isaCell(isa, kMotor, id), x = isaCell(isa, kMatrix, id);
+      text += (text.empty() ? "" : "; ") + id + " " + m + " vs " + x;
+      values[id] = {{kMotor, m}, {kMatrix, x}};
+    }
+    isaRow.measured = text.empty() ? "-" : text;
+    isaRow.measuredValue = values;
+    isaRow.method += " (" + isaSource + ")";
+    isaRow.verdict = Verdict::Baseline;
+    isaRow.verdictText = "baseline: motor_c vs matrix_c per family";
+  }
+  out.push_back(isaRow);
+  return out;
+}
+
+}  // namespace mb::claims

@@ -1,0 +1,106 @@
+#include "harness/document/report_compact.h"
+
+#include <algorithm>
+
+#include "harness/document/report_format.h"
+#include "harness/document/report_isa.h"
+
+namespace mb::report {
+namespace {
+
+using nlohmann::json;
+
+// The kernel that unpacks each pipeline's frame (shaders/*.glsl): the float frames (matrix,
+// affine, motor) have none; motor_q's int16 SNORM rotor is converted by the vertex fetch.
+std::string decodeKernel(const std::string& pipeline) {
+  if (pipeline == "qtangent" || pipeline == "hybrid") return "qtangentFrame";
+  if (pipeline == "matrix_c") return "compactMatrixFrame";
+  if (pipeline == "motor_c") return "compactRotor";
+  return "";
+}
+
+std::string decodeText(const json& r, const std::string& pipeline) {
+  const std::string fn = decodeKernel(pipeline);
+  if (fn.empty()) return pipeline == "motor_q" ? "0 (SNORM16: the vertex fetch)" : "0 (float frame)";
+  for (const json& k : at(r, {"opsPerVertex", "kernels"}))
+    if (k.value("function", "") == fn) return fn + ": " + opsText(k["counted"]);
+  return fn + ": -";
+}
+
+const json* rigidVariant(const json& r, const std::string& pipeline) {
+  for (const json& v : at(r, {"opsPerVertex", "variants"}))
+    if (v.value("pipeline", "") == pipeline && v.value("label", "") == "rigid") return &v;
+  return nullptr;
+}
+
+// Median over the scenes of pipeline / baseline frame time (timing or timing.vertexBound).
+std::string frameRatio(const json& r, const std::string& p, const std::string& base, bool vertexBound) {
+  std::vector<double> ratios;
+  for (const json& s : r["scenes"]) {
+    const json& t = vertexBound ? at(s, {"timing", "vertexBound", "pipelines"}) : at(s, {"timing", "pipelines"});
+    if (!t.is_object() || !t.contains(p) || !t.contains(base)) continue;
+    const double a = t[p].value("medianMs", 0.0), b = t[base].value("medianMs", 0.0);
+    if (a > 0 && b > 0) ratios.push_back(a / b);
+  }
+  if (ratios.empty()) return "-";
+  std::sort(ratios.begin(), ratios.end());
+  return fmt(ratios[ratios.size() / 2], 3) + " (" + std::to_string(ratios.size()) + ")";
+}
+
+std::string isaText(const json& r, const std::string& p, const std::string& family) {
+  const json* s = isaRow(at(r, {"isa"}), p, "rigid", family);
+  return s ? fmt((*s)["instructions"], 6) + " / " + fmt((*s)["vgprs"], 6) : "-";
+}
+
+}  // namespace
+
+void compactSection(Document& d, const json& r) {
+  d.heading(2, "Bytes vs image cost vs unpack cost", "compact");
+  const std::vector<std::string> pipes =
+      at(r, {"settings", "pipelines"}).is_array() ? r["settings"]["pipelines"].get<std::vector<std::string>>()
+                                                  : std::vector<std::string>{};
+  if (pipes.empty()) return;
+  const json& sum = r["summary"];
+  std::vector<std::string> families;
+  for (const json& f : at(r, {"isa", "families"})) families.push_back(f.value("id", "?"));
+  d.paragraph("Per glTF pipeline (issue 29: `matrix_c` and `motor_c` are the 16-byte vertices): bytes per vertex of "
+              "the normal-mapped primitives from the uploads (median over scenes); image difference against " +
+              pipes.front() +
+              " over the frames where both should agree (skinning-method frames apart, as in the summary): worst "
+              "PSNR, largest share of pixels over 1/255 and 4/255, worst channel difference; counted ops of the "
+              "frame decoding alone and of the whole rigid vertex to clip (counted; SPIR-V); frame time / " +
+              pipes.front() + " (median over scenes, their count in brackets; vertex-bound: the tiny viewport)" +
+              (families.empty() ? "." : "; AMD ISA instructions / VGPRs of the rigid vertex shader per family."));
+  std::vector<std::string> head = {"pipeline", "B/vertex (normal-mapped)", "worst PSNR", "px > 1/255", "px > 4/255",
+                                   "worst pixel", "frame decode (counted)", "rigid to clip (counted; SPIR-V)",
+                                   "frame time", "vertex-bound frame time"};
+  for (const std::string& f : families) head.push_back("ISA " + f);
+  std::vector<std::vector<Cell>> rows;
+  for (const std::string& p : pipes) {
+    const json& im = at(sum, {"images"}).is_object() && sum["images"].contains(p) ? sum["images"][p] : json();
+    const bool base = p == pipes.front();
+    const bool allIdentical = im.is_object() && im.value("comparedFrames", 0) > 0 &&
+                              im.value("identicalFrames", 0) == im.value("comparedFrames", 0);
+    const json* rigid = rigidVariant(r, p);
+    std::vector<Cell> row = {
+        {p},
+        {fmt(at(sum, {"pipelines"}).is_object() && sum["pipelines"].contains(p)
+                 ? at(sum["pipelines"][p], {"bytesPerVertexNormalMapped", "median"})
+                 : json(),
+             3)},
+        {base ? "baseline" : allIdentical ? "identical" : fixed(at(im, {"psnr", "min"}), 1) + " dB"},
+        {base ? "-" : percent(at(im, {"fractionOver1", "max"}), 3)},
+        {base ? "-" : percent(at(im, {"fractionOver4", "max"}), 3)},
+        {base || !at(im, {"maxError", "max"}).is_number() ? "-"
+                                                          : fmt(json(255.0 * im["maxError"]["max"].get<double>()), 3) + "/255"},
+        {decodeText(r, p)},
+        {rigid ? opsText((*rigid)["counted"]) + "; " + opsText((*rigid)["spirv"]) : "-"},
+        {base ? "1" : frameRatio(r, p, pipes.front(), false)},
+        {base ? "1" : frameRatio(r, p, pipes.front(), true)}};
+    for (const std::string& f : families) row.push_back({isaText(r, p, f)});
+    rows.push_back(std::move(row));
+  }
+  d.table(head, rows);
+}
+
+}  // namespace mb::report

@@ -1,0 +1,15 @@
+// The report's "bytes vs image cost vs unpack cost" table (issue 29): per glTF pipeline the
+// bytes per vertex measured from its uploads, its worst image difference against the baseline
+// (the frames where both should agree), the counted ops of its frame decoding and of its rigid
+// vertex, its frame-time ratios and, when report.json embeds `motorbench isa`, its rigid vertex
+// shader's AMD instructions and VGPRs per family.
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include "harness/document/report_model.h"
+
+namespace mb::report {
+
+void compactSection(Document& d, const nlohmann::json& report);
+
+}  // namespace mb::report

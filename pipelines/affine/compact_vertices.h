@@ -1,0 +1,15 @@
+// matrix_c's vertex (issue 29): 16 bytes, pipelines/compact/compact_encoding.h's layout with
+// the frame as an octahedral normal, a diamond-coded tangent and the handedness bit (4 bytes).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "pipelines/scene/scene.h"
+
+namespace mb::affine {
+
+// `p`'s vertices in matrix_c's layout, quantised in compact::positionCube(p.positions);
+// absent streams filled as interleaveFullFrame fills them (the frames qtangent packs).
+std::vector<uint8_t> interleaveCompact(const Primitive& p);
+
+}  // namespace mb::affine
