@@ -339,20 +339,23 @@ std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const 
     if (!tf.cpu && c.verdict != Verdict::NotMeasurable) {
       c.verdictText += "; device: " + device.label();
       // A CPU rasterizer's frame time cannot tell pipelines apart whose arithmetic differs by
-      // more than 25 % when it times them within the noise (issue 25).
+      // more than 25 % when it times them within the noise (issue 25): any two timed pipelines
+      // (not only motor and the strongest) that show it make every ratio of this timing moot.
       if (device.cpuRasterizer) {
-        const std::string best = c.measuredValue.value("strongest", std::string()), motor = "motor";
-        if (clipOps.count(best) && clipOps.count(motor) && f.values.count(best) && f.values.count(motor)) {
-          const double opsRatio = std::max(clipOps[motor], clipOps[best]) / std::min(clipOps[motor], clipOps[best]);
-          const double timeRatio = f.values[motor] / f.values[best];
-          if (opsRatio > 1.25 && std::fabs(timeRatio - 1.0) <= kTimeTolerance) {
-            c.verdict = Verdict::Inconclusive;
-            c.verdictText = "unable to discriminate on a CPU rasterizer: motor and " + best + " differ by " +
-                            pct(std::max(clipOps[motor], clipOps[best]), std::min(clipOps[motor], clipOps[best])) +
-                            " in counted ops per vertex but take the same time within " +
-                            std::to_string(int(kTimeTolerance * 100)) + " % (" + pct(f.values[motor], f.values[best]) +
-                            "); device: " + device.label();
+        double worst = 0;
+        std::string a, b;
+        for (const auto& [p, tp] : f.values)
+          for (const auto& [q, tq] : f.values) {
+            if (!clipOps.count(p) || !clipOps.count(q) || clipOps[p] <= clipOps[q]) continue;
+            const double opsRatio = clipOps[p] / clipOps[q];
+            if (opsRatio > 1.25 && std::fabs(tp / tq - 1.0) <= kTimeTolerance && opsRatio > worst) worst = opsRatio, a = p, b = q;
           }
+        if (!a.empty()) {
+          c.verdict = Verdict::Inconclusive;
+          c.verdictText = "unable to discriminate on a CPU rasterizer: " + a + " and " + b + " differ by " +
+                          pct(clipOps[a], clipOps[b]) + " in counted ops per vertex but take the same time within " +
+                          std::to_string(int(kTimeTolerance * 100)) + " % (" + pct(f.values[a], f.values[b]) +
+                          "); device: " + device.label();
         }
       }
     }

@@ -286,6 +286,32 @@ TEST(ClaimsSceneGraph, SameClassRatioIsNamedBesideTheFastest) {
   EXPECT_NE(c.verdictText.find("0.50x"), std::string::npos) << c.verdictText;
 }
 
+// On a CPU rasterizer, one pair of timed pipelines whose counted ops differ by more than 25 % but
+// whose times agree within 10 % makes the whole timing unable to discriminate, even where motor
+// and the strongest (here matrix, 0.90) are close in ops: motor (0.95) and affine (0.97) differ
+// in counted ops by far more (rigid to clip) and take the same time.
+TEST(ClaimsStrongest, CpuRasterizerThatTimesUnequalWorkAlikeCannotDiscriminate) {
+  const json timings = {{"a",
+                         {{"pipelines",
+                           {{"matrix", {{"medianMs", 0.90}, {"updateMedianMs", 1.0}}},
+                            {"affine", {{"medianMs", 0.97}, {"updateMedianMs", 1.0}}},
+                            {"motor", {{"medianMs", 0.95}, {"updateMedianMs", 1.0}}}}}}}};
+  const json llvmpipe = {{"gl", {{"renderer", "llvmpipe (LLVM 15.0.6, 256 bits)"}, {"kind", "cpu-rasterizer"}}}};
+  const std::vector<claims::Claim> rows =
+      claims::strongestBaselineClaims(timings, "test", json::array(), "none", nullptr, llvmpipe);
+  const claims::Claim frame = only(rows, "frame_time_vs_strongest");
+  EXPECT_EQ(frame.measuredValue["strongest"], "matrix");
+  EXPECT_EQ(frame.verdict, claims::Verdict::Inconclusive) << frame.verdictText;
+  EXPECT_EQ(frame.verdictText.rfind("unable to discriminate on a CPU rasterizer: motor and affine differ by +", 0), 0u)
+      << frame.verdictText;
+  EXPECT_NE(frame.verdictText.find("device: CPU rasterizer (llvmpipe"), std::string::npos) << frame.verdictText;
+  // A GPU timing the same values is judged as timed.
+  const json gpu = {{"gl", {{"renderer", "NVIDIA H100"}, {"kind", "gpu"}}}};
+  const claims::Claim onGpu =
+      only(claims::strongestBaselineClaims(timings, "test", json::array(), "none", nullptr, gpu), "frame_time_vs_strongest");
+  EXPECT_EQ(onGpu.verdict, claims::Verdict::Reproduced) << onGpu.verdictText;
+}
+
 // Timed "vs strongest" rows: as fast = within kTimeTolerance (10 %) of the strongest matrix
 // variant or faster (a 0.2 % difference is noise, not a verdict); hybrid is not a baseline;
 // counted rows stay exact. Frame: motor 1.04 vs affine 0.95 (+9.5 %): holds. Update: motor 0.9
