@@ -269,17 +269,13 @@ int runClaims(const std::vector<std::string>& argv) {
   const json j = claims::claimsJson(all, machine, sources, scope);
   const std::string md = report::toMarkdown(claims::claimsDocument(j));
   if (auto path = args.get("json")) {
-    std::ofstream out(*path);
-    out << report::dumpJson(j, 2) << "\n";
-    if (!out.flush()) return fail(*path + ": write failed");
+    if (Status ok = writeTextFile(*path, report::dumpJson(j, 2) + "\n"); !ok) return fail(ok.error());
   }
   const std::string mdPath = args.get("o", args.get("output", ""));
   if (mdPath.empty()) {
     std::fputs(md.c_str(), stdout);
   } else {
-    std::ofstream out(mdPath);
-    out << md;
-    if (!out.flush()) return fail(mdPath + ": write failed");
+    if (Status ok = writeTextFile(mdPath, md); !ok) return fail(ok.error());
   }
   auto tally = [](const json& c) {
     return c["reproduced"].dump() + " reproduced, " + c["differs"].dump() + " differ, " + c["inconclusive"].dump() +

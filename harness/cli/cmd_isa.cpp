@@ -1,7 +1,6 @@
 // `motorbench isa [--family F,...] [--json FILE] [--isa-text DIR] [--device]`: AMD ISA
 // statistics of every pipeline's shaders from Mesa RADV's null device (harness/isa).
 #include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -59,9 +58,8 @@ int runIsaCommand(const std::vector<std::string>& argv) {
   }
   std::fputs(mb::isa::formatTable(*run).c_str(), stdout);
   if (const auto path = args.get("json")) {
-    std::ofstream out(*path);
-    if (!out || !(out << mb::isa::toJson(*run).dump(1) << "\n")) {
-      std::fprintf(stderr, "motorbench isa: cannot write %s\n", path->c_str());
+    if (mb::Status ok = mb::writeTextFile(*path, mb::isa::toJson(*run).dump(1) + "\n"); !ok) {
+      std::fprintf(stderr, "motorbench isa: %s\n", ok.error().c_str());
       return 2;
     }
   }

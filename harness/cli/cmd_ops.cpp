@@ -2,7 +2,6 @@
 // of the matrix equivalents by executing them on the op-counting scalar (mb::Counted), and
 // prints them next to the paper's claims.
 #include <cstdio>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -68,9 +67,8 @@ int runOps(const std::vector<std::string>& argv) {
         {"per_pipeline", mb::opsv::toJson(perPipeline)},
         {"isa", isa ? mb::isa::isaBesideOpsJson(perVertex, *isa) : nlohmann::json{{"error", isa.error()}}},
     };
-    std::ofstream out(*path);
-    if (!out || !(out << j.dump(2) << "\n")) {
-      std::fprintf(stderr, "motorbench ops: cannot write %s\n", path->c_str());
+    if (mb::Status ok = mb::writeTextFile(*path, j.dump(2) + "\n"); !ok) {
+      std::fprintf(stderr, "motorbench ops: %s\n", ok.error().c_str());
       return 2;
     }
   }

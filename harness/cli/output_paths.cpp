@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 
 namespace mb {
 namespace {
@@ -59,6 +60,13 @@ Status prepareOutputFolder(const std::string& option, const std::string& path, c
     return Status::fail(option + " " + path + ": looks like a file name, but this command writes a folder (" + holds +
                         "); give a folder name such as " + (p.parent_path() / p.stem()).string());
   return writableFolder(option, path, p);
+}
+
+Status writeTextFile(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out || !out.write(text.data(), std::streamsize(text.size())) || !out.flush())
+    return Status::fail(path + ": cannot write");
+  return Status();
 }
 
 }  // namespace mb

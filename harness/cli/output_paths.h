@@ -17,4 +17,7 @@ Status prepareOutputFile(const std::string& option, const std::string& path);
 // existing file nor a file-like name (out.png, x.json), created when missing, writable.
 Status prepareOutputFolder(const std::string& option, const std::string& path, const std::string& holds);
 
+// Writes `text` as the whole file `path`; "PATH: cannot write" when it cannot be written in full.
+Status writeTextFile(const std::string& path, const std::string& text);
+
 }  // namespace mb
