@@ -1,5 +1,9 @@
 #include "harness/claims/claims_device.h"
 
+#include <cmath>
+
+#include "harness/claims/claims_model.h"
+
 namespace mb::claims {
 
 std::string TimingDevice::label() const {
@@ -23,6 +27,19 @@ TimingDevice timingDevice(const nlohmann::json& machine) {
       d.cpuRasterizer |= d.renderer.find(sw) != std::string::npos;
   }
   return d;
+}
+
+std::optional<AlikePair> timedAlike(const std::map<std::string, double>& times,
+                                    const std::map<std::string, double>& ops) {
+  std::optional<AlikePair> worst;
+  for (const auto& [p, tp] : times)
+    for (const auto& [q, tq] : times) {
+      if (!ops.count(p) || !ops.count(q) || ops.at(p) <= ops.at(q)) continue;
+      const double r = ops.at(p) / ops.at(q);
+      if (r > kDiscriminateOps && std::fabs(tp / tq - 1.0) <= kTimeTolerance && (!worst || r > worst->opsRatio))
+        worst = AlikePair{p, q, r, tp / tq};
+    }
+  return worst;
 }
 
 std::string cpuScope(const nlohmann::json& machine) {

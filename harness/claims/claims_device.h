@@ -2,6 +2,8 @@
 // "gpu" | "cpu-rasterizer" and "renderer"; older reports: "realGpu" and the renderer string), so
 // that every timing verdict names its device and one from a CPU rasterizer says so.
 #pragma once
+#include <map>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -18,6 +20,18 @@ struct TimingDevice {
 };
 
 TimingDevice timingDevice(const nlohmann::json& machine);
+
+// Two timed pipelines whose counted ops differ by more than kDiscriminateOps but whose times agree
+// within kTimeTolerance: a device that times unequal arithmetic alike cannot discriminate it
+// (issue 25). The pair with the largest ops ratio, `dearer` the one with more ops.
+inline constexpr double kDiscriminateOps = 1.25;
+struct AlikePair {
+  std::string dearer, cheaper;
+  double opsRatio = 0, timeRatio = 0;  // dearer / cheaper
+};
+// `times` and `ops` per pipeline; pipelines missing from either are skipped. nullopt: none.
+std::optional<AlikePair> timedAlike(const std::map<std::string, double>& times,
+                                    const std::map<std::string, double>& ops);
 
 // "CPU verdicts hold for <cpu> (<n> logical cores[, Highway target T])": CPU results depend on
 // the CPU (issue 26 item 10).

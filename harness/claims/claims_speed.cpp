@@ -29,7 +29,7 @@ namespace {
 using json = nlohmann::json;
 
 constexpr double kTolerance = kTimeTolerance;
-constexpr double kDiscriminate = 1.25;  // ops ratio a timing must be able to see
+constexpr double kDiscriminate = kDiscriminateOps;  // ops ratio a timing must be able to see
 
 std::string pct(double r) { return fmt("%+.0f %%", 100.0 * (r - 1.0)); }
 std::string x2(double r) { return fmt("%.2fx", r); }
@@ -132,18 +132,10 @@ Evidence frameEvidence(const SpeedInputs& in, const std::string& kind, const std
     if (const std::string why = belowMinimum(stats, least, "frame"); !why.empty()) e.why = "below the minimum of work: " + why;
     // A CPU rasterizer that times two pipelines alike although their arithmetic differs by more
     // than 25 % cannot discriminate the arithmetic.
-    if (device.cpuRasterizer && e.why.empty()) {
-      double worst = 0;
-      std::string pair;
-      for (const auto& [p, tp] : times)
-        for (const auto& [q, tq] : times) {
-          if (!ops.count(p) || !ops.count(q) || ops.at(p) <= ops.at(q)) continue;
-          const double r = ops.at(p) / ops.at(q);
-          if (r > kDiscriminate && std::fabs(tp / tq - 1.0) <= kTolerance && r > worst)
-            worst = r, pair = p + " and " + q + ": counted ops " + pct(r) + ", time " + pct(tp / tq);
-        }
-      if (!pair.empty()) e.why = "unable to discriminate on a CPU rasterizer (" + pair + ")";
-    }
+    if (device.cpuRasterizer && e.why.empty())
+      if (const auto alike = timedAlike(times, ops))
+        e.why = "unable to discriminate on a CPU rasterizer (" + alike->dearer + " and " + alike->cheaper +
+                ": counted ops " + pct(alike->opsRatio) + ", time " + pct(alike->timeRatio) + ")";
   } else if (in.frameTimes.is_array()) {
     for (const json& f : in.frameTimes)
       if (f.value("scene", "") == scene && f.contains("vertexBound") && f["vertexBound"].is_number()) {

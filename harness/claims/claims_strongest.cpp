@@ -341,23 +341,14 @@ std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const 
       // A CPU rasterizer's frame time cannot tell pipelines apart whose arithmetic differs by
       // more than 25 % when it times them within the noise (issue 25): any two timed pipelines
       // (not only motor and the strongest) that show it make every ratio of this timing moot.
-      if (device.cpuRasterizer) {
-        double worst = 0;
-        std::string a, b;
-        for (const auto& [p, tp] : f.values)
-          for (const auto& [q, tq] : f.values) {
-            if (!clipOps.count(p) || !clipOps.count(q) || clipOps[p] <= clipOps[q]) continue;
-            const double opsRatio = clipOps[p] / clipOps[q];
-            if (opsRatio > 1.25 && std::fabs(tp / tq - 1.0) <= kTimeTolerance && opsRatio > worst) worst = opsRatio, a = p, b = q;
-          }
-        if (!a.empty()) {
+      if (device.cpuRasterizer)
+        if (const auto alike = timedAlike(f.values, clipOps)) {
           c.verdict = Verdict::Inconclusive;
-          c.verdictText = "unable to discriminate on a CPU rasterizer: " + a + " and " + b + " differ by " +
-                          pct(clipOps[a], clipOps[b]) + " in counted ops per vertex but take the same time within " +
-                          std::to_string(int(kTimeTolerance * 100)) + " % (" + pct(f.values[a], f.values[b]) +
-                          "); device: " + device.label();
+          c.verdictText = "unable to discriminate on a CPU rasterizer: " + alike->dearer + " and " + alike->cheaper +
+                          " differ by " + pct(alike->opsRatio, 1.0) + " in counted ops per vertex but take the same "
+                          "time within " + std::to_string(int(kTimeTolerance * 100)) + " % (" +
+                          pct(alike->timeRatio, 1.0) + "); device: " + device.label();
         }
-      }
     }
     out.push_back(c);
   }
