@@ -59,6 +59,9 @@ struct PipelineStats {
                                       // bias rule raised to 1/32767 so the handedness survives
   int scaleFallbackInstances = 0;     // motor: instances of the last render() whose scale is
                                       // non-uniform or negative (drawn as MB_SCALE_FALLBACK)
+  int rotorSplitVertices = 0;         // motor_cf: vertices split so each triangle's rotors
+                                      // share a hemisphere (pipelines/motor/rotor_signs.h)
+  int rotorUnresolvedTriangles = 0;   // motor_cf: triangles whose frames turn > 180 degrees
 };
 
 // Where a skinned vertex reaches world space (issue 18: compare both pipelines in the same

@@ -22,6 +22,7 @@ const Entry kPipelines[] = {
     {"hybrid", makeHybridPipeline, Space::Euclidean},
     {"matrix_c", makeMatrixCPipeline, Space::Euclidean},
     {"motor_c", makeMotorCPipeline, Space::Euclidean},
+    {"motor_cf", makeMotorCFPipeline, Space::Euclidean},
     {"s3_matrix", makeS3MatrixPipeline, Space::Spherical},
     {"s3_motor", makeS3MotorPipeline, Space::Spherical},
     {"h3_matrix", makeH3MatrixPipeline, Space::Hyperbolic},

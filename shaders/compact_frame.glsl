@@ -12,6 +12,7 @@
 //   motor_c:  the tangent rotor, smallest three: x, y = two components in 10 bits, z = the
 //             third in 9 bits plus the reflection bit (512), w = which component was dropped.
 //             The handedness is an explicit bit: no sign of a zero to lose (the paper's rule).
+//   motor_cf: motor_c's word with that bit meaning "negate" (compactSignedRotor).
 
 #ifndef MB_COMPACT_FRAME_GLSL
 #define MB_COMPACT_FRAME_GLSL
@@ -75,6 +76,15 @@ mat2x4 compactRotor(vec4 f) {
   vec4 r = vec4(i == 0.0 ? d : c.x, i == 0.0 ? c.x : (i == 1.0 ? d : c.y),
                 i < 2.0 ? c.y : (i == 2.0 ? d : c.z), i == 3.0 ? d : c.z);
   return mat2x4(r, 1.0 - 2.0 * mirrored, 0.0, 0.0, 0.0);
+}
+
+// motor_cf's frame (issue 29): the same word with the bit that motor_c spends on the
+// reflection saying "negate": the rotor keeps the sign the mesh pass chose for interpolation
+// (pipelines/motor/rotor_signs.h); the handedness travels in the position's w instead.
+// counted: 12 mul, 8 add, 1 sqrt, 1 other (compactRotor + the sign)
+vec4 compactSignedRotor(vec4 f) {
+  mat2x4 r = compactRotor(f);
+  return r[0] * r[1].x;
 }
 
 #endif  // MB_COMPACT_FRAME_GLSL

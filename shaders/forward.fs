@@ -8,6 +8,11 @@
 //   v_worldTangent   vec4   xyz tangent, w = handedness (+1/-1): bitangent = w * cross(n, t)
 //   v_uv0, v_uv1     vec2   TEXCOORD_0/1 (uv1 = uv0 or zero when absent)
 //   v_color          vec4   COLOR_0 (1,1,1,1 when absent)
+// With MB_FRAGMENT_ROTOR (motor_cf, issue 29) v_worldNormal and v_worldTangent are replaced by
+//   v_worldRotor     vec4   the world tangent rotor (s, e23, e31, e12), signed so that a
+//                           triangle's three rotors lie in one hemisphere (rotor_signs.h)
+//   v_handedness     float  +1 / -1 (the bitangent's sign)
+// and the frame is unpacked here (frame_shading.glsl) instead of in the vertex stage.
 //
 // Uniforms (bound by pipelines/gl/scene_textures.h: setFrameUniforms + bindMaterial):
 //   per frame    u_CameraPosition vec3; u_KeyLightDirection, u_FillLightDirection vec3 (unit,
@@ -21,10 +26,16 @@
 //                u_NormalTexture (2), u_OcclusionTexture (3), u_EmissiveTexture (4).
 //                Base colour and emissive textures are sRGB textures (decoded by GL).
 #include "ggx.glsl"
+#include "frame_shading.glsl"
 
 in vec3 v_worldPosition;
+#ifdef MB_FRAGMENT_ROTOR
+in vec4 v_worldRotor;
+in float v_handedness;
+#else
 in vec3 v_worldNormal;
 in vec4 v_worldTangent;
+#endif
 in vec2 v_uv0;
 in vec2 v_uv1;
 in vec4 v_color;
@@ -72,24 +83,22 @@ vec3 linearToSrgb(vec3 c) {
   return mix(hi, lo, lessThanEqual(c, vec3(0.0031308)));
 }
 
-// The shading normal: interpolated normal, flipped for back faces (double-sided materials;
-// single-sided back faces are culled), perturbed by the normal map through the TBN frame.
+// The shading normal: interpolated frame, flipped for back faces (double-sided materials;
+// single-sided back faces are culled), perturbed by the normal map (frame_shading.glsl).
 vec3 shadingNormal() {
-  vec3 n = normalize(v_worldNormal);
-  vec3 t = v_worldTangent.xyz;
-  float handedness = v_worldTangent.w < 0.0 ? -1.0 : 1.0;
-  if (!gl_FrontFacing) {
-    n = -n;
-    t = -t;  // flipping t and b with n, as the glTF-Sample-Viewer does
-  }
-  if (u_NormalUV < 0) return n;
-  t = t - n * dot(n, t);  // Gram-Schmidt: interpolation leaves t slightly off the normal plane
-  if (dot(t, t) < 1e-12) return n;  // no usable tangent: skip the normal map
-  t = normalize(t);
-  vec3 b = handedness * cross(n, t);
+  float facing = gl_FrontFacing ? 1.0 : -1.0;
+#ifdef MB_FRAGMENT_ROTOR
+  if (u_NormalUV < 0) return rotorSurfaceNormal(v_worldRotor, facing);
+#else
+  if (u_NormalUV < 0) return tbnSurfaceNormal(v_worldNormal, facing);
+#endif
   vec3 m = texture(u_NormalTexture, uvSet(u_NormalUV)).rgb * 2.0 - 1.0;
   m.xy *= u_NormalScale;
-  return normalize(mat3(t, b, n) * m);
+#ifdef MB_FRAGMENT_ROTOR
+  return rotorShadingNormal(v_worldRotor, v_handedness, m, facing);
+#else
+  return tbnShadingNormal(v_worldNormal, v_worldTangent, m, facing);
+#endif
 }
 
 void main() {

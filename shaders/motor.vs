@@ -17,12 +17,30 @@
 //                     explicit reflection bit), uv half2: 16-byte vertices. Rigid draws get
 //                     the mesh's dequantisation folded into u_World and u_Scale; skinned and
 //                     instanced draws apply u_Dequant per vertex (compactPosition)
+//   MB_SIGNED_ROTOR   with MB_COMPACT, motor_cf's vertex (issue 29): the frame word's extra bit
+//                     negates the rotor (compactSignedRotor: the sign the mesh pass chose,
+//                     pipelines/motor/rotor_signs.h) and the handedness is the position's w
+//   MB_FRAGMENT_ROTOR with MB_SIGNED_ROTOR: the world tangent rotor is the varying, unpacked
+//                     per fragment by forward.fs (frame_shading.glsl) instead of extracted
+//                     here; the scale fallback cannot (a non-uniform scale is no rotation)
+//                     and is built without it
 //   MB_INSTANCED      motor and scale per instance (vertex attributes, divisor 1) instead of
 //                     per draw: EXT_mesh_gpu_instancing / --instances
 #include "pga.glsl"
 #include "motor_transform.glsl"
 
+// motor_cf's programs: MB_COMPACT + MB_SIGNED_ROTOR, with MB_FRAGMENT_ROTOR or MB_SCALE_FALLBACK.
+#if defined(MB_FRAGMENT_ROTOR) && (!defined(MB_SIGNED_ROTOR) || defined(MB_SCALE_FALLBACK))
+#error "MB_FRAGMENT_ROTOR needs MB_SIGNED_ROTOR and no MB_SCALE_FALLBACK"
+#endif
+#if defined(MB_SIGNED_ROTOR) && !(defined(MB_COMPACT) && (defined(MB_FRAGMENT_ROTOR) || defined(MB_SCALE_FALLBACK)))
+#error "MB_SIGNED_ROTOR needs MB_COMPACT and MB_FRAGMENT_ROTOR or MB_SCALE_FALLBACK"
+#endif
+#ifdef MB_SIGNED_ROTOR
+layout(location = 0) in vec4 a_position;  // w: handedness (SNORM16 +-1)
+#else
 layout(location = 0) in vec3 a_position;
+#endif
 #ifdef MB_COMPACT
 layout(location = 1) in vec4 a_compactFrame;  // integer fields as floats, not normalised
 #if defined(MB_SKINNED) || defined(MB_INSTANCED)
@@ -69,8 +87,13 @@ motor jointMotor(uint j) { return motor(u_Joints[2u * j], u_Joints[2u * j + 1u])
 #endif
 
 out vec3 v_worldPosition;
+#ifdef MB_FRAGMENT_ROTOR
+out vec4 v_worldRotor;
+out float v_handedness;
+#else
 out vec3 v_worldNormal;
 out vec4 v_worldTangent;
+#endif
 out vec2 v_uv0;
 out vec2 v_uv1;
 out vec4 v_color;
@@ -93,11 +116,18 @@ void main() {
 #endif
 #ifdef MB_COMPACT
 #if defined(MB_SKINNED) || defined(MB_INSTANCED)
-  vec3 position = compactPosition(a_position, u_Dequant);
+  vec3 position = compactPosition(a_position.xyz, u_Dequant);
 #else
-  vec3 position = a_position;  // the mesh's cube is folded into u_World and u_Scale
+  vec3 position = a_position.xyz;  // the mesh's cube is folded into u_World and u_Scale
 #endif
-#ifdef MB_SCALE_FALLBACK
+#ifdef MB_FRAGMENT_ROTOR
+  mat2x4 v = motorCompactRotorVertex(toWorld, u_Scale, position, a_compactFrame);
+  v_worldRotor = v[1];
+  v_handedness = a_position.w;
+#elif defined(MB_SIGNED_ROTOR)  // with MB_SCALE_FALLBACK
+  mat3x4 v = motorScaledRotorVertex(toWorld, u_Scale, position, compactSignedRotor(a_compactFrame),
+                                    a_position.w);
+#elif defined(MB_SCALE_FALLBACK)
   mat3x4 v = motorCompactScaledVertex(toWorld, u_Scale, position, a_compactFrame);
 #else
   mat3x4 v = motorCompactVertex(toWorld, u_Scale, position, a_compactFrame);
@@ -108,8 +138,10 @@ void main() {
   mat3x4 v = motorRigidVertex(toWorld, u_Scale, a_position, a_tangentRotor);
 #endif
   v_worldPosition = v[0].xyz;
+#ifndef MB_FRAGMENT_ROTOR
   v_worldNormal = v[1].xyz;
   v_worldTangent = v[2];
+#endif
   v_uv0 = a_uv0;
   v_uv1 = a_uv1;
   v_color = a_color;

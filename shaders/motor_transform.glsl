@@ -35,13 +35,20 @@ mat3x4 motorRigidVertex(motor toWorld, float scale, vec3 position, vec4 tangentR
 // both are moved by the motor and normalised (their lengths now differ per vertex, and the
 // matrix pipeline interpolates unit vectors). A mirroring scale (odd number of negative
 // components) flips the handedness, as the matrix pipeline's sign(det(model)) does.
-// Contract: no component of `scale` is 0.
-mat3x4 motorScaledVertex(motor toWorld, vec3 scale, vec3 position, vec4 tangentRotor) {
+// Contract: no component of `scale` is 0. The handedness is given apart from the rotor (whose
+// sign then does not matter): motorScaledVertex reads it from the rotor's scalar sign, the
+// compact forms from their own bits.
+mat3x4 motorScaledRotorVertex(motor toWorld, vec3 scale, vec3 position, vec4 rotor, float handedness) {
   vec3 worldPosition = sw_mp(toWorld, position * scale);
-  mat2x3 nt = extractNormalTangent(motor(tangentRotor, vec4(0.0)));
+  mat2x3 nt = extractNormalTangent(motor(rotor, vec4(0.0)));
   float mirror = sign(scale.x * scale.y * scale.z);
   return mat3x4(worldPosition, 0.0, normalize(sw_md(toWorld, nt[0] / scale)), 0.0,
-                normalize(sw_md(toWorld, nt[1] * scale)), mirror * motorHandedness(tangentRotor));
+                normalize(sw_md(toWorld, nt[1] * scale)), mirror * handedness);
+}
+
+// The fallback with the paper's vertex (handedness in the sign of the scalar part).
+mat3x4 motorScaledVertex(motor toWorld, vec3 scale, vec3 position, vec4 tangentRotor) {
+  return motorScaledRotorVertex(toWorld, scale, position, tangentRotor, motorHandedness(tangentRotor));
 }
 
 // Motor skinning: the weighted blend of four joint motors along the shortest arc,
@@ -121,11 +128,7 @@ mat3x4 motorCompactVertex(motor toWorld, float scale, vec3 position, vec4 frame)
 // motorScaledVertex's fallback (non-uniform or negative scale) with the compact frame.
 mat3x4 motorCompactScaledVertex(motor toWorld, vec3 scale, vec3 position, vec4 frame) {
   mat2x4 r = compactRotor(frame);
-  vec3 worldPosition = sw_mp(toWorld, position * scale);
-  mat2x3 nt = extractNormalTangent(motor(r[0], vec4(0.0)));
-  float mirror = sign(scale.x * scale.y * scale.z);
-  return mat3x4(worldPosition, 0.0, normalize(sw_md(toWorld, nt[0] / scale)), 0.0,
-                normalize(sw_md(toWorld, nt[1] * scale)), mirror * r[1].x);
+  return motorScaledRotorVertex(toWorld, scale, position, r[0], r[1].x);
 }
 
 // Skinned vertex of motor_c (world-space palette): the position dequantised per vertex (a
@@ -143,6 +146,25 @@ mat3x4 motorCompactSkinnedVertexReference(motor toWorld, motor j0, motor j1, mot
                                           vec4 frame) {
   return motorCompactVertex(gp_mm(toWorld, motorBlendJoints(j0, j1, j2, j3, weights)), scale,
                             compactPosition(position, dequant), frame);
+}
+
+// ---- motor_cf: the rotor carried to the fragment shader (frame_shading.glsl) ----------------
+
+// Rigid vertex of motor_cf: [0].xyz world position, [1] the world tangent rotor, the draw's
+// rotor times the vertex's, with the vertex rotor's sign (compactSignedRotor): no normal or
+// tangent is extracted per vertex. Left-multiplying by one unit rotor keeps every dot
+// product, so a triangle whose rotors share a hemisphere still does in world space.
+mat2x4 motorCompactRotorVertex(motor toWorld, float scale, vec3 position, vec4 frame) {
+  vec4 r = compactSignedRotor(frame);
+  return mat2x4(sw_mp(toWorld, position * scale), 0.0, gp_rr(toWorld, motor(r, vec4(0.0)))[0]);
+}
+
+// Skinned vertex of motor_cf (world-space palette; the palette's motors are put in one
+// hemisphere on the CPU so that neighbouring vertices blend to rotors of one sign).
+mat2x4 motorCompactRotorSkinnedVertex(motor j0, motor j1, motor j2, motor j3, vec4 weights,
+                                      float scale, vec3 position, vec4 dequant, vec4 frame) {
+  return motorCompactRotorVertex(motorBlendJoints(j0, j1, j2, j3, weights), scale,
+                                 compactPosition(position, dequant), frame);
 }
 
 #endif  // MB_MOTOR_TRANSFORM_GLSL

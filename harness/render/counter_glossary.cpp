@@ -40,6 +40,8 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"PipelineStats", "zeroScalarFrames", "vertices", "motor pipeline: tangent frames whose rotor scalar was exactly 0 (a 180-degree turn of the basis frame); handedness is kept by the sign bit and |scalar| raised to 1/32767 so it survives packing"},
       {"PipelineStats", "biasedFrames", "vertices", "int16 frame formats (qtangent, motor_q, hybrid): frames whose scalar |s| (rotor) or |w| (quaternion) the bias rule raised to 1/32767 so the handedness sign survives packing"},
       {"PipelineStats", "scaleFallbackInstances", "instances", "motor pipelines: instances of the last render whose scale (node world x instance) is non-uniform or negative, drawn with the per-leaf scale fallback (MB_SCALE_FALLBACK, a vec3 scale per instance)"},
+      {"PipelineStats", "rotorSplitVertices", "vertices", "motor_cf: vertices duplicated so that every triangle's three tangent rotors lie in one hemisphere and interpolate without passing through zero (a rotor field around a torus' tube comes back negated)"},
+      {"PipelineStats", "rotorUnresolvedTriangles", "triangles", "motor_cf: triangles whose corner frames differ by more than 180 degrees, so no choice of signs keeps all three rotors in one hemisphere; their fragments interpolate a shortened rotor (forward.fs normalises it)"},
       // LoadStats (pipelines/scene/scene.h): what the loader had to fix; `inspect` lists them.
       {"LoadStats", "flatNormalsGenerated", "primitives", "primitives without NORMAL: flat normals generated"},
       {"LoadStats", "tangentsGenerated", "primitives", "normal-mapped primitives without TANGENT: tangents generated from the uvs"},

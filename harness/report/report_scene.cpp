@@ -66,7 +66,9 @@ json fallbacksJson(const PipelineStats& s) {
           {"shearMatrixNodes", s.shearMatrixNodes},
           {"zeroScalarFrames", s.zeroScalarFrames},
           {"biasedFrames", s.biasedFrames},
-          {"scaleFallbackInstances", s.scaleFallbackInstances}};
+          {"scaleFallbackInstances", s.scaleFallbackInstances},
+          {"rotorSplitVertices", s.rotorSplitVertices},
+          {"rotorUnresolvedTriangles", s.rotorUnresolvedTriangles}};
 }
 
 std::string timeText(float t) {

@@ -82,10 +82,10 @@ std::vector<std::vector<PositionCube>> primitiveCubes(const Scene& scene) {
   return out;
 }
 
-void quantizePosition(const glm::vec3& p, const PositionCube& cube, int16_t out[4]) {
+void quantizePosition(const glm::vec3& p, const PositionCube& cube, int16_t out[4], float w) {
   const glm::vec3 q = (p - cube.center) / cube.extent;
   for (int i = 0; i < 3; ++i) out[i] = gl::snorm16(q[i]);
-  out[3] = 0;
+  out[3] = gl::snorm16(w);
 }
 
 glm::vec3 dequantizePosition(const int16_t q[4], const PositionCube& cube) {
@@ -146,17 +146,29 @@ RotorFrame decodeRotorFrame(uint32_t word) {
   return {glm::vec4(d[0].x, d[0].y, d[0].z, d[0].w), d[1].x};
 }
 
+uint32_t encodeSignedRotorFrame(const glm::vec4& rotor) {
+  const uint32_t word = encodeRotorFrame(rotor, false);  // the bit plays no part in the search
+  return glm::dot(decodeRotorFrame(word).rotor, rotor) < 0.0f ? word | 512u << 20 : word;
+}
+
+glm::vec4 decodeSignedRotorFrame(uint32_t word) {
+  const glm::vec4 f = wordFields(word);
+  const CS::vec4 r = shader().compactSignedRotor(CS::vec4(f.x, f.y, f.z, f.w));
+  return {r.x, r.y, r.z, r.w};
+}
+
 std::vector<gl::PackedAttribute> attributes() {
   return {{4, GL_SHORT, true}, {4, GL_UNSIGNED_INT_2_10_10_10_REV, false}, {2, GL_HALF_FLOAT, false}};
 }
 
 std::vector<uint8_t> interleave(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& frames,
-                                const std::vector<glm::vec2>& uv0, const PositionCube& cube) {
+                                const std::vector<glm::vec2>& uv0, const PositionCube& cube,
+                                const std::vector<float>& positionW) {
   std::vector<uint8_t> out;
   out.reserve(positions.size() * kVertexBytes);
   for (size_t v = 0; v < positions.size(); ++v) {
     int16_t p[4];
-    quantizePosition(positions[v], cube, p);
+    quantizePosition(positions[v], cube, p, positionW.empty() ? 0.0f : positionW[v]);
     const uint16_t uv[2] = {uint16_t(glm::packHalf1x16(uv0[v].x)), uint16_t(glm::packHalf1x16(uv0[v].y))};
     gl::appendBytes(out, p, 4);
     gl::appendBytes(out, &frames[v], 1);

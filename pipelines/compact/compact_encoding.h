@@ -24,8 +24,8 @@ struct PositionCube {
 PositionCube positionCube(const std::vector<glm::vec3>& positions);
 // Per mesh, per primitive: the cube its positions are quantised in (what its draws fold).
 std::vector<std::vector<PositionCube>> primitiveCubes(const Scene& scene);
-// SNORM16 of (p - center) / extent; w = 0.
-void quantizePosition(const glm::vec3& p, const PositionCube& cube, int16_t out[4]);
+// SNORM16 of (p - center) / extent; w = SNORM16 of `w` (motor_cf: the handedness, else 0).
+void quantizePosition(const glm::vec3& p, const PositionCube& cube, int16_t out[4], float w = 0.0f);
 // What the GPU reads back (GL's SNORM rule), dequantised.
 glm::vec3 dequantizePosition(const int16_t q[4], const PositionCube& cube);
 
@@ -50,12 +50,17 @@ struct RotorFrame {
   float handedness = 1.0f;
 };
 RotorFrame decodeRotorFrame(uint32_t word);
+// motor_cf's frame: the rotor WITH its sign (interpolated by the rasteriser); the reflection
+// bit of motor_c's word says "negate the decoded rotor" (shaders: compactSignedRotor).
+uint32_t encodeSignedRotorFrame(const glm::vec4& rotor);
+glm::vec4 decodeSignedRotorFrame(uint32_t word);
 
 // Vertex formats in location order: position, frame, uv0.
 std::vector<gl::PackedAttribute> attributes();
 
-// The 16-byte stream. `frames` and `uv0` have positions.size() entries.
+// The 16-byte stream. `frames`, `uv0` and a non-empty `positionW` have positions.size() entries.
 std::vector<uint8_t> interleave(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& frames,
-                                const std::vector<glm::vec2>& uv0, const PositionCube& cube);
+                                const std::vector<glm::vec2>& uv0, const PositionCube& cube,
+                                const std::vector<float>& positionW = {});
 
 }  // namespace mb::compact

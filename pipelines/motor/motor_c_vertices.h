@@ -18,3 +18,18 @@ struct CompactStream {
 CompactStream interleaveCompact(const Primitive& p);
 
 }  // namespace mb::motor
+
+namespace mb::motor {
+
+// motor_cf's vertices (issue 29): motor_c's 16-byte layout with the rotor's sign chosen per
+// triangle for interpolation (signRotorsForInterpolation, which may split vertices: the
+// primitive to upload comes with its bytes), the frame word's extra bit negating the rotor
+// and the handedness in the position's w.
+struct SignedCompactStream {
+  Primitive primitive;         // `p` with its split vertices
+  std::vector<uint8_t> bytes;  // 16 bytes per vertex of `primitive`
+  int zeroScalarFrames = 0, splitVertices = 0, unresolvedTriangles = 0;
+};
+SignedCompactStream interleaveCompactSigned(const Primitive& p);
+
+}  // namespace mb::motor

@@ -19,7 +19,14 @@
 // rigid draws upload the world motor composed with a translation by scale * the primitive's
 // cube center and the scale times its extent, so no dequantisation runs per vertex; skinned and
 // instanced draws upload the cube as u_Dequant.
+// motor_cf (MotorVariant::fragmentRotor): motor_c's bytes with the rotors signed per triangle
+// (rotor_signs.h: vertices split where needed, PipelineStats::rotorSplitVertices), the world
+// tangent rotor passed to forward.fs instead of a normal and a tangent; the joint palette put in
+// one hemisphere so neighbouring vertices blend to rotors of one sign; draws on the scale
+// fallback extract per vertex (a non-uniform scale is no rotation).
 #include "pipelines/motor/motor_pipeline.h"
+
+#include <map>
 
 #include "pipelines/compact/compact_encoding.h"
 #include "pipelines/gl/gpu_geometry.h"
@@ -73,6 +80,8 @@ private:
   void uploadPalettes();
   void streamInstances();
   void setDequant(const gl::Program& program, const gl::DrawItem& d);
+  void addVariantDefines(gl::Defines& defines, bool scaleFallback) const;
+  void uploadSignedCompact(const Scene& scene);
   void release();
 
   MotorVariant variant_;
@@ -106,7 +115,7 @@ Status MotorPipeline::prepare(const Scene& scene) {
       if (skinned) defines.push_back({"MB_SKINNED", ""});
       if (skinned && referenceSkin_) defines.push_back({"MB_SKIN_REFERENCE", ""});
       if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
-      if (variant_.compact) defines.push_back({"MB_COMPACT", ""});
+      addVariantDefines(defines, fallback);
       auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
       if (!program) return Status::fail(program.error());
       programs_[skinned][fallback] = program.take();
@@ -115,7 +124,7 @@ Status MotorPipeline::prepare(const Scene& scene) {
   for (int fallback = 0; fallback < 2 && gl::hasInstances(scene); ++fallback) {
     gl::Defines defines{{"MB_INSTANCED", ""}};
     if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
-    if (variant_.compact) defines.push_back({"MB_COMPACT", ""});
+    addVariantDefines(defines, fallback);
     auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
     if (!program) return Status::fail(program.error());
     instanced_[fallback] = program.take();
@@ -145,8 +154,10 @@ Status MotorPipeline::prepare(const Scene& scene) {
     stats_.biasedFrames += motor::countBiasedFrames(stream.data);
     return std::move(stream.data);
   };
-  if (variant_.compact) {
-    cubes_ = compact::primitiveCubes(scene);
+  if (variant_.compact) cubes_ = compact::primitiveCubes(scene);
+  if (variant_.fragmentRotor) {
+    uploadSignedCompact(scene);
+  } else if (variant_.compact) {
     auto packed = [this](const Primitive& p) {
       motor::CompactStream stream = motor::interleaveCompact(p);
       stats_.zeroScalarFrames += stream.zeroScalarFrames;
@@ -188,7 +199,12 @@ void MotorPipeline::uploadPalettes() {
   stats_.skinBytesPerFrame = 0;
   uint64_t joints = 0;
   for (size_t i = 0; i < pose_.palettes.size(); ++i) {
-    const std::vector<float>& m = pose_.palettes[i].motors;
+    std::vector<float>& m = pose_.palettes[i].motors;
+    // motor_cf: every joint motor in the first one's hemisphere (negation changes no pose), so
+    // vertices led by different joints blend to world rotors of one sign.
+    for (size_t j = 8; variant_.fragmentRotor && j + 8 <= m.size(); j += 8)
+      if (m[0] * m[j] + m[1] * m[j + 1] + m[2] * m[j + 2] + m[3] * m[j + 3] < 0.0f)
+        for (size_t k = j; k < j + 8; ++k) m[k] = -m[k];
     paletteBuffers_.upload(i, m.data(), m.size() * sizeof(float), stats_.skinBytesPerFrame);
     joints += scene_->skins[size_t(pose_.palettes[i].skin)].joints.size();
   }
@@ -313,6 +329,34 @@ void MotorPipeline::setDequant(const gl::Program& program, const gl::DrawItem& d
   gl::uniform4f(program.uniform("u_Dequant"), &q[0], stats_.uniformBytesPerFrame);
 }
 
+void MotorPipeline::addVariantDefines(gl::Defines& defines, bool scaleFallback) const {
+  if (variant_.compact) defines.push_back({"MB_COMPACT", ""});
+  if (variant_.fragmentRotor) defines.push_back({"MB_SIGNED_ROTOR", ""});
+  if (variant_.fragmentRotor && !scaleFallback) defines.push_back({"MB_FRAGMENT_ROTOR", ""});
+}
+
+// motor_cf's geometry: every primitive through the sign pass, which may add vertices; the
+// upload reads a scene of the split meshes (nodes and materials as `scene`'s).
+void MotorPipeline::uploadSignedCompact(const Scene& scene) {
+  Scene split;
+  split.nodes = scene.nodes;
+  split.materials = scene.materials;
+  std::map<const Primitive*, std::vector<uint8_t>> bytes;
+  for (const Mesh& mesh : scene.meshes) {
+    split.meshes.push_back({mesh.name, {}});
+    for (const Primitive& p : mesh.primitives) {
+      motor::SignedCompactStream s = motor::interleaveCompactSigned(p);
+      stats_.zeroScalarFrames += s.zeroScalarFrames;
+      stats_.rotorSplitVertices += s.splitVertices;
+      stats_.rotorUnresolvedTriangles += s.unresolvedTriangles;
+      split.meshes.back().primitives.push_back(std::move(s.primitive));
+      bytes[&split.meshes.back().primitives.back()] = std::move(s.bytes);
+    }
+  }
+  geometry_.uploadPacked(split, [&bytes](const Primitive& p) { return std::move(bytes.at(&p)); },
+                         compact::attributes(), stats_);
+}
+
 void MotorPipeline::release() {
   geometry_.release();
   patches_.release();
@@ -337,6 +381,9 @@ std::unique_ptr<Pipeline> makeMotorQPipeline() {
 }
 std::unique_ptr<Pipeline> makeMotorCPipeline() {
   return makeMotorPipeline(MotorVariant{"motor_c", false, true});
+}
+std::unique_ptr<Pipeline> makeMotorCFPipeline() {
+  return makeMotorPipeline(MotorVariant{"motor_cf", false, true, true});
 }
 
 }  // namespace mb

@@ -11,10 +11,13 @@ struct MotorVariant {
   std::string name = "motor";
   bool quantizedFrame = false;  // tangent rotor as int16x4 SNORM (motor_q_vertices.h)
   bool compact = false;         // motor_c: 16-byte vertices (motor_c_vertices.h, MB_COMPACT)
+  bool fragmentRotor = false;   // motor_cf: with `compact`, the world tangent rotor is the varying
+                                // and forward.fs unpacks it (MB_SIGNED_ROTOR, MB_FRAGMENT_ROTOR)
 };
 
 std::unique_ptr<Pipeline> makeMotorPipeline(const MotorVariant& variant);
 std::unique_ptr<Pipeline> makeMotorPipeline();   // the paper's form
 std::unique_ptr<Pipeline> makeMotorQPipeline();  // motor_q: quantized frame
 std::unique_ptr<Pipeline> makeMotorCPipeline();  // motor_c: 16-byte vertex, 4-byte rotor
+std::unique_ptr<Pipeline> makeMotorCFPipeline();  // motor_cf: motor_c, rotor to the fragment shader
 }
