@@ -11,7 +11,8 @@
 // With MB_FRAGMENT_ROTOR (motor_cf, issue 29) v_worldNormal and v_worldTangent are replaced by
 //   v_worldRotor     vec4   the world tangent rotor (s, e23, e31, e12), signed so that a
 //                           triangle's three rotors lie in one hemisphere (rotor_signs.h)
-//   v_handedness     float  +1 / -1 (the bitangent's sign)
+//   v_handedness     float  +1 / -1 (the bitangent's sign), sent as v_worldPositionHandedness.w
+//                           (one vec4 with the position: 5 vec4 slots instead of 6)
 // and the frame is unpacked here (frame_shading.glsl) instead of in the vertex stage.
 //
 // Uniforms (bound by pipelines/gl/scene_textures.h: setFrameUniforms + bindMaterial):
@@ -28,11 +29,13 @@
 #include "ggx.glsl"
 #include "frame_shading.glsl"
 
-in vec3 v_worldPosition;
 #ifdef MB_FRAGMENT_ROTOR
+in vec4 v_worldPositionHandedness;
+#define v_worldPosition v_worldPositionHandedness.xyz
+#define v_handedness v_worldPositionHandedness.w
 in vec4 v_worldRotor;
-in float v_handedness;
 #else
+in vec3 v_worldPosition;
 in vec3 v_worldNormal;
 in vec4 v_worldTangent;
 #endif

@@ -32,9 +32,13 @@ vec3 tbnShadingNormal(vec3 normal, vec4 tangent, vec3 m, float facing) {
   return normalize(mat3(t, b, n) * m);
 }
 
-// The normal of an interpolated (shorter than unit, any sign) tangent rotor.
-vec3 rotorSurfaceNormal(vec4 rotor, float facing) {
-  return extractNormalTangent(motor(normalize(rotor), vec4(0.0)))[0] * (2.0 * facing);
+// The normal of an interpolated (shorter than unit, any sign) tangent rotor: R z ~R of a rotor
+// R = (s, e23, e31, e12) is |R|^2 times the unit rotor's (extractNormalTangent's normal with
+// its 0.5 written as 0.5 |R|^2), and the normalize() that follows removes the |R|^2.
+vec3 rotorSurfaceNormal(vec4 r, float facing) {
+  vec3 n = vec3(r.y * r.w - r.x * r.z, r.z * r.w + r.y * r.x,
+                0.5 * (r.x * r.x + r.w * r.w - r.y * r.y - r.z * r.z));
+  return normalize(n) * facing;
 }
 
 // `handedness` +1 / -1: the bitangent's sign (a rotor cannot mirror). extractNormalTangent's

@@ -86,11 +86,11 @@ layout(std430, binding = 0) readonly buffer MotorJoints { vec4 u_Joints[]; };
 motor jointMotor(uint j) { return motor(u_Joints[2u * j], u_Joints[2u * j + 1u]); }
 #endif
 
-out vec3 v_worldPosition;
 #ifdef MB_FRAGMENT_ROTOR
+out vec4 v_worldPositionHandedness;  // forward.fs's v_worldPosition and v_handedness in one slot
 out vec4 v_worldRotor;
-out float v_handedness;
 #else
+out vec3 v_worldPosition;
 out vec3 v_worldNormal;
 out vec4 v_worldTangent;
 #endif
@@ -122,8 +122,8 @@ void main() {
 #endif
 #ifdef MB_FRAGMENT_ROTOR
   mat2x4 v = motorCompactRotorVertex(toWorld, u_Scale, position, a_compactFrame);
+  v_worldPositionHandedness = vec4(v[0].xyz, a_position.w);
   v_worldRotor = v[1];
-  v_handedness = a_position.w;
 #elif defined(MB_SIGNED_ROTOR)  // with MB_SCALE_FALLBACK
   mat3x4 v = motorScaledRotorVertex(toWorld, u_Scale, position, compactSignedRotor(a_compactFrame),
                                     a_position.w);
@@ -137,8 +137,8 @@ void main() {
 #else
   mat3x4 v = motorRigidVertex(toWorld, u_Scale, a_position, a_tangentRotor);
 #endif
-  v_worldPosition = v[0].xyz;
 #ifndef MB_FRAGMENT_ROTOR
+  v_worldPosition = v[0].xyz;
   v_worldNormal = v[1].xyz;
   v_worldTangent = v[2];
 #endif

@@ -167,4 +167,12 @@ mat2x4 motorCompactRotorSkinnedVertex(motor j0, motor j1, motor j2, motor j3, ve
                                  compactPosition(position, dequant), frame);
 }
 
+// The paper's skin form (MB_SKIN_REFERENCE) of motorCompactRotorSkinnedVertex.
+mat2x4 motorCompactRotorSkinnedVertexReference(motor toWorld, motor j0, motor j1, motor j2, motor j3,
+                                               vec4 weights, float scale, vec3 position, vec4 dequant,
+                                               vec4 frame) {
+  return motorCompactRotorVertex(gp_mm(toWorld, motorBlendJoints(j0, j1, j2, j3, weights)), scale,
+                                 compactPosition(position, dequant), frame);
+}
+
 #endif  // MB_MOTOR_TRANSFORM_GLSL

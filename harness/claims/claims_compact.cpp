@@ -33,21 +33,22 @@ void notMeasurable(Claim& c, const std::string& why) {
   c.measured = "-";
 }
 
-// Worst PSNR against matrix over the scenes at rest (skinned meshes in their bind pose, where
-// both skinning methods agree), per pipeline.
-Result<std::pair<double, double>> worstPsnr(const std::vector<std::string>& scenes) {
+// Worst PSNR against `base` over the scenes at rest (skinned meshes in their bind pose, where
+// both skinning methods agree), per pipeline of `pair`.
+Result<std::pair<double, double>> worstPsnr(const std::vector<std::string>& scenes, const std::string& base,
+                                            const std::string (&pair)[2]) {
   double worst[2] = {1e300, 1e300};
   for (const std::string& name : scenes) {
     auto scene = loadScene(name);
     if (!scene) return Result<std::pair<double, double>>::fail(scene.error());
     FrameSettings s;
     s.width = s.height = 128;
-    auto base = renderFrame(*scene, "matrix", s);
-    if (!base) return Result<std::pair<double, double>>::fail(base.error());
+    auto baseFrame = renderFrame(*scene, base, s);
+    if (!baseFrame) return Result<std::pair<double, double>>::fail(baseFrame.error());
     for (int i = 0; i < 2; ++i) {
-      auto f = renderFrame(*scene, i ? kMatrix : kMotor, s);
+      auto f = renderFrame(*scene, pair[i], s);
       if (!f) return Result<std::pair<double, double>>::fail(f.error());
-      auto m = compareImages(base->image, f->image);
+      auto m = compareImages(baseFrame->image, f->image);
       if (!m) return Result<std::pair<double, double>>::fail(m.error());
       if (std::isfinite(m->psnr)) worst[i] = std::min(worst[i], m->psnr);
     }
@@ -62,6 +63,71 @@ std::string isaCell(const nlohmann::json& isa, const std::string& pipeline, cons
   const nlohmann::json* s = report::isaRow(isa, pipeline, "rigid", family);
   return s ? s->value("instructions", nlohmann::json()).dump() + " / " + s->value("vgprs", nlohmann::json()).dump()
            : "-";
+}
+
+// The paper's suggestion (section "Fragment Shader"): pass the tangent rotor itself to the
+// fragment shader, which saves the vertex stage's extraction, one varying and the fragment
+// stage's orthogonalisation. motor_cf against motor_c (the same 16 bytes, the frame unpacked per
+// vertex): counted ops of the rigid vertex and of a normal-mapped fragment's shading normal,
+// the varyings from the isa JSON's SPIR-V, and what the interpolated rotor does to the image.
+Claim fragmentRotorClaim(const nlohmann::json& isa, const std::vector<std::string>& scenes) {
+  Claim c{"fragment_rotor", "Compact vertices",
+          "passing the tangent rotor to the fragment shader saves the vertex extraction, one varying and the "
+          "fragment orthogonalisation"};
+  c.paper = "fewer ops per vertex, one varying less, no orthogonalisation per fragment (not counted)";
+  c.origin = "compact";
+  c.method = "motor_cf vs motor_c (both 16-byte vertices): rigid vertex to clip counted; the shading normal of a "
+             "normal-mapped fragment counted (rotorShadingNormal vs tbnShadingNormal, shaders/frame_shading.glsl); "
+             "varyings = the rigid program's fragment inputs in SPIR-V (isa JSON); worst PSNR against motor_c at "
+             "rest, built-in normal_torus, textured_box, skinned_tube, dense_torus and crowd at 128x128";
+  std::string zero;
+  const std::map<std::string, double> rigid = opsPerPipeline("rigid", false, zero);
+  OpCounts frag[2];
+  for (const opsv::KernelRow& k : vertexOps().kernels) {
+    if (k.kernel.function == "rotorShadingNormal") frag[0] = k.counted;
+    if (k.kernel.function == "tbnShadingNormal") frag[1] = k.counted;
+  }
+  auto image = worstPsnr(scenes, kMotor, {"motor_cf", "motor_cf"});
+  if (!rigid.count("motor_cf") || !rigid.count(kMotor) || !image) {
+    c.verdict = Verdict::NotMeasurable;
+    c.verdictText = "not measurable here: " + (image ? "no counted rigid variant " + zero : image.error());
+    c.measured = "-";
+    return c;
+  }
+  const double vf = rigid.at("motor_cf"), vc = rigid.at(kMotor);
+  const uint64_t ff = opsv::total(frag[0]), fc = opsv::total(frag[1]);
+  const nlohmann::json* rf = isa.is_object() && !isa.value("families", nlohmann::json::array()).empty()
+                                 ? report::isaRow(isa, "motor_cf", "rigid", isa["families"][0].value("id", ""))
+                                 : nullptr;
+  const nlohmann::json* rc = rf ? report::isaRow(isa, kMotor, "rigid", isa["families"][0].value("id", "")) : nullptr;
+  const bool slots = rf && rc && rf->contains("varyingSlots") && rc->contains("varyingSlots");
+  c.measured = "vertex " + fmt("%g", vf) + " vs " + fmt("%g", vc) + " ops; fragment " + opsText(frag[0]) + " vs " +
+               opsText(frag[1]) + (slots ? "; varyings " + (*rf)["varyingSlots"].dump() + " vs " +
+                                               (*rc)["varyingSlots"].dump() + " vec4 slots"
+                                         : "") +
+               "; image vs motor_c " + psnrText(image->first);
+  c.measuredValue = {{"vertexOps", {{"motor_cf", vf}, {kMotor, vc}}},
+                     {"fragmentOps", {{"motor_cf", opsJson(frag[0])}, {kMotor, opsJson(frag[1])}}},
+                     {"worstPsnrAgainstMotorC", image->first > 1e299 ? nlohmann::json() : nlohmann::json(image->first)}};
+  if (slots)
+    c.measuredValue["varyingSlots"] = {{"motor_cf", (*rf)["varyingSlots"]}, {kMotor, (*rc)["varyingSlots"]}};
+  const bool vertexSaves = vf < vc, fragmentSaves = ff < fc;
+  const bool varyingSaves = slots && (*rf)["varyingSlots"].get<int>() < (*rc)["varyingSlots"].get<int>();
+  if (!slots) {
+    c.verdict = Verdict::Inconclusive;
+    c.verdictText = "inconclusive: no isa JSON for the varyings; vertex " + std::string(vertexSaves ? "saves" : "does not save") +
+                    ", fragment " + (fragmentSaves ? "saves" : "does not save");
+  } else if (vertexSaves && fragmentSaves && varyingSaves) {
+    c.verdict = Verdict::Reproduced;
+    c.verdictText = "reproduced: fewer ops in both stages and one vec4 varying less";
+  } else {
+    c.verdict = Verdict::Differs;
+    c.verdictText = std::string("differs: the vertex stage ") + (vertexSaves ? "saves" : "does not save") +
+                    ", the fragment stage " + (fragmentSaves ? "saves" : "does not save (the rotor is normalised and "
+                                                                         "unpacked there instead)") +
+                    ", varyings " + (varyingSaves ? "fewer" : "not fewer");
+  }
+  return c;
 }
 
 }  // namespace
@@ -103,7 +169,7 @@ std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& i
                     "renders at rest (skinned meshes in their bind pose: no skinning-method difference) of the "
                     "built-in normal_torus, textured_box, skinned_tube, dense_torus and crowd at 128x128, "
                     "compared with matrix (OpenImageIO); the worst scene per pipeline");
-  if (auto w = worstPsnr(scenes); !w) {
+  if (auto w = worstPsnr(scenes, "matrix", {kMotor, kMatrix}); !w) {
     notMeasurable(image, w.error());
   } else {
     image.measured = psnrText(w->first) + " vs " + psnrText(w->second);
@@ -163,6 +229,7 @@ std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& i
     isaRow.verdictText = "baseline: motor_c vs matrix_c per family";
   }
   out.push_back(isaRow);
+  out.push_back(fragmentRotorClaim(isa, scenes));
   return out;
 }
 

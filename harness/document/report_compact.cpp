@@ -16,6 +16,7 @@ std::string decodeKernel(const std::string& pipeline) {
   if (pipeline == "qtangent" || pipeline == "hybrid") return "qtangentFrame";
   if (pipeline == "matrix_c") return "compactMatrixFrame";
   if (pipeline == "motor_c") return "compactRotor";
+  if (pipeline == "motor_cf") return "compactSignedRotor";
   return "";
 }
 
@@ -47,9 +48,46 @@ std::string frameRatio(const json& r, const std::string& p, const std::string& b
   return fmt(ratios[ratios.size() / 2], 3) + " (" + std::to_string(ratios.size()) + ")";
 }
 
-std::string isaText(const json& r, const std::string& p, const std::string& family) {
-  const json* s = isaRow(at(r, {"isa"}), p, "rigid", family);
+std::string isaText(const json& r, const std::string& p, const std::string& family,
+                    const std::string& stage = "vertex") {
+  const json* s = isaRow(at(r, {"isa"}), p, "rigid", family, stage);
   return s ? fmt((*s)["instructions"], 6) + " / " + fmt((*s)["vgprs"], 6) : "-";
+}
+
+// The counted ops of the kernel `function` (harness/ops/vertex_kernels_fragment.cpp for the
+// fragment frame).
+std::string kernelText(const json& r, const std::string& function) {
+  for (const json& k : at(r, {"opsPerVertex", "kernels"}))
+    if (k.value("function", "") == function) return function + ": " + opsText(k["counted"]);
+  return function + ": -";
+}
+
+// Where the frame is unpacked (issue 29, item 3): the varyings the rigid program passes, the
+// counted frame per fragment and the fragment shader's ISA.
+void fragmentStageTable(Document& d, const json& r, const std::vector<std::string>& pipes,
+                        const std::vector<std::string>& families) {
+  d.paragraph("The frame per fragment: motor_cf passes the world tangent rotor (and the handedness in the "
+              "position's w) and unpacks it in forward.fs; every other pipeline passes a normal and a tangent "
+              "and re-orthogonalises them there. Varyings of the rigid program (the fragment shader's inputs "
+              "in its SPIR-V: vec4 slots / components); the counted shading normal of a fragment with and without "
+              "a normal map (shaders/frame_shading.glsl); AMD ISA instructions / VGPRs of the rigid program's fragment "
+              "shader per family.");
+  std::vector<std::string> head = {"pipeline", "varyings (slots / components)",
+                                   "frame per fragment, normal-mapped (counted)", "no normal map (counted)"};
+  for (const std::string& f : families) head.push_back("fragment ISA " + f);
+  std::vector<std::vector<Cell>> rows;
+  for (const std::string& p : pipes) {
+    const json* v = families.empty() ? nullptr : isaRow(at(r, {"isa"}), p, "rigid", families.front());
+    std::vector<Cell> row = {
+        {p},
+        {v && v->contains("varyingSlots") ? fmt((*v)["varyingSlots"], 3) + " / " + fmt((*v)["varyingComponents"], 3)
+                                          : "-"},
+        {kernelText(r, p == "motor_cf" ? "rotorShadingNormal" : "tbnShadingNormal")},
+        {kernelText(r, p == "motor_cf" ? "rotorSurfaceNormal" : "tbnSurfaceNormal")}};
+    for (const std::string& f : families) row.push_back({isaText(r, p, f, "fragment")});
+    rows.push_back(std::move(row));
+  }
+  d.table(head, rows);
 }
 
 }  // namespace
@@ -63,7 +101,7 @@ void compactSection(Document& d, const json& r) {
   const json& sum = r["summary"];
   std::vector<std::string> families;
   for (const json& f : at(r, {"isa", "families"})) families.push_back(f.value("id", "?"));
-  d.paragraph("Per glTF pipeline (issue 29: `matrix_c` and `motor_c` are the 16-byte vertices): bytes per vertex of "
+  d.paragraph("Per glTF pipeline (issue 29: `matrix_c`, `motor_c` and `motor_cf` are the 16-byte vertices): bytes per vertex of "
               "the normal-mapped primitives from the uploads (median over scenes); image difference against " +
               pipes.front() +
               " over the frames where both should agree (skinning-method frames apart, as in the summary): worst "
@@ -101,6 +139,7 @@ void compactSection(Document& d, const json& r) {
     rows.push_back(std::move(row));
   }
   d.table(head, rows);
+  fragmentStageTable(d, r, pipes, families);
 }
 
 }  // namespace mb::report

@@ -10,10 +10,10 @@ namespace mb::report {
 using nlohmann::json;
 
 const json* isaRow(const json& isa, const std::string& pipeline, const std::string& label,
-                   const std::string& family) {
+                   const std::string& family, const std::string& stage) {
   if (!isa.contains("shaders") || !isa["shaders"].is_array()) return nullptr;
   for (const json& s : isa["shaders"]) {  // by reference: the row outlives the loop
-    if (s.value("stage", "") != "vertex" || s.value("pipeline", "") != pipeline ||
+    if (s.value("stage", "") != stage || s.value("pipeline", "") != pipeline ||
         s.value("familyId", "") != family)
       continue;
     const json labels = s.value("labels", json::array({s.value("variant", "")}));

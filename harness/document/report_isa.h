@@ -15,6 +15,6 @@ void isaSection(Document& d, const nlohmann::json& report);
 // The vertex-shader row of `motorbench isa` JSON `isa` for (pipeline, variant label, family
 // id), or null (also used by the compact table and claims).
 const nlohmann::json* isaRow(const nlohmann::json& isa, const std::string& pipeline, const std::string& label,
-                             const std::string& family);
+                             const std::string& family, const std::string& stage = "vertex");
 
 }  // namespace mb::report

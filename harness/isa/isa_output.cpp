@@ -29,7 +29,8 @@ json programKeys(const Program& p, const std::string& stage) {
   return {{"pipeline", p.pipeline}, {"program", p.program}, {"variant", p.variant},
           {"labels", p.labels}, {"stage", stage},
           {"source", "shaders/" + (stage == "fragment" ? p.fragmentFile : p.vertexFile)},
-          {"defines", defineList(p.defines)}};
+          {"defines", defineList(p.defines)}, {"varyingSlots", p.varyingSlots},
+          {"varyingComponents", p.varyingComponents}};
 }
 
 std::string cell(const ShaderStats& s) {

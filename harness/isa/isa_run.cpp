@@ -257,10 +257,12 @@ Result<IsaRun> runIsa(const IsaOptions& options) {
 
   std::vector<CompiledProgram> compiled;
   std::vector<int> interpolants;
-  for (const Program& p : run.programs) {
+  for (Program& p : run.programs) {
     auto c = compileProgram(p);
     if (!c) return R::fail(c.error());
     interpolants.push_back(int(c->fragment.interface.inputs.size()));
+    p.varyingSlots = interpolants.back();
+    for (const VertexInput& in : c->fragment.interface.inputs) p.varyingComponents += int(in.components);
     compiled.push_back(c.take());
   }
   spirv::TempDir dir("motorbench-isa");

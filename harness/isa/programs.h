@@ -19,6 +19,9 @@ struct Program {
   std::vector<std::string> labels;  // every label of shaderVariants() this program stands for
   std::string vertexFile, fragmentFile;  // relative to the shader folder
   gl::Defines defines;        // given to both stages, as gl::Program::fromFiles does
+  // The varyings (the fragment shader's inputs, from its SPIR-V; set by runIsa): locations
+  // (vec4 slots) and their 32-bit components.
+  int varyingSlots = 0, varyingComponents = 0;
 };
 
 // In table order; a (pipeline, file, defines) listed twice under two labels comes once, under

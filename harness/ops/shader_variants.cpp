@@ -132,6 +132,39 @@ void compactVariants(std::vector<ShaderVariant>& out) {
   });
 }
 
+// motor_cf (issue 29): motor_c's bytes, the world tangent rotor as the varying (forward.fs
+// unpacks it per fragment: frame_shading.glsl); the scale fallback extracts per vertex.
+void fragmentRotorVariants(std::vector<ShaderVariant>& out) {
+  const std::string pclip = "motorWorldToClipConstants", cube = "compactPosition";
+  const std::string perFragment = "no frame extracted per vertex: forward.fs runs rotorShadingNormal per fragment";
+  const D rotor = {{"MB_COMPACT", ""}, {"MB_SIGNED_ROTOR", ""}, {"MB_FRAGMENT_ROTOR", ""}};
+  auto with = [](D d, std::initializer_list<std::pair<std::string, std::string>> more) {
+    d.insert(d.end(), more);
+    return d;
+  };
+  const D scaled = {{"MB_COMPACT", ""}, {"MB_SIGNED_ROTOR", ""}, {"MB_SCALE_FALLBACK", ""}};
+  out.insert(out.end(), {
+      {"motor_cf", "motor.vs", rotor, "rigid", {"motorCompactRotorVertex", pclip}, perFragment},
+      {"motor_cf", "motor.vs", with(rotor, {{"MB_SKINNED", ""}}), "skinned", {"motorCompactRotorSkinnedVertex", pclip},
+       "= skinned, world palette; " + perFragment},
+      {"motor_cf", "motor.vs", with(rotor, {{"MB_SKINNED", ""}, {"MB_SKIN_REFERENCE", ""}}), "skinned, reference",
+       {"motorCompactRotorSkinnedVertexReference", pclip}, "the paper's: gp(toWorld, blend) per vertex"},
+      {"motor_cf", "motor.vs", scaled, "scaled fallback", {"compactSignedRotor", "motorScaledRotorVertex", pclip},
+       "a non-uniform scale is no rotation: normal and tangent per vertex, as motor_c"},
+      {"motor_cf", "motor.vs", with(scaled, {{"MB_SKINNED", ""}}), "skinned+scaled",
+       {"motorBlendJoints", cube, "compactSignedRotor", "motorScaledRotorVertex", pclip}},
+      {"motor_cf", "motor_patch.vs", {}, "bezier patch", {"bezierPatch", "motorPatchVertex", pclip}, kTexels},
+      {"motor_cf", "motor.vs", with(rotor, {{"MB_SKINNED", ""}}), "skinned, world palette",
+       {"motorCompactRotorSkinnedVertex", pclip}, "joint world * inverse bind motors"},
+      {"motor_cf", "motor_patch.vs", {{"MB_SCALE_FALLBACK", ""}}, "bezier patch, scaled fallback",
+       {"bezierPatch", "motorScaledPatchVertex", pclip}, kTexels},
+      {"motor_cf", "motor.vs", with(rotor, {{"MB_INSTANCED", ""}}), "rigid, instanced",
+       {cube, "motorCompactRotorVertex", pclip}, kInstanced},
+      {"motor_cf", "motor.vs", with(scaled, {{"MB_INSTANCED", ""}}), "scaled fallback, instanced",
+       {cube, "compactSignedRotor", "motorScaledRotorVertex", pclip}, kInstanced},
+  });
+}
+
 void curvedVariants(std::vector<ShaderVariant>& out) {
   out.insert(out.end(), {
       {"s3_matrix", "curved_matrix.vs", {{"MB_KAPPA", "1"}}, "S3 instance", {"curvedMatrixVertex"}, kCurvedMain},
@@ -149,6 +182,7 @@ std::vector<ShaderVariant> shaderVariants() {
   motorVariants(out);
   affineVariants(out);
   compactVariants(out);
+  fragmentRotorVariants(out);
   curvedVariants(out);
   return out;
 }

@@ -109,6 +109,43 @@ std::vector<VertexKernel> motorKernels() {
        "mat3x4 v = motorCompactScaledVertex(motor(u_world[0], u_world[1]), u_scale3, a_position, "
        "a_compactFrame);" + store,
        motorIncl + kCompactAttribs + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n", ""},
+      {"motor_cf", "signed rotor decode (4 bytes)", "compactSignedRotor",
+       [&] { P.compactSignedRotor(in.compactRotor); }, "o_0 = compactSignedRotor(a_compactFrame);",
+       motorIncl + kCompactAttribs, "compactRotor, then its bit negates the rotor (the sign chosen for interpolation)"},
+      {"motor_cf", "rigid vertex, rotor out", "motorCompactRotorVertex",
+       [&] { P.motorCompactRotorVertex(in.toWorld, 1.25, in.position, in.compactRotor); },
+       "mat2x4 v = motorCompactRotorVertex(motor(u_world[0], u_world[1]), u_scale, a_position, "
+       "a_compactFrame); o_0 = v[0]; o_1 = v[1];",
+       motorIncl + kCompactAttribs + "uniform vec4 u_world[2]; uniform float u_scale;\n",
+       "compactSignedRotor + sw_mp + gp_rr; the frame is unpacked per fragment (rotorShadingNormal)"},
+      {"motor_cf", "skinned vertex, rotor out", "motorCompactRotorSkinnedVertex",
+       [&] {
+         P.motorCompactRotorSkinnedVertex(in.joints[0], in.joints[1], in.joints[2], in.joints[3],
+                                          PC::vec4(0.4, 0.3, 0.2, 0.1), 1.25, in.position, in.dequant,
+                                          in.compactRotor);
+       },
+       "mat2x4 v = motorCompactRotorSkinnedVertex(motor(u_j[0], u_j[1]), motor(u_j[2], u_j[3]), "
+       "motor(u_j[4], u_j[5]), motor(u_j[6], u_j[7]), a_weights, u_scale, a_position, u_dequant, "
+       "a_compactFrame); o_0 = v[0]; o_1 = v[1];",
+       motorIncl + kCompactAttribs + "uniform vec4 u_j[8]; uniform float u_scale;\n",
+       "motorBlendJoints + compactPosition + motorCompactRotorVertex"},
+      {"motor_cf", "skinned vertex, reference, rotor out", "motorCompactRotorSkinnedVertexReference",
+       [&] {
+         P.motorCompactRotorSkinnedVertexReference(in.toWorld, in.joints[0], in.joints[1], in.joints[2],
+                                                   in.joints[3], PC::vec4(0.4, 0.3, 0.2, 0.1), 1.25,
+                                                   in.position, in.dequant, in.compactRotor);
+       },
+       "mat2x4 v = motorCompactRotorSkinnedVertexReference(motor(u_world[0], u_world[1]), "
+       "motor(u_j[0], u_j[1]), motor(u_j[2], u_j[3]), motor(u_j[4], u_j[5]), "
+       "motor(u_j[6], u_j[7]), a_weights, u_scale, a_position, u_dequant, a_compactFrame); o_0 = v[0]; o_1 = v[1];",
+       motorIncl + kCompactAttribs + "uniform vec4 u_world[2]; uniform vec4 u_j[8]; uniform float u_scale;\n",
+       "the paper's form"},
+      {"motor_cf", "scaled vertex (fallback)", "motorScaledRotorVertex",
+       [&] { P.motorScaledRotorVertex(in.toWorld, PC::vec3(1.0, -2.0, 0.5), in.position, in.rotor, -1.0); },
+       "mat3x4 v = motorScaledRotorVertex(motor(u_world[0], u_world[1]), u_scale3, a_position, "
+       "a_tangentRotor, a_weights.x);" + store,
+       motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n",
+       "motorScaledVertex with the handedness given (motor_cf: the position's w)"},
   };
 }
 

@@ -9,10 +9,10 @@ std::string sceneOrigin(const std::string& spec) { return isBuiltinScene(spec) ?
 
 std::string skinBlendOf(const std::string& pipeline) {
   // From each pipeline's vertex shader: matrix.vs and affine.vs (affine, qtangent, hybrid,
-  // matrix_c) blend a matrix palette; motor.vs (motor, motor_q, motor_c) blends joint motors.
+  // matrix_c) blend a matrix palette; motor.vs (motor, motor_q, motor_c, motor_cf) blends joint motors.
   for (const char* lbs : {"matrix", "affine", "qtangent", "hybrid", "matrix_c"})
     if (pipeline == lbs) return "linear blend skinning";
-  for (const char* motor : {"motor", "motor_q", "motor_c"})
+  for (const char* motor : {"motor", "motor_q", "motor_c", "motor_cf"})
     if (pipeline == motor) return "motor blending";
   return "";
 }

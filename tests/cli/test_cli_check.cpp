@@ -43,15 +43,17 @@ TEST(CliCheck, CommittedGoldensPass) {
 }
 
 // A copy of shaders/ whose shared fragment shader builds the bitangent as
-// -handedness * cross(n, t): the deliberate regression of the acceptance criterion.
+// -handedness * cross(n, t), on both of its paths (frame_shading.glsl: the TBN path and
+// motor_cf's rotor path): the deliberate regression of the acceptance criterion.
 fs::path flippedHandednessShaders(const fs::path& root) {
   fs::copy(fs::path(MB_SOURCE_DIR) / "shaders", root / "shaders", fs::copy_options::recursive);
-  const fs::path fsPath = root / "shaders" / "forward.fs";
+  const fs::path fsPath = root / "shaders" / "frame_shading.glsl";
   std::string text = readText(fsPath);
-  const std::string from = "handedness * cross(", to = "-handedness * cross(";
-  size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << fsPath << " no longer contains '" << from << "'; update this test";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
+  for (const std::string from : {"* cross(n, t)", "cross(nt[0], nt[1]) *"}) {
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << fsPath << " no longer contains '" << from << "'; update this test";
+    if (at != std::string::npos) text.replace(at, from.size(), from[0] == '*' ? "* -cross(n, t)" : "-cross(nt[0], nt[1]) *");
+  }
   std::ofstream(fsPath) << text;
   return root / "shaders";
 }
@@ -65,6 +67,7 @@ TEST(CliCheck, FlippedTangentHandednessFailsWithReport) {
   EXPECT_EQ(rc, 1) << out;
   EXPECT_NE(out.find("FAIL  normal_torus.rest.matrix.png"), std::string::npos) << out;
   EXPECT_NE(out.find("FAIL  normal_torus.rest.motor.png"), std::string::npos) << out;
+  EXPECT_NE(out.find("FAIL  normal_torus.rest.motor_cf.png"), std::string::npos) << out;
   EXPECT_NE(out.find("report: "), std::string::npos) << out;
   const std::string html = readText(root / "out" / "summary.html");
   EXPECT_NE(html.find("normal_torus.rest.matrix.diff.png"), std::string::npos);

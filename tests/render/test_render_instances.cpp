@@ -16,11 +16,12 @@ using namespace mb;
 
 namespace {
 
-// matrix_c and motor_c (issue 29) compact the vertex, not the instance: as affine and motor (their
-// dequantisation is a per-draw uniform).
+// matrix_c, motor_c and motor_cf (issue 29) compact the vertex, not the instance: as affine and
+// motor (their dequantisation is a per-draw uniform).
 const std::map<std::string, uint64_t> kBytesPerInstance = {{"matrix", 128}, {"affine", 88}, {"qtangent", 88},
                                                            {"hybrid", 88},  {"matrix_c", 88}, {"motor", 36},
-                                                           {"motor_q", 36}, {"motor_c", 36}};
+                                                           {"motor_q", 36}, {"motor_c", 36},
+                                                           {"motor_cf", 36}};
 
 Scene load(const std::string& name) {
   auto s = loadScene(name);
@@ -74,7 +75,7 @@ TEST(Instances, InstancedGridStreamsEachPipelinesTransformPerInstance) {
     const Frame frame = render(scene, p);
     EXPECT_EQ(frame.stats.instances, 256u);
     EXPECT_EQ(frame.stats.drawnVertices, uint64_t(f.drawnVertices));
-    const bool motorFamily = p == "motor" || p == "motor_q" || p == "motor_c";
+    const bool motorFamily = p == "motor" || p == "motor_q" || p == "motor_c" || p == "motor_cf";
     // Instance 17 (non-uniform) and 40 (mirrored) take the motor scale fallback: vec3 scale.
     EXPECT_EQ(frame.stats.instanceBytes, motorFamily ? 254 * 36 + 2 * 44 : 256 * kBytesPerInstance.at(p));
     EXPECT_EQ(frame.stats.scaleFallbackInstances, motorFamily ? 2 : 0);
