@@ -34,26 +34,27 @@ void notMeasurable(Claim& c, const std::string& why) {
 }
 
 // Worst PSNR against `base` over the scenes at rest (skinned meshes in their bind pose, where
-// both skinning methods agree), per pipeline of `pair`.
-Result<std::pair<double, double>> worstPsnr(const std::vector<std::string>& scenes, const std::string& base,
-                                            const std::string (&pair)[2]) {
-  double worst[2] = {1e300, 1e300};
+// both skinning methods agree), per pipeline of `pipelines`; 1e300 where every image is identical.
+Result<std::vector<double>> worstPsnr(const std::vector<std::string>& scenes, const std::string& base,
+                                      const std::vector<std::string>& pipelines) {
+  using R = Result<std::vector<double>>;
+  std::vector<double> worst(pipelines.size(), 1e300);
   for (const std::string& name : scenes) {
     auto scene = loadScene(name);
-    if (!scene) return Result<std::pair<double, double>>::fail(scene.error());
+    if (!scene) return R::fail(scene.error());
     FrameSettings s;
     s.width = s.height = 128;
     auto baseFrame = renderFrame(*scene, base, s);
-    if (!baseFrame) return Result<std::pair<double, double>>::fail(baseFrame.error());
-    for (int i = 0; i < 2; ++i) {
-      auto f = renderFrame(*scene, pair[i], s);
-      if (!f) return Result<std::pair<double, double>>::fail(f.error());
+    if (!baseFrame) return R::fail(baseFrame.error());
+    for (size_t i = 0; i < pipelines.size(); ++i) {
+      auto f = renderFrame(*scene, pipelines[i], s);
+      if (!f) return R::fail(f.error());
       auto m = compareImages(baseFrame->image, f->image);
-      if (!m) return Result<std::pair<double, double>>::fail(m.error());
+      if (!m) return R::fail(m.error());
       if (std::isfinite(m->psnr)) worst[i] = std::min(worst[i], m->psnr);
     }
   }
-  return std::pair<double, double>{worst[0], worst[1]};
+  return worst;
 }
 
 std::string psnrText(double v) { return v > 1e299 ? std::string("identical") : fmt("%.1f dB", v); }
@@ -89,7 +90,7 @@ Claim fragmentRotorClaim(const nlohmann::json& isa, const std::vector<std::strin
     if (k.kernel.function == "rotorSurfaceNormal") plain[0] = k.counted;
     if (k.kernel.function == "tbnSurfaceNormal") plain[1] = k.counted;
   }
-  auto image = worstPsnr(scenes, kMotor, {"motor_cf", "motor_cf"});
+  auto image = worstPsnr(scenes, kMotor, {"motor_cf"});
   if (!rigid.count("motor_cf") || !rigid.count(kMotor) || !image) {
     c.verdict = Verdict::NotMeasurable;
     c.verdictText = "not measurable here: " + (image ? "no counted rigid variant " + zero : image.error());
@@ -107,11 +108,11 @@ Claim fragmentRotorClaim(const nlohmann::json& isa, const std::vector<std::strin
                opsText(frag[1]) + (slots ? "; varyings " + (*rf)["varyingSlots"].dump() + " vs " +
                                                (*rc)["varyingSlots"].dump() + " vec4 slots"
                                          : "") +
-               "; image vs motor_c " + psnrText(image->first);
+               "; image vs motor_c " + psnrText(image->front());
   c.measuredValue = {{"vertexOps", {{"motor_cf", vf}, {kMotor, vc}}},
                      {"fragmentOps", {{"motor_cf", opsJson(frag[0])}, {kMotor, opsJson(frag[1])}}},
                      {"fragmentOpsNoNormalMap", {{"motor_cf", opsJson(plain[0])}, {kMotor, opsJson(plain[1])}}},
-                     {"worstPsnrAgainstMotorC", image->first > 1e299 ? nlohmann::json() : nlohmann::json(image->first)}};
+                     {"worstPsnrAgainstMotorC", image->front() > 1e299 ? nlohmann::json() : nlohmann::json(image->front())}};
   if (slots)
     c.measuredValue["varyingSlots"] = {{"motor_cf", (*rf)["varyingSlots"]}, {kMotor, (*rc)["varyingSlots"]}};
   const bool vertexSaves = vf < vc, fragmentSaves = ff < fc;
@@ -180,13 +181,14 @@ std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& i
   if (auto w = worstPsnr(scenes, "matrix", {kMotor, kMatrix}); !w) {
     notMeasurable(image, w.error());
   } else {
-    image.measured = psnrText(w->first) + " vs " + psnrText(w->second);
-    image.measuredValue = {{kMotor, w->first > 1e299 ? nlohmann::json() : nlohmann::json(w->first)},
-                           {kMatrix, w->second > 1e299 ? nlohmann::json() : nlohmann::json(w->second)}};
+    const double motorPsnr = (*w)[0], matrixPsnr = (*w)[1];
+    image.measured = psnrText(motorPsnr) + " vs " + psnrText(matrixPsnr);
+    image.measuredValue = {{kMotor, motorPsnr > 1e299 ? nlohmann::json() : nlohmann::json(motorPsnr)},
+                           {kMatrix, matrixPsnr > 1e299 ? nlohmann::json() : nlohmann::json(matrixPsnr)}};
     image.verdict = Verdict::Baseline;
     image.verdictText = std::string("baseline: ") +
-                        (std::abs(w->first - w->second) < 1.0 ? "within 1 dB of each other"
-                         : w->first > w->second                ? "the 4-byte rotor costs less image"
+                        (std::abs(motorPsnr - matrixPsnr) < 1.0 ? "within 1 dB of each other"
+                         : motorPsnr > matrixPsnr                ? "the 4-byte rotor costs less image"
                                                                : "the octahedral frame costs less image");
   }
   out.push_back(image);
