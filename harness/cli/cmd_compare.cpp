@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
@@ -157,9 +156,7 @@ int runCompare(const std::vector<std::string>& argv) {
                               : thresholdsGiven ? nlohmann::json(verdict.reason) : nlohmann::json(nullptr)}}},
       {"stats", {toJson(frames[0].stats), toJson(frames[1].stats)}}};  // in --pipelines order
   std::string jsonPath = (fs::path(dir) / "metrics.json").string();
-  std::ofstream out(jsonPath);
-  out << j.dump(2) << "\n";
-  if (!out.good()) return fail(jsonPath + ": write failed");
+  if (Status w = writeTextFile(jsonPath, j.dump(2) + "\n"); !w) return fail(w.error());
   // What was measured, one line each, then the verdict line.
   std::printf("%s: %s vs %s, %dx%d\n", scene.source.c_str(), names[0].c_str(), names[1].c_str(), metrics->width,
               metrics->height);

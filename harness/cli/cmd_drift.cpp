@@ -5,11 +5,11 @@
 // one renormalisation, counted by execution.
 #include <cstdio>
 #include <optional>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "harness/cli/command.h"
+#include "harness/cli/output_paths.h"
 #include "harness/options/args.h"
 #include "harness/render/frame_options.h"
 #include "harness/report/report_drift.h"
@@ -47,8 +47,7 @@ int runDrift(const std::vector<std::string>& argv) {
   if (const auto path = args.get("json")) {
     nlohmann::json out = j;
     out["tool"] = "motorbench drift";
-    std::ofstream file(*path);
-    if (!file || !(file << out.dump(2) << "\n")) return fail("cannot write " + *path);
+    if (Status w = writeTextFile(*path, out.dump(2) + "\n"); !w) return fail(w.error());
   }
   return 0;
 }

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include "harness/claims/corpus_stats.h"
 #include "harness/options/args.h"
@@ -163,14 +162,12 @@ int runInspect(const std::vector<std::string>& argv) {
   if (const nlohmann::json kinds = mb::claims::aggregateByKind(files); !kinds.is_null()) aggregate["byKind"] = kinds;
   if (stats.size() > 1) printAggregate(aggregate);
   if (auto path = args.get("json")) {
-    std::ofstream out(*path);
     // replace: error messages may quote file bytes or paths that are not UTF-8.
     const nlohmann::json shardJson = {{"index", shard.index}, {"count", shard.count}, {"inputs", all}};
-    out << nlohmann::json{{"files", files}, {"aggregate", aggregate}, {"shard", shardJson}}.dump(2, ' ', false,
-                                                                        nlohmann::json::error_handler_t::replace)
-        << "\n";
-    if (!out.flush()) {
-      std::fprintf(stderr, "motorbench inspect: %s: cannot write\n", path->c_str());
+    const std::string text = nlohmann::json{{"files", files}, {"aggregate", aggregate}, {"shard", shardJson}}.dump(
+                                 2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    if (mb::Status w = mb::writeTextFile(*path, text); !w) {
+      std::fprintf(stderr, "motorbench inspect: %s\n", w.error().c_str());
       return 2;
     }
   }

@@ -52,9 +52,8 @@ int mergeInspectRuns(const std::vector<std::string>& inputs, const std::string& 
   }
   json merged = {{"files", files}, {"aggregate", aggregateFileJson(files)},
                  {"shard", {{"count", parts[0].count}, {"inputs", parts[0].inputs}, {"merged", inputs}}}};
-  std::ofstream o(out);
-  o << merged.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
-  if (!o.flush()) return fail(out + ": cannot write the merged JSON file");
+  if (!writeTextFile(out, merged.dump(2, ' ', false, json::error_handler_t::replace) + "\n"))
+    return fail(out + ": cannot write the merged JSON file");
   std::printf("merge: %d shard(s), %zu file(s), %d failed -> %s\n", parts[0].count, files.size(), failed, out.c_str());
   return failed ? 1 : 0;
 }

@@ -62,9 +62,8 @@ int runWorker(const Args& args, const report::Options& o) {
     return fail("--worker " + mode + ": expected render or time");
   }
   result["complete"] = true;
-  std::ofstream out(args.get("worker-out", ""));
-  out << report::dumpJson(result) << "\n";
-  return out.flush() ? 0 : fail(args.get("worker-out", "") + ": write failed");
+  const Status w = writeTextFile(args.get("worker-out", ""), report::dumpJson(result) + "\n");
+  return w ? 0 : fail(w.error());
 }
 
 int runReportCommand(const std::vector<std::string>& argv) {

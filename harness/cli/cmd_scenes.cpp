@@ -1,10 +1,10 @@
 // `motorbench scenes -o DIR [NAME...]`: writes the built-in scenes as DIR/<name>.glb.
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include "harness/options/args.h"
 #include "harness/cli/command.h"
+#include "harness/cli/output_paths.h"
 #include "pipelines/scene/builtin_scenes.h"
 
 namespace {
@@ -34,10 +34,8 @@ int runScenes(const std::vector<std::string>& argv) {
       return 2;
     }
     std::string path = (std::filesystem::path(dir) / (name + ".glb")).string();
-    std::ofstream out(path, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(glb->data()), std::streamsize(glb->size()));
-    if (!out.flush()) {
-      std::fprintf(stderr, "motorbench scenes: %s: write failed\n", path.c_str());
+    if (mb::Status w = mb::writeTextFile(path, std::string(glb->begin(), glb->end())); !w) {
+      std::fprintf(stderr, "motorbench scenes: %s\n", w.error().c_str());
       return 2;
     }
     std::printf("%s (%zu bytes)\n", path.c_str(), glb->size());

@@ -103,9 +103,8 @@ int timeOneScene(const std::string& name, const timing::Settings& normal, const 
       }
     }
   }
-  std::ofstream out(resultPath);
-  if (!out || !(out << nlohmann::json{{"rows", rows}, {"patchMemory", patchMemory}}.dump() << "\n")) {
-    std::fprintf(stderr, "motorbench time: error: cannot write %s\n", resultPath.c_str());
+  if (Status w = writeTextFile(resultPath, nlohmann::json{{"rows", rows}, {"patchMemory", patchMemory}}.dump() + "\n"); !w) {
+    std::fprintf(stderr, "motorbench time: error: %s\n", w.error().c_str());
     return 2;
   }
   return status;
@@ -241,8 +240,7 @@ int runTime(const std::vector<std::string>& argv) {
         // Bezier patch scenes timed with --level: bytes uploaded per pipeline and level, instanced
         // (control points + one refinement pattern) vs the same surface pre-tessellated.
         {"patchMemory", patchMemory}};
-    std::ofstream out(*path);
-    if (!out || !(out << j.dump(2) << "\n")) return fail("cannot write " + *path);
+    if (Status w = writeTextFile(*path, j.dump(2) + "\n"); !w) return fail(w.error());
   }
   return status;
 }
