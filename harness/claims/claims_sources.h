@@ -68,9 +68,12 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in);
 // Skinning: ring radius of skinned_tube's candy_wrapper, LBS vs motor (claims_skinning.cpp).
 std::vector<Claim> skinningClaims();
 
-// motor_c vs matrix_c (issue 29): bytes from uploads, worst PSNR against matrix, counted ops,
-// ISA from `isa` (a `motorbench isa` JSON, or null: that row not measurable). Needs GL.
-std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& isaSource);
+// motor_c vs matrix_c (issue 29): bytes from uploads, worst PSNR against matrix (from `report`'s
+// summary when it has both, the same figure the report shows; else renders at rest), counted
+// ops, ISA from `isa` (a `motorbench isa` JSON, or null: that row not measurable); and motor_cf
+// against motor_c (the paper's fragment-rotor suggestion). Needs GL.
+std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& isaSource,
+                                 const nlohmann::json& report = nullptr, const std::string& reportSource = "");
 
 // Reviewer baselines (Verdict::Baseline): counted and SPIR-V.
 std::vector<Claim> baselineClaims();

@@ -246,7 +246,7 @@ int runClaims(const std::vector<std::string>& argv) {
   add(all, claims::blendingClaims());
   say("measuring uploads");
   add(all, claims::memoryClaims());
-  add(all, claims::compactClaims(speed.isa, speed.isaSource), "compact");
+  add(all, claims::compactClaims(speed.isa, speed.isaSource, report, args.get("report", "")), "compact");
   add(all, claims::speedClaims(speed));
   add(all, claims::sceneGraphClaims(speed.kernelPairs, speed.timings, sources["frameTiming"].get<std::string>(), speed.sceneStats));
   say("scene statistics");

@@ -88,7 +88,10 @@ json fixture() {
                   {"file", "fixture bench"}};
   return {{"machine", {{"cpu", "Test CPU Model 9000"}, {"logicalCores", 3},
                        {"gl", {{"renderer", "llvmpipe (LLVM 15.0.6, 256 bits)"}, {"kind", "cpu-rasterizer"}}}}},
-          {"settings", {{"timeWidth", 128}, {"timeHeight", 96}}},
+          {"settings", {{"timeWidth", 128}, {"timeHeight", 96}, {"width", 160}, {"height", 120}}},
+          // The compact pipelines' image summary (issue 29): motor_c worst 53.5 dB, matrix_c identical.
+          {"summary", {{"images", {{"motor_c", {{"comparedFrames", 4}, {"identicalFrames", 1}, {"psnr", {{"min", 53.5}}}}},
+                                   {"matrix_c", {{"comparedFrames", 4}, {"identicalFrames", 4}}}}}}},
           {"scenes", scenes}, {"isa", isa}, {"kernels", kernels}};
 }
 
@@ -144,6 +147,13 @@ TEST(ClaimsReport, RowsReadTheReportTheyAreGiven) {
   EXPECT_NE(update["method"].get<std::string>().find("box ("), std::string::npos) << update["method"];
   EXPECT_NE(byId["scene_graph_update"]["measured"].get<std::string>().find("listed, not counted: "), std::string::npos);
   EXPECT_NE(byId["frame_time_vs_strongest"]["verdictText"].get<std::string>().find("CPU rasterizer"), std::string::npos);
+  // The compact vertices' image cost is the report's own figure, not a render of its own.
+  const json& compactImage = byId["compact_image_cost"];
+  EXPECT_DOUBLE_EQ(compactImage["measuredValue"]["motor_c"].get<double>(), 53.5) << compactImage;
+  EXPECT_TRUE(compactImage["measuredValue"]["matrix_c"].is_null()) << compactImage;
+  EXPECT_EQ(compactImage["measured"], "53.5 dB vs identical") << compactImage;
+  EXPECT_NE(compactImage["method"].get<std::string>().find("the report's summary"), std::string::npos) << compactImage;
+  EXPECT_NE(compactImage["method"].get<std::string>().find("160x120"), std::string::npos) << compactImage;
   // Composition: the bench pair's fastest sides, simd_motor 548 against simd_affine 360 items/s.
   const json& comp = byId["composition"]["measuredValue"]["bench"];
   EXPECT_EQ(comp["fastestMotor"], "simd_motor");
