@@ -76,6 +76,13 @@ Result<std::vector<double>> reportWorstPsnr(const nlohmann::json& report, const 
   return worst;
 }
 
+// The counted ops of the shader function `function` (one of `motorbench ops`' kernels).
+OpCounts countedKernel(const std::string& function) {
+  for (const opsv::KernelRow& k : vertexOps().kernels)
+    if (k.kernel.function == function) return k.counted;
+  return {};
+}
+
 std::string psnrText(double v) { return v > 1e299 ? std::string("identical") : fmt("%.1f dB", v); }
 
 // "instructions / VGPRs" of a pipeline's rigid vertex shader on one family of the isa JSON.
@@ -102,13 +109,9 @@ Claim fragmentRotorClaim(const nlohmann::json& isa, const std::vector<std::strin
              "rest, built-in normal_torus, textured_box, skinned_tube, dense_torus and crowd at 128x128";
   std::string zero;
   const std::map<std::string, double> rigid = opsPerPipeline("rigid", false, zero);
-  OpCounts frag[2], plain[2];  // normal-mapped; without a normal map
-  for (const opsv::KernelRow& k : vertexOps().kernels) {
-    if (k.kernel.function == "rotorShadingNormal") frag[0] = k.counted;
-    if (k.kernel.function == "tbnShadingNormal") frag[1] = k.counted;
-    if (k.kernel.function == "rotorSurfaceNormal") plain[0] = k.counted;
-    if (k.kernel.function == "tbnSurfaceNormal") plain[1] = k.counted;
-  }
+  // Normal-mapped; without a normal map.
+  const OpCounts frag[2] = {countedKernel("rotorShadingNormal"), countedKernel("tbnShadingNormal")};
+  const OpCounts plain[2] = {countedKernel("rotorSurfaceNormal"), countedKernel("tbnSurfaceNormal")};
   auto image = worstPsnr(scenes, kMotor, {"motor_cf"});
   if (!rigid.count("motor_cf") || !rigid.count(kMotor) || !image) {
     c.verdict = Verdict::NotMeasurable;
@@ -225,11 +228,7 @@ std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& i
   Claim ops = row("compact_ops", "ops per vertex of the smallest vertices: frame decode and rigid vertex to clip",
                   "counted through the shim (shaders/compact_frame.glsl, motor_transform.glsl, affine_transform.glsl): "
                   "compactRotor vs compactMatrixFrame, and the rigid shader variant object to clip");
-  OpCounts decode[2];
-  for (const opsv::KernelRow& k : vertexOps().kernels) {
-    if (k.kernel.function == "compactRotor") decode[0] = k.counted;
-    if (k.kernel.function == "compactMatrixFrame") decode[1] = k.counted;
-  }
+  const OpCounts decode[2] = {countedKernel("compactRotor"), countedKernel("compactMatrixFrame")};
   std::string zero;
   const std::map<std::string, double> rigid = opsPerPipeline("rigid", false, zero);
   if (!rigid.count(kMotor) || !rigid.count(kMatrix)) {

@@ -20,12 +20,18 @@ std::string decodeKernel(const std::string& pipeline) {
   return "";
 }
 
+// The counted ops of the kernel `function` (the frame decoders; harness/ops/
+// vertex_kernels_fragment.cpp for the fragment frame).
+std::string kernelText(const json& r, const std::string& function) {
+  for (const json& k : at(r, {"opsPerVertex", "kernels"}))
+    if (k.value("function", "") == function) return function + ": " + opsText(k["counted"]);
+  return function + ": -";
+}
+
 std::string decodeText(const json& r, const std::string& pipeline) {
   const std::string fn = decodeKernel(pipeline);
   if (fn.empty()) return pipeline == "motor_q" ? "0 (SNORM16: the vertex fetch)" : "0 (float frame)";
-  for (const json& k : at(r, {"opsPerVertex", "kernels"}))
-    if (k.value("function", "") == fn) return fn + ": " + opsText(k["counted"]);
-  return fn + ": -";
+  return kernelText(r, fn);
 }
 
 const json* rigidVariant(const json& r, const std::string& pipeline) {
@@ -52,14 +58,6 @@ std::string isaText(const json& r, const std::string& p, const std::string& fami
                     const std::string& stage = "vertex") {
   const json* s = isaRow(at(r, {"isa"}), p, "rigid", family, stage);
   return s ? fmt((*s)["instructions"], 6) + " / " + fmt((*s)["vgprs"], 6) : "-";
-}
-
-// The counted ops of the kernel `function` (harness/ops/vertex_kernels_fragment.cpp for the
-// fragment frame).
-std::string kernelText(const json& r, const std::string& function) {
-  for (const json& k : at(r, {"opsPerVertex", "kernels"}))
-    if (k.value("function", "") == function) return function + ": " + opsText(k["counted"]);
-  return function + ": -";
 }
 
 // Where the frame is unpacked (issue 29, item 3): the varyings the rigid program passes, the
