@@ -24,6 +24,11 @@
 //                     per fragment by forward.fs (frame_shading.glsl) instead of extracted
 //                     here; the scale fallback cannot (a non-uniform scale is no rotation)
 //                     and is built without it
+//   MB_LINEAR_FALLBACK the exact fallback (pipelines/motor/linear_fallback.h) for a world
+//                     transform or joint palette that is not a similarity: per draw a motor and
+//                     u_Linear / u_LinearNormal (mat3), per joint a motor and 24 floats
+//                     (MotorJointLinear, binding 1) blended with the weights; world-space
+//                     palette only; compact positions dequantised per vertex (u_Dequant)
 //   MB_INSTANCED      motor and scale per instance (vertex attributes, divisor 1) instead of
 //                     per draw: EXT_mesh_gpu_instancing / --instances
 #include "pga.glsl"
@@ -33,7 +38,7 @@
 #if defined(MB_FRAGMENT_ROTOR) && (!defined(MB_SIGNED_ROTOR) || defined(MB_SCALE_FALLBACK))
 #error "MB_FRAGMENT_ROTOR needs MB_SIGNED_ROTOR and no MB_SCALE_FALLBACK"
 #endif
-#if defined(MB_SIGNED_ROTOR) && !(defined(MB_COMPACT) && (defined(MB_FRAGMENT_ROTOR) || defined(MB_SCALE_FALLBACK)))
+#if defined(MB_SIGNED_ROTOR) && !(defined(MB_COMPACT) && (defined(MB_FRAGMENT_ROTOR) || defined(MB_SCALE_FALLBACK) || defined(MB_LINEAR_FALLBACK)))
 #error "MB_SIGNED_ROTOR needs MB_COMPACT and MB_FRAGMENT_ROTOR or MB_SCALE_FALLBACK"
 #endif
 #ifdef MB_SIGNED_ROTOR
@@ -43,7 +48,7 @@ layout(location = 0) in vec3 a_position;
 #endif
 #ifdef MB_COMPACT
 layout(location = 1) in vec4 a_compactFrame;  // integer fields as floats, not normalised
-#if defined(MB_SKINNED) || defined(MB_INSTANCED)
+#if defined(MB_SKINNED) || defined(MB_INSTANCED) || defined(MB_LINEAR_FALLBACK)
 uniform vec4 u_Dequant;  // the mesh's cube: center xyz, half extent w
 #endif
 #else
@@ -68,6 +73,10 @@ layout(location = 10) in float a_instanceScale;
 #define u_Scale a_instanceScale
 #else
 uniform vec4 u_World[2];
+#if defined(MB_LINEAR_FALLBACK) && !defined(MB_SKINNED)
+uniform mat3 u_Linear;
+uniform mat3 u_LinearNormal;
+#endif
 #ifdef MB_SCALE_FALLBACK
 uniform vec3 u_Scale;
 #else
@@ -84,6 +93,14 @@ layout(location = 7) in vec4 a_weights;
 // The joint palette: one motor per joint (joint world motor * inverse-bind motor).
 layout(std430, binding = 0) readonly buffer MotorJoints { vec4 u_Joints[]; };
 motor jointMotor(uint j) { return motor(u_Joints[2u * j], u_Joints[2u * j + 1u]); }
+#ifdef MB_LINEAR_FALLBACK
+// Per joint: its linear part's three columns, then its normal matrix's (vec4-padded).
+layout(std430, binding = 1) readonly buffer MotorJointLinear { vec4 u_JointLinear[]; };
+mat3 jointLinear(uint j, uint k) {
+  return mat3(u_JointLinear[6u * j + k].xyz, u_JointLinear[6u * j + k + 1u].xyz,
+              u_JointLinear[6u * j + k + 2u].xyz);
+}
+#endif
 #endif
 
 #ifdef MB_FRAGMENT_ROTOR
@@ -114,7 +131,30 @@ void main() {
   toWorld = blended;
 #endif
 #endif
+#ifdef MB_LINEAR_FALLBACK
+#ifdef MB_SKINNED
+  mat3 linear = motorBlendLinear(jointLinear(a_joints.x, 0u), jointLinear(a_joints.y, 0u),
+                                 jointLinear(a_joints.z, 0u), jointLinear(a_joints.w, 0u), a_weights);
+  mat3 normalLinear = motorBlendLinear(jointLinear(a_joints.x, 3u), jointLinear(a_joints.y, 3u),
+                                       jointLinear(a_joints.z, 3u), jointLinear(a_joints.w, 3u), a_weights);
+#else
+  mat3 linear = u_Linear;
+  mat3 normalLinear = u_LinearNormal;
+#endif
 #ifdef MB_COMPACT
+  vec3 position = compactPosition(a_position.xyz, u_Dequant);
+#ifdef MB_SIGNED_ROTOR
+  mat3x4 v = motorLinearRotorVertex(toWorld, linear, normalLinear, position,
+                                    compactSignedRotor(a_compactFrame), a_position.w);
+#else
+  mat2x4 r = compactRotor(a_compactFrame);
+  mat3x4 v = motorLinearRotorVertex(toWorld, linear, normalLinear, position, r[0], r[1].x);
+#endif
+#else
+  mat3x4 v = motorLinearRotorVertex(toWorld, linear, normalLinear, a_position, a_tangentRotor,
+                                    motorHandedness(a_tangentRotor));
+#endif
+#elif defined(MB_COMPACT)
 #if defined(MB_SKINNED) || defined(MB_INSTANCED)
   vec3 position = compactPosition(a_position.xyz, u_Dequant);
 #else

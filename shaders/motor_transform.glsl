@@ -51,6 +51,27 @@ mat3x4 motorScaledVertex(motor toWorld, vec3 scale, vec3 position, vec4 tangentR
   return motorScaledRotorVertex(toWorld, scale, position, tangentRotor, motorHandedness(tangentRotor));
 }
 
+// The exact fallback for a transform that is not a similarity (pipelines/motor/linear_fallback.h:
+// an inherited non-uniform scale, a sheared matrix, a skin whose joints' scales differ): the
+// polar factors x -> toWorld(linear * x), normals through normalLinear = inverse-transpose of
+// linear, the tangent through linear, both then moved by the motor and normalised; a mirroring
+// linear part (det < 0) flips the handedness as the matrix pipeline's sign(det(model)) does.
+// motorScaledRotorVertex is its diagonal case.
+mat3x4 motorLinearRotorVertex(motor toWorld, mat3 linear, mat3 normalLinear, vec3 position,
+                              vec4 rotor, float handedness) {
+  vec3 worldPosition = sw_mp(toWorld, linear * position);
+  mat2x3 nt = extractNormalTangent(motor(rotor, vec4(0.0)));
+  float mirror = sign(dot(linear[0], cross(linear[1], linear[2])));
+  return mat3x4(worldPosition, 0.0, normalize(sw_md(toWorld, normalLinear * nt[0])), 0.0,
+                normalize(sw_md(toWorld, linear * nt[1])), mirror * handedness);
+}
+
+// The linear parts of four joints blended with the skin weights (the motors blend by
+// motorBlendJoints): at a pose where the joints agree, the joints' common transform exactly.
+mat3 motorBlendLinear(mat3 l0, mat3 l1, mat3 l2, mat3 l3, vec4 weights) {
+  return l0 * weights.x + l1 * weights.y + l2 * weights.z + l3 * weights.w;
+}
+
 // Motor skinning: the weighted blend of four joint motors along the shortest arc,
 // renormalised, with the reference's hemisphere rule: each joint after the first is compared
 // with the running sum of those before it and negated (here: its weight) when the rotor

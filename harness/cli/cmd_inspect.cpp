@@ -16,6 +16,7 @@
 #include "harness/cli/output_paths.h"
 #include "harness/render/frame_options.h"
 #include "harness/render/scene_inputs.h"
+#include "pipelines/motor/fallback_census.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scene_stats.h"
@@ -67,6 +68,22 @@ void printFile(const mb::FileStats& f) {
   printFallbacks(mb::toJson(f.fallbacks));
   if (f.unsupported.empty()) std::printf("  unsupported none\n");
   for (const auto& u : f.unsupported) std::printf("  unsupported %s\n", u.c_str());
+}
+
+// The motor family's exact fallback at rest (pipelines/motor/fallback_census.h): a line, and
+// "motorFallbacks" in the file's JSON.
+void describeMotorFallbacks(const mb::Scene& scene, nlohmann::json& file) {
+  if (scene.curved.space != mb::Space::Euclidean) return;
+  const mb::motor::FallbackCensus c = mb::motor::restFallbackCensus(scene);
+  if (c.linearDraws + c.skinPalettes == 0 && c.generalNodes == 0)
+    std::printf("  motor exact fallback none (every draw a similarity)\n");
+  else
+    std::printf("  motor exact fallback %d nodes not similarities; at rest %d rigid draws, %d skins (%d joints), "
+                "%llu vertices\n",
+                c.generalNodes, c.linearDraws, c.skinPalettes, c.skinJoints, (unsigned long long)c.vertices);
+  file["motorFallbacks"] = {{"generalNodes", c.generalNodes}, {"linearFallbackDraws", c.linearDraws},
+                            {"skinFallbackDraws", c.skinPalettes}, {"skinFallbackJoints", c.skinJoints},
+                            {"fallbackVertices", c.vertices}};
 }
 
 // The animations (name, duration, channels) and cameras (type, name) of a loaded scene, as
@@ -154,6 +171,7 @@ int runInspect(const std::vector<std::string>& argv) {
     printFile(stats.back());
     files.push_back(mb::toJson(stats.back()));
     files.back()["input"] = file;  // the argument (a built-in's "file" is its generated name)
+    if (scene) describeMotorFallbacks(*scene, files.back());
     if (scene) describeViews(*scene, files.back());
     failed += !scene;
   }

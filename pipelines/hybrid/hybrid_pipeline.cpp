@@ -1,5 +1,7 @@
 #include "pipelines/hybrid/hybrid_pipeline.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "pipelines/affine/affine_pipeline.h"
 #include "pipelines/motor/companion.h"
 #include "pipelines/motor/motor_rig.h"
@@ -19,10 +21,13 @@ namespace {
 
 // World and joint motors -> mat4x3 (storage of `out` reused). flatten: motorToMatrix's sandwich
 // products inlined.
-[[gnu::flatten]] void toMatrices(const motor::PoseWork& work, affine::Pose& out) {
+// The motor pipeline's exact fallback (linear_fallback.h) as matrices: a general node takes its
+// exact world, a fallback palette's joint its motor times its linear part.
+[[gnu::flatten]] void toMatrices(const motor::Rig& rig, const motor::PoseWork& work, affine::Pose& out) {
   out.world.resize(work.world.size());
   for (size_t n = 0; n < work.world.size(); ++n)
-    out.world[n] = toMatrix(work.world[n].motor, work.world[n].scale * work.world[n].residual);
+    out.world[n] = rig.general[n] ? glm::mat4x3(work.exact.world[n])
+                                  : toMatrix(work.world[n].motor, work.world[n].scale * work.world[n].residual);
   out.palettes.resize(work.palettes.size());
   for (size_t i = 0; i < work.palettes.size(); ++i) {
     const motor::JointPalette& p = work.palettes[i];
@@ -33,7 +38,13 @@ namespace {
     for (size_t j = 0; j < palette.joints.size(); ++j) {
       const float* f = &p.motors[8 * j];
       const mb::Motor m(companion::Vec4(f[0], f[1], f[2], f[3]), companion::Vec4(f[4], f[5], f[6], f[7]));
-      palette.joints[j] = toMatrix(m, scale);
+      if (p.fallback) {
+        const float* l = &p.linear[24 * j];
+        const glm::mat3 linear(glm::make_vec3(l), glm::make_vec3(l + 4), glm::make_vec3(l + 8));
+        palette.joints[j] = glm::mat4x3(companion::motorToMatrix(m) * glm::mat4(linear));
+      } else {
+        palette.joints[j] = toMatrix(m, scale);
+      }
     }
   }
 }
@@ -53,7 +64,7 @@ public:
     stats.nonUniformScaleNodes = counts.nonUniformScaleNodes;
     stats.negativeScaleNodes = counts.negativeScaleNodes;
     stats.shearMatrixNodes = counts.shearMatrixNodes;
-    toMatrices(work_, out);
+    toMatrices(rig_, work_, out);
     clock.lap(&UpdatePhases::conversionMs);
   }
 

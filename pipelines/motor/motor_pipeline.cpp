@@ -24,6 +24,11 @@
 // tangent rotor passed to forward.fs instead of a normal and a tangent; the joint palette put in
 // one hemisphere so neighbouring vertices blend to rotors of one sign; draws on the scale
 // fallback extract per vertex (a non-uniform scale is no rotation).
+// The exact fallback (issue 34, linear_fallback.h, variant MB_LINEAR_FALLBACK): a rigid draw
+// whose node is general (its world may not be a similarity) gets its exact world's polar
+// factors, a motor and a mat3 (+ its normal matrix); a skin whose palette is not one common
+// positive scale gets a motor and 24 floats per joint (binding 1). Counted in PipelineStats
+// (linearFallbackDraws, skinFallbackDraws, skinFallbackJoints, fallbackVertices).
 #include "pipelines/motor/motor_pipeline.h"
 
 #include <map>
@@ -35,11 +40,13 @@
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
+#include "pipelines/motor/linear_fallback.h"
 #include "pipelines/motor/motor_c_vertices.h"
 #include "pipelines/motor/motor_camera.h"
 #include "pipelines/motor/motor_rig.h"
 #include "pipelines/motor/motor_q_vertices.h"
 #include "pipelines/motor/motor_vertices.h"
+#include "pipelines/scene/transform.h"
 
 namespace mb {
 namespace {
@@ -80,6 +87,9 @@ private:
   void uploadPalettes();
   void streamInstances();
   void setDequant(const gl::Program& program, const gl::DrawItem& d);
+  void drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g, const Primitive& prim,
+                  const motor::JointPalette* palette, GLuint paletteBuffer, const gl::Program& program,
+                  uint64_t& transformBytes, uint64_t& linearBytes, const glm::mat4* world = nullptr);
   void addVariantDefines(gl::Defines& defines, bool scaleFallback) const;
   void uploadSignedCompact(const Scene& scene);
   void release();
@@ -88,6 +98,8 @@ private:
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][scale fallback]
   std::unique_ptr<gl::Program> instanced_[2];    // MB_INSTANCED [scale fallback]
+  std::unique_ptr<gl::Program> linear_[2];       // MB_LINEAR_FALLBACK [skinned]
+  gl::PaletteBuffers linearBuffers_;             // per palette: the fallback's 24 floats per joint
   std::vector<std::vector<motor::ScaledMotor>> instanceMotors_;  // per node: fromTRS(instance)
   gl::InstanceStream instances_;
   bool referenceSkin_ = false;
@@ -121,6 +133,18 @@ Status MotorPipeline::prepare(const Scene& scene) {
       programs_[skinned][fallback] = program.take();
       if (skinned) programs_[skinned][fallback]->bindStorageBlock("MotorJoints", 0);
     }
+  for (int skinned = 0; skinned < 2; ++skinned) {
+    gl::Defines defines{{"MB_LINEAR_FALLBACK", ""}};
+    if (skinned) defines.push_back({"MB_SKINNED", ""});
+    addVariantDefines(defines, true);
+    auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
+    if (!program) return Status::fail(program.error());
+    linear_[skinned] = program.take();
+    if (skinned) {
+      linear_[skinned]->bindStorageBlock("MotorJoints", 0);
+      linear_[skinned]->bindStorageBlock("MotorJointLinear", 1);
+    }
+  }
   for (int fallback = 0; fallback < 2 && gl::hasInstances(scene); ++fallback) {
     gl::Defines defines{{"MB_INSTANCED", ""}};
     if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
@@ -206,6 +230,10 @@ void MotorPipeline::uploadPalettes() {
       if (m[0] * m[j] + m[1] * m[j + 1] + m[2] * m[j + 2] + m[3] * m[j + 3] < 0.0f)
         for (size_t k = j; k < j + 8; ++k) m[k] = -m[k];
     paletteBuffers_.upload(i, m.data(), m.size() * sizeof(float), stats_.skinBytesPerFrame);
+    if (pose_.palettes[i].fallback) {
+      const std::vector<float>& l = pose_.palettes[i].linear;
+      linearBuffers_.upload(i, l.data(), l.size() * sizeof(float), stats_.skinBytesPerFrame);
+    }
     joints += scene_->skins[size_t(pose_.palettes[i].skin)].joints.size();
   }
   stats_.floatsPerJoint = gl::floatsPer(stats_.skinBytesPerFrame, joints);
@@ -219,7 +247,7 @@ void MotorPipeline::streamInstances() {
   motor::ScaledMotor composed;
   for (size_t n = 0; n < instanceMotors_.size(); ++n) {
     const std::vector<motor::ScaledMotor>& local = instanceMotors_[n];
-    if (local.empty()) continue;
+    if (local.empty() || rig_.general[n]) continue;  // a general node draws each instance exactly
     instances_.addNode(int(n), local.size(), [&](size_t i, std::vector<float>& out) {
       motor::composeInto(pose_.world[n], local[i], composed);
       const DrawScale scale = drawScale(composed.scale, composed.residual);
@@ -237,6 +265,8 @@ void MotorPipeline::render(const View& view) {
   stats_.uniformBytesPerFrame = 0;
   stats_.draws = 0;
   stats_.drawnVertices = 0;
+  stats_.linearFallbackDraws = stats_.skinFallbackDraws = stats_.skinFallbackJoints = 0;
+  stats_.fallbackVertices = 0;
   uploadPalettes();
   streamInstances();
   const motor::CameraMotor camera = motor::cameraFromView(view);
@@ -246,10 +276,12 @@ void MotorPipeline::render(const View& view) {
   // Per-frame uniforms go to a program when the frame first draws with it (unused variants
   // upload nothing, so uniformBytesPerFrame counts what a frame needs).
   // skinned -1: the Bezier patch program (motor_patch.vs) of that scale form; 2: MB_INSTANCED.
-  bool frameSet[4][2] = {};
+  // fallback 2: MB_LINEAR_FALLBACK.
+  bool frameSet[4][3] = {};
   auto useProgram = [&](int skinned, int fallback) -> const gl::Program& {
     gl::Program& p = skinned < 0    ? *patchPrograms_[fallback]
                      : skinned == 2 ? *instanced_[fallback]
+                     : fallback == 2 ? *linear_[skinned]
                                     : *programs_[skinned][fallback];
     p.use();
     if (!frameSet[skinned + 1][fallback]) {
@@ -267,6 +299,15 @@ void MotorPipeline::render(const View& view) {
     const bool patch = patches_.has(d);  // Bezier patches: drawn rigidly by their node (never skinned)
     if (!patch && !g.indexCount) continue;
     const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
+    if (!patch && rig_.general[size_t(d.node)] && !scene_->nodes[size_t(d.node)].instances.empty()) {
+      // Instances of a general node: one exact draw each (node world x instance, linear_fallback.h).
+      for (const TRS& instance : scene_->nodes[size_t(d.node)].instances) {
+        const glm::mat4 world = pose_.exact.world[size_t(d.node)] * trsMatrix(instance);
+        drawLinear(d, g, prim, nullptr, 0, useProgram(0, 2), transformBytes, transformScaleBytes, &world);
+        ++transforms;
+      }
+      continue;
+    }
     if (!groups.empty()) {
       for (const gl::InstanceGroup& group : groups) {
         const bool fallback = group.key & 1;
@@ -284,6 +325,12 @@ void MotorPipeline::render(const View& view) {
     GLuint paletteBuffer = 0;
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = &pose_.palettes[i], paletteBuffer = paletteBuffers_[i];
+    if (palette ? palette->fallback : (!patch && rig_.general[size_t(d.node)])) {
+      drawLinear(d, g, prim, palette, paletteBuffer, useProgram(palette ? 1 : 0, 2), transformBytes,
+                 transformScaleBytes);
+      transforms += palette ? 0 : 1;
+      continue;
+    }
     const motor::ScaledMotor* world = &pose_.world[size_t(d.node)];
     DrawScale scale = palette ? drawScale(palette->scale, glm::vec3(1.0f))
                               : drawScale(world->scale, world->residual);
@@ -323,6 +370,42 @@ void MotorPipeline::render(const View& view) {
   stats_.floatsPerTransformWithScale = gl::floatsPer(transformBytes + transformScaleBytes, transforms);
 }
 
+// One draw on the exact fallback: a rigid draw of a general node with its exact world's polar
+// factors, or a skinned draw with its palette's motors and linear parts (world space).
+void MotorPipeline::drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g, const Primitive& prim,
+                               const motor::JointPalette* palette, GLuint paletteBuffer,
+                               const gl::Program& program, uint64_t& transformBytes,
+                               uint64_t& linearBytes, const glm::mat4* world) {
+  bool mirrored = false;
+  if (palette) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, linearBuffers_[size_t(palette - pose_.palettes.data())]);
+    // Winding as the matrix pipeline's skinned draw: the sign of the mesh node's world.
+    mirrored = rig_.exact ? glm::determinant(glm::mat3(pose_.exact.world[size_t(d.node)])) < 0.0f
+                          : drawScale(pose_.world[size_t(d.node)].scale, pose_.world[size_t(d.node)].residual).mirrored;
+    ++stats_.skinFallbackDraws;
+    stats_.skinFallbackJoints += int(palette->motors.size() / 8);
+  } else {
+    const motor::LinearTransform t = motor::linearFromAffine(world ? *world : pose_.exact.world[size_t(d.node)]);
+    gl::uniform4fv(program.uniform("u_World"), 2, &t.motor[0][0], transformBytes);
+    // The motor is the transform (floatsPerTransform); the linear parts count as its scale.
+    uint64_t bytes = 0;
+    gl::uniformMatrix3(program.uniform("u_Linear"), 1, &t.linear[0][0], bytes);
+    gl::uniformMatrix3(program.uniform("u_LinearNormal"), 1, &t.normalLinear[0][0], bytes);
+    linearBytes += bytes;
+    stats_.uniformBytesPerFrame += bytes;
+    mirrored = glm::determinant(t.linear) < 0.0f;
+    ++stats_.linearFallbackDraws;
+  }
+  if (variant_.compact) setDequant(program, d);
+  textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
+  gl::setWinding(mirrored);
+  const uint64_t drawn = g.draw();
+  stats_.drawnVertices += drawn;
+  stats_.fallbackVertices += drawn;
+  ++stats_.draws;
+}
+
 // motor_c's draws that cannot fold the mesh's cube (skinned, instanced) dequantise per vertex.
 void MotorPipeline::setDequant(const gl::Program& program, const gl::DrawItem& d) {
   const glm::vec4 q = cubes_[size_t(d.mesh)][size_t(d.primitive)].dequant();
@@ -341,7 +424,9 @@ void MotorPipeline::uploadSignedCompact(const Scene& scene) {
   Scene split;
   split.nodes = scene.nodes;
   split.materials = scene.materials;
-  std::map<const Primitive*, std::vector<uint8_t>> bytes;
+  // Keyed by the split primitive's address, taken once every primitive is in place (a vector
+  // that grows moves its elements: keys taken while pushing dangle on multi-primitive meshes).
+  std::vector<std::vector<uint8_t>> streams;
   for (const Mesh& mesh : scene.meshes) {
     split.meshes.push_back({mesh.name, {}});
     for (const Primitive& p : mesh.primitives) {
@@ -350,9 +435,13 @@ void MotorPipeline::uploadSignedCompact(const Scene& scene) {
       stats_.rotorSplitVertices += s.splitVertices;
       stats_.rotorUnresolvedTriangles += s.unresolvedTriangles;
       split.meshes.back().primitives.push_back(std::move(s.primitive));
-      bytes[&split.meshes.back().primitives.back()] = std::move(s.bytes);
+      streams.push_back(std::move(s.bytes));
     }
   }
+  std::map<const Primitive*, std::vector<uint8_t>> bytes;
+  size_t next = 0;
+  for (const Mesh& mesh : split.meshes)
+    for (const Primitive& p : mesh.primitives) bytes[&p] = std::move(streams[next++]);
   geometry_.uploadPacked(split, [&bytes](const Primitive& p) { return std::move(bytes.at(&p)); },
                          compact::attributes(), stats_);
 }
@@ -362,9 +451,11 @@ void MotorPipeline::release() {
   patches_.release();
   for (auto& p : patchPrograms_) p.reset();
   paletteBuffers_.release();
+  linearBuffers_.release();
   textures_.release();
   instances_.release();
   for (auto& p : instanced_) p.reset();
+  for (auto& p : linear_) p.reset();
   for (auto& row : programs_)
     for (auto& p : row) p.reset();
   scene_ = nullptr;

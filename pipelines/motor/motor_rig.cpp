@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "pipelines/motor/linear_fallback.h"
+#include "pipelines/scene/scale_analysis.h"
 #include "pipelines/scene/transform.h"
 
 namespace mb::motor {
@@ -62,8 +64,21 @@ Rig buildRig(const Scene& scene) {
     rig.rest[n] = node.hasMatrix ? fromMatrix(node.matrix, node.local, rig.leaf[n], &rig.restFlags[n])
                                  : fromTRS(node.local, rig.leaf[n], &rig.restFlags[n]);
   }
+  // General nodes: a local transform that cannot be a uniform scale on a node with children (or a
+  // sheared one anywhere), then their subtrees (the order visits parents first).
+  const ScaleReport scales = analyzeScale(scene);
+  rig.order = hierarchyOrder(scene);
+  rig.general.assign(count_, 0);
+  for (size_t i = 0; i < rig.order.nodes.size(); ++i) {
+    const size_t n = size_t(rig.order.nodes[i]);
+    const int parent = rig.order.parents[i];
+    const bool animatedNonUniform = n < scales.nodes.size() && scales.nodes[n].animatedNonUniform;
+    rig.general[n] = rig.restFlags[n].nonUniformInner || rig.restFlags[n].shear ||
+                     (!rig.leaf[n] && animatedNonUniform) || (parent >= 0 && rig.general[size_t(parent)]);
+  }
   for (const Skin& s : scene.skins) {
     std::vector<ScaledMotor> binds;
+    bool general = false;
     for (size_t j = 0; j < s.joints.size(); ++j) {
       ConversionFlags f;
       // An inverse bind has no vertices of its own: never a residual (leaf = false).
@@ -72,10 +87,13 @@ Rig buildRig(const Scene& scene) {
       binds.push_back(j < s.inverseBind.size() ? fromMatrix(s.inverseBind[j], approx, false, &f)
                                                : identityScaledMotor());
       count(f, &rig.bindCounts);
+      general = general || f.nonUniform || f.shear || (nodeIndexOk(scene, s.joints[j]) && rig.general[size_t(s.joints[j])]);
     }
     rig.inverseBind.push_back(std::move(binds));
+    rig.generalSkin.push_back(general);
   }
-  rig.order = hierarchyOrder(scene);
+  for (char g : rig.general) rig.exact = rig.exact || g;
+  for (char g : rig.generalSkin) rig.exact = rig.exact || g;
   rig.animated = animatedNodes(scene);
   for (const ConversionFlags& f : rig.restFlags) count(f, &rig.restCounts);
   return rig;
@@ -149,7 +167,8 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
 }
 
 [[gnu::flatten]] void jointPalettes(const Scene& scene, const Rig& rig, const std::vector<ScaledMotor>& world,
-                                    bool relativeToNode, std::vector<JointPalette>& palettes) {
+                                    bool relativeToNode, std::vector<JointPalette>& palettes,
+                                    const std::vector<glm::mat4>* exactWorld) {
   size_t count = 0;
   for (size_t n = 0; n < scene.nodes.size(); ++n) {
     const Skin* drawn = drawnSkin(scene, n);
@@ -162,17 +181,38 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
     p.scale = 1.0f;
     p.uniform = true;
     p.motors.resize(skin.joints.size() * 8);
+    p.scales.resize(skin.joints.size());
     const Motor toNode = relativeToNode ? mk().reverse_m(world[n].motor) : Motor();
+    const bool general = rig.generalSkin[size_t(p.skin)] && exactWorld;
     for (size_t j = 0; j < skin.joints.size(); ++j) {
       const int jn = skin.joints[j];
       const ScaledMotor joint = nodeIndexOk(scene, jn) ? world[size_t(jn)] : identityScaledMotor();
       ScaledMotor m = compose(joint, rig.inverseBind[size_t(p.skin)][j]);
       if (relativeToNode) m.motor = gpMotors(toNode, m.motor);
+      p.scales[j] = m.scale;
       if (j == 0) p.scale = m.scale;
       else if (std::fabs(m.scale - p.scale) > 1e-4f * std::fabs(p.scale)) p.uniform = false;
       float* out = &p.motors[8 * j];
       for (int c = 0; c < 2; ++c)
         for (int r = 0; r < 4; ++r) out[4 * c + r] = m.motor[c][r];
+    }
+    p.fallback = general || !p.uniform || !(p.scale > 0.0f);
+    if (!p.fallback) continue;
+    // Every joint as motor + linear part, in world space: exact per joint (linear_fallback.h).
+    p.linear.resize(skin.joints.size() * 24);
+    for (size_t j = 0; j < skin.joints.size(); ++j) {
+      LinearTransform t;
+      if (general) {
+        t = linearFromAffine(jointWorld(skin, *exactWorld, j) * inverseBind(skin, j));
+      } else {
+        const int jn = skin.joints[j];
+        t = linearFromScaled(compose(nodeIndexOk(scene, jn) ? world[size_t(jn)] : identityScaledMotor(),
+                                     rig.inverseBind[size_t(p.skin)][j]));
+      }
+      float* out = &p.motors[8 * j];
+      for (int c = 0; c < 2; ++c)
+        for (int r = 0; r < 4; ++r) out[4 * c + r] = t.motor[c][r];
+      packLinear(t, &p.linear[24 * j]);
     }
   }
   palettes.resize(count);
@@ -197,7 +237,11 @@ void poseScene(const Scene& scene, const Rig& rig, const AnimState& state, bool 
   }
   worldPose(rig.order, work.local, work.world);
   clock.lap(&UpdatePhases::hierarchyMs);
-  jointPalettes(scene, rig, work.world, relativeToNode, work.palettes);
+  if (rig.exact) {  // the fallback's exact worlds: the matrix pipeline's pass, its phases lapped too
+    if (work.exact.order.nodes.size() != scene.nodes.size()) prepareMatrixPose(scene, work.exact);
+    poseWorldMatrices(scene, state, work.exact, clock);
+  }
+  jointPalettes(scene, rig, work.world, relativeToNode, work.palettes, rig.exact ? &work.exact.world : nullptr);
   clock.lap(&UpdatePhases::paletteMs);
 }
 

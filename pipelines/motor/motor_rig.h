@@ -9,6 +9,7 @@
 #include "pipelines/motor/scaled_motor.h"
 #include "pipelines/scene/animation.h"
 #include "pipelines/scene/hierarchy.h"
+#include "pipelines/scene/matrix_world.h"
 #include "pipelines/scene/scene.h"
 #include "pipelines/update_phases.h"
 
@@ -33,6 +34,13 @@ struct Rig {
   HierarchyOrder order;             // hierarchyOrder(scene): the per-frame composition order
   std::vector<std::vector<int>> animated;  // animatedNodes(scene)
   RigCounts restCounts;             // the fallbacks of every rest transform together
+  // The exact fallback (linear_fallback.h): nodes whose world transform may not be a similarity
+  // (a non-uniform scale on a node with children, at rest or in some animation key; a sheared
+  // matrix; or such an ancestor), and skins with such a joint or a non-similar inverse bind.
+  // Their transforms are taken from the exact affine world (poseScene: PoseWork::exact).
+  std::vector<char> general;        // per node
+  std::vector<char> generalSkin;    // per skin
+  bool exact = false;               // some node or skin is general: poseScene keeps exact worlds
 };
 
 // Converts every node transform and every inverse-bind matrix. Pure CPU.
@@ -73,7 +81,14 @@ struct JointPalette {
   std::vector<float> motors;   // 8 floats per joint: joint world motor * inverse-bind motor
                                // (relativeToNode: reverse(node world motor) * that)
   float scale = 1.0f;          // the skin's uniform scale (joint world scale * bind scale)
-  bool uniform = true;         // false: the joints' scales differ (joint 0's is used)
+  bool uniform = true;         // false: the joints' scales differ
+  // Not one common positive uniform scale (joint scales differ, or a joint's transform is not a
+  // similarity, or negative): every joint is a LinearTransform (linear_fallback.h), `motors`
+  // holding its motor and `linear` its 24 floats (packLinear); always world space (no
+  // relativeToNode), and `scale` is unused.
+  bool fallback = false;
+  std::vector<float> linear;
+  std::vector<float> scales;   // per joint (working storage)
 };
 
 // Palettes for every node that has both a mesh and a skin. `relativeToNode`: each joint motor
@@ -83,8 +98,10 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
                                         const std::vector<ScaledMotor>& world,
                                         bool relativeToNode = false);
 // The same into `palettes` (storage reused).
+// `exactWorld`: the exact affine world per node (PoseWork::exact.world), read for general skins.
 void jointPalettes(const Scene& scene, const Rig& rig, const std::vector<ScaledMotor>& world,
-                   bool relativeToNode, std::vector<JointPalette>& palettes);
+                   bool relativeToNode, std::vector<JointPalette>& palettes,
+                   const std::vector<glm::mat4>* exactWorld = nullptr);
 
 // What one motor pipeline keeps between updates.
 struct PoseWork {
@@ -92,6 +109,8 @@ struct PoseWork {
   std::vector<ScaledMotor> local, localSecond;  // converted (local: blended in place)
   std::vector<ScaledMotor> world;               // per node: the result
   std::vector<JointPalette> palettes;           // the result: jointPalettes
+  MatrixPoseWork exact;  // when rig.exact: the affine world of every node (the matrix pipeline's
+                         // pass, pipelines/scene/matrix_world.h), read by the general nodes and skins
 };
 
 // One update: sampleAnimation, localPose (unblended: the rest motors, converting only the
