@@ -1,0 +1,411 @@
+#!/usr/bin/env python3
+"""Every glTF file x every pipeline, judged (scripts/corpus-check.sh runs this; README: Corpus check).
+
+One `motorbench survey` process per file (load once, every pipeline of the file's space on one GL
+context, at rest and at 1/3 and 2/3 of animation 0), --jobs at a time. A worker that dies by a
+signal or runs past --timeout is recorded and its pipelines are retried one process each, so the
+crash is pinned on a pipeline; the run goes on. Writes OUT/corpus-check.json (a row per file x
+pipeline, totals, the rules) and OUT/corpus-check.md (the summary tables), prints the rules as
+PASS/FAIL lines naming the failing files, and exits 1 when a rule fails (2: bad arguments).
+"""
+import argparse
+import concurrent.futures
+import csv
+import json
+import math
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+DEFAULT_DIR = os.path.join(REPO, "..", "shared", "corpus-wide")
+FULL_PRECISION = ["motor", "affine", "qtangent", "motor_q", "hybrid"]
+COMPACT = ["matrix_c", "motor_c", "motor_cf"]
+MIN_PSNR = 50.0          # dB: rigid frames of the full-precision pipelines against matrix
+MAX_DRAWN_DIFF = 0.01    # skinned frames: drawn-pixel counts at most 1 % apart
+FALLBACKS = ["linearFallbackDraws", "skinFallbackDraws", "skinFallbackJoints", "fallbackVertices",
+             "nonUniformScaleNodes", "negativeScaleNodes", "shearMatrixNodes", "scaleFallbackInstances",
+             "zeroScalarFrames", "biasedFrames", "rotorSplitVertices", "rotorUnresolvedTriangles"]
+
+
+def gltf_files(paths):
+    """Files as given, folders as their .gltf/.glb files (recursively, sorted)."""
+    out = []
+    for p in paths:
+        if os.path.isdir(p):
+            found = []
+            for root, _, names in os.walk(p):
+                found += [os.path.join(root, n) for n in names if n.lower().endswith((".gltf", ".glb"))]
+            out += sorted(found)
+        else:
+            out.append(p)
+    return out
+
+
+def manifest_features(paths):
+    """{absolute path: features} from the MANIFEST.tsv of each folder given (corpus-wide has one)."""
+    features = {}
+    for p in paths:
+        tsv = os.path.join(p, "MANIFEST.tsv")
+        if os.path.isdir(p) and os.path.isfile(tsv):
+            with open(tsv, encoding="utf-8") as f:
+                for row in csv.DictReader(f, delimiter="\t"):
+                    features[os.path.abspath(os.path.join(p, row["path"]))] = row.get("features", "")
+    return features
+
+
+def run_survey(exe, path, size, timeout, pipelines=None):
+    """One worker: {"exit", "signal", "timeout", "stderr", "doc", "seconds"}."""
+    with tempfile.NamedTemporaryFile(suffix=".json", delete=False) as tmp:
+        out = tmp.name
+    cmd = [exe, "survey", path, "--size", size, "-o", out]
+    if pipelines:
+        cmd += ["--pipelines", ",".join(pipelines)]
+    t0 = time.monotonic()
+    rec = {"exit": None, "signal": None, "timeout": False, "stderr": "", "doc": None}
+    try:
+        # Own session: a timeout kills the worker and whatever it started, nothing else.
+        proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
+                                errors="replace", start_new_session=True)
+        try:
+            _, err = proc.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            _, err = proc.communicate()
+            rec["timeout"] = True
+        rec["stderr"] = err[-2000:]
+        if proc.returncode < 0:
+            rec["signal"] = signal.Signals(-proc.returncode).name
+        else:
+            rec["exit"] = proc.returncode
+        if os.path.getsize(out) > 0 and not rec["timeout"] and rec["signal"] is None:
+            with open(out, encoding="utf-8") as f:
+                rec["doc"] = json.load(f)
+    except (OSError, json.JSONDecodeError) as e:
+        rec["stderr"] += f"\n{e}"
+    finally:
+        if os.path.exists(out):
+            os.unlink(out)
+    rec["seconds"] = time.monotonic() - t0
+    return rec
+
+
+def psnr_of(frame):
+    """A frame's PSNR against the baseline, inf when identical, None when not compared."""
+    if frame.get("identical"):
+        return math.inf
+    return frame.get("psnr")
+
+
+def pipeline_row(file, name, doc, rec, kinds, bounds):
+    """The row of one file x pipeline from its survey document."""
+    p = doc["pipelines"][name]
+    base = doc["pipelines"][doc["baseline"]]["frames"]
+    frames = p["frames"]
+    row = {"file": file, "pipeline": name, "exit": rec["exit"], "signal": rec["signal"], "status": "ok",
+           "error": p.get("error"), "seconds": round(p.get("seconds", 0.0), 3),
+           "drawnPixels": [f["drawnPixels"] for f in frames], "kind": kinds[0] if kinds else None,
+           "fallbacks": p.get("fallbacks", {})}
+    if row["error"]:
+        row["status"] = "error"
+    # Drawn: some pixel in every frame where the baseline drew some, and in one frame at least.
+    drawn = [f["drawnPixels"] for f in frames]
+    base_drawn = [f["drawnPixels"] for f in base]
+    row["drawn"] = (not row["error"] and any(d > 0 for d in drawn)
+                    and all(d > 0 or b == 0 for d, b in zip(drawn, base_drawn)))
+    rigid = [psnr_of(f) for f, k in zip(frames, kinds) if k == "rigid" and psnr_of(f) is not None]
+    row["worstRigidPsnr"] = min(rigid) if rigid else None
+    row["rigidIdentical"] = bool(rigid) and min(rigid) == math.inf
+    row["drawnDiff"] = [abs(d - b) / max(d, b) if max(d, b) else 0.0 for d, b in zip(drawn, base_drawn)]
+    skinned = [x for x, k in zip(row["drawnDiff"], kinds) if k == "skinned"]
+    row["worstSkinnedDrawnDiff"] = max(skinned) if skinned else None
+    outside = [f["outsideEnvelope"] for f, k in zip(frames, kinds) if k == "rigid" and "outsideEnvelope" in f]
+    row["outsideEnvelope"] = max(outside) if outside else None
+    excess = [f["envelopeExcess"] for f, k in zip(frames, kinds) if k == "rigid" and "envelopeExcess" in f]
+    row["envelopeExcess"] = max(excess) if excess else None
+    row["boundPixels"] = max(bounds) if bounds else None
+    return row
+
+
+def file_result(path, rel, rec, features):
+    """{"file", "status", ...} and its rows (one per pipeline) from a worker's record."""
+    doc = rec["doc"]
+    res = {"file": rel, "features": features, "seconds": round(rec["seconds"], 3), "exit": rec["exit"],
+           "signal": rec["signal"], "timeout": rec["timeout"], "rows": []}
+    if rec["signal"] or rec["timeout"]:
+        res["status"] = "crashed"
+        res["error"] = f"worker killed by {rec['signal']}" if rec["signal"] else "worker ran past --timeout"
+        return res
+    if doc is None:
+        res["status"] = "worker-error"
+        res["error"] = f"exit {rec['exit']}, no JSON: {rec['stderr'].strip()[-400:]}"
+        return res
+    res["status"] = doc["status"]
+    res["error"] = doc.get("error")
+    res["loaderFallbacks"] = doc.get("loaderFallbacks", {})
+    res["scene"] = doc.get("scene")
+    if doc["status"] in ("load-failed", "no-data"):
+        return res
+    kinds = [f["kind"] for f in doc["frames"]]
+    bounds = [f["positionBound"]["pixels"] for f in doc["frames"] if "positionBound" in f]
+    res["kind"] = kinds[0]
+    res["boundPixels"] = max(bounds) if bounds else None
+    res["boundWorld"] = max((f["positionBound"]["worldUnits"] for f in doc["frames"] if "positionBound" in f), default=None)
+    res["envelopeRadius"] = max((f["positionBound"]["envelopeRadius"] for f in doc["frames"] if "positionBound" in f), default=None)
+    res["frames"] = [{"animation": f["animation"], "time": f["time"]} for f in doc["frames"]]
+    res["gl"] = doc.get("gl")
+    for name in doc["pipelineOrder"]:
+        res["rows"].append(pipeline_row(rel, name, doc, rec, kinds, bounds))
+    return res
+
+
+def survey_file(exe, path, rel, size, timeout, features):
+    rec = run_survey(exe, path, size, timeout)
+    res = file_result(path, rel, rec, features)
+    if res["status"] != "crashed":
+        return res
+    # Pin the crash on pipelines: each one alone (with the matrix baseline it is compared against).
+    res["crashedPipelines"] = []
+    for name in ["matrix"] + FULL_PRECISION + COMPACT:
+        one = run_survey(exe, path, size, timeout, [name])
+        sub = file_result(path, rel, one, features)
+        if sub["status"] == "crashed":
+            res["crashedPipelines"].append(name)
+            res["rows"].append({"file": rel, "pipeline": name, "exit": one["exit"], "signal": one["signal"] or "timeout",
+                                "status": "crashed", "error": sub["error"], "seconds": round(one["seconds"], 3),
+                                "drawn": False, "fallbacks": {}})
+        else:
+            res["rows"] += [r for r in sub["rows"] if r["pipeline"] == name]
+            for k in ("kind", "boundPixels", "boundWorld", "envelopeRadius", "frames", "loaderFallbacks", "scene"):
+                res.setdefault(k, sub.get(k))
+    res["error"] += " (alone: " + (", ".join(res["crashedPipelines"]) or "none") + " crashed)"
+    return res
+
+
+def fmt_psnr(v):
+    if v is None:
+        return "-"
+    return "identical" if v == math.inf else f"{v:.1f}"
+
+
+def evaluate(files):
+    """The acceptance rules: [(name, failures)] with one line per failing file."""
+    crashed = [f"{f['file']}: {f['error']}" for f in files if f["status"] in ("crashed", "worker-error")]
+    crashed += [f"{f['file']} [{r['pipeline']}]: {r['signal']}" for f in files for r in f["rows"] if r.get("status") == "crashed"]
+    load = [f"{f['file']}: {f['error']}" for f in files if f["status"] == "load-failed"]
+    drawn, rigid, compact, skinned = [], [], [], []
+    for f in files:
+        for r in f["rows"]:
+            if r.get("status") == "crashed":
+                continue
+            name = f"{f['file']} [{r['pipeline']}]"
+            if not r["drawn"]:
+                drawn.append(f"{name}: " + (r["error"] or f"drawn pixels {r['drawnPixels']}"))
+            if r["pipeline"] in FULL_PRECISION and r.get("worstRigidPsnr") is not None and r["worstRigidPsnr"] < MIN_PSNR:
+                rigid.append(f"{name}: {r['worstRigidPsnr']:.2f} dB")
+            if r["pipeline"] in COMPACT and r.get("outsideEnvelope"):
+                compact.append(f"{name}: {r['outsideEnvelope']} px outside the envelope, by up to {r['envelopeExcess']}/255 "
+                               f"(bound {f['boundPixels']:.2g} px, radius {f['envelopeRadius']}; "
+                               f"PSNR {fmt_psnr(r['worstRigidPsnr'])})")
+            if r.get("worstSkinnedDrawnDiff") is not None and r["worstSkinnedDrawnDiff"] > MAX_DRAWN_DIFF:
+                when = ", ".join(("rest" if fr["animation"] is None else f"t={fr['time']:.3g}") + f" {100 * x:.1f} %"
+                                 for fr, x in zip(f["frames"], r["drawnDiff"]))
+                skinned.append(f"{name}: drawn pixels apart from matrix by {when}")
+    return [("0 crashes, signals or timeouts", crashed),
+            ("every file loads (files without data excepted)", load),
+            ("every drawable file drawn by every pipeline", drawn),
+            (f"rigid frames of {', '.join(FULL_PRECISION)} vs matrix >= {MIN_PSNR:.0f} dB or identical", rigid),
+            (f"rigid frames of {', '.join(COMPACT)} within their position bound (envelope)", compact),
+            (f"skinned frames: drawn pixels within {100 * MAX_DRAWN_DIFF:.0f} % of matrix", skinned)]
+
+
+def totals(files, pipelines):
+    """Per pipeline: drawn, worst rigid PSNR, skinned files over 1 %, fallback totals and files."""
+    per = {}
+    for name in pipelines:
+        rows = [(f, r) for f in files for r in f["rows"] if r["pipeline"] == name]
+        rigid = [(r["worstRigidPsnr"], f["file"]) for f, r in rows if r.get("worstRigidPsnr") is not None]
+        worst = min(rigid, key=lambda x: x[0]) if rigid else (None, None)
+        fb = {}
+        for key in FALLBACKS:
+            vals = [r.get("fallbacks", {}).get(key, 0) for _, r in rows]
+            fb[key] = {"total": sum(vals), "files": sum(1 for v in vals if v)}
+        per[name] = {"rows": len(rows), "drawn": sum(1 for _, r in rows if r.get("drawn")),
+                     "errors": sum(1 for _, r in rows if r.get("status") in ("error", "crashed")),
+                     "worstRigidPsnr": worst[0], "worstRigidFile": worst[1],
+                     "rigidFilesBelow50dB": sum(1 for v, _ in rigid if v < MIN_PSNR),
+                     "skinnedFilesOver1Percent": sum(1 for _, r in rows if (r.get("worstSkinnedDrawnDiff") or 0) > MAX_DRAWN_DIFF),
+                     "compactFilesOutsideEnvelope": sum(1 for _, r in rows if r.get("outsideEnvelope")),
+                     "fallbacks": fb, "seconds": round(sum(r.get("seconds", 0) for _, r in rows), 1)}
+    return per
+
+
+def markdown(summary, files, per, rules):
+    s = summary
+    out = [f"# corpus-check: {s['folder']}", "",
+           f"{s['files']} files, {s['size']}, {s['jobs']} jobs, {s['wallSeconds']:.0f} s wall "
+           f"({s['workerSeconds']:.0f} s in workers); drawn on {s.get('gl') or 'no context'}", "",
+           "| files | ok | no data | load failed | crashed | pipeline errors | rigid | skinned |",
+           "|---|---|---|---|---|---|---|---|",
+           f"| {s['files']} | {s['ok']} | {s['noData']} | {s['loadFailed']} | {s['crashed']} | {s['pipelineErrors']} "
+           f"| {s['rigidFiles']} | {s['skinnedFiles']} |", "",
+           "| pipeline | rows | drawn | errors | worst rigid PSNR (file) | rigid < 50 dB | compact outside bound "
+           "| skinned > 1 % | seconds |", "|---|---|---|---|---|---|---|---|---|"]
+    for name, p in per.items():
+        worst = "-" if p["worstRigidPsnr"] is None else f"{fmt_psnr(p['worstRigidPsnr'])} ({p['worstRigidFile']})"
+        comp = str(p["compactFilesOutsideEnvelope"]) if name in COMPACT else "-"
+        out.append(f"| {name} | {p['rows']} | {p['drawn']} | {p['errors']} | {worst} | {p['rigidFilesBelow50dB']} "
+                   f"| {comp} | {p['skinnedFilesOver1Percent']} | {p['seconds']} |")
+    out += ["", "Fallbacks (per file the largest value over its frames, summed over files; files taking it):", "",
+            "| counter | " + " | ".join(per) + " |", "|---|" + "---|" * len(per)]
+    for key in FALLBACKS:
+        cells = [f"{p['fallbacks'][key]['total']} ({p['fallbacks'][key]['files']})" if p["fallbacks"][key]["total"] else "0"
+                 for p in per.values()]
+        out.append(f"| {key} | " + " | ".join(cells) + " |")
+    lf = s["loaderFallbacks"]
+    out += ["", "Loader fallbacks (total; files): " + (", ".join(f"{k} {v['total']} ({v['files']})" for k, v in lf.items()) or "none")]
+    out += ["", "## Rules", ""]
+    for name, fails in rules:
+        out.append(f"- {'PASS' if not fails else 'FAIL'}: {name}" + (f" ({len(fails)})" if fails else ""))
+        out += [f"  - {line}" for line in fails]
+    out += ["", "## Files", "",
+            "Bound: the 16-byte pipelines' position error in pixels at this size (rigid files; int16 in each "
+            "primitive's bounding cube: half extent / 32767 world units, projected at the nearest depth).", "",
+            "| file | status | kind | bound px | " + " | ".join(per) + " |", "|---|---|---|---|" + "---|" * len(per)]
+    for f in files:
+        cells = []
+        rows = {r["pipeline"]: r for r in f["rows"]}
+        for name in per:
+            r = rows.get(name)
+            if r is None:
+                cells.append("-")
+            elif r.get("status") != "ok" or not r.get("drawn"):
+                cells.append("**" + (r.get("status") if r.get("status") != "ok" else "not drawn") + "**")
+            elif f.get("kind") == "skinned":
+                d = r.get("worstSkinnedDrawnDiff")
+                cells.append("-" if d is None or name == "matrix" else f"{100 * d:.1f} %")
+            else:
+                cells.append("-" if name == "matrix" else fmt_psnr(r.get("worstRigidPsnr")))
+        bound = "-" if f.get("boundPixels") is None else f"{f['boundPixels']:.2g}"
+        status = f["status"] + ("" if f["status"] in ("ok",) else f": {f.get('error')}")
+        out.append(f"| {f['file']} | {status} | {f.get('kind', '-')} | {bound} | " + " | ".join(cells) + " |")
+    out += ["", "Cells: rigid files the worst PSNR (dB) against matrix over their frames; skinned files the largest "
+            "drawn-pixel difference from matrix."]
+    return "\n".join(out) + "\n"
+
+
+def finite(v):
+    """JSON has no infinity: an identical frame's PSNR is written null (rigidIdentical says so)."""
+    if isinstance(v, float) and math.isinf(v):
+        return None
+    if isinstance(v, dict):
+        return {k: finite(x) for k, x in v.items()}
+    if isinstance(v, list):
+        return [finite(x) for x in v]
+    return v
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(prog="corpus-check.sh", description=__doc__.split("\n")[0])
+    ap.add_argument("paths", nargs="*", help="folders (searched recursively) and files; default ../shared/corpus-wide")
+    ap.add_argument("--out", default=os.path.join(REPO, "build", "corpus-check"), help="folder for corpus-check.json/.md")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="workers at a time (default: the CPUs)")
+    ap.add_argument("--size", default="128x128", help="image size (default 128x128)")
+    ap.add_argument("--timeout", type=float, default=300.0, help="seconds per worker before it is killed")
+    ap.add_argument("--exe", default=os.environ.get("MB_MOTORBENCH_EXE", os.path.join(REPO, "build", "harness", "motorbench")))
+    a = ap.parse_args(argv)
+    paths = a.paths or [DEFAULT_DIR]
+    for p in paths:
+        if not os.path.exists(p):
+            print(f"corpus-check: {p}: no such file or folder", file=sys.stderr)
+            return 2
+    if not os.access(a.exe, os.X_OK):
+        print(f"corpus-check: {a.exe}: no motorbench executable (build it, or give --exe)", file=sys.stderr)
+        return 2
+    todo = gltf_files(paths)
+    if not todo:
+        print(f"corpus-check: no .gltf/.glb files under {', '.join(paths)}", file=sys.stderr)
+        return 2
+    features = manifest_features(paths)
+    roots = [os.path.abspath(p) for p in paths]
+    common = os.path.commonpath(roots) if len(roots) > 1 else (roots[0] if os.path.isdir(roots[0]) else os.path.dirname(roots[0]))
+    if a.jobs > 1 and "LP_NUM_THREADS" not in os.environ:
+        # llvmpipe: one thread per worker, so that --jobs workers share the CPUs without contention.
+        os.environ["LP_NUM_THREADS"] = str(max(1, (os.cpu_count() or 1) // a.jobs))
+
+    # The workers run a private copy: a rebuild during the run must not swap the binary under them.
+    scratch = tempfile.mkdtemp(prefix="corpus-check-exe-")
+    exe = os.path.join(scratch, "motorbench")
+    shutil.copy2(a.exe, exe)
+    t0 = time.monotonic()
+    results = [None] * len(todo)
+    done, lock = [0], threading.Lock()
+
+    def one(i):
+        path = todo[i]
+        rel = os.path.relpath(os.path.abspath(path), common)
+        res = survey_file(exe, path, rel, a.size, a.timeout, features.get(os.path.abspath(path), ""))
+        with lock:
+            done[0] += 1
+            el = time.monotonic() - t0
+            left = el / done[0] * (len(todo) - done[0])
+            print(f"[{done[0]}/{len(todo)}] {el:.0f} s elapsed, ~{left:.0f} s left: {rel}: {res['status']}"
+                  f"{'' if res['status'] == 'ok' else ' (' + str(res.get('error')) + ')'} {res['seconds']:.1f} s",
+                  file=sys.stderr, flush=True)
+        results[i] = res
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as pool:
+        list(pool.map(one, range(len(todo))))
+
+    shutil.rmtree(scratch, ignore_errors=True)
+    files = results
+    pipelines = []
+    for f in files:
+        for r in f["rows"]:
+            if r["pipeline"] not in pipelines:
+                pipelines.append(r["pipeline"])
+    rules = evaluate(files)
+    per = totals(files, pipelines)
+    lf = {}
+    for f in files:
+        for k, v in (f.get("loaderFallbacks") or {}).items():
+            lf.setdefault(k, {"total": 0, "files": 0})
+            lf[k]["total"] += v
+            lf[k]["files"] += 1
+    summary = {"folder": ", ".join(paths) if len(paths) <= 2 else f"{len(paths)} paths under {common}", "files": len(files), "size": a.size, "jobs": a.jobs,
+               "wallSeconds": round(time.monotonic() - t0, 1), "workerSeconds": round(sum(f["seconds"] for f in files), 1),
+               "gl": next((f["gl"] for f in files if f.get("gl")), None),
+               "ok": sum(1 for f in files if f["status"] == "ok"),
+               "noData": sum(1 for f in files if f["status"] == "no-data"),
+               "loadFailed": sum(1 for f in files if f["status"] == "load-failed"),
+               "crashed": sum(1 for f in files if f["status"] in ("crashed", "worker-error")),
+               "pipelineErrors": sum(1 for f in files for r in f["rows"] if r.get("status") == "error"),
+               "rigidFiles": sum(1 for f in files if f.get("kind") == "rigid"),
+               "skinnedFiles": sum(1 for f in files if f.get("kind") == "skinned"),
+               "rows": sum(len(f["rows"]) for f in files), "loaderFallbacks": lf,
+               "notDrawable": {f["file"]: f["error"] for f in files if f["status"] == "no-data"},
+               "loadFailures": {f["file"]: f["error"] for f in files if f["status"] == "load-failed"},
+               "crashes": {f["file"]: f["error"] for f in files if f["status"] in ("crashed", "worker-error")}}
+    doc = {"summary": summary, "pipelines": per,
+           "rules": [{"rule": n, "pass": not fails, "failures": fails} for n, fails in rules],
+           "files": [{k: v for k, v in f.items() if k != "rows"} for f in files],
+           "rows": [r for f in files for r in f["rows"]]}
+    os.makedirs(a.out, exist_ok=True)
+    md = markdown(summary, files, per, rules)
+    with open(os.path.join(a.out, "corpus-check.json"), "w", encoding="utf-8") as f:
+        json.dump(finite(doc), f, indent=1)
+        f.write("\n")
+    with open(os.path.join(a.out, "corpus-check.md"), "w", encoding="utf-8") as f:
+        f.write(md)
+    print(md.split("\n## Files")[0])
+    print(f"corpus-check: wrote {os.path.join(a.out, 'corpus-check.md')} and corpus-check.json", file=sys.stderr)
+    return 1 if any(fails for _, fails in rules) else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
