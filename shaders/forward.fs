@@ -22,7 +22,10 @@
 //                u_EmissiveFactor vec3; u_NormalScale, u_OcclusionStrength float;
 //                u_AlphaMode int (0 OPAQUE, 1 MASK, 2 BLEND); u_AlphaCutoff float;
 //                u_BaseColorUV, u_MetallicRoughnessUV, u_NormalUV, u_OcclusionUV,
-//                u_EmissiveUV int (texture coordinate set 0/1, or -1 = no texture)
+//                u_EmissiveUV int (texture coordinate set 0/1, or -1 = no texture; 2/3: set
+//                0/1 through the slot's KHR_texture_transform matrix below)
+//                u_BaseColorUVTransform, ... u_EmissiveUVTransform mat3: uv' = M * (uv, 1)
+//                (set only for slots with a transform; the others never read theirs)
 //   samplers     u_BaseColorTexture (unit 0), u_MetallicRoughnessTexture (1),
 //                u_NormalTexture (2), u_OcclusionTexture (3), u_EmissiveTexture (4).
 //                Base colour and emissive textures are sRGB textures (decoded by GL).
@@ -60,6 +63,11 @@ uniform int u_MetallicRoughnessUV;
 uniform int u_NormalUV;
 uniform int u_OcclusionUV;
 uniform int u_EmissiveUV;
+uniform mat3 u_BaseColorUVTransform;
+uniform mat3 u_MetallicRoughnessUVTransform;
+uniform mat3 u_NormalUVTransform;
+uniform mat3 u_OcclusionUVTransform;
+uniform mat3 u_EmissiveUVTransform;
 
 layout(binding = 0) uniform sampler2D u_BaseColorTexture;
 layout(binding = 1) uniform sampler2D u_MetallicRoughnessTexture;
@@ -76,7 +84,13 @@ const vec3 FILL_RADIANCE = vec3(0.55, 0.6, 0.7);
 const vec3 AMBIENT_SKY = vec3(0.30, 0.32, 0.36);
 const vec3 AMBIENT_GROUND = vec3(0.16, 0.15, 0.14);
 
-vec2 uvSet(int set) { return set == 1 ? v_uv1 : v_uv0; }
+// The uvs a texture slot samples: set 0/1 as interpolated, or (set 2/3) through the slot's
+// KHR_texture_transform. Without a transform the uvs are untouched, so files without the
+// extension draw exactly as before it was supported.
+vec2 uvSet(int set, mat3 transform) {
+  vec2 uv = (set & 1) == 1 ? v_uv1 : v_uv0;
+  return set >= 2 ? (transform * vec3(uv, 1.0)).xy : uv;
+}
 
 // IEC 61966-2-1 sRGB encoding of a linear value in [0, 1].
 vec3 linearToSrgb(vec3 c) {
@@ -95,7 +109,7 @@ vec3 shadingNormal() {
 #else
   if (u_NormalUV < 0) return tbnSurfaceNormal(v_worldNormal, facing);
 #endif
-  vec3 m = texture(u_NormalTexture, uvSet(u_NormalUV)).rgb * 2.0 - 1.0;
+  vec3 m = texture(u_NormalTexture, uvSet(u_NormalUV, u_NormalUVTransform)).rgb * 2.0 - 1.0;
   m.xy *= u_NormalScale;
 #ifdef MB_FRAGMENT_ROTOR
   return rotorShadingNormal(v_worldRotor, v_handedness, m, facing);
@@ -106,12 +120,12 @@ vec3 shadingNormal() {
 
 void main() {
   vec4 base = u_BaseColorFactor * v_color;
-  if (u_BaseColorUV >= 0) base *= texture(u_BaseColorTexture, uvSet(u_BaseColorUV));
+  if (u_BaseColorUV >= 0) base *= texture(u_BaseColorTexture, uvSet(u_BaseColorUV, u_BaseColorUVTransform));
   if (u_AlphaMode == 1 && base.a < u_AlphaCutoff) discard;
 
   float metallic = u_MetallicFactor, roughness = u_RoughnessFactor;
   if (u_MetallicRoughnessUV >= 0) {
-    vec4 mr = texture(u_MetallicRoughnessTexture, uvSet(u_MetallicRoughnessUV));
+    vec4 mr = texture(u_MetallicRoughnessTexture, uvSet(u_MetallicRoughnessUV, u_MetallicRoughnessUVTransform));
     roughness *= mr.g;  // glTF: roughness in G, metalness in B
     metallic *= mr.b;
   }
@@ -127,7 +141,7 @@ void main() {
   // reflection on the specular part; occlusion darkens only this indirect term (glTF spec).
   float ao = 1.0;
   if (u_OcclusionUV >= 0)
-    ao = 1.0 + u_OcclusionStrength * (texture(u_OcclusionTexture, uvSet(u_OcclusionUV)).r - 1.0);
+    ao = 1.0 + u_OcclusionStrength * (texture(u_OcclusionTexture, uvSet(u_OcclusionUV, u_OcclusionUVTransform)).r - 1.0);
   vec3 sky = mix(AMBIENT_GROUND, AMBIENT_SKY, 0.5 + 0.5 * N.y);
   vec3 f0 = mix(vec3(0.04), base.rgb, metallic);
   vec3 Fv = ggxFresnelSchlick(f0, vec3(1.0), clamp(dot(N, V), 0.0, 1.0));
@@ -135,7 +149,7 @@ void main() {
   color += ao * sky * ((1.0 - Fv) * diffuseColor + Fv * (1.0 - 0.5 * roughness));
 
   vec3 emissive = u_EmissiveFactor;
-  if (u_EmissiveUV >= 0) emissive *= texture(u_EmissiveTexture, uvSet(u_EmissiveUV)).rgb;
+  if (u_EmissiveUV >= 0) emissive *= texture(u_EmissiveTexture, uvSet(u_EmissiveUV, u_EmissiveUVTransform)).rgb;
   color += emissive;
 
   o_color = vec4(linearToSrgb(color), u_AlphaMode == 2 ? base.a : 1.0);

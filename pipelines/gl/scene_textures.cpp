@@ -109,22 +109,29 @@ void SceneTextures::bindMaterial(const Program& program, int materialIndex,
   const Material& m = (scene_ && materialIndex >= 0 && size_t(materialIndex) < scene_->materials.size())
                           ? scene_->materials[size_t(materialIndex)]
                           : defaultMaterial();
-  // Binds one texture slot; returns the uv set forward.fs should sample, -1 for none.
-  auto slot = [&](GLuint unit, const TextureRef& ref, bool srgb) {
+  // Binds one texture slot and sets its u_<name>UV: the uv set forward.fs should sample, -1 for
+  // none, set + 2 with a KHR_texture_transform, whose matrix then goes to u_<name>UVTransform
+  // (only then: a material without transforms sets, and counts, what it did before them).
+  auto slot = [&](const char* name, GLuint unit, const TextureRef& ref, bool srgb) {
     GLuint tex = textureFor(ref.texture, srgb);
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_2D, tex ? tex : white_);
     int sampler = tex ? scene_->textures[size_t(ref.texture)].sampler : -1;
     glBindSampler(unit, sampler >= 0 && size_t(sampler) < samplers_.size()
                             ? samplers_[size_t(sampler)] : defaultSampler_);
-    return tex ? (ref.texCoord == 1 ? 1 : 0) : -1;
+    int set = tex ? (ref.texCoord == 1 ? 1 : 0) : -1;
+    if (tex && ref.hasTransform) {
+      const glm::mat3 t = uvTransformMatrix(ref.transform);
+      uniformMatrix3(program.uniform(std::string("u_") + name + "UVTransform"), 1, &t[0][0], counter);
+      set += 2;
+    }
+    uniform1i(program.uniform(std::string("u_") + name + "UV"), set, counter);
   };
-  uniform1i(program.uniform("u_BaseColorUV"), slot(kUnitBaseColor, m.baseColor, true), counter);
-  uniform1i(program.uniform("u_MetallicRoughnessUV"),
-            slot(kUnitMetallicRoughness, m.metallicRoughness, false), counter);
-  uniform1i(program.uniform("u_NormalUV"), slot(kUnitNormal, m.normal, false), counter);
-  uniform1i(program.uniform("u_OcclusionUV"), slot(kUnitOcclusion, m.occlusion, false), counter);
-  uniform1i(program.uniform("u_EmissiveUV"), slot(kUnitEmissive, m.emissive, true), counter);
+  slot("BaseColor", kUnitBaseColor, m.baseColor, true);
+  slot("MetallicRoughness", kUnitMetallicRoughness, m.metallicRoughness, false);
+  slot("Normal", kUnitNormal, m.normal, false);
+  slot("Occlusion", kUnitOcclusion, m.occlusion, false);
+  slot("Emissive", kUnitEmissive, m.emissive, true);
   glActiveTexture(GL_TEXTURE0);
 
   uniform4f(program.uniform("u_BaseColorFactor"), &m.baseColorFactor.x, counter);

@@ -57,10 +57,12 @@ int appendView(tinygltf::Model& m, std::vector<unsigned char> bytes) {
   return int(m.bufferViews.size()) - 1;
 }
 
-// A copy of accessor `index` that reads `view` (tight FLOAT or UNSIGNED_INT values); the
-// declared one loses its bounds (nothing of it is read). Returns the copy's index.
-int replaceAccessor(tinygltf::Model& m, int index, int view, bool integer) {
+// A copy of accessor `index` that reads `view` (`count` tight FLOAT or UNSIGNED_INT values); the
+// declared one keeps its count (the loader compares the two: LoadStats::dracoCountMismatch) and
+// loses its bounds (nothing of it is read). Returns the copy's index.
+int replaceAccessor(tinygltf::Model& m, int index, int view, bool integer, size_t count) {
   tinygltf::Accessor a = m.accessors[size_t(index)];
+  a.count = count;
   m.accessors[size_t(index)].minValues.clear();
   m.accessors[size_t(index)].maxValues.clear();
   a.bufferView = view;
@@ -76,6 +78,8 @@ int replaceAccessor(tinygltf::Model& m, int index, int view, bool integer) {
 
 // Attribute `name` (accessor `index`) from Draco attribute `att`, per point, as the declared
 // accessor's values: floats (normalized integers mapped as glTF says) or exact unsigned integers.
+// One value per decoded point, whatever count the accessor declares: three.js draws the decoded
+// geometry too (issue 34); only a different component count is an error.
 Result<std::vector<unsigned char>> attributeValues(const tinygltf::Model& m, const draco::Mesh& mesh,
                                                    const draco::PointAttribute& att, int index,
                                                    const std::string& name) {
@@ -83,7 +87,7 @@ Result<std::vector<unsigned char>> attributeValues(const tinygltf::Model& m, con
   const tinygltf::Accessor& acc = m.accessors[size_t(index)];
   const std::string who = "accessor " + std::to_string(index) + " (" + name + ")";
   const int comps = typeComponents(acc.type);
-  if (size_t(acc.count) != mesh.num_points() || comps != att.num_components())
+  if (comps != att.num_components())
     return R::fail(who + " declares " + std::to_string(acc.count) + " elements of " + std::to_string(comps) +
                    " components, the Draco data has " + std::to_string(mesh.num_points()) + " of " +
                    std::to_string(int(att.num_components())));
@@ -91,7 +95,7 @@ Result<std::vector<unsigned char>> attributeValues(const tinygltf::Model& m, con
   const bool normalize = acc.normalized || att.normalized();
   const int storedType = gltfComponentType(att.data_type());
   const size_t typeBytes = size_t(draco::DataTypeLength(att.data_type()));
-  std::vector<unsigned char> out(size_t(acc.count) * size_t(comps) * 4);
+  std::vector<unsigned char> out(size_t(mesh.num_points()) * size_t(comps) * 4);
   for (uint32_t p = 0; p < mesh.num_points(); ++p) {
     const uint8_t* at = att.GetAddress(att.mapped_index(draco::PointIndex(p)));
     for (int c = 0; c < comps; ++c) {
@@ -154,7 +158,7 @@ Status decodePrimitive(tinygltf::Model& m, tinygltf::Primitive& prim, Compressio
     const tinygltf::Accessor& acc = m.accessors[size_t(it->second)];
     const bool integer = acc.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !acc.normalized;
     decodedBytes += values->size();
-    it->second = replaceAccessor(m, it->second, appendView(m, values.take()), integer);
+    it->second = replaceAccessor(m, it->second, appendView(m, values.take()), integer, mesh.num_points());
   }
 
   // Indices: the decoded faces, in order (a non-indexed primitive draws them as stored).
@@ -168,14 +172,13 @@ Status decodePrimitive(tinygltf::Model& m, tinygltf::Primitive& prim, Compressio
     if (size_t(prim.indices) >= m.accessors.size())
       return Status::fail("indices accessor " + std::to_string(prim.indices) + " does not exist");
     const tinygltf::Accessor& acc = m.accessors[size_t(prim.indices)];
-    if (acc.count != size_t(mesh.num_faces()) * 3 || acc.type != TINYGLTF_TYPE_SCALAR)
-      return Status::fail("indices accessor " + std::to_string(prim.indices) + " declares " + std::to_string(acc.count) +
-                          " elements, the Draco data has " + std::to_string(mesh.num_faces()) + " triangles");
+    if (acc.type != TINYGLTF_TYPE_SCALAR)  // a count other than 3 x the decoded faces: the faces are used
+      return Status::fail("indices accessor " + std::to_string(prim.indices) + " is not SCALAR");
   }
   decodedBytes += indices.size();
   const int indexView = appendView(m, std::move(indices));
   if (prim.indices >= 0) {
-    prim.indices = replaceAccessor(m, prim.indices, indexView, true);
+    prim.indices = replaceAccessor(m, prim.indices, indexView, true, size_t(mesh.num_faces()) * 3);
   } else {  // the glTF had no indices accessor: one is made for the decoded faces
     tinygltf::Accessor a;
     a.bufferView = indexView;

@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "pipelines/scene/bpt_reader.h"
@@ -88,7 +90,8 @@ std::string firstLines(std::string s) {
 void noteExtensions(const tinygltf::Model& m, Scene& scene) {
   static const std::set<std::string> supported = {"KHR_mesh_quantization", kBezierPatchesExtension,
                                                   "KHR_draco_mesh_compression", "EXT_meshopt_compression",
-                                                  "KHR_meshopt_compression", "EXT_texture_webp", kInstancingExtension};
+                                                  "KHR_meshopt_compression", "EXT_texture_webp", kInstancingExtension,
+                                                  "KHR_texture_transform", "KHR_materials_emissive_strength"};
   std::set<std::string> seen;
   for (const auto* list : {&m.extensionsRequired, &m.extensionsUsed})
     for (const auto& ext : *list) {
@@ -97,13 +100,58 @@ void noteExtensions(const tinygltf::Model& m, Scene& scene) {
     }
 }
 
+// The accessors a Draco primitive declares, before decodeDracoPrimitives replaces them by the
+// decoded ones: a primitive whose decoded count differs from a declared one is drawn from the
+// decoded data (as three.js does) and counted (LoadStats::dracoCountMismatch).
+struct DeclaredDraco {
+  size_t mesh = 0, primitive = 0;
+  std::map<std::string, int> attributes;
+  int indices = -1;
+};
+
+std::vector<DeclaredDraco> declaredDraco(const tinygltf::Model& m) {
+  std::vector<DeclaredDraco> out;
+  for (size_t mi = 0; mi < m.meshes.size(); ++mi)
+    for (size_t pi = 0; pi < m.meshes[mi].primitives.size(); ++pi) {
+      const tinygltf::Primitive& p = m.meshes[mi].primitives[pi];
+      if (p.extensions.count("KHR_draco_mesh_compression")) out.push_back({mi, pi, p.attributes, p.indices});
+    }
+  return out;
+}
+
+int dracoCountMismatches(const tinygltf::Model& m, const std::vector<DeclaredDraco>& declared) {
+  auto count = [&](int a) { return a >= 0 && size_t(a) < m.accessors.size() ? m.accessors[size_t(a)].count : size_t(0); };
+  int n = 0;
+  for (const DeclaredDraco& d : declared) {
+    const tinygltf::Primitive& p = m.meshes[d.mesh].primitives[d.primitive];
+    bool differs = d.indices >= 0 && p.indices != d.indices && count(p.indices) != count(d.indices);
+    for (const auto& [name, before] : d.attributes) {
+      auto now = p.attributes.find(name);
+      differs |= now != p.attributes.end() && now->second != before && count(now->second) != count(before);
+    }
+    n += differs;
+  }
+  return n;
+}
+
+// A GLB whose JSON chunk length is not a multiple of 4 (preflightGltf read it as three.js does).
+bool jsonChunkUnpadded(const std::vector<uint8_t>& b) {
+  if (b.size() < 20 || std::memcmp(b.data(), "glTF", 4) != 0) return false;
+  uint32_t length = 0;
+  std::memcpy(&length, b.data() + 12, 4);
+  return length % 4 != 0;
+}
+
 Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadContext& ctx,
-                      const ConformedGltf& conformed, const CompressionStats& compression) {
+                      const ConformedGltf& conformed, const CompressionStats& compression, int dracoMismatches,
+                      bool jsonUnpadded) {
   Scene scene;
   scene.source = name;
   scene.compression = compression;
   scene.compression.webpImages = ctx.webpImages;
   scene.stats.binChunkUnaligned = conformed.binChunkPadded;
+  scene.stats.dracoCountMismatch = dracoMismatches;
+  scene.stats.jsonChunkUnpadded = jsonUnpadded;
   for (const auto& note : conformed.notes) scene.unsupported.push_back(note);
   noteExtensions(m, scene);
   Status s = convertNodes(m, scene);
@@ -162,10 +210,12 @@ Result<Scene> loadGltfMemory(const std::vector<uint8_t>& original, const std::st
     if (!ok) return Result<Scene>::fail(name + ": " + firstLines(err));
     applyConformance(conformed, model);
     CompressionStats compression;
+    const std::vector<DeclaredDraco> declared = declaredDraco(model);
     Status decoded = decodeMeshoptViews(model, compression);
     if (decoded) decoded = decodeDracoPrimitives(model, compression);
     if (!decoded) return Result<Scene>::fail(name + ": " + decoded.error());
-    return convert(model, name, ctx, conformed, compression);
+    return convert(model, name, ctx, conformed, compression, dracoCountMismatches(model, declared),
+                   glb && jsonChunkUnpadded(original));
   } catch (const std::exception& e) {
     return Result<Scene>::fail(name + ": " + e.what());
   }

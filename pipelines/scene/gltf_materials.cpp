@@ -1,6 +1,8 @@
 // Materials, textures, samplers and images (RGBA8) from a tinygltf::Model.
 #include <tiny_gltf.h>
 
+#include <cmath>
+
 #include "pipelines/scene/gltf_convert.h"
 
 namespace mb {
@@ -30,14 +32,69 @@ bool toRgba8(const tinygltf::Image& src, Image* dst) {
   return true;
 }
 
+constexpr const char* kTextureTransform = "KHR_texture_transform";
+constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
+
+// `n` finite numbers from array `v` into out[0..n); false (out untouched) otherwise.
+bool numbers(const tinygltf::Value& v, size_t n, float* out) {
+  if (!v.IsArray() || v.ArrayLen() != n) return false;
+  for (size_t k = 0; k < n; ++k)
+    if (!v.Get(int(k)).IsNumber() || !std::isfinite(v.Get(int(k)).GetNumberAsDouble())) return false;
+  for (size_t k = 0; k < n; ++k) out[k] = float(v.Get(int(k)).GetNumberAsDouble());
+  return true;
+}
+
+// KHR_texture_transform on one textureInfo (offset, rotation, scale, texCoord override). A member
+// of the wrong type keeps its default and is listed: the rest of the transform still applies.
+void readTransform(const tinygltf::Value& ext, const std::string& where, TextureRef* out, Scene& scene) {
+  out->hasTransform = true;
+  if (!ext.IsObject()) {
+    scene.unsupported.push_back(where + ": " + kTextureTransform + " is not an object (ignored)");
+    out->hasTransform = false;
+    return;
+  }
+  auto bad = [&](const char* member, const char* want) {
+    scene.unsupported.push_back(where + ": " + kTextureTransform + " " + member + " is not " + want + " (default used)");
+  };
+  if (ext.Has("offset") && !numbers(ext.Get("offset"), 2, &out->transform.offset.x)) bad("offset", "2 finite numbers");
+  if (ext.Has("scale") && !numbers(ext.Get("scale"), 2, &out->transform.scale.x)) bad("scale", "2 finite numbers");
+  if (ext.Has("rotation")) {
+    const tinygltf::Value& r = ext.Get("rotation");
+    if (r.IsNumber() && std::isfinite(r.GetNumberAsDouble())) out->transform.rotation = float(r.GetNumberAsDouble());
+    else bad("rotation", "a finite number");
+  }
+  if (ext.Has("texCoord")) {
+    const tinygltf::Value& t = ext.Get("texCoord");
+    if (t.IsInt() && t.GetNumberAsInt() >= 0) out->texCoord = t.GetNumberAsInt();
+    else bad("texCoord", "an integer >= 0");
+  }
+}
+
 Status textureRef(const tinygltf::Model& m, int index, int texCoord, double scale,
-                  const std::string& where, TextureRef* out) {
+                  const tinygltf::ExtensionMap& extensions, const std::string& where, TextureRef* out,
+                  Scene& scene) {
   if (index < -1 || index >= int(m.textures.size()))
     return Status::fail(where + ": texture " + std::to_string(index) + " does not exist");
   out->texture = index;
   out->texCoord = texCoord;
   out->scale = float(scale);
+  for (const auto& [ext, v] : extensions) {
+    if (ext == kTextureTransform) readTransform(v, where, out, scene);
+    else scene.unsupported.push_back(where + ": texture extension " + ext + " ignored");
+  }
   return {};
+}
+
+// The textures some material's textureInfo names (the ones a draw can sample).
+std::vector<bool> texturesUsed(const tinygltf::Model& m) {
+  std::vector<bool> used(m.textures.size(), false);
+  for (const auto& mat : m.materials) {
+    const auto& pbr = mat.pbrMetallicRoughness;
+    for (int t : {pbr.baseColorTexture.index, pbr.metallicRoughnessTexture.index, mat.normalTexture.index,
+                  mat.occlusionTexture.index, mat.emissiveTexture.index})
+      if (t >= 0 && size_t(t) < used.size()) used[size_t(t)] = true;
+  }
+  return used;
 }
 
 }  // namespace
@@ -64,6 +121,7 @@ Status convertMaterials(const tinygltf::Model& m, Scene& scene) {
     out.wrapT = s.wrapT;
     scene.samplers.push_back(out);
   }
+  const std::vector<bool> used = texturesUsed(m);
   for (size_t i = 0; i < m.textures.size(); ++i) {
     const auto& t = m.textures[i];
     const std::string who = "texture " + std::to_string(i);
@@ -82,8 +140,18 @@ Status convertMaterials(const tinygltf::Model& m, Scene& scene) {
         scene.unsupported.push_back(who + ": extension " + ext + " ignored");
       }
     }
-    if (source < -1 || source >= int(m.images.size()) || t.sampler < -1 || t.sampler >= int(m.samplers.size()))
-      return Status::fail(who + " refers to a missing image or sampler");
+    if (t.sampler < -1 || t.sampler >= int(m.samplers.size()))
+      return Status::fail(who + " refers to sampler " + std::to_string(t.sampler) + ", which does not exist (" +
+                          std::to_string(m.samplers.size()) + " samplers)");
+    if (source < -1 || source >= int(m.images.size())) {
+      const std::string missing = who + " refers to image " + std::to_string(source) + ", which does not exist (" +
+                                  std::to_string(m.images.size()) + " images)";
+      if (used[i]) return Status::fail(missing);
+      // No material samples it: nothing is drawn differently without it (three.js and the
+      // Sample Viewer load such files). Kept as a texture without image.
+      ++scene.stats.unusedTexturesWithoutImage;
+      source = -1;
+    }
     scene.textures.push_back({source, t.sampler});
   }
   for (size_t i = 0; i < m.materials.size(); ++i) {
@@ -97,18 +165,33 @@ Status convertMaterials(const tinygltf::Model& m, Scene& scene) {
     mat.metallicFactor = float(pbr.metallicFactor);
     mat.roughnessFactor = float(pbr.roughnessFactor);
     Status s;
-    if (s = textureRef(m, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, 1.0, where, &mat.baseColor); !s) return s;
-    if (s = textureRef(m, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, 1.0, where, &mat.metallicRoughness); !s) return s;
-    if (s = textureRef(m, src.normalTexture.index, src.normalTexture.texCoord, src.normalTexture.scale, where, &mat.normal); !s) return s;
-    if (s = textureRef(m, src.occlusionTexture.index, src.occlusionTexture.texCoord, src.occlusionTexture.strength, where, &mat.occlusion); !s) return s;
-    if (s = textureRef(m, src.emissiveTexture.index, src.emissiveTexture.texCoord, 1.0, where, &mat.emissive); !s) return s;
+    if (s = textureRef(m, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, 1.0, pbr.baseColorTexture.extensions,
+                       where + " baseColorTexture", &mat.baseColor, scene); !s) return s;
+    if (s = textureRef(m, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, 1.0,
+                       pbr.metallicRoughnessTexture.extensions, where + " metallicRoughnessTexture", &mat.metallicRoughness,
+                       scene); !s) return s;
+    if (s = textureRef(m, src.normalTexture.index, src.normalTexture.texCoord, src.normalTexture.scale,
+                       src.normalTexture.extensions, where + " normalTexture", &mat.normal, scene); !s) return s;
+    if (s = textureRef(m, src.occlusionTexture.index, src.occlusionTexture.texCoord, src.occlusionTexture.strength,
+                       src.occlusionTexture.extensions, where + " occlusionTexture", &mat.occlusion, scene); !s) return s;
+    if (s = textureRef(m, src.emissiveTexture.index, src.emissiveTexture.texCoord, 1.0, src.emissiveTexture.extensions,
+                       where + " emissiveTexture", &mat.emissive, scene); !s) return s;
     mat.alphaMode = src.alphaMode == "MASK" ? AlphaMode::Mask : src.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
     mat.alphaCutoff = float(src.alphaCutoff);
     mat.doubleSided = src.doubleSided;
-    for (const auto& [ext, v] : src.extensions) scene.unsupported.push_back(where + ": extension " + ext + " ignored");
-    for (const auto* info : {&pbr.baseColorTexture, &pbr.metallicRoughnessTexture, &src.emissiveTexture})
-      for (const auto& [ext, v] : info->extensions) scene.unsupported.push_back(where + ": texture extension " + ext + " ignored");
-    for (const auto& [ext, v] : src.normalTexture.extensions) scene.unsupported.push_back(where + ": texture extension " + ext + " ignored");
+    for (const auto& [ext, v] : src.extensions) {
+      if (ext != kEmissiveStrength) {
+        scene.unsupported.push_back(where + ": extension " + ext + " ignored");
+        continue;
+      }
+      // The emissive factor's multiplier (default 1); forward.fs draws emissive linear, unclamped
+      // until the final sRGB encoding.
+      const tinygltf::Value& k = v.IsObject() ? v.Get("emissiveStrength") : tinygltf::Value();
+      if (k.IsNumber() && std::isfinite(k.GetNumberAsDouble()) && k.GetNumberAsDouble() >= 0)
+        mat.emissiveFactor *= float(k.GetNumberAsDouble());
+      else if (!v.IsObject() || v.Has("emissiveStrength"))
+        scene.unsupported.push_back(where + ": " + kEmissiveStrength + " emissiveStrength is not a number >= 0 (ignored)");
+    }
     scene.materials.push_back(std::move(mat));
   }
   return {};

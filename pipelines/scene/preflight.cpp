@@ -65,6 +65,47 @@ std::vector<uint8_t> padUnalignedBin(const std::vector<uint8_t>& b) {
   return out;
 }
 
+// A GLB whose JSON chunk length is not a multiple of 4 (glTF 2.0 4.4.3.1 requires trailing
+// spaces): rewritten with the JSON space-padded and the lengths patched. The chunks that follow
+// are taken from where the writer put them: right after the JSON's last byte (where three.js
+// and tinygltf read them; the common case) or, when the bytes up to the next multiple of 4 are
+// padding, at that boundary. Empty (no rewrite) when the length is aligned or the header does
+// not fit the file (checkGlb names that); `*why` names a chunk layout that fits neither.
+std::vector<uint8_t> padUnpaddedJson(const std::vector<uint8_t>& b, std::string* why) {
+  if (b.size() < 20 || u32(b, 12) % 4 == 0) return {};
+  const uint64_t length = u32(b, 8), jsonEnd = 20 + uint64_t(u32(b, 12)), aligned = (jsonEnd + 3) & ~uint64_t(3);
+  if (length > b.size() || jsonEnd > length || u32(b, 16) != 0x4E4F534Au) return {};
+  // A chunk header at `at` whose chunk ends inside the file; `bin`: it must be the BIN chunk.
+  auto chunkFits = [&](uint64_t at, bool bin) {
+    return at + 8 <= length && (!bin || u32(b, size_t(at) + 4) == 0x004E4942u) && at + 8 + u32(b, size_t(at)) <= length;
+  };
+  auto padding = [&] {
+    for (uint64_t i = jsonEnd; i < aligned; ++i)
+      if (b[size_t(i)] != ' ' && b[size_t(i)] != 0) return false;
+    return aligned <= length;
+  };
+  uint64_t rest = 0;
+  if (jsonEnd == length || chunkFits(jsonEnd, true)) rest = jsonEnd;
+  else if (padding() && (aligned == length || chunkFits(aligned, false))) rest = aligned;
+  else {
+    const bool binHere = jsonEnd + 8 <= length && u32(b, size_t(jsonEnd) + 4) == 0x004E4942u;
+    *why = binHere ? "truncated GLB: BIN chunk (after a JSON chunk of " + std::to_string(jsonEnd - 20) +
+                         " bytes, not a multiple of 4) declares " + std::to_string(u32(b, size_t(jsonEnd))) +
+                         " bytes, " + std::to_string(length - jsonEnd - 8) + " remain"
+                   : "GLB JSON chunk length " + std::to_string(jsonEnd - 20) +
+                         " is not a multiple of 4 and no chunk starts at byte " + std::to_string(jsonEnd) + " or " +
+                         std::to_string(aligned);
+    return {};
+  }
+  std::vector<uint8_t> out(b.begin(), b.begin() + long(jsonEnd));
+  out.resize(size_t(aligned), ' ');
+  out.insert(out.end(), b.begin() + long(rest), b.begin() + long(length));
+  const uint32_t jsonLength = uint32_t(aligned - 20), total = uint32_t(out.size());
+  std::memcpy(out.data() + 12, &jsonLength, 4);
+  std::memcpy(out.data() + 8, &total, 4);
+  return out;
+}
+
 uint64_t field(const nlohmann::json& o, const char* key, uint64_t fallback, bool* ok) {
   auto it = o.find(key);
   if (it == o.end()) return fallback;
@@ -120,6 +161,16 @@ std::string printable(const std::string& s) {
 Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb,
                      ConformedGltf* conformed) {
   *isGlb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  std::string unpaddedWhy;
+  if (std::vector<uint8_t> padded = *isGlb ? padUnpaddedJson(bytes, &unpaddedWhy) : std::vector<uint8_t>{};
+      !padded.empty()) {
+    ConformedGltf local;
+    if (!conformed) conformed = &local;
+    Status s = preflightGltf(padded, nameHint, isGlb, conformed);
+    if (conformed->bytes.empty()) conformed->bytes = std::move(padded);
+    return s;  // the loader counts it from the original header (LoadStats::jsonChunkUnpadded)
+  }
+  if (!unpaddedWhy.empty()) return Status::fail(unpaddedWhy);
   if (std::vector<uint8_t> padded = *isGlb ? padUnalignedBin(bytes) : std::vector<uint8_t>{}; !padded.empty()) {
     ConformedGltf local;
     if (!conformed) conformed = &local;

@@ -2,6 +2,7 @@
 // Attributes are decoded into tight float streams; transforms are kept as authored (TRS or
 // matrix). Nothing here is pipeline-specific: each pipeline's prepare() converts it.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -59,11 +60,31 @@ struct Mesh {
   std::vector<Primitive> primitives;
 };
 
+// KHR_texture_transform on a textureInfo: uv' = T(offset) * R(rotation) * S(scale) * (uv, 1).
+// R turns the uvs counter-clockwise as seen in uv space, whose v axis points down: u' = cos u +
+// sin v, v' = -sin u + cos v (glTF issue 1563; three.js, Babylon.js and the Sample Viewer; the
+// GLSL listing of the extension's README has the opposite sign).
+struct UvTransform {
+  glm::vec2 offset{0.0f};
+  float rotation = 0.0f;  // radians
+  glm::vec2 scale{1.0f};
+};
+
 struct TextureRef {
   int texture = -1;    // index into Scene::textures, -1 = none
-  int texCoord = 0;    // which TEXCOORD_n
+  int texCoord = 0;    // which TEXCOORD_n (KHR_texture_transform's texCoord when it has one)
   float scale = 1.0f;  // normalTexture.scale or occlusionTexture.strength
+  bool hasTransform = false;  // KHR_texture_transform present (false: uvs sampled as they are)
+  UvTransform transform;
 };
+
+// The 3x3 matrix (column-major, glm) of a UvTransform: what forward.fs multiplies (uv, 1) by.
+inline glm::mat3 uvTransformMatrix(const UvTransform& t) {
+  const float c = std::cos(t.rotation), s = std::sin(t.rotation);
+  return glm::mat3(c * t.scale.x, -s * t.scale.x, 0.0f,  // column 0: R * S * (1, 0)
+                   s * t.scale.y, c * t.scale.y, 0.0f,   // column 1: R * S * (0, 1)
+                   t.offset.x, t.offset.y, 1.0f);        // column 2: the offset
+}
 
 enum class AlphaMode { Opaque, Mask, Blend };
 
@@ -71,7 +92,7 @@ struct Material {
   std::string name;
   glm::vec4 baseColorFactor{1.0f};
   float metallicFactor = 1.0f, roughnessFactor = 1.0f;
-  glm::vec3 emissiveFactor{0.0f};
+  glm::vec3 emissiveFactor{0.0f};  // times KHR_materials_emissive_strength's emissiveStrength
   TextureRef baseColor, metallicRoughness, normal, occlusion, emissive;
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;
@@ -155,6 +176,10 @@ struct LoadStats {
   int camerasRepaired = 0;            // cameras with zfar <= znear, bad znear or yfov (Camera)
   int binChunkUnaligned = 0;          // GLB BIN chunk length not a multiple of 4 (padded with zeros)
   int basisuTexturesNotDecoded = 0;   // KHR_texture_basisu sources (no decoder): fallback image or white
+  // Invalid files three.js and the Khronos Sample Viewer draw (issue 34), drawn as they do.
+  int dracoCountMismatch = 0;         // Draco primitives whose decoded count differs from an accessor's (decoded used)
+  int jsonChunkUnpadded = 0;          // GLB JSON chunk length not a multiple of 4 (read as three.js reads it)
+  int unusedTexturesWithoutImage = 0; // textures no material uses whose source image does not exist (kept without)
   // EXT_mesh_gpu_instancing (gltf_instancing.cpp).
   int instanceRotationsNormalised = 0;  // instance ROTATIONs off unit length by > 0.00769
   int instancingDrawnOnce = 0;          // instanced skinned / Bezier patch nodes: drawn once

@@ -91,6 +91,8 @@ nlohmann::json toJson(const LoadStats& s) {
           {"keyframeTimesNotIncreasing", s.keyframeTimesNotIncreasing},
           {"rotationKeysNormalised", s.rotationKeysNormalised}, {"camerasRepaired", s.camerasRepaired},
           {"binChunkUnaligned", s.binChunkUnaligned}, {"basisuTexturesNotDecoded", s.basisuTexturesNotDecoded},
+          {"dracoCountMismatch", s.dracoCountMismatch}, {"jsonChunkUnpadded", s.jsonChunkUnpadded},
+          {"unusedTexturesWithoutImage", s.unusedTexturesWithoutImage},
           {"instanceRotationsNormalised", s.instanceRotationsNormalised},
           {"instancingDrawnOnce", s.instancingDrawnOnce}};
 }

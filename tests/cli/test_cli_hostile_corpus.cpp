@@ -60,7 +60,8 @@ std::string counterName(int mb::LoadStats::*c) {
       {&S::camerasRepaired, "camerasRepaired"},           {&S::binChunkUnaligned, "binChunkUnaligned"},
       {&S::basisuTexturesNotDecoded, "basisuTexturesNotDecoded"},
       {&S::camerasRepaired, "camerasRepaired"}, {&S::instanceRotationsNormalised, "instanceRotationsNormalised"},
-      {&S::instancingDrawnOnce, "instancingDrawnOnce"}};
+      {&S::instancingDrawnOnce, "instancingDrawnOnce"}, {&S::dracoCountMismatch, "dracoCountMismatch"},
+      {&S::jsonChunkUnpadded, "jsonChunkUnpadded"}, {&S::unusedTexturesWithoutImage, "unusedTexturesWithoutImage"}};
   for (const auto& [p, n] : names)
     if (p == c) return n;
   return "";

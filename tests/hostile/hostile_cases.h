@@ -347,6 +347,19 @@ inline std::vector<Case> containerCases() {
                      "BIN chunk length 8: buffer 0 byteLength exceeds it"));
   cs.push_back(fallback("bin_chunk_length_unaligned.glb", patched(L.binHeader, get32(good, L.binHeader) - 1), &LoadStats::binChunkUnaligned, 1,
                         "BIN chunk length not a multiple of 4 (as three.js and the Sample Viewer do: zero-padded, counted)"));
+  {
+    // The JSON chunk unpadded (length 4k + 1..3), the BIN chunk right after it (issue 34).
+    std::string json(good.begin() + 20, good.begin() + long(L.jsonEnd));
+    while (!json.empty() && json.back() == ' ') json.pop_back();
+    if (json.size() % 4 == 0) json += ' ';
+    Bytes b(good.begin(), good.begin() + 20);
+    put32(b, 12, uint32_t(json.size()));
+    appendBytes(b, json.data(), json.size());
+    b.insert(b.end(), good.begin() + long(L.binHeader), good.end());
+    put32(b, 8, uint32_t(b.size()));
+    cs.push_back(fallback("json_chunk_length_unpadded.glb", b, &LoadStats::jsonChunkUnpadded, 1,
+                          "JSON chunk length not a multiple of 4, BIN chunk right after it (read as three.js does, counted)"));
+  }
   cs.push_back(error("bin_chunk_wrong_type.glb", patched(L.binHeader + 4, 0x41414141u), {"bin", "chunk", "type", "invalid"},
                      "second chunk type is not BIN"));
   {
@@ -958,6 +971,9 @@ inline std::vector<Case> contentCases() {
   };
   cs.push_back(error("texture_missing_image.glb", toGlb(textured([](Doc& d) { d.j["textures"][0]["source"] = 9; })), {"image", "source", "texture"},
                      "texture source 9, one image"));
+  cs.push_back(fallback("texture_missing_image_unused.glb", toGlb(textured([](Doc& d) { d.j["textures"].push_back({{"source", 9}}); })),
+                        &LoadStats::unusedTexturesWithoutImage, 1,
+                        "a second texture with source 9 (one image) that no material uses (kept without image, counted)"));
   cs.push_back(error("material_texture_out_of_range.glb",
                      toGlb(textured([](Doc& d) { d.j["materials"][0]["normalTexture"]["index"] = 12; })), {"texture"},
                      "normalTexture index 12, one texture"));
@@ -1169,8 +1185,9 @@ inline std::vector<Case> compressionCases() {
                        v["byteLength"] = v["byteLength"].get<size_t>() / 2;
                      }),
                      {"Draco data does not decode"}, "Draco bufferView cut to half the stream"));
-  cs.push_back(error("draco_count_mismatch.glb", edited(draco, [](compressed::Glb& g) { g.json["accessors"][0]["count"] = 5; }),
-                     {"the Draco data has 4 of 3"}, "POSITION declares 5 vertices, the Draco stream holds 4"));
+  cs.push_back(fallback("draco_count_mismatch.glb", edited(draco, [](compressed::Glb& g) { g.json["accessors"][0]["count"] = 5; }),
+                        &LoadStats::dracoCountMismatch, 1,
+                        "POSITION declares 5 vertices, the Draco stream holds 4 (issue 34: the decoded 4 drawn, as three.js does; counted)"));
   cs.push_back(error("draco_attribute_id_missing.glb", edited(draco, [](compressed::Glb& g) {
                        g.json["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["attributes"]["NORMAL"] = 42;
                      }),
