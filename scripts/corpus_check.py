@@ -200,6 +200,7 @@ def evaluate(files):
     load = [f"{f['file']}: {f['error']}" for f in files if f["status"] == "load-failed"]
     drawn, rigid, compact, skinned = [], [], [], []
     for f in files:
+        by_name = {r["pipeline"]: r for r in f["rows"]}
         for r in f["rows"]:
             if r.get("status") == "crashed":
                 continue
@@ -211,7 +212,10 @@ def evaluate(files):
             if r["pipeline"] in COMPACT and r.get("outsideEnvelope"):
                 compact.append(f"{name}: {r['outsideEnvelope']} px outside the envelope, by up to {r['envelopeExcess']}/255 "
                                f"(bound {f['boundPixels']:.2g} px, radius {f['envelopeRadius']}; "
-                               f"PSNR {fmt_psnr(r['worstRigidPsnr'])})")
+                               f"PSNR {fmt_psnr(r['worstRigidPsnr'])}"
+                               + ("" if r["pipeline"] == "matrix_c" or "matrix_c" not in by_name else
+                                  f"; matrix_c, the same positions through matrix math: "
+                                  f"{by_name['matrix_c'].get('outsideEnvelope') or 0} px") + ")")
             if r.get("worstSkinnedDrawnDiff") is not None and r["worstSkinnedDrawnDiff"] > MAX_DRAWN_DIFF:
                 when = ", ".join(("rest" if fr["animation"] is None else f"t={fr['time']:.3g}") + f" {100 * x:.1f} %"
                                  for fr, x in zip(f["frames"], r["drawnDiff"]))
@@ -238,6 +242,7 @@ def totals(files, pipelines):
         per[name] = {"rows": len(rows), "drawn": sum(1 for _, r in rows if r.get("drawn")),
                      "errors": sum(1 for _, r in rows if r.get("status") in ("error", "crashed")),
                      "worstRigidPsnr": worst[0], "worstRigidFile": worst[1],
+                     "worstRigidIdentical": worst[0] == math.inf,  # JSON writes the PSNR null then
                      "rigidFilesBelow50dB": sum(1 for v, _ in rigid if v < MIN_PSNR),
                      "skinnedFilesOver1Percent": sum(1 for _, r in rows if (r.get("worstSkinnedDrawnDiff") or 0) > MAX_DRAWN_DIFF),
                      "compactFilesOutsideEnvelope": sum(1 for _, r in rows if r.get("outsideEnvelope")),
@@ -253,8 +258,11 @@ def markdown(summary, files, per, rules):
            "| files | ok | no data | load failed | crashed | pipeline errors | rigid | skinned |",
            "|---|---|---|---|---|---|---|---|",
            f"| {s['files']} | {s['ok']} | {s['noData']} | {s['loadFailed']} | {s['crashed']} | {s['pipelineErrors']} "
-           f"| {s['rigidFiles']} | {s['skinnedFiles']} |", "",
-           "| pipeline | rows | drawn | errors | worst rigid PSNR (file) | rigid < 50 dB | compact outside bound "
+           f"| {s['rigidFiles']} | {s['skinnedFiles']} |", ""]
+    for what, key in (("No data (not failures)", "notDrawable"), ("Load failures", "loadFailures"), ("Crashes", "crashes")):
+        if s[key]:
+            out += [f"{what}:", ""] + [f"- {f}: {why}" for f, why in s[key].items()] + [""]
+    out += ["| pipeline | rows | drawn | errors | worst rigid PSNR (file) | rigid < 50 dB | compact outside bound "
            "| skinned > 1 % | seconds |", "|---|---|---|---|---|---|---|---|---|"]
     for name, p in per.items():
         worst = "-" if p["worstRigidPsnr"] is None else f"{fmt_psnr(p['worstRigidPsnr'])} ({p['worstRigidFile']})"
