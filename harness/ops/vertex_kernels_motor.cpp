@@ -146,6 +146,26 @@ std::vector<VertexKernel> motorKernels() {
        "a_tangentRotor, a_weights.x);" + store,
        motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n",
        "motorScaledVertex with the handedness given (motor_cf: the position's w)"},
+      // The exact fallback (issue 34, pipelines/motor/linear_fallback.h): draws and skins whose
+      // transforms are not similarities; every motor-family pipeline (MB_LINEAR_FALLBACK).
+      {"motor, motor_q, motor_c, motor_cf", "linear vertex (exact fallback)", "motorLinearRotorVertex",
+       [&] {
+         P.motorLinearRotorVertex(in.toWorld, in.affineNormals[0], in.affineNormals[1], in.position, in.rotor, -1.0);
+       },
+       "mat3x4 v = motorLinearRotorVertex(motor(u_world[0], u_world[1]), u_linear, u_linearNormal, "
+       "a_position, a_tangentRotor, a_weights.x);" + store,
+       motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform mat3 u_linear; uniform mat3 u_linearNormal;\n",
+       "per draw: the polar factors of a world that is not a similarity (motor, linear part and its "
+       "inverse-transpose); the frame decode of the pipeline's vertex format comes on top"},
+      {"motor, motor_q, motor_c, motor_cf", "linear parts of 4 joints (exact skin fallback)", "motorBlendLinear",
+       [&] {
+         P.motorBlendLinear(in.affineNormals[0], in.affineNormals[1], in.affineNormals[2], in.affineNormals[3],
+                            PC::vec4(0.4, 0.3, 0.2, 0.1));
+       },
+       "mat3 l = motorBlendLinear(u_l[0], u_l[1], u_l[2], u_l[3], a_weights); "
+       "o_0 = vec4(l[0], l[1].x); o_1 = vec4(l[1].yz, l[2].xy); o_2 = vec4(l[2].z);",
+       motorIncl + kMotorAttribs + "uniform mat3 u_l[4];\n",
+       "per skinned vertex on the fallback, twice (linear part and normal matrix) beside motorBlendJoints"},
   };
 }
 
