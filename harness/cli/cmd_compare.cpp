@@ -1,9 +1,12 @@
 // motorbench compare SCENE [--pipelines A,B] [frame options] [--fail F --failpercent P
 //   --hardfail H] -o DIR: renders both, writes DIR/A.png, DIR/B.png, DIR/diff.png and
 // DIR/diff_legend.png and DIR/metrics.json, prints one summary line; exit 1 when the idiff
-// thresholds are exceeded. Units: --fail and --hardfail are channel differences as a fraction
-// of full scale (0..1; 1/255 = one byte step), --failpercent a percentage of pixels (0..100).
+// thresholds are exceeded (or the drawn-pixel check fails). Units: --fail and --hardfail are
+// channel differences as a fraction of full scale (0..1; 1/255 = one byte step), --failpercent
+// a percentage of pixels (0..100).
 // Only the thresholds given judge: --hardfail alone fails only on the largest difference.
+// Before any threshold, the drawn-pixel check (harness/render/drawn_check.h) fails a frame one
+// pipeline left empty or drawn-pixel counts more than 1 % apart, with or without thresholds.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,10 +16,12 @@
 #include "harness/cli/output_paths.h"
 #include "harness/options/args.h"
 #include "harness/render/counter_glossary.h"
+#include "harness/render/drawn_check.h"
+#include "harness/render/frame_notes.h"
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
+#include "harness/report/report_scene.h"
 #include "harness/report/report_sources.h"
-#include "pipelines/scene/scene_stats.h"
 
 namespace mb {
 namespace {
@@ -36,15 +41,28 @@ std::vector<std::string> metricLines(const ImageMetrics& m) {
   return {b[0], b[1], b[2]};
 }
 
-// "matrix blends joints with linear blend skinning, motor blends joint motors": set when the
-// scene draws a skinned mesh and the two pipelines blend joints by different methods.
-std::string skinningMethodNote(const Scene& scene, const std::string& a, const std::string& b) {
+// True when the two pipelines blend joints by different methods (LBS vs motor blending).
+bool methodsDiffer(const std::string& a, const std::string& b) {
   const std::string ma = report::skinBlendOf(a), mbl = report::skinBlendOf(b);
-  if (computeFileStats(scene).skinnedPrimitives == 0 || ma.empty() || mbl.empty() || ma == mbl) return "";
-  return "skinned scene: " + a + " blends joints by " + ma + ", " + b + " by " + mbl +
-         "; the two methods pose a skinned mesh differently by design (LBS loses volume where joints turn far "
-         "apart), so differences there are the methods' expected difference, not an error (motorbench report "
-         "measures them apart: summary.skinningMethodImages)";
+  return !ma.empty() && !mbl.empty() && ma != mbl;
+}
+
+// "matrix blends joints with linear blend skinning, motor blends joint motors": only where the
+// drawn-pixel check lets the difference be the skinning method's (skinned primitives drawn, the
+// drawn pixels within 1 %); where the check failed, the note says why it is not offered.
+std::string skinningMethodNote(const DrawnCheck& check, bool skinnedDrawn, const std::string& a,
+                               const std::string& b) {
+  if (!skinnedDrawn || !methodsDiffer(a, b)) return "";
+  const std::string which = "skinned scene: " + a + " blends joints by " + report::skinBlendOf(a) + ", " + b + " by " +
+                            report::skinBlendOf(b);
+  if (check.failed)
+    return which + "; but a difference is taken for the methods' only while both images drew and their drawn "
+                   "pixels agree within 1 %; here they do not, so it fails (look for a wrong pose, scale or a missing "
+                   "mesh in the images)";
+  if (!check.skinningMethodNote) return "";
+  return which + "; the two methods pose a skinned mesh differently by design (LBS loses volume where joints turn far "
+                 "apart), so differences there are the methods' expected difference, not an error (motorbench report "
+                 "measures them apart: summary.skinningMethodImages)";
 }
 
 int runCompare(const std::vector<std::string>& argv) {
@@ -92,12 +110,14 @@ int runCompare(const std::vector<std::string>& argv) {
   if (names.size() != 2) return fail("--pipelines needs exactly two names, e.g. matrix,motor");
   commandNotes("compare", cmd->notes);
   commandNotes("compare", loaderFallbackLines(scene));
+  commandNotes("compare", unsupportedLines(scene));
   commandNotes("compare", describeFrame(scene, settings));
 
   std::vector<Frame> frames;
   for (const std::string& name : names) {
     auto frame = renderFrame(scene, name, settings);
     if (!frame) return fail(frame.error());
+    commandNotes("compare", pipelineFallbackLines(name, frame->stats));
     frames.push_back(frame.take());
   }
   commandNotes("compare", {"drawn on " + describeGl(frames[0].gl) + " (both pipelines: one process, one device)"});
@@ -105,8 +125,15 @@ int runCompare(const std::vector<std::string>& argv) {
   if (!metrics) return fail(metrics.error());
   Verdict verdict = judge(frames[0].image, frames[1].image, t);
   const int64_t drawn[2] = {drawnPixels(frames[0].image), drawnPixels(frames[1].image)};
-  const std::string skinning = skinningMethodNote(scene, names[0], names[1]);
-  const bool nothingDrawn = drawn[0] == 0 && drawn[1] == 0;
+  // Skinned primitives drawn: skinned vertices on nodes the scene reaches (the report's vertexMix).
+  const bool skinnedDrawn = report::vertexMix(scene).value("skinned", 0L) > 0;
+  const DrawnCheck shape =
+      checkDrawn(names[0], drawn[0], names[1], drawn[1], skinnedDrawn, methodsDiffer(names[0], names[1]));
+  const std::string skinning = skinningMethodNote(shape, skinnedDrawn, names[0], names[1]);
+  const bool nothingDrawn = shape.kind == DrawnCheck::Kind::NothingDrawn;
+  const bool failed = shape.failed || (thresholdsGiven && verdict.failed);
+  std::string reason = shape.reason;  // the drawn-pixel check first, then the thresholds'
+  if (thresholdsGiven && verdict.failed) reason += (reason.empty() ? "" : "; ") + verdict.reason;
 
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -141,19 +168,21 @@ int runCompare(const std::vector<std::string>& argv) {
       {"metrics", toJson(*metrics)},
       {"drawnPixels", {{names[0], drawn[0]}, {names[1], drawn[1]}, {"total", int64_t(metrics->width) * metrics->height}}},
       {"skinningMethods", {{names[0], report::skinBlendOf(names[0])}, {names[1], report::skinBlendOf(names[1])},
-                           {"differByDesign", !skinning.empty()}}},
+                           {"methodsDiffer", skinnedDrawn && methodsDiffer(names[0], names[1])},
+                           {"differByDesign", shape.skinningMethodNote}}},
+      {"drawnCheck", toJson(shape)},
       {"thresholds", {{"applied", thresholdsGiven},
                       {"units", "fail, hardfail: channel difference / 255 (0..1); failpercent: % of pixels"},
                       {"fail", t.fail},
                       {"failpercent", t.failPercent},
                       {"hardfail", std::isinf(t.hardFail) ? nlohmann::json(nullptr)
                                                           : nlohmann::json(t.hardFail)}}},
-      {"verdict", {{"judged", thresholdsGiven && !nothingDrawn},
-                   {"text", nothingDrawn ? "nothing drawn" : !thresholdsGiven ? "no threshold given" : verdict.failed ? "fail" : "pass"},
-                   {"failed", thresholdsGiven && (nothingDrawn || verdict.failed)},
+      {"verdict", {{"judged", (thresholdsGiven || shape.failed) && !nothingDrawn},
+                   {"text", nothingDrawn ? "nothing drawn" : failed ? "fail" : !thresholdsGiven ? "no threshold given" : "pass"},
+                   {"failed", failed || (thresholdsGiven && nothingDrawn)},
                    {"failPercent", verdict.failPercent},
                    {"reason", nothingDrawn ? nlohmann::json("neither image drew any pixel")
-                              : thresholdsGiven ? nlohmann::json(verdict.reason) : nlohmann::json(nullptr)}}},
+                              : failed || thresholdsGiven ? nlohmann::json(reason) : nlohmann::json(nullptr)}}},
       {"stats", {toJson(frames[0].stats), toJson(frames[1].stats)}}};  // in --pipelines order
   std::string jsonPath = (fs::path(dir) / "metrics.json").string();
   if (Status w = writeTextFile(jsonPath, j.dump(2) + "\n"); !w) return fail(w.error());
@@ -173,16 +202,14 @@ int runCompare(const std::vector<std::string>& argv) {
     return fail("neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are background only: the " +
                 "scene is off screen, empty or scaled to zero at this pose); nothing was compared, so it cannot pass");
   }
-  if (const double most = double(std::max(drawn[0], drawn[1])); std::abs(double(drawn[0] - drawn[1])) > 0.01 * most)
-    commandNotes("compare", {"warning: the two pipelines drew different numbers of pixels (" + names[0] + " " +
-                             std::to_string(drawn[0]) + ", " + names[1] + " " + std::to_string(drawn[1]) +
-                             ": more than 1 % apart): they did not draw the same shape"});
+  if (shape.failed) std::printf("  drawn-pixel check: FAIL: %s\n", shape.reason.c_str());
   std::string verdictText = " -> no threshold given, not judged (--fail/--failpercent/--hardfail judge; exit 0)";
-  if (thresholdsGiven)
-    verdictText = verdict.failed ? " -> FAIL (" + verdict.reason + (skinning.empty() ? "" : "; the skinning methods differ by design, see the note") + ")"
-                                 : " -> PASS (within the thresholds given)";
+  if (failed)
+    verdictText = " -> FAIL (" + reason + (shape.skinningMethodNote ? "; the skinning methods differ by design, see the note" : "") + ")";
+  else if (thresholdsGiven)
+    verdictText = " -> PASS (within the thresholds given)";
   std::printf("%s: %s vs %s%s\n", scene.source.c_str(), names[0].c_str(), names[1].c_str(), verdictText.c_str());
-  return thresholdsGiven && verdict.failed ? 1 : 0;
+  return failed ? 1 : 0;
 }
 
 }  // namespace
@@ -193,7 +220,8 @@ MB_COMMAND(compare, "compare",
            "[--camera C] [--size WxH] [--instances N] [--fail F(0..1)] [--failpercent P(0..100)] [--hardfail H(0..1)] "
            "[--gpu auto|llvmpipe|N] -o DIR",
            "render a scene with two pipelines; write both images, diff.png, diff_legend.png and "
-           "metrics.json; exit 1 when a threshold given is exceeded (F, H: channel difference / 255)",
+           "metrics.json; exit 1 when a threshold given is exceeded (F, H: channel difference / 255) or one image "
+           "is empty or the drawn pixels differ by more than 1 %",
            mb::runCompare);
 MB_COMMAND_HELP(compare, "compare",
                "  SCENE              a .gltf/.glb file or a built-in scene name\n"
@@ -203,5 +231,6 @@ MB_COMMAND_HELP(compare, "compare",
                "  --failpercent P    % of pixels (0..100) allowed over F\n"
                "  --hardfail H       the largest channel difference allowed anywhere (0..1)\n"
                "  --anim A, --time T, --anim2 B, --time2 T2, --blend W, --camera C, --size WxH   as render\n"
-               "  Exit 0 pass (or not judged), 1 a threshold exceeded, 2 an error, or a threshold given and nothing drawn in either image.\n",
+               "  Exit 0 pass (or not judged), 1 a threshold exceeded, one image empty or drawn pixels more than 1 % apart\n"
+               "  (with or without a threshold), 2 an error, or a threshold given and nothing drawn in either image.\n",
                 "motorbench compare textured_box --failpercent 0.1 -o out/box", true);

@@ -5,6 +5,7 @@
 #include "harness/cli/command.h"
 #include "harness/options/args.h"
 #include "harness/render/counter_glossary.h"
+#include "harness/render/frame_notes.h"
 #include "harness/render/render_frame.h"
 
 namespace mb {
@@ -28,11 +29,13 @@ int runRender(const std::vector<std::string>& argv) {
   const std::string pipeline = args.get("pipeline", pipelineNames(scene.curved.space).front());
   commandNotes("render", cmd->notes);
   commandNotes("render", loaderFallbackLines(scene));
+  commandNotes("render", unsupportedLines(scene));  // inspect's list: what this image leaves out
   std::vector<std::string> what = describeFrame(scene, cmd->settings);
   what.insert(what.begin(), "pipeline: " + pipeline + (args.has("pipeline") ? "" : " (the default)"));
   commandNotes("render", what);
   auto frame = renderFrame(scene, pipeline, cmd->settings);
   if (!frame) return fail(frame.error());
+  commandNotes("render", pipelineFallbackLines(pipeline, frame->stats));
   const auto parent = std::filesystem::path(out).parent_path();
   std::error_code ec;
   if (!parent.empty()) std::filesystem::create_directories(parent, ec);

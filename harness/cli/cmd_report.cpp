@@ -29,10 +29,28 @@ using json = nlohmann::json;
 
 int fail(const std::string& message) { return commandError("report", message); }
 
+// One scene, timed: every pipeline interleaved in this process.
+json timeWorker(const report::SceneJob& job, const report::Options& o) {
+  report::progress(job, "timing " + std::to_string(o.frames) + " frames per pipeline");
+  auto scene = loadScene(job.input.spec);
+  if (scene && scene->curved.space == Space::Euclidean) addGridInstances(*scene, o.instances);
+  // Skinned scenes are timed with every pipeline in the same skinning configuration (as the
+  // references do it), so the ratio compares like with like (issue 18); images keep each
+  // pipeline's default.
+  PipelineOptions options;
+  if (scene && !scene->skins.empty()) options.skinSpace = SkinSpace::Reference;
+  json result = scene ? report::timeScene(*scene, job.pipelines, o.frames, o.timeWidth, o.timeHeight, options)
+                      : json{{"error", scene.error()}};
+  if (scene && !scene->skins.empty()) result["skinSpace"] = "reference (every pipeline)";
+  return result;
+}
+
 // Worker: one scene, one phase ("render" or "time"); writes --worker-out with "complete": true
 // last so the parent can tell a finished result from a crash.
 int runWorker(const Args& args, const report::Options& o) {
   if (args.positional().size() != 1) return fail("--worker needs exactly one scene");
+  const std::string mode = args.get("worker", "");
+  if (mode != "render" && mode != "time") return fail("--worker " + mode + ": expected render or time");
   report::SceneJob job;
   job.input = {args.positional()[0], args.get("worker-id", "scene")};
   job.index = std::atoi(args.get("worker-index", "1").c_str());
@@ -40,26 +58,19 @@ int runWorker(const Args& args, const report::Options& o) {
   job.outDir = o.outDir;
   job.width = o.width, job.height = o.height;
   job.instances = o.instances;
+  // The last progress line beside the result: the parent names it when this worker dies.
+  if (const std::string out = args.get("worker-out", ""); !out.empty()) job.stepFile = report::stepFileOf(out);
   job.pipelines = report::scenePipelines(o, job.input.spec);  // the parent passes each scene's
   for (const std::string& a : splitList(args.get("worker-anims", ""))) job.animations.push_back(std::atoi(a.c_str()));
   json result;
-  const std::string mode = args.get("worker", "");
-  if (mode == "render") {
-    result = report::measureScene(job);
-  } else if (mode == "time") {
-    report::progress(job, "timing " + std::to_string(o.frames) + " frames per pipeline");
-    auto scene = loadScene(job.input.spec);
-    if (scene && scene->curved.space == Space::Euclidean) addGridInstances(*scene, o.instances);
-    // Skinned scenes are timed with every pipeline in the same skinning configuration (as the
-    // references do it), so the ratio compares like with like (issue 18); images keep each
-    // pipeline's default.
-    PipelineOptions options;
-    if (scene && !scene->skins.empty()) options.skinSpace = SkinSpace::Reference;
-    result = scene ? report::timeScene(*scene, job.pipelines, o.frames, o.timeWidth, o.timeHeight, options)
-                   : json{{"error", scene.error()}};
-    if (scene && !scene->skins.empty()) result["skinSpace"] = "reference (every pipeline)";
-  } else {
-    return fail("--worker " + mode + ": expected render or time");
+  // An exception escaping the measurement (renderFrame already turns a pipeline's own into that
+  // pipeline's error) fails this scene with its message, not with a bare "exit status 2".
+  try {
+    result = mode == "render" ? report::measureScene(job) : timeWorker(job, o);
+  } catch (const std::exception& e) {
+    const std::string step = report::lastStep(job.stepFile);
+    result = {{"error", "internal error (exception)" + (step.empty() ? "" : " while " + step) + ": " + e.what()}};
+    if (mode == "render") result.update({{"id", job.input.id}, {"spec", job.input.spec}, {"status", "failed"}});
   }
   result["complete"] = true;
   const Status w = writeTextFile(args.get("worker-out", ""), report::dumpJson(result) + "\n");

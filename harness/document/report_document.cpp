@@ -64,13 +64,16 @@ json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
 template <class Pred>
 json imageSummary(const std::vector<json>& scenes, const std::string& p, Pred methodDifference, bool method) {
   std::vector<double> psnr, over1, over4, maxErr;
-  int identical = 0, compared = 0;
+  int identical = 0, compared = 0, wrongShape = 0;
   for (const json& s : scenes) {
     if (methodDifference(s) != method) continue;
     for (const json& f : s.value("frames", json::array())) {
       if (!f.contains("metrics") || !f["metrics"].contains(p)) continue;
       const json& m = f["metrics"][p];
       ++compared;
+      // compare's drawn-pixel check (one image empty, counts > 1 % apart) failed on this frame.
+      const json& check = at(f, {"drawnCheck"});
+      wrongShape += check.is_object() && check.contains(p) && check[p].is_object() && check[p].value("failed", false);
       if (m.value("identical", false)) ++identical;
       else push(psnr, number(m, {"psnr"}));
       push(over1, number(m, {"fractionOver1"}));
@@ -78,8 +81,9 @@ json imageSummary(const std::vector<json>& scenes, const std::string& p, Pred me
       push(maxErr, number(m, {"maxError"}));
     }
   }
-  return {{"comparedFrames", compared}, {"identicalFrames", identical}, {"psnr", spread(psnr)},
-          {"fractionOver1", spread(over1)}, {"fractionOver4", spread(over4)}, {"maxError", spread(maxErr)}};
+  return {{"comparedFrames", compared}, {"identicalFrames", identical}, {"drawnCheckFailed", wrongShape},
+          {"psnr", spread(psnr)}, {"fractionOver1", spread(over1)}, {"fractionOver4", spread(over4)},
+          {"maxError", spread(maxErr)}};
 }
 
 // A curved scene's figures side by side (issue 15): its space's pipelines, floats per instance

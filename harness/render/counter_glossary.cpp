@@ -42,6 +42,10 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"PipelineStats", "scaleFallbackInstances", "instances", "motor pipelines: instances of the last render whose scale (node world x instance) is non-uniform or negative, drawn with the per-leaf scale fallback (MB_SCALE_FALLBACK, a vec3 scale per instance)"},
       {"PipelineStats", "rotorSplitVertices", "vertices", "motor_cf: vertices duplicated so that every triangle's three tangent rotors lie in one hemisphere and interpolate without passing through zero (a rotor field around a torus' tube comes back negated)"},
       {"PipelineStats", "rotorUnresolvedTriangles", "triangles", "motor_cf: triangles whose corner frames differ by more than 180 degrees, so no choice of signs keeps all three rotors in one hemisphere; their fragments interpolate a shortened rotor (forward.fs normalises it)"},
+      {"PipelineStats", "linearFallbackDraws", "draws", "motor pipelines, exact fallback: rigid draws of the last render whose world transform is not a similarity (non-uniform or sheared, inherited from an inner node), drawn with a general linear part before the motor"},
+      {"PipelineStats", "skinFallbackDraws", "draws", "motor pipelines, exact fallback: skinned draws of the last render whose joint palette is not one common uniform scale (per-joint scales, scaled or sheared joints)"},
+      {"PipelineStats", "skinFallbackJoints", "joints", "motor pipelines, exact fallback: the joints of the palettes of those skinned draws"},
+      {"PipelineStats", "fallbackVertices", "vertices", "motor pipelines, exact fallback: the vertices the linear and skin fallback draws of the last render drew (0 for pipelines that need no fallback)"},
       // LoadStats (pipelines/scene/scene.h): what the loader had to fix; `inspect` lists them.
       {"LoadStats", "flatNormalsGenerated", "primitives", "primitives without NORMAL: flat normals generated"},
       {"LoadStats", "tangentsGenerated", "primitives", "normal-mapped primitives without TANGENT: tangents generated from the uvs"},

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <sstream>
 
 #include "pipelines/gl/context.h"
@@ -11,8 +12,24 @@
 #include "pipelines/scene/loader.h"
 
 namespace mb {
-Result<std::vector<RgbaImage>> renderFrames(const Scene& scene, const std::string& pipeline,
-                                            const FrameSettings& settings, const std::vector<float>& times) {
+namespace {
+
+// A pipeline that throws (a bug, e.g. std::map::at on a file no test had) must not take the
+// command or the report's worker down with it: the exception becomes the frame's error, naming
+// the scene and the pipeline, and the caller goes on (the report records it per pipeline).
+template <class R, class F>
+R guarded(const Scene& scene, const std::string& pipeline, F&& body) {
+  try {
+    return body();
+  } catch (const std::exception& e) {
+    return R::fail(scene.source + " [" + pipeline + "]: internal error (exception): " + e.what());
+  } catch (...) {
+    return R::fail(scene.source + " [" + pipeline + "]: internal error (unknown exception)");
+  }
+}
+
+Result<std::vector<RgbaImage>> renderFramesUnguarded(const Scene& scene, const std::string& pipeline,
+                                                     const FrameSettings& settings, const std::vector<float>& times) {
   using R = Result<std::vector<RgbaImage>>;
   const std::string where = scene.source + " [" + pipeline + "]: ";
   std::unique_ptr<Pipeline> p = createPipeline(pipeline);
@@ -37,8 +54,7 @@ Result<std::vector<RgbaImage>> renderFrames(const Scene& scene, const std::strin
   return images;
 }
 
-Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
-                          const FrameSettings& settings) {
+Result<Frame> renderFrameUnguarded(const Scene& scene, const std::string& pipeline, const FrameSettings& settings) {
   using R = Result<Frame>;
   const std::string where = scene.source + " [" + pipeline + "]: ";
   bool registered = false;
@@ -79,6 +95,18 @@ Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
   return frame;
 }
 
+}  // namespace
+
+Result<std::vector<RgbaImage>> renderFrames(const Scene& scene, const std::string& pipeline,
+                                            const FrameSettings& settings, const std::vector<float>& times) {
+  return guarded<Result<std::vector<RgbaImage>>>(scene, pipeline,
+                                                 [&] { return renderFramesUnguarded(scene, pipeline, settings, times); });
+}
+
+Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline, const FrameSettings& settings) {
+  return guarded<Result<Frame>>(scene, pipeline, [&] { return renderFrameUnguarded(scene, pipeline, settings); });
+}
+
 int64_t drawnPixels(const RgbaImage& image) {
   std::array<uint8_t, 3> background;
   for (int c = 0; c < 3; ++c) background[size_t(c)] = uint8_t(std::lround(kBackground[c] * 255.0f));
@@ -106,7 +134,9 @@ nlohmann::json toJson(const PipelineStats& s) {
           {"negativeScaleNodes", s.negativeScaleNodes},
           {"shearMatrixNodes", s.shearMatrixNodes}, {"zeroScalarFrames", s.zeroScalarFrames},
           {"biasedFrames", s.biasedFrames}, {"scaleFallbackInstances", s.scaleFallbackInstances},
-          {"rotorSplitVertices", s.rotorSplitVertices}, {"rotorUnresolvedTriangles", s.rotorUnresolvedTriangles}};
+          {"rotorSplitVertices", s.rotorSplitVertices}, {"rotorUnresolvedTriangles", s.rotorUnresolvedTriangles},
+          {"linearFallbackDraws", s.linearFallbackDraws}, {"skinFallbackDraws", s.skinFallbackDraws},
+          {"skinFallbackJoints", s.skinFallbackJoints}, {"fallbackVertices", s.fallbackVertices}};
 }
 
 nlohmann::json toJson(const gl::ContextInfo& gl) {

@@ -35,7 +35,8 @@ int64_t drawnPixels(const RgbaImage& image);
 // Renders `scene` with the registered pipeline `pipeline` on the shared headless context:
 // create, prepare, update(settings.anim), render(frameScene(...)), read back. Errors name the
 // scene source and the reason: unknown pipeline (listing the registered ones), a placeholder
-// pipeline (registered, factory returns nullptr), GL context/shader/upload failures.
+// pipeline (registered, factory returns nullptr), GL context/shader/upload failures, and an
+// exception thrown inside the pipeline ("internal error (exception): map::at"): never thrown on.
 Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
                           const FrameSettings& settings);
 

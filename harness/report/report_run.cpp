@@ -16,12 +16,14 @@
 #include "harness/report/report_inputs.h"
 #include "harness/report/report_machine.h"
 #include "harness/document/report_layout.h"
+#include "harness/document/report_marks.h"
 #include "harness/options/shard.h"
 #include "harness/report/report_ops.h"
 #include "harness/document/report_plots.h"
 #include "harness/process/report_workers.h"
 #include "harness/report/report_anim_select.h"
 #include "harness/report/report_drift.h"
+#include "harness/report/report_scene.h"
 #include "pipelines/pipeline.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/curved_space.h"
@@ -108,6 +110,20 @@ json kernels(const Options& o) {
   return k;
 }
 
+// A worker that died before writing its result left only "worker exit status 2" (or a signal):
+// add the step it was on, from the line it kept beside the result (report_scene.h).
+void addLastStep(json& scene, const std::string& resultPath) {
+  const std::string step = lastStep(stepFileOf(resultPath));
+  std::error_code ec;
+  std::filesystem::remove(stepFileOf(resultPath), ec);
+  const json error = scene.contains("error") ? scene["error"] : json();
+  if (!error.is_string() || error.get<std::string>().rfind("worker ", 0) != 0 ||
+      error.get<std::string>() == "worker could not be started")
+    return;
+  scene["error"] = error.get<std::string>() + (step.empty() ? " before its first step (while starting up)"
+                                                            : " while " + step + " (its message is on the run's stderr)");
+}
+
 }  // namespace
 
 std::vector<std::string> scenePipelines(const Options& o, const std::string& spec) {
@@ -180,6 +196,7 @@ int runReport(const Options& o) {
                      {{"id", inputs[size_t(i)].id}, {"spec", inputs[size_t(i)].spec}}});
   }
   std::vector<json> scenes = runWorkers(tasks, o.jobs, o.timeoutS, "scenes measured");
+  for (size_t i = 0; i < scenes.size(); ++i) addLastStep(scenes[i], tasks[i].resultPath);
 
   // Phase 2: frame timing, one scene at a time.
   if (o.frames > 0) {
@@ -193,6 +210,7 @@ int runReport(const Options& o) {
       which.push_back(size_t(i));
     }
     std::vector<json> times = runWorkers(timing, 1, o.timeoutS, "scenes timed");
+    for (size_t t = 0; t < times.size(); ++t) addLastStep(times[t], timing[t].resultPath);
     for (size_t t = 0; t < times.size(); ++t) scenes[which[t]]["timing"] = times[t];
   }
 
@@ -231,9 +249,14 @@ int runReport(const Options& o) {
     std::ifstream in(o.isaJson);
     report["isa"] = json::parse(in, nullptr, false);
   }
+  const std::vector<std::string> failures = failedSceneLines(report);  // as report.md lists them
   const int status = writeReportFolder(std::move(report), o);
   fs::remove_all(work, ec);
-  return status;
+  if (status != 0 || failures.empty()) return status;
+  // As inspect: the report is written, but a scene that failed is not a success (exit 1).
+  say(std::to_string(failures.size()) + " scene(s) not measured fully (exit 1):");
+  for (const std::string& f : failures) say("  " + f);
+  return 1;
 }
 
 int writeReportFolder(json report, const Options& o) {

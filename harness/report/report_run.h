@@ -45,8 +45,9 @@ std::vector<std::string> scenePipelines(const Options& options, const std::strin
 // The Euclidean (glTF) pipelines of the run: options.pipelines, else pipelineNames().
 std::vector<std::string> runPipelines(const Options& options);
 
-// Runs every phase; a failing scene is recorded and the run goes on. Returns 0 when the run
-// completed (whatever the scenes did), 2 when the output could not be written.
+// Runs every phase; a failing scene is recorded and the run goes on. Returns 0 when every scene
+// was measured ("ok"), 1 when the report was written but some scene failed or is partial (each
+// named with its reason on stderr, as in report.md), 2 when the output could not be written.
 int runReport(const Options& options);
 
 // The last phase, shared with `motorbench merge`: writes report.json, the plots (when

@@ -4,9 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 
+#include "harness/render/drawn_check.h"
+#include "harness/render/frame_notes.h"
 #include "harness/render/image_metrics.h"
 #include "harness/report/report_animation.h"
 #include "harness/report/report_sources.h"
@@ -60,16 +63,8 @@ json memoryJson(const PipelineStats& s) {
           {"bytesPerInstance", s.instances ? json(double(s.instanceBytes) / double(s.instances)) : json(nullptr)}};
 }
 
-json fallbacksJson(const PipelineStats& s) {
-  return {{"nonUniformScaleNodes", s.nonUniformScaleNodes},
-          {"negativeScaleNodes", s.negativeScaleNodes},
-          {"shearMatrixNodes", s.shearMatrixNodes},
-          {"zeroScalarFrames", s.zeroScalarFrames},
-          {"biasedFrames", s.biasedFrames},
-          {"scaleFallbackInstances", s.scaleFallbackInstances},
-          {"rotorSplitVertices", s.rotorSplitVertices},
-          {"rotorUnresolvedTriangles", s.rotorUnresolvedTriangles}};
-}
+// Every fallback counter, zeros included: the list render and compare print (frame_notes.h).
+json fallbacksJson(const PipelineStats& s) { return pipelineFallbackJson(s); }
 
 std::string timeText(float t) {
   char buf[32];
@@ -130,6 +125,16 @@ json vertexMix(const Scene& scene) {
 void progress(const SceneJob& job, const std::string& what) {
   std::fprintf(stderr, "[%d/%d] %s: %s\n", job.index, job.total, job.input.id.c_str(), what.c_str());
   std::fflush(stderr);
+  if (!job.stepFile.empty()) std::ofstream(job.stepFile, std::ios::trunc) << what << "\n";  // the last step, kept
+}
+
+std::string stepFileOf(const std::string& resultPath) { return resultPath + ".step"; }
+
+std::string lastStep(const std::string& stepFile) {
+  std::ifstream in(stepFile);
+  std::string line;
+  std::getline(in, line);
+  return line;
 }
 
 json measureScene(const SceneJob& job) {
@@ -198,7 +203,8 @@ json measureScene(const SceneJob& job) {
                                                              ? " (" + scene->animations[size_t(a)].name + ")" : "");
     json frame = {{"time", shots[k].time}, {"animation", a >= 0 ? json(a) : json(nullptr)},
                   {"images", json::object()}, {"diffs", json::object()},
-                  {"metrics", json::object()}, {"drawnPixels", json::object()}, {"errors", json::object()}};
+                  {"metrics", json::object()}, {"drawnPixels", json::object()}, {"drawnCheck", json::object()},
+                  {"errors", json::object()}};
     std::map<std::string, RgbaImage> images;
     for (const std::string& p : job.pipelines) {
       ++framesTried;
@@ -231,6 +237,9 @@ json measureScene(const SceneJob& job) {
         if (!out.contains("gl"))
           out["gl"] = toJson(f->gl);  // the device record (render_frame.h)
       }
+      // Fallbacks counted per render may depend on the pose: keep each counter's largest.
+      for (const auto& [k, v] : fallbacksJson(f->stats).items())
+        if (v.is_number() && v.get<double>() > pj["fallbacks"].value(k, 0.0)) pj["fallbacks"][k] = v;
       images.emplace(p, std::move(f->image));
     }
     const std::string& base = job.pipelines.front();
@@ -248,6 +257,11 @@ json measureScene(const SceneJob& job) {
       if (written) frame["diffs"][p] = file;
       else frame["errors"]["diff_" + p] = written.error();
       frame["metrics"][p] = toJson(*m);  // the compare command's metrics
+      // compare's drawn-pixel check: an empty image or counts > 1 % apart marks the frame failed,
+      // and only a frame that passes may be called the skinning methods' difference.
+      const bool skinned = out["vertexMix"].value("skinned", 0L) > 0;
+      const bool methods = !skinBlendOf(base).empty() && !skinBlendOf(p).empty() && skinBlendOf(base) != skinBlendOf(p);
+      frame["drawnCheck"][p] = toJson(checkDrawn(base, images[base], p, images[p], skinned, methods));
     }
     out["frames"].push_back(frame);
   }

@@ -23,6 +23,8 @@ struct SceneJob {
   std::vector<std::string> pipelines;   // first = baseline of the diffs
   std::vector<int> animations;          // --anim, resolved (report_anim_select.h); empty: the first
   int instances = 1;                    // --instances N (addGridInstances)
+  std::string stepFile;                 // progress() also writes its last line here ("" none), so
+                                        // the parent can say where a worker that died was
 };
 
 // Animation times the images are taken at: animation `anim` at 0, 1/3 and 2/3 of its
@@ -38,8 +40,12 @@ std::vector<float> imageTimes(const Scene& scene, int anim = 0);
 // "curvedInstance": a curved scene's vertices times its instances (the s3_/h3_ vertex shaders).
 nlohmann::json vertexMix(const Scene& scene);
 
-// Progress line on stderr: "[3/8] skinned_tube: rendering motor t=0.5".
+// Progress line on stderr: "[3/8] skinned_tube: rendering motor t=0.5" (and into job.stepFile).
 void progress(const SceneJob& job, const std::string& what);
+// Where a worker writing `resultPath` keeps its last progress line, and that line ("" when the
+// file is missing or empty): "rendering motor_cf t=0".
+std::string stepFileOf(const std::string& resultPath);
+std::string lastStep(const std::string& stepFile);
 
 // The "render" part of the scene's report.json entry (see README, section Report): images of
 // every animation in job.animations (default: the first), each at imageTimes(), and one

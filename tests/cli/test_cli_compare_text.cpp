@@ -46,25 +46,40 @@ fs::path zeroScaleFile(const fs::path& dir) {
   return file;
 }
 
-// Two pipelines that drew shapes of different size are warned about (more than 1 % apart), and
-// two that drew the same shape are not: candy_wrapper's half turn, where linear blend skinning
-// collapses the ring (matrix) and motor blending keeps it, against the same frame drawn by
-// affine (the same LBS, the same pixels). Counts checked against the PNGs compare wrote.
-TEST(CliCompareText, DifferentDrawnPixelCountsAreWarnedAbout) {
+// Two pipelines that drew shapes of different size fail (issue 34: more than 1 % apart, with or
+// without a threshold, and the skinning methods' note is not offered), and two that drew the
+// same shape do not: candy_wrapper's half turn, where linear blend skinning collapses the ring
+// (matrix) and motor blending keeps it, against the same frame drawn by affine (the same LBS,
+// the same pixels). Counts checked against the PNGs compare wrote.
+TEST(CliCompareText, DifferentDrawnPixelCountsFail) {
   const fs::path dir = mb::cli_test::scratchDir("compare_drawn_apart");
   const std::string frame = "compare skinned_tube --anim candy_wrapper --time 1.97 --size 128x128 ";
   const auto apart = runMb(frame + "--pipelines matrix,motor -o " + quoted(dir / "apart"));
-  ASSERT_EQ(apart.rc, 0) << apart.out;
+  EXPECT_EQ(apart.rc, 1) << apart.out;
   const int64_t m = nonBackground(dir / "apart" / "matrix.png"), q = nonBackground(dir / "apart" / "motor.png");
   ASSERT_GT(m, 0);
   ASSERT_GT(std::abs(double(q - m)), 0.01 * double(std::max(m, q))) << "the frame no longer separates the methods";
-  EXPECT_TRUE(contains(apart.out, "warning: the two pipelines drew different numbers of pixels (matrix " +
-                                      std::to_string(m) + ", motor " + std::to_string(q) + ": more than 1 % apart)"))
-      << apart.out;
+  const std::string counts = "drawn-pixel counts more than 1 % apart (matrix " + std::to_string(m) + ", motor " +
+                             std::to_string(q) + ": ";
+  EXPECT_TRUE(contains(apart.out, "  drawn-pixel check: FAIL: " + counts)) << apart.out;
+  EXPECT_TRUE(contains(apart.out, "-> FAIL (" + counts)) << apart.out;
+  EXPECT_FALSE(contains(apart.out, "differently by design")) << apart.out;
+  EXPECT_FALSE(contains(apart.out, "differ by design")) << apart.out;
+  const auto j = readJson(dir / "apart" / "metrics.json");
+  ASSERT_FALSE(j.is_discarded());
+  EXPECT_EQ(j["drawnCheck"]["kind"], "counts apart");
+  EXPECT_EQ(j["verdict"]["failed"], true);
+  EXPECT_EQ(j["verdict"]["text"], "fail");
+  EXPECT_EQ(j["skinningMethods"]["methodsDiffer"], true);
+  EXPECT_EQ(j["skinningMethods"]["differByDesign"], false);
+  // Thresholds that pass every pixel do not rescue it.
+  const auto lenient = runMb(frame + "--pipelines matrix,motor --fail 1 --failpercent 100 -o " + quoted(dir / "l"));
+  EXPECT_EQ(lenient.rc, 1) << lenient.out;
+  EXPECT_TRUE(contains(lenient.out, "-> FAIL (" + counts)) << lenient.out;
   const auto same = runMb(frame + "--pipelines matrix,affine -o " + quoted(dir / "same"));
   ASSERT_EQ(same.rc, 0) << same.out;
   EXPECT_EQ(nonBackground(dir / "same" / "matrix.png"), nonBackground(dir / "same" / "affine.png"));
-  EXPECT_FALSE(contains(same.out, "drew different numbers of pixels")) << same.out;
+  EXPECT_FALSE(contains(same.out, "drawn-pixel check")) << same.out;
   fs::remove_all(dir);
 }
 

@@ -1,0 +1,127 @@
+// Issue 34 items 2 and 7: `report` exits 1 when a scene failed and shows each failure's reason
+// in report.md and report.html (not "failed" and "-"); a worker that dies is named with the step
+// it was on; frames whose drawn pixels fail compare's check are marked, with compare's reason
+// for the same frame.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "harness/render/image_metrics.h"
+#include "tests/support/cli_issue_support.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+using mb::cli_test::contains;
+using mb::cli_test::quoted;
+using mb::cli_test::readJson;
+using mb::cli_test::readText;
+using mb::cli_test::runMb;
+
+std::string htmlEscaped(const std::string& s) {
+  std::string out;
+  for (char c : s) out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '"' ? "&quot;" : std::string(1, c);
+  return out;
+}
+
+// Pixels of the PNG whose RGB is not the clear colour (51, 51, 56): counted here, apart from
+// the harness.
+int64_t nonBackground(const fs::path& png) {
+  auto img = mb::readImage(png.string());
+  if (!img) return -1;
+  int64_t n = 0;
+  for (size_t i = 0; i < img->rgba.size(); i += 4)
+    n += !(img->rgba[i] == 51 && img->rgba[i + 1] == 51 && img->rgba[i + 2] == 56);
+  return n;
+}
+
+// A corrupt .glb beside skinned_tube (matrix vs motor, whose candy_wrapper frames draw shapes
+// of different size where linear blend skinning collapses the ring).
+TEST(CliReportFailures, FailedSceneExitsOneWithItsReasonAndFramesAreMarked) {
+  const fs::path dir = mb::cli_test::scratchDir("report_failures");
+  const fs::path bad = dir / "broken.glb";
+  std::ofstream(bad, std::ios::binary) << "glTF, then not a GLB header at all";
+  const fs::path out = dir / "out";
+  const auto r = runMb("report " + quoted(bad) + " skinned_tube --anim candy_wrapper --pipelines matrix,motor "
+                       "--frames 0 --no-bench --no-plots -o " + quoted(out));
+  EXPECT_EQ(r.rc, 1) << r.out;
+  const json rep = readJson(out / "report.json");
+  ASSERT_FALSE(rep.is_discarded()) << r.out;
+  ASSERT_EQ(rep["scenes"].size(), 2u);
+  const json& broken = rep["scenes"][0];
+  ASSERT_EQ(broken["status"], "failed");
+  ASSERT_TRUE(broken["error"].is_string());
+  const std::string why = broken["error"];
+  EXPECT_TRUE(contains(why, "broken.glb")) << why;
+  // The reason reaches stderr, the failure list and the scenes table of both documents.
+  const std::string id = broken["id"];
+  EXPECT_TRUE(contains(r.out, "1 scene(s) not measured fully (exit 1)")) << r.out;
+  EXPECT_TRUE(contains(r.out, "report:   " + id + " (failed): " + why + "\n")) << r.out;
+  const std::string md = readText(out / "report.md"), html = readText(out / "report.html");
+  EXPECT_TRUE(contains(md, id + " (failed): " + why)) << md.substr(0, 3000);
+  EXPECT_TRUE(contains(md, "| failed: " + why)) << "the scenes table row shows the reason";
+  EXPECT_TRUE(contains(html, htmlEscaped(id + " (failed): " + why))) << html.substr(0, 3000);
+  EXPECT_FALSE(contains(md, "worker exit status")) << md.substr(0, 3000);
+
+  // skinned_tube was measured: its frames carry the drawn-pixel check, recomputed here from the
+  // PNGs the report wrote.
+  const json& tube = rep["scenes"][1];
+  ASSERT_EQ(tube["status"], "ok") << tube.dump(1).substr(0, 2000);
+  int failedFrames = 0;
+  std::string failedTime, failedReason;
+  for (const json& f : tube["frames"]) {
+    const int64_t a = nonBackground(out / f["images"]["matrix"].get<std::string>());
+    const int64_t b = nonBackground(out / f["images"]["motor"].get<std::string>());
+    ASSERT_EQ(f["drawnPixels"]["matrix"], a);
+    const json& c = f["drawnCheck"]["motor"];
+    ASSERT_TRUE(c.is_object()) << f.dump(1);
+    const bool apart = std::llabs(a - b) > 0.01 * double(std::max(a, b));
+    EXPECT_EQ(c["failed"], apart) << a << " vs " << b;
+    EXPECT_EQ(c["skinningMethodNote"], !apart) << "a skinned frame whose counts agree is the methods' difference";
+    if (!apart) continue;
+    ++failedFrames;
+    failedReason = c["reason"];
+    char t[32];
+    std::snprintf(t, sizeof t, "%.9g", f["time"].get<double>());
+    failedTime = t;
+    EXPECT_TRUE(contains(failedReason, "(matrix " + std::to_string(a) + ", motor " + std::to_string(b) + ": "))
+        << failedReason;
+    EXPECT_TRUE(contains(md, "motor: FAILED: " + failedReason + "; PSNR ")) << failedReason;
+  }
+  ASSERT_GT(failedFrames, 0) << "candy_wrapper no longer draws shapes of different size";
+  EXPECT_EQ(rep["summary"]["skinningMethodImages"]["motor"]["drawnCheckFailed"], failedFrames);
+  // compare on the same frame fails with the same reason, with no threshold given.
+  const auto cmp = runMb("compare skinned_tube --anim candy_wrapper --pipelines matrix,motor --time " + failedTime +
+                         " --size " +
+                         std::to_string(rep["settings"]["width"].get<int>()) + "x" +
+                         std::to_string(rep["settings"]["height"].get<int>()) + " -o " + quoted(dir / "cmp"));
+  EXPECT_EQ(cmp.rc, 1) << cmp.out;
+  EXPECT_TRUE(contains(cmp.out, "-> FAIL (" + failedReason + ")")) << cmp.out;
+  fs::remove_all(dir);
+}
+
+// A worker killed (here by --timeout, 3 s into skinned_tube's 9 pipelines x (3 images + a
+// 24-frame loop) at 800x600, far more than 3 s of work) is named with the step it was on, not
+// only with how it ended.
+TEST(CliReportFailures, DeadWorkerIsNamedWithItsLastStep) {
+  const fs::path dir = mb::cli_test::scratchDir("report_dead_worker");
+  const auto r = runMb("report skinned_tube --timeout 3 --size 800x600 --frames 0 --no-bench --no-plots -o " + quoted(dir));
+  EXPECT_EQ(r.rc, 1) << r.out;
+  const json rep = readJson(dir / "report.json");
+  ASSERT_FALSE(rep.is_discarded()) << r.out;
+  const json& s = rep["scenes"][0];
+  ASSERT_EQ(s["status"], "failed") << "the scene finished within 3 s: " << s.dump(1).substr(0, 1000);
+  const std::string why = s["error"];
+  EXPECT_EQ(why.rfind("worker timed out after 3 s while ", 0), 0u) << why;
+  // The step is the worker's last progress line, which the run printed too.
+  const std::string step = why.substr(std::string("worker timed out after 3 s while ").size(),
+                                      why.find(" (its message") - std::string("worker timed out after 3 s while ").size());
+  EXPECT_TRUE(contains(r.out, "skinned_tube: " + step + "\n")) << step << "\n" << r.out;
+  EXPECT_TRUE(contains(readText(dir / "report.md"), why)) << why;
+  fs::remove_all(dir);
+}
+
+}  // namespace
