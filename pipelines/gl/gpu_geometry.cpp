@@ -13,6 +13,14 @@ uint64_t GpuPrimitive::draw() const {
   return uint64_t(vertexCount);
 }
 
+uint64_t GpuPrimitive::drawRange(GLsizei first, GLsizei count) const {
+  glBindVertexArray(vao);
+  extra.setDefaults();
+  glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT,
+                 reinterpret_cast<const void*>(uintptr_t(first) * sizeof(uint32_t)));
+  return uint64_t(vertexCount);
+}
+
 uint64_t GpuPrimitive::drawInstanced(GLsizei instances) const {
   glBindVertexArray(vao);
   extra.setDefaults();

@@ -25,6 +25,9 @@ struct GpuPrimitive {
   // Binds the VAO, sets the defaults of absent streams, draws the triangles; returns the
   // vertices drawn.
   uint64_t draw() const;
+  // The same for `count` indices from `first` (motor_cf's two ranges); returns the vertices the
+  // range references at most (vertexCount: the primitive's, a range shares its vertices).
+  uint64_t drawRange(GLsizei first, GLsizei count) const;
   // The same, `instances` times (the caller has set the per-instance attributes).
   uint64_t drawInstanced(GLsizei instances) const;
   void release();

@@ -47,6 +47,7 @@ SignedCompactStream interleaveCompactSigned(const Primitive& p) {
   out.zeroScalarFrames = f.zeroScalarFrames;
   out.splitVertices = s.splitVertices;
   out.unresolvedTriangles = s.unresolvedTriangles;
+  out.interpolableIndices = s.interpolableIndices;
   return out;
 }
 

@@ -29,6 +29,7 @@ struct SignedCompactStream {
   Primitive primitive;         // `p` with its split vertices
   std::vector<uint8_t> bytes;  // 16 bytes per vertex of `primitive`
   int zeroScalarFrames = 0, splitVertices = 0, unresolvedTriangles = 0;
+  size_t interpolableIndices = 0;  // SignedRotors::interpolableIndices
 };
 SignedCompactStream interleaveCompactSigned(const Primitive& p);
 

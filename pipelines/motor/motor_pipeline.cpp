@@ -108,6 +108,7 @@ private:
   gl::SceneTextures textures_;
   gl::SceneGeometry geometry_;
   std::vector<std::vector<compact::PositionCube>> cubes_;  // motor_c: per mesh, per primitive
+  std::vector<std::vector<size_t>> interpolable_;  // motor_cf: per mesh, per primitive (rotor_signs.h)
   gl::PaletteBuffers paletteBuffers_;             // one per pose_.palettes entry
   std::vector<gl::DrawItem> draws_;
   motor::Rig rig_;
@@ -361,8 +362,26 @@ void MotorPipeline::render(const View& view) {
     if (!palette || referenceSkin_) transformScaleBytes += scaleBytes;  // draws with a transform
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(scale.mirrored);
-    stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
-    ++stats_.draws;
+    // motor_cf: triangles whose corner rotors cannot share a hemisphere (rotor_signs.h) are drawn
+    // after the others by the per-vertex extraction of its scale-fallback program (motor_c's way).
+    const size_t interpolable = variant_.fragmentRotor && !patch && !scale.fallback
+                                    ? interpolable_[size_t(d.mesh)][size_t(d.primitive)] : size_t(g.indexCount);
+    if (interpolable >= size_t(g.indexCount)) {
+      stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
+      ++stats_.draws;
+      continue;
+    }
+    stats_.drawnVertices += g.drawRange(0, GLsizei(interpolable));
+    const gl::Program& extract = useProgram(palette ? 1 : 0, 1);
+    if (palette && variant_.compact) setDequant(extract, d);
+    if (!palette || referenceSkin_) gl::uniform4fv(extract.uniform("u_World"), 2, &world->motor[0][0], transformBytes);
+    uint64_t extractBytes = 0;
+    const glm::vec3 uniformScale(scale.value.x);
+    gl::uniform3f(extract.uniform("u_Scale"), &uniformScale[0], extractBytes);
+    stats_.uniformBytesPerFrame += extractBytes;
+    textures_.bindMaterial(extract, prim.material, stats_.uniformBytesPerFrame);
+    g.drawRange(GLsizei(interpolable), g.indexCount - GLsizei(interpolable));
+    stats_.draws += 2;
   }
   gl::endDraws();
   stats_.uniformBytesPerFrame += transformBytes;
@@ -427,13 +446,16 @@ void MotorPipeline::uploadSignedCompact(const Scene& scene) {
   // Keyed by the split primitive's address, taken once every primitive is in place (a vector
   // that grows moves its elements: keys taken while pushing dangle on multi-primitive meshes).
   std::vector<std::vector<uint8_t>> streams;
+  interpolable_.clear();
   for (const Mesh& mesh : scene.meshes) {
     split.meshes.push_back({mesh.name, {}});
+    interpolable_.emplace_back();
     for (const Primitive& p : mesh.primitives) {
       motor::SignedCompactStream s = motor::interleaveCompactSigned(p);
       stats_.zeroScalarFrames += s.zeroScalarFrames;
       stats_.rotorSplitVertices += s.splitVertices;
       stats_.rotorUnresolvedTriangles += s.unresolvedTriangles;
+      interpolable_.back().push_back(s.interpolableIndices);
       split.meshes.back().primitives.push_back(std::move(s.primitive));
       streams.push_back(std::move(s.bytes));
     }

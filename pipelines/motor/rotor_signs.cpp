@@ -1,5 +1,6 @@
 #include "pipelines/motor/rotor_signs.h"
 
+#include <algorithm>
 #include <array>
 
 namespace mb::motor {
@@ -60,6 +61,17 @@ SignedRotors signRotorsForInterpolation(const Primitive& p, const std::vector<gl
     const glm::vec4 &a = out.rotors[idx[t]], &b = out.rotors[idx[t + 1]], &c = out.rotors[idx[t + 2]];
     out.unresolvedTriangles += glm::dot(b, c) < 0.0f || glm::dot(a, b) < 0.0f || glm::dot(a, c) < 0.0f;
   }
+  // Interpolable triangles first, in their order; the unresolved ones after them.
+  std::vector<uint32_t> resolved, unresolved;
+  for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+    const glm::vec4 &a = out.rotors[idx[t]], &b = out.rotors[idx[t + 1]], &c = out.rotors[idx[t + 2]];
+    const bool bad = glm::dot(b, c) < 0.0f || glm::dot(a, b) < 0.0f || glm::dot(a, c) < 0.0f;
+    (bad ? unresolved : resolved).insert((bad ? unresolved : resolved).end(), idx.begin() + long(t), idx.begin() + long(t) + 3);
+  }
+  out.interpolableIndices = resolved.size();
+  resolved.insert(resolved.end(), unresolved.begin(), unresolved.end());
+  if (resolved.size() == idx.size()) idx = std::move(resolved);
+  else out.interpolableIndices = idx.size();  // a trailing partial triangle: keep the order
   return out;
 }
 

@@ -20,6 +20,10 @@ struct SignedRotors {
   int splitVertices = 0;          // vertices appended
   int unresolvedTriangles = 0;    // triangles with two rotors still more than 90 degrees apart
                                   // in rotor space (frames turned by more than 180 degrees)
+  // The unresolved triangles are moved to the end of primitive.indices: indices [0,
+  // interpolableIndices) interpolate their rotors, the rest cannot (motor_cf extracts the frame
+  // per vertex there instead, as motor_c does).
+  size_t interpolableIndices = 0;
 };
 
 // `rotors` has one unit rotor per vertex of `p` (sign irrelevant). Triangles are visited in

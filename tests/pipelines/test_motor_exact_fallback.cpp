@@ -19,6 +19,7 @@
 #include "harness/render/render_frame.h"
 #include "pipelines/motor/companion.h"
 #include "pipelines/motor/linear_fallback.h"
+#include "pipelines/motor/rotor_signs.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/transform.h"
 
@@ -282,6 +283,67 @@ TEST(ExactFallbackRealFiles, MultiPrimitiveFilesInEveryPipeline) {
     }
   }
   if (tried == 0) GTEST_SKIP() << "../shared/corpus-wide not present";
+}
+
+// motor_cf (issue 34): a triangle whose corner frames turn by more than 180 degrees has no signs
+// that put its rotors in one hemisphere; its fragments interpolated a shortened rotor (a frame none
+// of its corners has). Such triangles are moved after the others and extract the frame per vertex
+// as motor_c does. A normal-mapped quad whose corner tangents turn 0, 120 and 240 degrees about the
+// normal: every triangle unresolved, motor_cf then draws motor_c's image.
+Scene turningFrames() {
+  Scene s = load("normal_torus");
+  Primitive q;
+  const glm::vec3 corners[4] = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  const uint32_t tris[6] = {0, 1, 2, 0, 2, 3};
+  for (int k = 0; k < 6; ++k) {
+    const glm::vec3 p = corners[tris[k]];
+    const float a = 2.0943951f * float(k % 3);  // 120 degrees per corner
+    q.positions.push_back(p);
+    q.normals.emplace_back(0, 0, 1);
+    q.tangents.emplace_back(std::cos(a), std::sin(a), 0.0f, 1.0f);
+    q.uv0.emplace_back(0.5f * (p.x + 1.0f), 0.5f * (p.y + 1.0f));
+    q.indices.push_back(uint32_t(k));
+  }
+  q.material = s.meshes[0].primitives[0].material;
+  q.hadTangents = true;
+  s.meshes[0].primitives = {q};
+  return s;
+}
+
+TEST(FragmentRotorUnresolved, TrianglesTurningPastHalfATurnExtractPerVertex) {
+  const Scene scene = turningFrames();
+  std::vector<glm::vec4> rotors;
+  for (const glm::vec4& t : scene.meshes[0].primitives[0].tangents) {
+    const float a = std::atan2(t.y, t.x);  // rotor of a turn by a about z: (cos a/2, 0, 0, sin a/2)
+    rotors.emplace_back(std::cos(0.5f * a), 0.0f, 0.0f, std::sin(0.5f * a));
+  }
+  Primitive mixed = scene.meshes[0].primitives[0];
+  // A third triangle whose corners agree, listed first: it stays first and interpolable.
+  for (int k = 0; k < 3; ++k) {
+    mixed.positions.push_back(mixed.positions[size_t(k)]);
+    mixed.normals.push_back(mixed.normals[size_t(k)]);
+    mixed.tangents.emplace_back(1, 0, 0, 1);
+    mixed.uv0.push_back(mixed.uv0[size_t(k)]);
+    rotors.emplace_back(1, 0, 0, 0);
+  }
+  mixed.indices.insert(mixed.indices.begin(), {6, 7, 8});
+  const motor::SignedRotors signs = motor::signRotorsForInterpolation(mixed, rotors);
+  EXPECT_EQ(signs.unresolvedTriangles, 2);
+  EXPECT_EQ(signs.interpolableIndices, 3u);
+  ASSERT_EQ(signs.primitive.indices.size(), 9u);
+  EXPECT_EQ(signs.primitive.indices[0], 6u);
+
+  FrameSettings settings;
+  settings.width = settings.height = 128;
+  auto c = renderFrame(scene, "motor_c", settings);
+  auto cf = renderFrame(scene, "motor_cf", settings);
+  ASSERT_TRUE(c) << c.error();
+  ASSERT_TRUE(cf) << cf.error();
+  EXPECT_EQ(cf->stats.rotorUnresolvedTriangles, 2);
+  ASSERT_GT(drawnPixels(c->image), 1000);
+  auto m = compareImages(c->image, cf->image);
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_GE(m->psnr, 50.0) << "motor_cf's unresolved triangles should extract per vertex as motor_c";
 }
 
 // linearFromAffine against GLM: motor(linear x) rebuilds every seeded affine map, linear is
