@@ -169,9 +169,30 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
   l.measured = "all " + std::to_string(a.files) + " files: non-uniform scale (beyond " + rule + ") on an inner node in " +
                pct(a.inner, a.files) + "; " + judgedWhat + ": " + pct(r.inner, r.files) + ", " +
                std::to_string(r.innerBeyondPercent) + " of them beyond 1 %" + (examples.empty() ? "" : " (" + examples + ")");
+  // What the motor family's exact fallback (issue 34) takes on the same files, at rest, as inspect
+  // counted it (motorFallbacks in its JSON; absent from an inspect run older than the fallback).
+  int censused = 0, generalFiles = 0, skinFiles = 0, linearDraws = 0, skinDraws = 0;
+  for (const json& f : judged) {
+    const json& m = f.value("motorFallbacks", json());
+    if (!m.is_object()) continue;
+    ++censused;
+    generalFiles += m.value("generalNodes", 0) > 0;
+    skinFiles += m.value("skinFallbackDraws", 0) > 0;
+    linearDraws += m.value("linearFallbackDraws", 0);
+    skinDraws += m.value("skinFallbackDraws", 0);
+  }
+  if (censused > 0)
+    l.measured += "; the motor pipelines' exact fallback (pipelines/motor/linear_fallback.h) takes " +
+                  pct(generalFiles, censused) + " for nodes whose world is not a similarity (" +
+                  std::to_string(linearDraws) + " rigid draws at rest) and " + pct(skinFiles, censused) +
+                  " for skins whose joints are not one uniform scale (" + std::to_string(skinDraws) + " skinned draws)";
   l.measuredValue = {{"files", a.files}, {"withInnerNonUniform", a.inner}, {"judgedFiles", r.files},
                      {"judgedWithInnerNonUniform", r.inner}, {"judgedBeyond1Percent", r.innerBeyondPercent},
-                     {"tolerance", kPaperScaleTolerance}, {"byKind", kindsValue}};
+                     {"tolerance", kPaperScaleTolerance}, {"byKind", kindsValue},
+                     {"motorFallback", censused ? json{{"files", censused}, {"withGeneralNodes", generalFiles},
+                                                       {"withSkinFallback", skinFiles}, {"linearFallbackDrawsAtRest", linearDraws},
+                                                       {"skinFallbackDrawsAtRest", skinDraws}}
+                                                : json(nullptr)}};
   l.method = "motorbench inspect's scale statistics over " + sampleText +
              ". A node is inner when it has children; its scale is non-uniform when |s0/s1 - 1| or |s1/s2 - 1| exceeds "
              "1e-4 (the paper's loader check) at rest or in any scale key (an authored matrix with shear counts); the "
