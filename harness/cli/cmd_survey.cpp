@@ -1,13 +1,17 @@
 // motorbench survey FILE [--size WxH] [--pipelines A,B,...] [--gpu ...] [-o out.json]: one file,
 // loaded once, drawn by every pipeline of its space on one GL context, at rest and (animated
 // files) at 1/3 and 2/3 of animation 0; one JSON document with per pipeline and frame the drawn
-// pixels, the image metrics against the space's matrix baseline, the fallback counters, the
-// 16-byte pipelines' position bound and seconds. The worker of scripts/corpus-check.sh: it
-// judges nothing (the script applies the rules); exit 0 drawn or nothing to draw, 2 an error.
+// pixels, the image metrics against the space's matrix baseline (rigid files: also outside the
+// frame's tie pixels, those the baseline itself draws differently from vertex positions jittered
+// by ~1e-6 of their magnitude: tieMasks), the fallback counters, the 16-byte pipelines' position
+// bound and seconds. The worker of scripts/corpus-check.sh: it judges nothing (the script
+// applies the rules); exit 0 drawn or nothing to draw, 2 an error.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <memory>
 
 #include <glm/glm.hpp>
 
@@ -18,6 +22,9 @@
 #include "harness/render/gpu_option.h"
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
+#include "pipelines/gl/context.h"
+#include "pipelines/gl/framebuffer.h"
+#include "pipelines/pipeline.h"
 #include "pipelines/scene/animation.h"
 #include "pipelines/scene/camera_rule.h"
 #include "pipelines/scene/drawable.h"
@@ -113,11 +120,12 @@ PositionBound positionBound(const Scene& scene, const AnimState& anim, const Vie
 // Per pixel of `a`, how far (bytes) its farthest channel lies outside the min..max of that channel
 // over the (2r+1)^2 neighbourhood of the same pixel in `b` (0 inside): what a displacement of at
 // most r pixels cannot explain. `over` counts the pixels beyond `tolerance`; `worst` the largest.
+// `ties` (a tie mask, or null): `overNotTies` and `worstNotTies` the same over the non-tie pixels.
 struct Envelope {
-  int64_t over = 0;
-  int worst = 0;
+  int64_t over = 0, overNotTies = 0;
+  int worst = 0, worstNotTies = 0;
 };
-Envelope envelope(const RgbaImage& a, const RgbaImage& b, int r, int tolerance) {
+Envelope envelope(const RgbaImage& a, const RgbaImage& b, int r, int tolerance, const std::vector<uint8_t>* ties) {
   Envelope e;
   for (int y = 0; y < a.height; ++y)
     for (int x = 0; x < a.width; ++x) {
@@ -134,6 +142,10 @@ Envelope envelope(const RgbaImage& a, const RgbaImage& b, int r, int tolerance) 
       }
       e.over += excess > tolerance;
       e.worst = std::max(e.worst, excess);
+      if (!ties || !(*ties)[size_t(y) * size_t(a.width) + size_t(x)]) {
+        e.overNotTies += excess > tolerance;
+        e.worstNotTies = std::max(e.worstNotTies, excess);
+      }
     }
   return e;
 }
@@ -142,6 +154,114 @@ Envelope envelope(const RgbaImage& a, const RgbaImage& b, int r, int tolerance) 
 // frame (10-bit codes) and uv (half floats), which the position bound does not cover; 4 steps is
 // the diff heat map's "red" stop (image_metrics.h), fixed before any corpus run.
 constexpr int kShadeTolerance = 4;
+
+// Tie pixels: the pixels of a frame that the transform does not determine. Coplanar surfaces
+// (z-fighting: a court's painted lines on its floor) and pixel centres on a shared edge are
+// resolved by the rasteriser from the last bits of the transformed positions, so any other
+// correct rounding of the same transform (motor vs matrix) flips some of them. The probe: the
+// baseline draws each frame again from the scene with every vertex position moved by a
+// pseudo-random amount of at most kTieJitter times the largest coordinate magnitude of its
+// primitive (per vertex and axis, fixed per file), in antithetic pairs (+j, -j: a tie the
+// jitter reaches flips in one of the two), kTiePairs pair(s); a pixel whose RGB differs from the
+// baseline's image in any of them is a tie pixel. The camera is the baseline's (framed on the
+// unjittered scene). Why the vertices and not the view: moving the eye or nudging the projection
+// moves coplanar surfaces together and leaves z-fights as they were (court.glb: 48 eye shifts of
+// 1e-6 of the radius in 24 directions left 3 of motor's line pixels out, 1e-5 still one), while a
+// pipeline's rounding differs per vertex. Why 2^-20: it is 8 to 16 float32 ulps of the
+// primitive's largest coordinate, the order of the rounding of a few chained multiply-adds by
+// which two correct float pipelines differ (court.glb: it finds 15 of the 17 line pixels motor
+// flips); for a primitive around its origin it is 30 times below the 16-byte pipelines' int16
+// step (h / 32767), and at 128 px it moves a vertex by about 1e-4 pixel: orders of magnitude
+// below any transform error the rules are there to catch (a wrong sign, a dropped scale, a rotor
+// off by 1e-4 all move pixels by 0.01 px and more). normal_torus, with no coplanar surfaces, gets
+// 4 tie pixels, all 1-byte shading roundings (README: Corpus check).
+// One pair: two more matrix draws (and prepares) per frame. Missing a tie only makes the rules
+// stricter; a second pair finds the other 2 line pixels of court.glb (motor outside the ties:
+// 54 dB with one pair, 66 dB with two) at twice the cost.
+constexpr int kTiePairs = 1;
+constexpr double kTieJitter = 1.0 / (1 << 20);
+
+// A uniform value in [-1, 1] from (pair, primitive, vertex, axis): splitmix64, fixed for a file.
+double jitterValue(uint64_t pair, uint64_t prim, uint64_t vertex, uint64_t axis) {
+  uint64_t z = (pair * 0x9E3779B97F4A7C15ull) ^ (prim * 0xC2B2AE3D27D4EB4Full) ^ (vertex * 4 + axis);
+  z += 0x9E3779B97F4A7C15ull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return double(z >> 11) / double(1ull << 52) - 1.0;
+}
+
+// 1 per pixel that differs (any RGB channel) between `a` and `b`, same size.
+std::vector<uint8_t> differingMask(const RgbaImage& a, const RgbaImage& b) {
+  std::vector<uint8_t> m(size_t(a.width) * size_t(a.height), 0);
+  for (size_t i = 0; i < m.size(); ++i)
+    for (size_t c = 0; c < 3; ++c) m[i] |= a.rgba[i * 4 + c] != b.rgba[i * 4 + c];
+  return m;
+}
+
+// The tie masks of every shot: the baseline pipeline drawn from the scene with kTiePairs x 2
+// jitters of its positions (each prepared once, posed and drawn per shot) against `base`, its
+// images of the scene. The positions are jittered in place (a copy would copy every texture)
+// and restored before it returns, whatever happens.
+Result<std::vector<std::vector<uint8_t>>> tieMasks(Scene& scene, const std::string& baseline,
+                                                   const std::vector<FrameSettings>& settings,
+                                                   const std::vector<RgbaImage>& base) {
+  using R = Result<std::vector<std::vector<uint8_t>>>;
+  const std::string where = scene.source + " [" + baseline + ", tie probe]: ";
+  std::vector<std::vector<uint8_t>> masks;
+  for (const FrameSettings& f : settings) masks.emplace_back(size_t(f.width) * size_t(f.height), 0);
+  try {
+    auto ctx = gl::sharedContext();
+    if (!ctx) return R::fail(where + ctx.error());
+    std::vector<View> views;
+    for (const FrameSettings& f : settings) views.push_back(frameScene(scene, f.anim, float(f.width) / float(f.height), f.camera));
+    std::vector<std::vector<glm::vec3>> original;
+    for (const Mesh& mesh : scene.meshes)
+      for (const Primitive& prim : mesh.primitives) original.push_back(prim.positions);
+    struct Restore {
+      Scene& scene;
+      std::vector<std::vector<glm::vec3>>& original;
+      ~Restore() {
+        size_t n = 0;
+        for (Mesh& mesh : scene.meshes)
+          for (Primitive& prim : mesh.primitives) prim.positions = std::move(original[n++]);
+      }
+    } restore{scene, original};
+    for (int render = 0; render < 2 * kTiePairs; ++render) {
+      const double sign = render % 2 ? -1.0 : 1.0;  // antithetic: +j, then -j
+      size_t n = 0;
+      for (size_t m = 0; m < scene.meshes.size(); ++m)
+        for (size_t q = 0; q < scene.meshes[m].primitives.size(); ++q) {
+          const std::vector<glm::vec3>& from = original[n++];
+          std::vector<glm::vec3>& to = scene.meshes[m].primitives[q].positions;
+          float scale = 0;  // the largest coordinate magnitude of the primitive: its ulps set the rounding
+          for (const glm::vec3& v : from) scale = std::max({scale, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+          const uint64_t prim = uint64_t(m) << 20 | uint64_t(q);
+          for (size_t i = 0; i < from.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+              to[i][c] = float(double(from[i][c]) + sign * kTieJitter * double(scale) * jitterValue(uint64_t(render / 2), prim, i, uint64_t(c)));
+        }
+      std::unique_ptr<Pipeline> p = createPipeline(baseline);
+      if (!p) return R::fail(where + "unknown or unimplemented pipeline");
+      if (Status ok = p->prepare(scene); !ok) return R::fail(where + ok.error());
+      for (size_t k = 0; k < settings.size(); ++k) {
+        const FrameSettings& f = settings[k];
+        auto fb = gl::Framebuffer::create(f.width, f.height);
+        if (!fb) return R::fail(where + fb.error());
+        p->update(f.anim);
+        const View view = views[k];  // the framing of the unjittered scene: the baseline's camera
+        (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
+        p->render(view);
+        const RgbaImage img{f.width, f.height, (*fb)->readRgba()};
+        const std::vector<uint8_t> d = differingMask(base[k], img);
+        for (size_t i = 0; i < d.size(); ++i) masks[k][i] |= d[i];
+      }
+    }
+    return masks;
+  } catch (const std::exception& e) {
+    return R::fail(where + "internal error (exception): " + e.what());
+  }
+}
 
 json fallbackJson(const PipelineStats& s) {
   return {{"nonUniformScaleNodes", s.nonUniformScaleNodes}, {"negativeScaleNodes", s.negativeScaleNodes},
@@ -235,6 +355,7 @@ int runSurvey(const std::vector<std::string>& argv) {
   doc["frames"] = frames;
 
   std::vector<RgbaImage> base;  // the baseline's images, one per shot
+  std::vector<std::vector<uint8_t>> ties;  // and their tie masks (tieMasks; rigid files)
   json results = json::object();
   bool anyError = false;
   for (const std::string& name : pipelines) {
@@ -255,19 +376,41 @@ int runSurvey(const std::vector<std::string>& argv) {
       }
       json f = {{"drawnPixels", drawnPixels(frame->image)}};
       if (k < base.size() && name != baseline) {
+        const std::vector<uint8_t>* tie = k < ties.size() ? &ties[k] : nullptr;  // rigid files only
         auto m = compareImages(base[k], frame->image);
         if (m) {
           f["identical"] = m->rmse == 0.0;
           f["psnr"] = m->rmse == 0.0 ? json(nullptr) : json(m->psnr);
           f["maxError"] = m->maxError;
         }
+        // The same judged outside the tie pixels: those set to the baseline's value.
+        if (tie) {
+          const std::vector<uint8_t> diff = differingMask(base[k], frame->image);
+          RgbaImage masked = frame->image;
+          int64_t differing = 0, outside = 0;
+          for (size_t i = 0; i < diff.size(); ++i) {
+            differing += diff[i];
+            if (diff[i] && !(*tie)[i]) ++outside;
+            if ((*tie)[i]) std::copy_n(base[k].rgba.begin() + std::ptrdiff_t(i * 4), 4, masked.rgba.begin() + std::ptrdiff_t(i * 4));
+          }
+          f["differingPixels"] = differing;
+          f["differingNotTies"] = outside;  // differing pixels outside the tie set
+          if (auto mt = compareImages(base[k], masked)) {
+            f["identicalNotTies"] = mt->rmse == 0.0;
+            f["psnrNotTies"] = mt->rmse == 0.0 ? json(nullptr) : json(mt->psnr);
+          }
+        }
         if (isCompact(name) && frames[k].contains("positionBound")) {
           const int radius = frames[k]["positionBound"]["envelopeRadius"].get<int>();
           // Both ways: a pixel of either image its counterpart's neighbourhood cannot explain.
-          const Envelope e1 = envelope(frame->image, base[k], radius, kShadeTolerance),
-                         e2 = envelope(base[k], frame->image, radius, kShadeTolerance);
+          const Envelope e1 = envelope(frame->image, base[k], radius, kShadeTolerance, tie),
+                         e2 = envelope(base[k], frame->image, radius, kShadeTolerance, tie);
           f["outsideEnvelope"] = std::max(e1.over, e2.over);
           f["envelopeExcess"] = std::max(e1.worst, e2.worst);  // bytes beyond the neighbourhood
+          if (tie) {
+            f["outsideEnvelopeNotTies"] = std::max(e1.overNotTies, e2.overNotTies);  // the same outside the tie set
+            f["envelopeExcessNotTies"] = std::max(e1.worstNotTies, e2.worstNotTies);
+          }
         }
       }
       json fb = fallbackJson(frame->stats), nonzero = json::object();
@@ -278,6 +421,24 @@ int runSurvey(const std::vector<std::string>& argv) {
       keepMax(r["fallbacks"], fb);
       r["frames"].push_back(f);
       if (k == 0) doc["gl"] = describeGl(frame->gl);
+    }
+    // The rules that use ties judge rigid frames only: skinned files are not probed.
+    if (name == baseline && !skinned && base.size() == settings.size()) {
+      auto masks = tieMasks(*loaded, name, settings, base);  // jitters and restores the positions
+      if (!masks) {
+        r["error"] = masks.error();
+        commandNotes("survey", {"error: " + masks.error()});
+        anyError = true;
+      } else {
+        for (size_t k = 0; k < masks->size(); ++k) {
+          std::vector<int64_t> set;
+          for (size_t i = 0; i < (*masks)[k].size(); ++i)
+            if ((*masks)[k][i]) set.push_back(int64_t(i));
+          // jitter: times the primitive's largest coordinate; set: pixel indices y * width + x, row 0 the top
+          doc["frames"][k]["ties"] = {{"pixels", set.size()}, {"renders", 2 * kTiePairs}, {"jitter", kTieJitter}, {"set", set}};
+        }
+        ties = std::move(*masks);
+      }
     }
     r["seconds"] = secondsSince(tp);
     results[name] = r;
@@ -294,7 +455,7 @@ int runSurvey(const std::vector<std::string>& argv) {
 MB_COMMAND(survey, "survey",
            "SCENE [--size WxH (default 128x128)] [--pipelines A,B,...] [--gpu auto|llvmpipe|N] [--images DIR] [-o out.json]",
            "draw one file with every pipeline of its space at rest and two animation times; print one JSON "
-           "document (drawn pixels, metrics against matrix, fallbacks, the 16-byte position bound, seconds): "
+           "document (drawn pixels, metrics against matrix, tie pixels, fallbacks, the 16-byte position bound, seconds): "
            "the worker of scripts/corpus-check.sh",
            mb::runSurvey);
 MB_COMMAND_HELP(survey, "survey",

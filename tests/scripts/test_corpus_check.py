@@ -11,6 +11,7 @@ import json
 import math
 import os
 import subprocess
+import sys
 import tempfile
 import time
 import unittest
@@ -18,6 +19,9 @@ import unittest
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 CORPUS = os.path.join(REPO, "..", "shared", "corpus-wide")
 EXE = os.environ.get("MB_MOTORBENCH_EXE", os.path.join(REPO, "build", "harness", "motorbench"))
+sys.path.insert(0, os.path.join(REPO, "scripts"))
+import corpus_check  # noqa: E402  (the judging functions, on synthetic survey documents)
+
 PIPELINES = ["matrix", "motor", "affine", "qtangent", "motor_q", "hybrid", "matrix_c", "motor_c", "motor_cf"]
 
 SUBSET = [  # path under corpus-wide: what it covers
@@ -147,6 +151,113 @@ class CorpusCheckCrash(unittest.TestCase):
             self.assertEqual(sorted(rows), sorted(PIPELINES))
             self.assertEqual(rows["motor_cf"]["signal"], "SIGSEGV")
             self.assertTrue(all(r["drawn"] for n, r in rows.items() if n != "motor_cf"))
+
+
+def synthetic_result(motor=None, matrix_c=None, ties=16):
+    """file_result() of a made-up one-frame rigid survey: matrix plus the given pipelines' frames."""
+    frame = {"animation": None, "time": 0.0, "kind": "rigid",
+             "positionBound": {"worldUnits": 1e-5, "pixels": 0.01, "envelopeRadius": 1, "shadeTolerance": 4}}
+    if ties is not None:
+        frame["ties"] = {"pixels": ties, "renders": 4, "set": list(range(ties))}
+    pipelines = {"matrix": {"error": None, "frames": [{"drawnPixels": 5000}], "fallbacks": {}, "seconds": 0.1}}
+    for name, f in (("motor", motor), ("matrix_c", matrix_c)):
+        if f is not None:
+            pipelines[name] = {"error": None, "frames": [dict({"drawnPixels": 5000}, **f)], "fallbacks": {}, "seconds": 0.1}
+    doc = {"status": "ok", "baseline": "matrix", "pipelineOrder": list(pipelines), "frames": [frame],
+           "pipelines": pipelines, "scene": {}, "loaderFallbacks": {}}
+    rec = {"exit": 0, "signal": None, "timeout": False, "stderr": "", "doc": doc, "seconds": 1.0}
+    return corpus_check.file_result("x.glb", "x.glb", rec, "")
+
+
+def rule(rules, start):
+    return next((fails, ties) for name, fails, ties in rules if name.startswith(start))
+
+
+class TieRule(unittest.TestCase):
+    """The rigid and 16-byte rules judged outside the tie pixels (survey: pixels matrix itself draws
+    differently from jittered vertex positions), on synthetic survey documents."""
+
+    def test_a_frame_whose_failing_pixels_are_all_ties_passes_with_the_mark(self):
+        # court.glb's case: 42.4 dB, 16 differing pixels, every one a tie.
+        res = synthetic_result(motor={"identical": False, "psnr": 42.4, "differingPixels": 16, "differingNotTies": 0,
+                                      "identicalNotTies": True, "psnrNotTies": None})
+        rules = corpus_check.evaluate([res])
+        fails, ties = rule(rules, "rigid frames of motor")
+        self.assertEqual(fails, [])
+        self.assertEqual(len(ties), 1)
+        self.assertIn("x.glb [motor] rest: 42.40 dB; identical dB outside the 16 tie pixels", ties[0])
+        lines = "\n".join(corpus_check.rule_lines(rules))
+        self.assertIn("PASS: rigid frames of motor", lines)
+        self.assertIn("(1 frames pass on ties)", lines)
+        self.assertIn("PASS (ties: undetermined by the transform): x.glb [motor] rest", lines)
+        per = corpus_check.totals([res], ["matrix", "motor"])
+        self.assertEqual(per["motor"]["rigidTieFrames"], 1)
+        self.assertEqual(per["motor"]["rigidFilesFailing"], 0)
+        self.assertEqual(per["motor"]["rigidFilesBelow50dB"], 1)  # the raw figure stays visible
+
+    def test_rounding_outside_the_ties_that_the_50_dB_rule_allows_anyway_still_passes(self):
+        # motor on court.glb also differs by one byte in 8 non-tie pixels: 66 dB outside the ties.
+        res = synthetic_result(motor={"identical": False, "psnr": 42.4, "differingPixels": 37, "differingNotTies": 8,
+                                      "identicalNotTies": False, "psnrNotTies": 66.0})
+        fails, ties = rule(corpus_check.evaluate([res]), "rigid frames of motor")
+        self.assertEqual(fails, [])
+        self.assertIn("66.0 dB outside the 16 tie pixels (37 px differ, 8 of them not ties)", ties[0])
+
+    def test_a_frame_with_a_failing_pixel_outside_the_tie_set_still_fails(self):
+        res = synthetic_result(motor={"identical": False, "psnr": 42.0, "differingPixels": 17, "differingNotTies": 1,
+                                      "identicalNotTies": False, "psnrNotTies": 43.5})
+        rules = corpus_check.evaluate([res])
+        fails, ties = rule(rules, "rigid frames of motor")
+        self.assertEqual(ties, [])
+        self.assertEqual(fails, ["x.glb [motor]: 42.00 dB, 43.5 dB outside the tie pixels"])
+        self.assertIn("FAIL: rigid frames of motor", "\n".join(corpus_check.rule_lines(rules)))
+        self.assertEqual(corpus_check.totals([res], ["motor"])["motor"]["rigidFilesFailing"], 1)
+
+    def test_a_survey_without_tie_data_is_judged_on_every_pixel(self):
+        res = synthetic_result(motor={"identical": False, "psnr": 42.0}, ties=None)
+        fails, ties = rule(corpus_check.evaluate([res]), "rigid frames of motor")
+        self.assertEqual((len(fails), ties), (1, []))
+
+    def test_the_16_byte_rule_both_ways(self):
+        ok = synthetic_result(matrix_c={"identical": False, "psnr": 45.0, "outsideEnvelope": 2, "envelopeExcess": 90,
+                                        "outsideEnvelopeNotTies": 0, "envelopeExcessNotTies": 3})
+        fails, ties = rule(corpus_check.evaluate([ok]), "rigid frames of matrix_c")
+        self.assertEqual(fails, [])
+        self.assertEqual(ties, ["x.glb [matrix_c] rest: 2 px outside the envelope, every one of them a tie pixel (16 in the frame)"])
+        self.assertEqual(corpus_check.totals([ok], ["matrix_c"])["matrix_c"]["compactTieFrames"], 1)
+        bad = synthetic_result(matrix_c={"identical": False, "psnr": 45.0, "outsideEnvelope": 3, "envelopeExcess": 90,
+                                         "outsideEnvelopeNotTies": 1, "envelopeExcessNotTies": 40})
+        fails, ties = rule(corpus_check.evaluate([bad]), "rigid frames of matrix_c")
+        self.assertEqual(ties, [])
+        self.assertEqual(len(fails), 1)
+        self.assertIn("3 px outside the envelope (1 not tie pixels)", fails[0])
+
+
+@unittest.skipUnless(os.access(EXE, os.X_OK), f"{EXE}: motorbench not built")
+class SurveyTiePixels(unittest.TestCase):
+    """The tie probe on real frames: few on a scene without coplanar surfaces, and on court.glb the
+    z-fighting line pixels that fail motor's 50 dB are all ties."""
+
+    def survey(self, scene, *extra):
+        run = subprocess.run([EXE, "survey", scene, "--size", "128x128", *extra], capture_output=True, text=True, timeout=300)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        return json.loads(run.stdout)
+
+    def test_normal_torus_has_at_most_a_handful(self):
+        doc = self.survey("normal_torus", "--pipelines", "motor")
+        ties = doc["frames"][0]["ties"]
+        self.assertLessEqual(ties["pixels"], 12)  # measured: 4, all 1-byte shading roundings
+        self.assertEqual(len(ties["set"]), ties["pixels"])
+        self.assertTrue(all(0 <= i < 128 * 128 for i in ties["set"]))
+        motor = doc["pipelines"]["motor"]["frames"][0]
+        self.assertLessEqual(motor["differingNotTies"], motor["differingPixels"])
+
+    @unittest.skipUnless(os.path.isdir(CORPUS), "../shared/corpus-wide absent (a clone without ../shared)")
+    def test_court_z_fighting_is_ties(self):
+        doc = self.survey(os.path.join(CORPUS, "pmndrs+examples/demos/sport-hall/src/court.glb"), "--pipelines", "motor")
+        motor = doc["pipelines"]["motor"]["frames"][0]
+        self.assertLess(motor["psnr"], 50)
+        self.assertGreaterEqual(motor["psnrNotTies"] or math.inf, 50)
 
 
 if __name__ == "__main__":
