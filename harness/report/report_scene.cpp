@@ -238,7 +238,9 @@ json measureScene(const SceneJob& job) {
           out["gl"] = toJson(f->gl);  // the device record (render_frame.h)
       }
       // Fallbacks counted per render may depend on the pose: keep each counter's largest.
-      for (const auto& [k, v] : fallbacksJson(f->stats).items())
+      // (a named json: items() of a temporary would iterate a destroyed object)
+      const json fallbacks = fallbacksJson(f->stats);
+      for (const auto& [k, v] : fallbacks.items())
         if (v.is_number() && v.get<double>() > pj["fallbacks"].value(k, 0.0)) pj["fallbacks"][k] = v;
       images.emplace(p, std::move(f->image));
     }
