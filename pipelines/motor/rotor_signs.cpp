@@ -48,6 +48,7 @@ SignedRotors signRotorsForInterpolation(const Primitive& p, const std::vector<gl
     return uint32_t(twin[v]);
   };
   std::vector<uint32_t>& idx = out.primitive.indices;
+  std::vector<char> unresolved(idx.size() / 3, 0);  // per triangle
   for (size_t t = 0; t + 2 < idx.size(); t += 3) {
     const std::array<uint32_t, 3> v = {p.indices[t], p.indices[t + 1], p.indices[t + 2]};
     if (v[0] >= n || v[1] >= n || v[2] >= n) continue;  // the loader rejects these; stay safe
@@ -59,19 +60,20 @@ SignedRotors signRotorsForInterpolation(const Primitive& p, const std::vector<gl
     const int overall = vote < 0 ? -1 : 1;
     for (int k = 0; k < 3; ++k) idx[t + size_t(k)] = slot(v[k], overall * rel[k]);
     const glm::vec4 &a = out.rotors[idx[t]], &b = out.rotors[idx[t + 1]], &c = out.rotors[idx[t + 2]];
-    out.unresolvedTriangles += glm::dot(b, c) < 0.0f || glm::dot(a, b) < 0.0f || glm::dot(a, c) < 0.0f;
+    unresolved[t / 3] = glm::dot(b, c) < 0.0f || glm::dot(a, b) < 0.0f || glm::dot(a, c) < 0.0f;
+    out.unresolvedTriangles += unresolved[t / 3];
   }
-  // Interpolable triangles first, in their order; the unresolved ones after them.
-  std::vector<uint32_t> resolved, unresolved;
-  for (size_t t = 0; t + 2 < idx.size(); t += 3) {
-    const glm::vec4 &a = out.rotors[idx[t]], &b = out.rotors[idx[t + 1]], &c = out.rotors[idx[t + 2]];
-    const bool bad = glm::dot(b, c) < 0.0f || glm::dot(a, b) < 0.0f || glm::dot(a, c) < 0.0f;
-    (bad ? unresolved : resolved).insert((bad ? unresolved : resolved).end(), idx.begin() + long(t), idx.begin() + long(t) + 3);
-  }
-  out.interpolableIndices = resolved.size();
-  resolved.insert(resolved.end(), unresolved.begin(), unresolved.end());
-  if (resolved.size() == idx.size()) idx = std::move(resolved);
-  else out.interpolableIndices = idx.size();  // a trailing partial triangle: keep the order
+  // Interpolable triangles first, in their order; the unresolved ones after them (a trailing
+  // partial triangle, which no triangle list has, keeps the order as it is).
+  out.interpolableIndices = idx.size();
+  if (out.unresolvedTriangles == 0 || idx.size() % 3 != 0) return out;
+  std::vector<uint32_t> ordered;
+  ordered.reserve(idx.size());
+  for (char last : {0, 1})
+    for (size_t t = 0; t < unresolved.size(); ++t)
+      if (unresolved[t] == last) ordered.insert(ordered.end(), idx.begin() + long(3 * t), idx.begin() + long(3 * t + 3));
+  out.interpolableIndices = idx.size() - 3 * size_t(out.unresolvedTriangles);
+  idx = std::move(ordered);
   return out;
 }
 
