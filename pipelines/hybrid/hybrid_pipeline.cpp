@@ -1,9 +1,8 @@
 #include "pipelines/hybrid/hybrid_pipeline.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include "pipelines/affine/affine_pipeline.h"
 #include "pipelines/motor/companion.h"
+#include "pipelines/motor/linear_fallback.h"
 #include "pipelines/motor/motor_rig.h"
 
 namespace mb {
@@ -39,8 +38,7 @@ namespace {
       const float* f = &p.motors[8 * j];
       const mb::Motor m(companion::Vec4(f[0], f[1], f[2], f[3]), companion::Vec4(f[4], f[5], f[6], f[7]));
       if (p.fallback) {
-        const float* l = &p.linear[24 * j];
-        const glm::mat3 linear(glm::make_vec3(l), glm::make_vec3(l + 4), glm::make_vec3(l + 8));
+        const glm::mat3 linear = motor::unpackLinear(&p.linear[24 * j]);
         palette.joints[j] = glm::mat4x3(companion::motorToMatrix(m) * glm::mat4(linear));
       } else {
         palette.joints[j] = toMatrix(m, scale);

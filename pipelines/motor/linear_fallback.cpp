@@ -78,4 +78,8 @@ void packLinear(const LinearTransform& t, float* out) {
   }
 }
 
+glm::mat3 unpackLinear(const float* p) {
+  return glm::mat3(p[0], p[1], p[2], p[4], p[5], p[6], p[8], p[9], p[10]);
+}
+
 }  // namespace mb::motor

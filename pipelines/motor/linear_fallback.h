@@ -31,5 +31,7 @@ LinearTransform linearFromScaled(const ScaledMotor& m);
 // The 24 floats one joint uploads beside its motor (std430: each mat3 column padded to a
 // vec4): linear's three columns, then normalLinear's.
 void packLinear(const LinearTransform& t, float* out24);
+// The linear part back from those 24 floats (the inverse of packLinear's first half).
+glm::mat3 unpackLinear(const float* packed24);
 
 }  // namespace mb::motor

@@ -181,7 +181,6 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
     p.scale = 1.0f;
     p.uniform = true;
     p.motors.resize(skin.joints.size() * 8);
-    p.scales.resize(skin.joints.size());
     const Motor toNode = relativeToNode ? mk().reverse_m(world[n].motor) : Motor();
     const bool general = rig.generalSkin[size_t(p.skin)] && exactWorld;
     for (size_t j = 0; j < skin.joints.size(); ++j) {
@@ -189,7 +188,6 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
       const ScaledMotor joint = nodeIndexOk(scene, jn) ? world[size_t(jn)] : identityScaledMotor();
       ScaledMotor m = compose(joint, rig.inverseBind[size_t(p.skin)][j]);
       if (relativeToNode) m.motor = gpMotors(toNode, m.motor);
-      p.scales[j] = m.scale;
       if (j == 0) p.scale = m.scale;
       else if (std::fabs(m.scale - p.scale) > 1e-4f * std::fabs(p.scale)) p.uniform = false;
       float* out = &p.motors[8 * j];

@@ -88,7 +88,6 @@ struct JointPalette {
   // relativeToNode), and `scale` is unused.
   bool fallback = false;
   std::vector<float> linear;
-  std::vector<float> scales;   // per joint (working storage)
 };
 
 // Palettes for every node that has both a mesh and a skin. `relativeToNode`: each joint motor
