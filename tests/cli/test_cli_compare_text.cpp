@@ -11,6 +11,7 @@
 
 #include "harness/render/image_metrics.h"
 #include "tests/support/cli_issue_support.h"
+#include "tests/support/png_pixels.h"
 #include "tests/support/scene_test_gltf.h"
 
 namespace {
@@ -21,15 +22,7 @@ using mb::cli_test::quoted;
 using mb::cli_test::readJson;
 using mb::cli_test::runMb;
 
-// Pixels of the PNG whose RGB is not the clear colour (0.2, 0.2, 0.22) as 8-bit: 51, 51, 56.
-int64_t nonBackground(const fs::path& png) {
-  auto img = mb::readImage(png.string());
-  if (!img) return -1;
-  int64_t n = 0;
-  for (size_t i = 0; i < img->rgba.size(); i += 4)
-    n += !(img->rgba[i] == 51 && img->rgba[i + 1] == 51 && img->rgba[i + 2] == 56);
-  return n;
-}
+using mb::cli_test::nonBackground;
 
 // One triangle on a node scaled to zero: every pipeline draws background only.
 fs::path zeroScaleFile(const fs::path& dir) {

@@ -10,6 +10,7 @@
 
 #include "harness/render/image_metrics.h"
 #include "tests/support/cli_issue_support.h"
+#include "tests/support/png_pixels.h"
 
 namespace {
 
@@ -27,16 +28,7 @@ std::string htmlEscaped(const std::string& s) {
   return out;
 }
 
-// Pixels of the PNG whose RGB is not the clear colour (51, 51, 56): counted here, apart from
-// the harness.
-int64_t nonBackground(const fs::path& png) {
-  auto img = mb::readImage(png.string());
-  if (!img) return -1;
-  int64_t n = 0;
-  for (size_t i = 0; i < img->rgba.size(); i += 4)
-    n += !(img->rgba[i] == 51 && img->rgba[i + 1] == 51 && img->rgba[i + 2] == 56);
-  return n;
-}
+using mb::cli_test::nonBackground;
 
 // A corrupt .glb beside skinned_tube (matrix vs motor, whose candy_wrapper frames draw shapes
 // of different size where linear blend skinning collapses the ring).
