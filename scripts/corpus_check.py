@@ -7,9 +7,12 @@ signal or runs past --timeout is recorded and its pipelines are retried one proc
 crash is pinned on a pipeline; the run goes on. Writes OUT/corpus-check.json (a row per file x
 pipeline, totals, the rules) and OUT/corpus-check.md (the summary tables), prints the rules as
 PASS/FAIL lines naming the failing files, and exits 1 when a rule fails (2: bad arguments). The
-rigid and 16-byte rules are judged outside each frame's tie pixels (the survey's: pixels matrix
-itself draws differently when its vertex positions are jittered by ~1e-6 of their magnitude);
-frames that pass only so are listed under their rule as "PASS (ties: ...)" and counted.
+rigid rule is judged outside each frame's tie pixels (the survey's: pixels matrix itself draws
+differently when its vertex positions are jittered by ~1e-6 of their magnitude); the 16-byte rule
+in the survey's geometry view (base colour alone: positions and uv decide a pixel, not how a
+pipeline shades) outside its int16-cell ties (pixels matrix draws differently with its positions
+moved to corners of their int16 quantisation cells). Frames that pass only so are listed under
+their rule as "PASS (ties: ...)" and counted.
 """
 import argparse
 import concurrent.futures
@@ -109,7 +112,7 @@ def judge_rigid_frame(frame, tie_pixels):
     """One rigid frame of a full-precision pipeline against matrix: {"verdict": "pass" | "ties" |
     "fail", ...}. pass: PSNR >= MIN_PSNR or identical. ties: below that, but at MIN_PSNR or identical
     once the frame's tie pixels (those matrix itself draws differently when the vertex positions are
-    jittered by ~1e-6 of their magnitude: undetermined by the transform, see cmd_survey.cpp) are
+    jittered by ~1e-6 of their magnitude: undetermined by the transform, see survey_probe.h) are
     counted as equal: every pixel that makes it fail is a tie. fail: the pixels outside the tie set
     alone stay below MIN_PSNR (or the survey gave no tie data)."""
     psnr = psnr_of(frame)
@@ -160,14 +163,18 @@ def pipeline_row(file, name, doc, rec, kinds, bounds):
     row["drawnDiff"] = [abs(d - b) / max(d, b) if max(d, b) else 0.0 for d, b in zip(drawn, base_drawn)]
     skinned = [x for x, k in zip(row["drawnDiff"], kinds) if k == "skinned"]
     row["worstSkinnedDrawnDiff"] = max(skinned) if skinned else None
+    # The 16-byte rule, judged by survey in the geometry view (positions and uv alone, no light).
     outside = [f["outsideEnvelope"] for f, k in zip(frames, kinds) if k == "rigid" and "outsideEnvelope" in f]
     row["outsideEnvelope"] = max(outside) if outside else None
     # Outside the tie set (surveys without tie data: every pixel counts).
     outside_nt = [f.get("outsideEnvelopeNotTies", f["outsideEnvelope"]) for f, k in zip(frames, kinds)
                   if k == "rigid" and "outsideEnvelope" in f]
     row["outsideEnvelopeNotTies"] = max(outside_nt) if outside_nt else None
+    # The 16-byte rule's ties: pixels matrix draws differently with its positions moved within
+    # their int16 cells (the geometry view; survey_probe.h).
+    int16_ties = [(f.get("int16Ties") or {}).get("pixels") for f in doc["frames"]]
     row["compactTieFrames"] = [{"frame": i, "outsideEnvelope": f["outsideEnvelope"], "tiePixels": t}
-                               for i, (f, k, t) in enumerate(zip(frames, kinds, ties))
+                               for i, (f, k, t) in enumerate(zip(frames, kinds, int16_ties))
                                if k == "rigid" and f.get("outsideEnvelope") and f.get("outsideEnvelopeNotTies") == 0]
     excess = [f["envelopeExcess"] for f, k in zip(frames, kinds) if k == "rigid" and "envelopeExcess" in f]
     row["envelopeExcess"] = max(excess) if excess else None
@@ -261,7 +268,7 @@ def evaluate(files):
                                    f"{t['differingNotTies']} of them not ties)" for t in r["rigidTieFrames"]]
             if r["pipeline"] in COMPACT and r.get("outsideEnvelope") and not r.get("outsideEnvelopeNotTies"):
                 compact_ties += [f"{name} {frame_name(f, t['frame'])}: {t['outsideEnvelope']} px outside the envelope, every one "
-                                 f"of them a tie pixel ({t['tiePixels']} in the frame)" for t in r["compactTieFrames"]]
+                                 f"of them an int16-cell tie pixel ({t['tiePixels']} in the frame)" for t in r["compactTieFrames"]]
             elif r["pipeline"] in COMPACT and r.get("outsideEnvelope"):
                 compact.append(f"{name}: {r['outsideEnvelope']} px outside the envelope"
                                + ("" if r.get("outsideEnvelopeNotTies") in (None, r["outsideEnvelope"]) else
@@ -281,7 +288,8 @@ def evaluate(files):
             ("every drawable file drawn by every pipeline", drawn, []),
             (f"rigid frames of {', '.join(FULL_PRECISION)} vs matrix >= {MIN_PSNR:.0f} dB or identical "
              "(outside the tie pixels)", rigid, rigid_ties),
-            (f"rigid frames of {', '.join(COMPACT)} within their position bound (envelope; tie pixels excepted)",
+            (f"rigid frames of {', '.join(COMPACT)} within their position bound (geometry view, envelope; "
+             "int16-cell tie pixels excepted)",
              compact, compact_ties),
             (f"skinned frames: drawn pixels within {100 * MAX_DRAWN_DIFF:.0f} % of matrix", skinned, [])]
 
@@ -366,7 +374,9 @@ def markdown(summary, files, per, rules):
     out += ["", "## Rules", ""] + rule_lines(rules)
     out += ["", "## Files", "",
             "Bound: the 16-byte pipelines' position error in pixels at this size (rigid files; int16 in each "
-            "primitive's bounding cube: half extent / 32767 world units, projected at the nearest depth).", "",
+            "primitive's bounding cube: half extent / 32767 world units, projected at the nearest depth). The 16-byte "
+            "pipelines are judged on it in the geometry view (base colour alone, no light); their lit images' PSNR "
+            "against matrix is the cost of their quantised frame (and motor_cf's interpolated rotor).", "",
             "| file | status | kind | bound px | " + " | ".join(per) + " |", "|---|---|---|---|" + "---|" * len(per)]
     for f in files:
         cells = []

@@ -122,6 +122,12 @@ void main() {
   vec4 base = u_BaseColorFactor * v_color;
   if (u_BaseColorUV >= 0) base *= texture(u_BaseColorTexture, uvSet(u_BaseColorUV, u_BaseColorUVTransform));
   if (u_AlphaMode == 1 && base.a < u_AlphaCutoff) discard;
+#ifdef MB_GEOMETRY_VIEW
+  // The geometry view (survey, corpus-check's 16-byte rule): the base colour alone, no frame and
+  // no light, so that only positions, uv and vertex colour decide a pixel.
+  o_color = vec4(linearToSrgb(base.rgb), u_AlphaMode == 2 ? base.a : 1.0);
+  return;
+#endif
 
   float metallic = u_MetallicFactor, roughness = u_RoughnessFactor;
   if (u_MetallicRoughnessUV >= 0) {

@@ -3,8 +3,9 @@
 // files) at 1/3 and 2/3 of animation 0; one JSON document with per pipeline and frame the drawn
 // pixels, the image metrics against the space's matrix baseline (rigid files: also outside the
 // frame's tie pixels, those the baseline itself draws differently from vertex positions jittered
-// by ~1e-6 of their magnitude: tieMasks), the fallback counters, the 16-byte pipelines' position
-// bound and seconds. The worker of scripts/corpus-check.sh: it judges nothing (the script
+// by ~1e-6 of their magnitude: survey_probe.h), the fallback counters, the 16-byte pipelines'
+// position bound and their envelope test (in the geometry view, outside the pixels the baseline
+// draws differently with its positions moved within their int16 cells), and seconds. The worker of scripts/corpus-check.sh: it judges nothing (the script
 // applies the rules); exit 0 drawn or nothing to draw, 2 an error.
 #include <algorithm>
 #include <chrono>
@@ -17,6 +18,7 @@
 
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
+#include "harness/cli/survey_probe.h"
 #include "harness/options/args.h"
 #include "harness/render/counter_glossary.h"
 #include "harness/render/gpu_option.h"
@@ -34,6 +36,8 @@
 
 namespace mb {
 namespace {
+
+using namespace survey;
 
 using json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
@@ -54,215 +58,6 @@ bool drawsSkinned(const Scene& scene) {
   return false;
 }
 
-// Largest singular value of the linear part of `m`: sqrt of the largest eigenvalue of A^T A,
-// closed form for a symmetric 3x3 (the trigonometric solution of its characteristic cubic).
-double spectralNorm(const glm::dmat3& a) {
-  const glm::dmat3 s = glm::transpose(a) * a;
-  const double p1 = s[0][1] * s[0][1] + s[0][2] * s[0][2] + s[1][2] * s[1][2];
-  const double q = (s[0][0] + s[1][1] + s[2][2]) / 3.0;
-  if (p1 == 0.0) return std::sqrt(std::max({s[0][0], s[1][1], s[2][2]}));
-  const double p2 = (s[0][0] - q) * (s[0][0] - q) + (s[1][1] - q) * (s[1][1] - q) + (s[2][2] - q) * (s[2][2] - q) + 2 * p1;
-  const double p = std::sqrt(p2 / 6.0);
-  const glm::dmat3 b = (1.0 / p) * (s - q * glm::dmat3(1.0));
-  const double r = std::clamp(glm::determinant(b) / 2.0, -1.0, 1.0);
-  return std::sqrt(std::max(0.0, q + 2.0 * p * std::cos(std::acos(r) / 3.0)));
-}
-
-// The 16-byte pipelines' position error, as a bound in world units and in pixels, for a rigid
-// frame (posed by `anim`, framed by `view`, `height` pixels tall). A position is int16 SNORM in
-// its primitive's bounding cube (center, half extent h = the largest half side): each axis is off
-// by at most h/2/32767, the vector by at most sqrt(3)/2 h/32767 < h/32767 = eps (local units).
-// World: eps times the largest singular value of the draw's world (x instance) linear part.
-// Pixels: a world displacement d at camera depth z >= zmin moves the projection by at most
-// |d| sqrt(1 + u^2 + v^2) / z in tangent units (u, v the on-screen tangents, at most the frustum's
-// half-angle tangents; the norm of the projection's Jacobian), times H/2 / tan(yfov/2) pixels.
-// zmin: the depth of the cube's world bounding sphere, never nearer than znear (nothing nearer is
-// drawn). Envelope radius: a sample at a pixel centre sees the surface point that the baseline
-// draws at most `pixels` away, i.e. in the pixel round(pixels) away; +1 so that the value lies
-// between the baseline's neighbouring samples (the comparison takes their min..max).
-struct PositionBound {
-  double world = 0, pixels = 0;
-  int radius = 1;
-};
-PositionBound positionBound(const Scene& scene, const AnimState& anim, const View& view, int width, int height) {
-  PositionBound b;
-  const std::vector<glm::mat4> world = worldMatrices(scene, samplePose(scene, anim));
-  const glm::dmat4 toCamera = glm::inverse(glm::dmat4(trsMatrix(TRS{view.eye, view.orientation, glm::vec3(1.0f)})));
-  const double tanY = std::tan(double(view.yfov) / 2), tanX = tanY * double(width) / double(height);
-  const double slope = std::sqrt(1 + tanX * tanX + tanY * tanY), focal = 0.5 * height / tanY;
-  for (int n : nodesInDrawOrder(scene)) {
-    const Node& node = scene.nodes[size_t(n)];
-    if (node.mesh < 0 || size_t(node.mesh) >= scene.meshes.size()) continue;
-    std::vector<glm::dmat4> draws;
-    if (node.instances.empty()) draws.push_back(glm::dmat4(world[size_t(n)]));
-    for (const TRS& i : node.instances) draws.push_back(glm::dmat4(world[size_t(n)]) * glm::dmat4(trsMatrix(i)));
-    for (const Primitive& p : scene.meshes[size_t(node.mesh)].primitives) {
-      if (p.positions.empty()) continue;
-      glm::dvec3 lo(p.positions.front()), hi = lo;
-      for (const glm::vec3& v : p.positions) lo = glm::min(lo, glm::dvec3(v)), hi = glm::max(hi, glm::dvec3(v));
-      const glm::dvec3 half = 0.5 * (hi - lo), centre = 0.5 * (lo + hi);
-      double h = std::max({half.x, half.y, half.z});
-      if (!(h > 0)) h = 1;  // one point: the pipelines quantise in a unit cube
-      for (const glm::dmat4& m : draws) {
-        const double sigma = spectralNorm(glm::dmat3(m));
-        const double eps = h / 32767.0 * sigma;
-        const double depth = -(toCamera * m * glm::dvec4(centre, 1.0)).z - std::sqrt(3.0) * h * sigma;
-        const double z = std::max(depth, double(view.znear));
-        b.world = std::max(b.world, eps);
-        b.pixels = std::max(b.pixels, eps * slope / z * focal);
-      }
-    }
-  }
-  b.radius = int(std::lround(b.pixels)) + 1;
-  return b;
-}
-
-// Per pixel of `a`, how far (bytes) its farthest channel lies outside the min..max of that channel
-// over the (2r+1)^2 neighbourhood of the same pixel in `b` (0 inside): what a displacement of at
-// most r pixels cannot explain. `over` counts the pixels beyond `tolerance`; `worst` the largest.
-// `ties` (a tie mask, or null): `overNotTies` and `worstNotTies` the same over the non-tie pixels.
-struct Envelope {
-  int64_t over = 0, overNotTies = 0;
-  int worst = 0, worstNotTies = 0;
-};
-Envelope envelope(const RgbaImage& a, const RgbaImage& b, int r, int tolerance, const std::vector<uint8_t>* ties) {
-  Envelope e;
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x) {
-      int excess = 0;
-      for (int c = 0; c < 3; ++c) {
-        int lo = 255, hi = 0;
-        for (int yy = std::max(0, y - r); yy <= std::min(b.height - 1, y + r); ++yy)
-          for (int xx = std::max(0, x - r); xx <= std::min(b.width - 1, x + r); ++xx) {
-            const int v = b.rgba[(size_t(yy) * size_t(b.width) + size_t(xx)) * 4 + size_t(c)];
-            lo = std::min(lo, v), hi = std::max(hi, v);
-          }
-        const int v = a.rgba[(size_t(y) * size_t(a.width) + size_t(x)) * 4 + size_t(c)];
-        excess = std::max({excess, lo - v, v - hi});
-      }
-      e.over += excess > tolerance;
-      e.worst = std::max(e.worst, excess);
-      if (!ties || !(*ties)[size_t(y) * size_t(a.width) + size_t(x)]) {
-        e.overNotTies += excess > tolerance;
-        e.worstNotTies = std::max(e.worstNotTies, excess);
-      }
-    }
-  return e;
-}
-
-// The shading change the envelope allows, in byte steps: the 16-byte vertex also quantises the
-// frame (10-bit codes) and uv (half floats), which the position bound does not cover; 4 steps is
-// the diff heat map's "red" stop (image_metrics.h), fixed before any corpus run.
-constexpr int kShadeTolerance = 4;
-
-// Tie pixels: the pixels of a frame that the transform does not determine. Coplanar surfaces
-// (z-fighting: a court's painted lines on its floor) and pixel centres on a shared edge are
-// resolved by the rasteriser from the last bits of the transformed positions, so any other
-// correct rounding of the same transform (motor vs matrix) flips some of them. The probe: the
-// baseline draws each frame again from the scene with every vertex position moved by a
-// pseudo-random amount of at most kTieJitter times the largest coordinate magnitude of its
-// primitive (per vertex and axis, fixed per file), in antithetic pairs (+j, -j: a tie the
-// jitter reaches flips in one of the two), kTiePairs pair(s); a pixel whose RGB differs from the
-// baseline's image in any of them is a tie pixel. The camera is the baseline's (framed on the
-// unjittered scene). Why the vertices and not the view: moving the eye or nudging the projection
-// moves coplanar surfaces together and leaves z-fights as they were (court.glb: 48 eye shifts of
-// 1e-6 of the radius in 24 directions left 3 of motor's line pixels out, 1e-5 still one), while a
-// pipeline's rounding differs per vertex. Why 2^-20: it is 8 to 16 float32 ulps of the
-// primitive's largest coordinate, the order of the rounding of a few chained multiply-adds by
-// which two correct float pipelines differ (court.glb: it finds 15 of the 17 line pixels motor
-// flips); for a primitive around its origin it is 30 times below the 16-byte pipelines' int16
-// step (h / 32767), and at 128 px it moves a vertex by about 1e-4 pixel: orders of magnitude
-// below any transform error the rules are there to catch (a wrong sign, a dropped scale, a rotor
-// off by 1e-4 all move pixels by 0.01 px and more). normal_torus, with no coplanar surfaces, gets
-// 4 tie pixels, all 1-byte shading roundings (README: Corpus check).
-// One pair: two more matrix draws (and prepares) per frame. Missing a tie only makes the rules
-// stricter; a second pair finds the other 2 line pixels of court.glb (motor outside the ties:
-// 54 dB with one pair, 66 dB with two) at twice the cost.
-constexpr int kTiePairs = 1;
-constexpr double kTieJitter = 1.0 / (1 << 20);
-
-// A uniform value in [-1, 1] from (pair, primitive, vertex, axis): splitmix64, fixed for a file.
-double jitterValue(uint64_t pair, uint64_t prim, uint64_t vertex, uint64_t axis) {
-  uint64_t z = (pair * 0x9E3779B97F4A7C15ull) ^ (prim * 0xC2B2AE3D27D4EB4Full) ^ (vertex * 4 + axis);
-  z += 0x9E3779B97F4A7C15ull;
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return double(z >> 11) / double(1ull << 52) - 1.0;
-}
-
-// 1 per pixel that differs (any RGB channel) between `a` and `b`, same size.
-std::vector<uint8_t> differingMask(const RgbaImage& a, const RgbaImage& b) {
-  std::vector<uint8_t> m(size_t(a.width) * size_t(a.height), 0);
-  for (size_t i = 0; i < m.size(); ++i)
-    for (size_t c = 0; c < 3; ++c) m[i] |= a.rgba[i * 4 + c] != b.rgba[i * 4 + c];
-  return m;
-}
-
-// The tie masks of every shot: the baseline pipeline drawn from the scene with kTiePairs x 2
-// jitters of its positions (each prepared once, posed and drawn per shot) against `base`, its
-// images of the scene. The positions are jittered in place (a copy would copy every texture)
-// and restored before it returns, whatever happens.
-Result<std::vector<std::vector<uint8_t>>> tieMasks(Scene& scene, const std::string& baseline,
-                                                   const std::vector<FrameSettings>& settings,
-                                                   const std::vector<RgbaImage>& base) {
-  using R = Result<std::vector<std::vector<uint8_t>>>;
-  const std::string where = scene.source + " [" + baseline + ", tie probe]: ";
-  std::vector<std::vector<uint8_t>> masks;
-  for (const FrameSettings& f : settings) masks.emplace_back(size_t(f.width) * size_t(f.height), 0);
-  try {
-    auto ctx = gl::sharedContext();
-    if (!ctx) return R::fail(where + ctx.error());
-    std::vector<View> views;
-    for (const FrameSettings& f : settings) views.push_back(frameScene(scene, f.anim, float(f.width) / float(f.height), f.camera));
-    std::vector<std::vector<glm::vec3>> original;
-    for (const Mesh& mesh : scene.meshes)
-      for (const Primitive& prim : mesh.primitives) original.push_back(prim.positions);
-    struct Restore {
-      Scene& scene;
-      std::vector<std::vector<glm::vec3>>& original;
-      ~Restore() {
-        size_t n = 0;
-        for (Mesh& mesh : scene.meshes)
-          for (Primitive& prim : mesh.primitives) prim.positions = std::move(original[n++]);
-      }
-    } restore{scene, original};
-    for (int render = 0; render < 2 * kTiePairs; ++render) {
-      const double sign = render % 2 ? -1.0 : 1.0;  // antithetic: +j, then -j
-      size_t n = 0;
-      for (size_t m = 0; m < scene.meshes.size(); ++m)
-        for (size_t q = 0; q < scene.meshes[m].primitives.size(); ++q) {
-          const std::vector<glm::vec3>& from = original[n++];
-          std::vector<glm::vec3>& to = scene.meshes[m].primitives[q].positions;
-          float scale = 0;  // the largest coordinate magnitude of the primitive: its ulps set the rounding
-          for (const glm::vec3& v : from) scale = std::max({scale, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-          const uint64_t prim = uint64_t(m) << 20 | uint64_t(q);
-          for (size_t i = 0; i < from.size(); ++i)
-            for (int c = 0; c < 3; ++c)
-              to[i][c] = float(double(from[i][c]) + sign * kTieJitter * double(scale) * jitterValue(uint64_t(render / 2), prim, i, uint64_t(c)));
-        }
-      std::unique_ptr<Pipeline> p = createPipeline(baseline);
-      if (!p) return R::fail(where + "unknown or unimplemented pipeline");
-      if (Status ok = p->prepare(scene); !ok) return R::fail(where + ok.error());
-      for (size_t k = 0; k < settings.size(); ++k) {
-        const FrameSettings& f = settings[k];
-        auto fb = gl::Framebuffer::create(f.width, f.height);
-        if (!fb) return R::fail(where + fb.error());
-        p->update(f.anim);
-        const View view = views[k];  // the framing of the unjittered scene: the baseline's camera
-        (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
-        p->render(view);
-        const RgbaImage img{f.width, f.height, (*fb)->readRgba()};
-        const std::vector<uint8_t> d = differingMask(base[k], img);
-        for (size_t i = 0; i < d.size(); ++i) masks[k][i] |= d[i];
-      }
-    }
-    return masks;
-  } catch (const std::exception& e) {
-    return R::fail(where + "internal error (exception): " + e.what());
-  }
-}
-
 json fallbackJson(const PipelineStats& s) {
   return {{"nonUniformScaleNodes", s.nonUniformScaleNodes}, {"negativeScaleNodes", s.negativeScaleNodes},
           {"shearMatrixNodes", s.shearMatrixNodes}, {"zeroScalarFrames", s.zeroScalarFrames},
@@ -276,6 +71,15 @@ json fallbackJson(const PipelineStats& s) {
 void keepMax(json& into, const json& from) {
   for (auto it = from.begin(); it != from.end(); ++it)
     if (!into.contains(it.key()) || into[it.key()].get<double>() < it.value().get<double>()) into[it.key()] = it.value();
+}
+
+// A tie mask as JSON: its pixel count, the probe's renders and the set (pixel indices
+// y * width + x, row 0 the top).
+json tieJson(const std::vector<uint8_t>& mask, TieProbe probe) {
+  std::vector<int64_t> set;
+  for (size_t i = 0; i < mask.size(); ++i)
+    if (mask[i]) set.push_back(int64_t(i));
+  return {{"pixels", set.size()}, {"renders", 2 * probe.pairs}, {"set", set}};
 }
 
 struct Shot {
@@ -356,6 +160,24 @@ int runSurvey(const std::vector<std::string>& argv) {
 
   std::vector<RgbaImage> base;  // the baseline's images, one per shot
   std::vector<std::vector<uint8_t>> ties;  // and their tie masks (tieMasks; rigid files)
+  // The 16-byte rule's references (rigid files, made at the first 16-byte pipeline): the
+  // baseline's frames in the geometry view and their int16-cell tie masks.
+  std::vector<RgbaImage> geometryBase;
+  std::vector<std::vector<uint8_t>> int16Ties;
+  auto geometryBaseline = [&]() -> Status {
+    if (!geometryBase.empty()) return {};
+    GeometryView view;
+    for (const FrameSettings& f : settings) {
+      auto frame = renderFrame(scene, baseline, f);
+      if (!frame) return Status::fail(frame.error());
+      geometryBase.push_back(frame->image);
+    }
+    auto masks = tieMasks(*loaded, baseline, settings, geometryBase, kInt16Ties);
+    if (!masks) return Status::fail(masks.error());
+    for (size_t k = 0; k < masks->size(); ++k) doc["frames"][k]["int16Ties"] = tieJson((*masks)[k], kInt16Ties);
+    int16Ties = std::move(*masks);
+    return {};
+  };
   json results = json::object();
   bool anyError = false;
   for (const std::string& name : pipelines) {
@@ -401,16 +223,31 @@ int runSurvey(const std::vector<std::string>& argv) {
           }
         }
         if (isCompact(name) && frames[k].contains("positionBound")) {
+          // Judged in the geometry view (positions and uv alone), outside the int16-cell ties.
+          auto geometry = [&]() -> Result<RgbaImage> {
+            if (Status ok = geometryBaseline(); !ok) return Result<RgbaImage>::fail(ok.error());
+            GeometryView view;
+            auto g = renderFrame(scene, name, settings[k]);
+            if (!g) return Result<RgbaImage>::fail(g.error());
+            return g->image;
+          }();
+          if (!geometry) {
+            r["error"] = geometry.error();
+            commandNotes("survey", {"error: " + geometry.error()});
+            anyError = true;
+            break;
+          }
           const int radius = frames[k]["positionBound"]["envelopeRadius"].get<int>();
+          const std::vector<uint8_t>* tie16 = &int16Ties[k];
           // Both ways: a pixel of either image its counterpart's neighbourhood cannot explain.
-          const Envelope e1 = envelope(frame->image, base[k], radius, kShadeTolerance, tie),
-                         e2 = envelope(base[k], frame->image, radius, kShadeTolerance, tie);
+          const Envelope e1 = envelope(*geometry, geometryBase[k], radius, kShadeTolerance, tie16),
+                         e2 = envelope(geometryBase[k], *geometry, radius, kShadeTolerance, tie16);
           f["outsideEnvelope"] = std::max(e1.over, e2.over);
           f["envelopeExcess"] = std::max(e1.worst, e2.worst);  // bytes beyond the neighbourhood
-          if (tie) {
-            f["outsideEnvelopeNotTies"] = std::max(e1.overNotTies, e2.overNotTies);  // the same outside the tie set
-            f["envelopeExcessNotTies"] = std::max(e1.worstNotTies, e2.worstNotTies);
-          }
+          f["outsideEnvelopeNotTies"] = std::max(e1.overNotTies, e2.overNotTies);  // outside the int16-cell ties
+          f["envelopeExcessNotTies"] = std::max(e1.worstNotTies, e2.worstNotTies);
+          if (auto gm = compareImages(geometryBase[k], *geometry))
+            f["geometryPsnr"] = gm->rmse == 0.0 ? json(nullptr) : json(gm->psnr);
         }
       }
       json fb = fallbackJson(frame->stats), nonzero = json::object();
@@ -424,19 +261,13 @@ int runSurvey(const std::vector<std::string>& argv) {
     }
     // The rules that use ties judge rigid frames only: skinned files are not probed.
     if (name == baseline && !skinned && base.size() == settings.size()) {
-      auto masks = tieMasks(*loaded, name, settings, base);  // jitters and restores the positions
+      auto masks = tieMasks(*loaded, name, settings, base, kFloatTies);  // jitters and restores the positions
       if (!masks) {
         r["error"] = masks.error();
         commandNotes("survey", {"error: " + masks.error()});
         anyError = true;
       } else {
-        for (size_t k = 0; k < masks->size(); ++k) {
-          std::vector<int64_t> set;
-          for (size_t i = 0; i < (*masks)[k].size(); ++i)
-            if ((*masks)[k][i]) set.push_back(int64_t(i));
-          // jitter: times the primitive's largest coordinate; set: pixel indices y * width + x, row 0 the top
-          doc["frames"][k]["ties"] = {{"pixels", set.size()}, {"renders", 2 * kTiePairs}, {"jitter", kTieJitter}, {"set", set}};
-        }
+        for (size_t k = 0; k < masks->size(); ++k) doc["frames"][k]["ties"] = tieJson((*masks)[k], kFloatTies);
         ties = std::move(*masks);
       }
     }

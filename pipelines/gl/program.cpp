@@ -1,5 +1,7 @@
 #include "pipelines/gl/program.h"
 
+#include <utility>
+
 namespace mb::gl {
 namespace {
 
@@ -34,12 +36,22 @@ GLuint compile(GLenum stage, const std::string& path, const Defines& defines, st
   return shader;
 }
 
+Defines& globalDefinesStore() {
+  static Defines defines;
+  return defines;
+}
+
 }  // namespace
+
+void setGlobalDefines(Defines defines) { globalDefinesStore() = std::move(defines); }
+const Defines& globalDefines() { return globalDefinesStore(); }
 
 Result<std::unique_ptr<Program>> Program::fromFiles(const std::string& vsPath,
                                                     const std::string& fsPath,
-                                                    const Defines& defines) {
+                                                    const Defines& ownDefines) {
   using R = Result<std::unique_ptr<Program>>;
+  Defines defines = ownDefines;
+  defines.insert(defines.end(), globalDefines().begin(), globalDefines().end());
   std::string error;
   GLuint vs = compile(GL_VERTEX_SHADER, vsPath, defines, error);
   if (!vs) return R::fail(error);

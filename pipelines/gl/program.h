@@ -12,6 +12,12 @@
 
 namespace mb::gl {
 
+// Defines added (after the caller's) to every program linked from now on: a process-wide view
+// mode such as survey's geometry view (MB_GEOMETRY_VIEW, forward.fs). Programs linked before
+// keep theirs. Not thread-safe: set it between frames of one thread's context.
+void setGlobalDefines(Defines defines);
+const Defines& globalDefines();
+
 class Program {
 public:
   // `vsPath` and `fsPath` are absolute or relative to shaderDir(); `defines` go to both stages.

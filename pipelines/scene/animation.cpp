@@ -75,6 +75,31 @@ glm::vec4 evaluate(const Channel& c, float t) {
   return r;
 }
 
+// Weights channel c at time t into out[0..weightCount): the same interval and spline as
+// evaluate(), per weight (no normalisation).
+void evaluateWeights(const Channel& c, float t, float* out) {
+  const size_t n = size_t(c.weightCount);
+  Segment s = locate(c.times, t);
+  bool cubic = c.interpolation == Interpolation::CubicSpline;
+  size_t stride = cubic ? 3 : 1, mid = cubic ? 1 : 0;
+  auto at = [&](size_t element, size_t i) { return c.values[element * n + i]; };
+  for (size_t i = 0; i < n; ++i) {
+    float v0 = at(s.k0 * stride + mid, i);
+    if (s.k0 == s.k1 || c.interpolation == Interpolation::Step) {
+      out[i] = v0;
+      continue;
+    }
+    float v1 = at(s.k1 * stride + mid, i);
+    if (!cubic) {
+      out[i] = v0 + (v1 - v0) * s.u;
+      continue;
+    }
+    float u = s.u, u2 = u * u, u3 = u2 * u;
+    out[i] = (2 * u3 - 3 * u2 + 1) * v0 + s.dt * (u3 - 2 * u2 + u) * at(s.k0 * 3 + 2, i) + (-2 * u3 + 3 * u2) * v1 +
+             s.dt * (u3 - u2) * at(s.k1 * 3, i);
+  }
+}
+
 }  // namespace
 
 std::vector<TRS> sampleAnimation(const Scene& scene, int anim, float time) {
@@ -88,13 +113,14 @@ void sampleAnimation(const Scene& scene, int anim, float time, std::vector<TRS>&
   for (size_t i = 0; i < pose.size(); ++i) pose[i] = scene.nodes[i].local;
   if (anim < 0 || size_t(anim) >= scene.animations.size()) return;
   for (const Channel& c : scene.animations[size_t(anim)].channels) {
-    if (c.node < 0 || size_t(c.node) >= pose.size() || c.times.empty()) continue;
+    if (c.node < 0 || size_t(c.node) >= pose.size() || c.times.empty() || c.path == AnimPath::Weights) continue;
     glm::vec4 v = evaluate(c, time);
     TRS& trs = pose[size_t(c.node)];
     switch (c.path) {
       case AnimPath::Translation: trs.translation = glm::vec3(v); break;
       case AnimPath::Rotation: trs.rotation = toQuat(v); break;
       case AnimPath::Scale: trs.scale = glm::vec3(v); break;
+      case AnimPath::Weights: break;  // sampleMorphWeights
     }
   }
 }
@@ -120,13 +146,41 @@ std::vector<std::vector<int>> animatedNodes(const Scene& scene) {
   for (const Animation& a : scene.animations) {
     std::vector<char> driven(scene.nodes.size(), 0);
     for (const Channel& c : a.channels)
-      if (c.node >= 0 && size_t(c.node) < driven.size() && !c.times.empty()) driven[size_t(c.node)] = 1;
+      if (c.node >= 0 && size_t(c.node) < driven.size() && !c.times.empty() && c.path != AnimPath::Weights)
+        driven[size_t(c.node)] = 1;
     std::vector<int> nodes;
     for (size_t n = 0; n < driven.size(); ++n)
       if (driven[n]) nodes.push_back(int(n));
     out.push_back(std::move(nodes));
   }
   return out;
+}
+
+void sampleMorphWeights(const Scene& scene, int anim, float time, std::vector<std::vector<float>>& weights) {
+  weights.resize(scene.nodes.size());
+  for (size_t n = 0; n < scene.nodes.size(); ++n) {
+    const Node& node = scene.nodes[n];
+    const Mesh* mesh = node.mesh >= 0 && size_t(node.mesh) < scene.meshes.size() ? &scene.meshes[size_t(node.mesh)] : nullptr;
+    if (!mesh || morphTargetCount(*mesh) == 0) weights[n].clear();
+    else weights[n] = node.weights.empty() ? mesh->weights : node.weights;
+  }
+  if (anim < 0 || size_t(anim) >= scene.animations.size()) return;
+  for (const Channel& c : scene.animations[size_t(anim)].channels) {
+    if (c.path != AnimPath::Weights || c.node < 0 || size_t(c.node) >= weights.size() || c.times.empty()) continue;
+    std::vector<float>& w = weights[size_t(c.node)];
+    if (w.size() != size_t(c.weightCount)) continue;  // the loader made them equal
+    evaluateWeights(c, time, w.data());
+  }
+}
+
+std::vector<std::vector<float>> sampleMorphWeights(const Scene& scene, const AnimState& state) {
+  std::vector<std::vector<float>> a, b;
+  sampleMorphWeights(scene, state.anim, state.time, a);
+  if (state.anim2 < 0) return a;
+  sampleMorphWeights(scene, state.anim2, state.time2, b);
+  for (size_t n = 0; n < a.size(); ++n)
+    for (size_t i = 0; i < a[n].size(); ++i) a[n][i] += (b[n][i] - a[n][i]) * state.blend;
+  return a;
 }
 
 std::vector<TRS> samplePose(const Scene& scene, const AnimState& state) {

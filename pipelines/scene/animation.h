@@ -32,6 +32,15 @@ void blendPoses(const std::vector<TRS>& a, const std::vector<TRS>& b, float w, s
 // pipeline may keep its rest conversion for those when it poses one animation unblended.
 std::vector<std::vector<int>> animatedNodes(const Scene& scene);
 
+// Morph weights of every node (scene.nodes.size() entries) for animation `anim` at `time`:
+// the animation's weights channel where one drives the node, else the node's weights, else its
+// mesh's (glTF 2.0 3.7.2.2); empty for a node whose mesh has no morph targets. LINEAR weights
+// interpolate linearly, STEP hold, CUBICSPLINE follow the same Hermite spline as evaluate().
+// `weights` is resized; its storage is reused from call to call.
+void sampleMorphWeights(const Scene& scene, int anim, float time, std::vector<std::vector<float>>& weights);
+// The same for a state; with anim2, linearly blended by state.blend.
+std::vector<std::vector<float>> sampleMorphWeights(const Scene& scene, const AnimState& state);
+
 // sampleAnimation + blendPoses as the state asks.
 std::vector<TRS> samplePose(const Scene& scene, const AnimState& state);
 

@@ -30,6 +30,11 @@ void forEachStream(Primitive& p, F&& f) {
   f(p.colors);
   f(p.joints);
   f(p.weights);
+  for (MorphTarget& t : p.targets) {  // deltas follow their vertex through every split
+    f(t.positions);
+    f(t.normals);
+    f(t.tangents);
+  }
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-// Animations: validated T/R/S channels. Morph-weight channels are recorded as unsupported.
+// Animations: validated T/R/S channels and morph weights channels (one value per target of the
+// node's mesh per key, glTF 2.0 3.11).
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -48,10 +49,6 @@ Status convertAnimations(const tinygltf::Model& m, Scene& scene) {
     for (size_t c = 0; c < src.channels.size(); ++c) {
       const auto& ch = src.channels[c];
       std::string where = "animation " + std::to_string(a) + " channel " + std::to_string(c);
-      if (ch.target_path == "weights") {
-        scene.unsupported.push_back(where + ": morph target weights not animated");
-        continue;
-      }
       if (ch.target_node < 0) {
         scene.unsupported.push_back(where + ": no target node (extension target ignored)");
         continue;
@@ -66,6 +63,16 @@ Status convertAnimations(const tinygltf::Model& m, Scene& scene) {
       if (ch.target_path == "translation") out.path = AnimPath::Translation;
       else if (ch.target_path == "rotation") { out.path = AnimPath::Rotation; comps = 4; }
       else if (ch.target_path == "scale") out.path = AnimPath::Scale;
+      else if (ch.target_path == "weights") {
+        const Node& node = scene.nodes[size_t(ch.target_node)];
+        comps = node.mesh >= 0 ? int(morphTargetCount(scene.meshes[size_t(node.mesh)])) : 0;
+        if (comps == 0) {
+          scene.unsupported.push_back(where + ": weights of a node without morph targets (channel ignored)");
+          continue;
+        }
+        out.path = AnimPath::Weights;
+        out.weightCount = comps;
+      }
       else return Status::fail(where + ": unknown path '" + ch.target_path + "'");
       const auto& smp = src.samplers[size_t(ch.sampler)];
       if (smp.interpolation == "STEP") out.interpolation = Interpolation::Step;
@@ -78,6 +85,14 @@ Status convertAnimations(const tinygltf::Model& m, Scene& scene) {
       auto val = readAccessorFloat(m, smp.output, "animation output");
       if (!val) return Status::fail(val.error());
       if (in->components != 1) return Status::fail(where + ": input is not SCALAR");
+      if (out.path == AnimPath::Weights) {  // SCALAR outputs, `comps` per key value
+        if (val->components != 1) return Status::fail(where + ": weights output is not SCALAR");
+        val->components = comps;
+        val->count /= size_t(comps);  // checked against the keys below (a remainder fails there)
+        if (val->values.size() != val->count * size_t(comps))
+          return Status::fail(where + ": " + std::to_string(val->values.size()) + " weights are not a multiple of " +
+                              std::to_string(comps) + " targets");
+      }
       if (val->components != comps)
         return Status::fail(where + ": " + ch.target_path + " output needs " + std::to_string(comps) + " components");
       size_t perKey = out.interpolation == Interpolation::CubicSpline ? 3 : 1;

@@ -3,6 +3,7 @@
 // represent in scene.unsupported.
 #pragma once
 #include <cstdint>
+#include <string>
 
 #include "pipelines/result.h"
 #include "pipelines/scene/scene.h"
@@ -20,6 +21,18 @@ namespace mb {
 Result<Mesh> convertMesh(const tinygltf::Model& model, int index, uint32_t jointCount,
                          Scene& scene);
 
+// Morph targets of `primitive` (gltf_morph.cpp): POSITION / NORMAL / TANGENT deltas, sparse
+// accessors applied, counts checked against `vertexCount` -> p.targets; other target
+// attributes are listed in scene.unsupported. `where` names the primitive in errors.
+Status convertMorphTargets(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+                           size_t vertexCount, const std::string& where, Primitive& p, Scene& scene);
+// Mesh `index`'s default weights -> mesh.weights (zeros when not authored); fails when its
+// primitives disagree on the target count or the weights do not match it.
+Status convertMeshWeights(const tinygltf::Model& model, int index, Mesh& mesh);
+// Node weights whose count is not the node's mesh's target count are listed in
+// scene.unsupported and cleared (the mesh's weights apply). Call after the meshes.
+void checkNodeWeights(Scene& scene);
+
 // The MB_bezier_patches primitive extension (gltf_patches.cpp): a POINTS primitive whose
 // POSITION holds 16 control points per bicubic patch -> a primitive with patchPoints.
 constexpr const char* kBezierPatchesExtension = "MB_bezier_patches";
@@ -32,7 +45,7 @@ Result<Primitive> convertPatchPrimitive(const tinygltf::Model& model,
 constexpr const char* kInstancingExtension = "EXT_mesh_gpu_instancing";
 Status convertInstancing(const tinygltf::Model& model, size_t node, Scene& scene);
 
-// All animations (T/R/S channels; weights channels are recorded as unsupported).
+// All animations (T/R/S channels and morph weights channels; call after the meshes).
 Status convertAnimations(const tinygltf::Model& model, Scene& scene);
 
 // Materials, textures, samplers and images (decoded to RGBA8).

@@ -169,6 +169,7 @@ Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadCon
     scene.meshes.push_back(mesh.take());
   }
   scene.stats.instancingDrawnOnce += dropUndrawableInstances(scene);
+  checkNodeWeights(scene);
   if (s = convertAnimations(m, scene); !s) return Result<Scene>::fail(name + ": " + s.error());
   countAccessorBoundsMismatches(m, scene);
   return scene;

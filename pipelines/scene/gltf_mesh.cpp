@@ -133,9 +133,6 @@ Result<Mesh> convertMesh(const tinygltf::Model& m, int index, uint32_t jointCoun
     // KHR_draco_mesh_compression was decoded into the accessors (draco_decode.cpp).
     for (const auto& [ext, v] : prim.extensions)
       if (ext != "KHR_draco_mesh_compression") scene.unsupported.push_back(where + ": extension " + ext + " ignored");
-    if (!prim.targets.empty())
-      scene.unsupported.push_back(where + ": " + std::to_string(prim.targets.size()) +
-                                  " morph targets ignored (base geometry rendered)");
     if (!prim.attributes.count("POSITION")) {
       skip("no POSITION");
       continue;
@@ -176,6 +173,7 @@ Result<Mesh> convertMesh(const tinygltf::Model& m, int index, uint32_t jointCoun
     }
     if (Status s = skinInfluences(m, prim, nv, jointCount, p, scene.stats); !s)
       return R::fail(s.error());
+    if (Status s = convertMorphTargets(m, prim, nv, where, p, scene); !s) return R::fail(s.error());
 
     // Indices.
     if (prim.indices >= 0) {
@@ -227,6 +225,7 @@ Result<Mesh> convertMesh(const tinygltf::Model& m, int index, uint32_t jointCoun
     }
     mesh.primitives.push_back(std::move(p));
   }
+  if (Status s = convertMeshWeights(m, index, mesh); !s) return R::fail(s.error());
   return mesh;
 }
 

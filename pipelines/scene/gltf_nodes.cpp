@@ -34,6 +34,8 @@ Status convertNode(const tinygltf::Model& m, size_t i, Node* out) {
     return Status::fail(where + ": mesh, skin or camera index out of range");
   if (!floatRange(src.matrix) || !floatRange(src.translation) || !floatRange(src.rotation) || !floatRange(src.scale))
     return Status::fail(where + ": matrix/translation/rotation/scale value is not finite (or out of float range)");
+  if (!floatRange(src.weights)) return Status::fail(where + ": a morph weight is not finite (or out of float range)");
+  out->weights.assign(src.weights.begin(), src.weights.end());
   if (src.matrix.size() == 16) {
     out->hasMatrix = true;
     for (int k = 0; k < 16; ++k) out->matrix[k / 4][k % 4] = float(src.matrix[size_t(k)]);

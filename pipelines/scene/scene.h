@@ -31,6 +31,16 @@ struct Node {
   // is drawn once per entry, instance i at node world * instances[i]; empty: drawn once at the
   // node's world. Never set on a skinned node or a Bezier patch mesh (instancing.h).
   std::vector<TRS> instances;
+  // Morph target weights authored on the node (glTF `weights`); empty: the mesh's apply.
+  std::vector<float> weights;
+};
+
+// One morph target of a primitive (glTF 2.0 3.7.2.2): per-vertex deltas added, weighted, to
+// the base streams before any transform or skin. Each stream has one entry per vertex of the
+// primitive after hygiene (a vertex the loader split carries its source's deltas) or is empty
+// when the target does not morph that attribute. Tangent deltas are xyz (w is never morphed).
+struct MorphTarget {
+  std::vector<glm::vec3> positions, normals, tangents;
 };
 
 struct Primitive {
@@ -53,12 +63,21 @@ struct Primitive {
   // the rows). Such a primitive has no vertex streams; pipelines tessellate it
   // (pipelines/scene/bezier.h). Empty for ordinary triangle primitives.
   std::vector<glm::vec3> patchPoints;
+  // Morph targets (all primitives of a mesh have the same number, glTF 2.0 3.7.2.2).
+  std::vector<MorphTarget> targets;
 };
 
 struct Mesh {
   std::string name;
   std::vector<Primitive> primitives;
+  // Default morph weights (glTF mesh `weights`), one per target; zeros when not authored.
+  std::vector<float> weights;
 };
+
+// Targets of the mesh (its first primitive's; every primitive has the same count).
+inline size_t morphTargetCount(const Mesh& m) {
+  return m.primitives.empty() ? 0 : m.primitives.front().targets.size();
+}
 
 // KHR_texture_transform on a textureInfo: uv' = T(offset) * R(rotation) * S(scale) * (uv, 1).
 // R turns the uvs counter-clockwise as seen in uv space, whose v axis points down: u' = cos u +
@@ -122,7 +141,7 @@ struct Skin {
   int skeleton = -1;
 };
 
-enum class AnimPath { Translation, Rotation, Scale };
+enum class AnimPath { Translation, Rotation, Scale, Weights };
 enum class Interpolation { Linear, Step, CubicSpline };
 
 struct Channel {
@@ -130,9 +149,11 @@ struct Channel {
   AnimPath path = AnimPath::Translation;
   Interpolation interpolation = Interpolation::Linear;
   std::vector<float> times;
-  // Packed keyframe values: 3 floats per key (T, S) or 4 (R, glTF order x,y,z,w).
+  // Packed keyframe values: 3 floats per key (T, S), 4 (R, glTF order x,y,z,w) or, for
+  // Weights, `weightCount` (the node's mesh's morph target count).
   // CUBICSPLINE: per key [in-tangent, value, out-tangent], as glTF stores them.
   std::vector<float> values;
+  int weightCount = 0;  // Weights channels only
 };
 
 struct Animation {

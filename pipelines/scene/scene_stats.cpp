@@ -34,7 +34,16 @@ FileStats computeFileStats(const Scene& s) {
       f.skinnedPrimitives += !p.joints.empty();
     }
   for (size_t m = 0; m < s.meshes.size(); ++m)
-    for (const Primitive& p : s.meshes[m].primitives) f.vertices += int(p.positions.size());
+    for (const Primitive& p : s.meshes[m].primitives) {
+      f.vertices += int(p.positions.size());
+      f.morphPrimitives += !p.targets.empty();
+    }
+  for (const Mesh& m : s.meshes) {
+    const int targets = int(morphTargetCount(m));
+    f.morphMeshes += targets > 0;
+    f.morphTargets += targets;
+    f.maxMorphTargets = std::max(f.maxMorphTargets, targets);
+  }
   for (const Node& n : s.nodes) {
     f.matrixNodes += n.hasMatrix;
     if (n.mesh >= 0) {
@@ -60,6 +69,7 @@ FileStats computeFileStats(const Scene& s) {
       f.translationChannels += c.path == AnimPath::Translation;
       f.rotationChannels += c.path == AnimPath::Rotation;
       f.scaleChannels += c.path == AnimPath::Scale;
+      f.weightsChannels += c.path == AnimPath::Weights;
       f.linearChannels += c.interpolation == Interpolation::Linear;
       f.stepChannels += c.interpolation == Interpolation::Step;
       f.cubicChannels += c.interpolation == Interpolation::CubicSpline;
@@ -137,7 +147,9 @@ nlohmann::json toJson(const FileStats& f) {
   j["animation"] = {{"animations", f.animations}, {"channels", f.channels},
                     {"translation", f.translationChannels}, {"rotation", f.rotationChannels},
                     {"scale", f.scaleChannels}, {"linear", f.linearChannels}, {"step", f.stepChannels},
-                    {"cubicspline", f.cubicChannels}};
+                    {"cubicspline", f.cubicChannels}, {"weights", f.weightsChannels}};
+  j["morph"] = {{"meshes", f.morphMeshes}, {"primitives", f.morphPrimitives}, {"targets", f.morphTargets},
+                {"maxTargetsPerMesh", f.maxMorphTargets}, {"animatedWeightsChannels", f.weightsChannels}};
   j["scale"] = {{"uniformNodes", r.uniformNodes}, {"nonUniformNodes", r.nonUniformNodes},
                 {"negativeNodes", r.negativeNodes}, {"shearNodes", r.shearNodes},
                 {"animatedScaleNodes", r.animatedScaleNodes}, {"animatedNonUniformNodes", r.animatedNonUniformNodes},

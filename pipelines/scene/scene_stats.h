@@ -29,6 +29,9 @@ struct FileStats {
   int skins = 0, joints = 0, maxJointsPerSkin = 0;
   int animations = 0, channels = 0, translationChannels = 0, rotationChannels = 0, scaleChannels = 0;
   int linearChannels = 0, stepChannels = 0, cubicChannels = 0;
+  // Morph targets (meshes counted once): meshes and primitives with targets, targets summed
+  // over meshes, the most any mesh has, and the animation channels that drive weights.
+  int morphMeshes = 0, morphPrimitives = 0, morphTargets = 0, maxMorphTargets = 0, weightsChannels = 0;
   ScaleReport scale;
   std::vector<std::string> unsupported;
   LoadStats fallbacks;

@@ -956,8 +956,8 @@ inline std::vector<Case> contentCases() {
   }
   {
     Case c = loads("anim_weights_path.glb", anim([](Doc&, Json& a) { a["channels"][0]["target"]["path"] = "weights"; }),
-                   "morph-weights channel: not rendered, listed in Scene::unsupported");
-    c.check = listsUnsupported("", "weights channel");
+                   "weights channel on a node without morph targets: ignored, listed in Scene::unsupported");
+    c.check = listsUnsupported("weights of a node without morph targets", "weights channel");
     cs.push_back(c);
   }
   // Materials, textures, images.
@@ -1083,8 +1083,12 @@ inline std::vector<Case> contentCases() {
     QuadIds q = quad(d);
     d.j["meshes"][0]["primitives"][0]["targets"] = {{{"POSITION", q.nrm}}};
     d.finish();
-    Case c = loads("morph_target.glb", toGlb(d), "morph target: not rendered, listed in Scene::unsupported");
-    c.check = listsUnsupported("", "morph targets");
+    Case c = loads("morph_target.glb", toGlb(d), "morph target (the normals as POSITION deltas): loaded, weight 0");
+    c.check = [](const Scene& sc) -> std::string {
+      const Primitive& p = sc.meshes.at(0).primitives.at(0);
+      if (p.targets.size() != 1 || p.targets[0].positions.size() != p.positions.size()) return "morph target not loaded";
+      return sc.meshes[0].weights == std::vector<float>{0.0f} ? "" : "default weight not 0";
+    };
     cs.push_back(c);
   }
   return cs;

@@ -153,12 +153,14 @@ class CorpusCheckCrash(unittest.TestCase):
             self.assertTrue(all(r["drawn"] for n, r in rows.items() if n != "motor_cf"))
 
 
-def synthetic_result(motor=None, matrix_c=None, ties=16):
+def synthetic_result(motor=None, matrix_c=None, ties=16, int16_ties=9):
     """file_result() of a made-up one-frame rigid survey: matrix plus the given pipelines' frames."""
     frame = {"animation": None, "time": 0.0, "kind": "rigid",
              "positionBound": {"worldUnits": 1e-5, "pixels": 0.01, "envelopeRadius": 1, "shadeTolerance": 4}}
     if ties is not None:
-        frame["ties"] = {"pixels": ties, "renders": 4, "set": list(range(ties))}
+        frame["ties"] = {"pixels": ties, "renders": 2, "set": list(range(ties))}
+    if int16_ties is not None:
+        frame["int16Ties"] = {"pixels": int16_ties, "renders": 4, "set": list(range(int16_ties))}
     pipelines = {"matrix": {"error": None, "frames": [{"drawnPixels": 5000}], "fallbacks": {}, "seconds": 0.1}}
     for name, f in (("motor", motor), ("matrix_c", matrix_c)):
         if f is not None:
@@ -223,7 +225,7 @@ class TieRule(unittest.TestCase):
                                         "outsideEnvelopeNotTies": 0, "envelopeExcessNotTies": 3})
         fails, ties = rule(corpus_check.evaluate([ok]), "rigid frames of matrix_c")
         self.assertEqual(fails, [])
-        self.assertEqual(ties, ["x.glb [matrix_c] rest: 2 px outside the envelope, every one of them a tie pixel (16 in the frame)"])
+        self.assertEqual(ties, ["x.glb [matrix_c] rest: 2 px outside the envelope, every one of them an int16-cell tie pixel (9 in the frame)"])
         self.assertEqual(corpus_check.totals([ok], ["matrix_c"])["matrix_c"]["compactTieFrames"], 1)
         bad = synthetic_result(matrix_c={"identical": False, "psnr": 45.0, "outsideEnvelope": 3, "envelopeExcess": 90,
                                          "outsideEnvelopeNotTies": 1, "envelopeExcessNotTies": 40})
@@ -258,6 +260,22 @@ class SurveyTiePixels(unittest.TestCase):
         motor = doc["pipelines"]["motor"]["frames"][0]
         self.assertLess(motor["psnr"], 50)
         self.assertGreaterEqual(motor["psnrNotTies"] or math.inf, 50)
+
+    @unittest.skipUnless(os.path.isdir(CORPUS), "../shared/corpus-wide absent (a clone without ../shared)")
+    def test_court_16_byte_rule_in_the_geometry_view(self):
+        # court.glb: motor_cf's interpolated rotor shades the normal-mapped roof differently (lit
+        # PSNR about 32 dB against matrix) while its int16 positions draw what matrix_c's do: in the
+        # geometry view every pixel outside the int16-cell ties lies inside the envelope.
+        doc = self.survey(os.path.join(CORPUS, "pmndrs+examples/demos/sport-hall/src/court.glb"),
+                          "--pipelines", "matrix_c,motor_cf")
+        frame = doc["frames"][0]
+        self.assertEqual(frame["int16Ties"]["renders"], 4)
+        self.assertEqual(len(frame["int16Ties"]["set"]), frame["int16Ties"]["pixels"])
+        cf = doc["pipelines"]["motor_cf"]["frames"][0]
+        self.assertLess(cf["psnr"], 40)
+        self.assertGreater(cf["geometryPsnr"], cf["psnr"] + 5)
+        for name in ("matrix_c", "motor_cf"):
+            self.assertEqual(doc["pipelines"][name]["frames"][0]["outsideEnvelopeNotTies"], 0, name)
 
 
 if __name__ == "__main__":
