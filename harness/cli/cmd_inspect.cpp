@@ -56,9 +56,12 @@ void printFile(const mb::FileStats& f) {
               f.materials, f.textures, f.images, f.normalMappedPrimitives, f.authoredTangentPrimitives);
   std::printf("  skinning    %d skins, %d joints (max %d per skin), %d skinned primitives\n", f.skins, f.joints,
               f.maxJointsPerSkin, f.skinnedPrimitives);
-  std::printf("  animation   %d animations, %d channels (T %d, R %d, S %d; LINEAR %d, STEP %d, CUBICSPLINE %d)\n",
+  std::printf("  animation   %d animations, %d channels (T %d, R %d, S %d, weights %d; LINEAR %d, STEP %d, "
+              "CUBICSPLINE %d)\n",
               f.animations, f.channels, f.translationChannels, f.rotationChannels, f.scaleChannels,
-              f.linearChannels, f.stepChannels, f.cubicChannels);
+              f.weightsChannels, f.linearChannels, f.stepChannels, f.cubicChannels);
+  std::printf("  morph       %d targets on %d meshes (max %d per mesh, %d primitives); %d animated weights channels\n",
+              f.morphTargets, f.morphMeshes, f.maxMorphTargets, f.morphPrimitives, f.weightsChannels);
   std::printf("  scale       nodes: %d uniform, %d non-uniform, %d negative, %d sheared; animated on %d nodes "
               "(%d non-uniform keys); non-uniform only on leaves: %s\n",
               r.uniformNodes, r.nonUniformNodes, r.negativeNodes, r.shearNodes, r.animatedScaleNodes,
