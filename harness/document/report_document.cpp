@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "harness/document/report_figures.h"
 #include "harness/document/report_format.h"
 
 namespace mb::report {
@@ -150,7 +151,6 @@ json assembleReport(json machine, json settings, std::vector<json> scenes, json 
     summary["images"][pipelines[i]] = imageSummary(scenes, pipelines[i], differ, false);
     summary["skinningMethodImages"][pipelines[i]] = imageSummary(scenes, pipelines[i], differ, true);
   }
-  std::vector<double> frameRatio;
   json curved = json::array(), origins = {{"built-in", 0}, {"file", 0}};
   for (const json& s : scenes) {
     const std::string origin = s.value("origin", "");
@@ -159,11 +159,22 @@ json assembleReport(json machine, json settings, std::vector<json> scenes, json 
       curved.push_back(curvedRow(s));
       continue;
     }
-    push(frameRatio, number(s, {"timing", "ratio_motor_matrix"}));
   }
   summary["curved"] = curved;
   summary["origins"] = origins;
-  summary["frameTimeRatio"] = spread(frameRatio);
+  const json figures = reportFigures(machine, settings, scenes, ops, kernels);
+  // The summary's frame time is the figure (median over scenes of the paired per-frame ratios).
+  const auto ft = figures::figureNamed(figures, "frame_time.motor_over_matrix");
+  summary["frameTimeRatio"] = {{"figure", "frame_time.motor_over_matrix"}, {"n", ft ? ft->n : 0}};
+  if (ft && ft->n > 0) {
+    summary["frameTimeRatio"]["median"] = ft->value;
+    std::vector<double> perScene;
+    for (const auto& [name, f] : figures.items())
+      if (name.rfind("frame_time.", 0) == 0 && name != "frame_time.motor_over_matrix" && f["value"].is_number())
+        perScene.push_back(f["value"].get<double>());
+    const figures::Quartiles q = figures::quartilesOf(perScene);
+    summary["frameTimeRatio"]["min"] = q.min, summary["frameTimeRatio"]["max"] = q.max;
+  }
   json kr = json::object();
   for (const json& p : kernels.value("pairs", json::array()))
     if (p["ratio_motor_matrix"].is_number()) kr[p.value("pair", "")] = p["ratio_motor_matrix"];
@@ -173,6 +184,7 @@ json assembleReport(json machine, json settings, std::vector<json> scenes, json 
           {"machine", machine},
           {"settings", settings},
           {"summary", summary},
+          {"figures", figures},
           {"scenes", scenes},
           {"opsPerVertex", ops},
           {"kernels", kernels},

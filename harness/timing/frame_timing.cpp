@@ -9,6 +9,7 @@
 #include <memory>
 #include <thread>
 
+#include "harness/figures/figure_statistics.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
@@ -29,15 +30,6 @@ double processCpuMs() {
   timespec ts{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
-}
-
-// Linear-interpolated quantile of sorted samples.
-double quantile(const std::vector<double>& s, double q) {
-  if (s.empty()) return 0;
-  const double pos = q * double(s.size() - 1);
-  const size_t i = size_t(pos);
-  const double f = pos - double(i);
-  return i + 1 < s.size() ? s[i] * (1 - f) + s[i + 1] * f : s[i];
 }
 
 std::string cpuModel() {
@@ -75,11 +67,9 @@ double ratioOf(double motor, double matrix) { return motor > 0 && matrix > 0 ? m
 
 }  // namespace
 
+// The statistics are the figures layer's (one definition for every room).
 std::vector<double> pairedRatios(const std::vector<double>& a, const std::vector<double>& b) {
-  std::vector<double> r;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
-    if (a[i] > 0) r.push_back(b[i] / a[i]);
-  return r;
+  return figures::pairedRatios(a, b);
 }
 
 Spread spreadOf(std::vector<double> s) {
@@ -87,12 +77,12 @@ Spread spreadOf(std::vector<double> s) {
   r.n = int(s.size());
   if (s.empty()) return r;
   std::sort(s.begin(), s.end());
-  r.median = quantile(s, 0.5), r.q1 = quantile(s, 0.25), r.q3 = quantile(s, 0.75);
+  r.median = figures::quantileSorted(s, 0.5), r.q1 = figures::quantileSorted(s, 0.25), r.q3 = figures::quantileSorted(s, 0.75);
   r.min = s.front(), r.max = s.back();
   std::vector<double> dev;
   for (double x : s) dev.push_back(std::abs(x - r.median));
   std::sort(dev.begin(), dev.end());
-  r.mad = quantile(dev, 0.5);
+  r.mad = figures::quantileSorted(dev, 0.5);
   return r;
 }
 

@@ -40,6 +40,9 @@ json configJson(const timing::ConfigTiming& c, const std::vector<std::string>& p
   auto num = [](double r) { return r > 0 ? json(r) : json(); };
   out["ratio_motor_matrix"] = num(c.frameRatio);
   out["paired_ratio_motor_matrix"] = num(c.pairedFrameRatio);
+  // The figure's spread (harness/figures): the interquartile range of the per-frame ratios.
+  if (c.pairedFrame.n > 0)
+    out["paired_ratio_spread"] = {{"q1", c.pairedFrame.q1}, {"q3", c.pairedFrame.q3}, {"n", c.pairedFrame.n}};
   out["paired_cpu_ratio_motor_matrix"] = num(c.pairedCpuRatio);
   out["update"] = {{"ratio_motor_matrix", num(c.updateRatio)}};
   return out;

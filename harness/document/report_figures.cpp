@@ -1,0 +1,190 @@
+#include "harness/document/report_figures.h"
+
+#include <cmath>
+
+#include "harness/document/report_format.h"
+
+namespace mb::report {
+namespace {
+
+using json = nlohmann::json;
+using figures::Figure;
+
+const char* kPairedStatistic = "median of per-frame paired ratios (both pipelines render each frame back to back)";
+const char* kOverScenes = "median over scenes of each scene's median of per-frame paired ratios";
+
+double num(const json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
+
+std::string sizeOf(const json& config) {
+  if (!config.value("width", json()).is_number()) return "";
+  return std::to_string(config["width"].get<int>()) + "x" + std::to_string(config["height"].get<int>());
+}
+
+bool euclidean(const json& s) { return s.value("space", "Euclidean") == "Euclidean"; }
+
+// Frame-time figures of one configuration ("" = the normal one, "vertexBound") over scenes.
+void frameTimeFigures(json& out, const std::vector<json>& scenes, const char* config, const std::string& device) {
+  const std::string key = config[0] ? "frame_time_vertex_bound" : "frame_time";
+  std::vector<double> perScene;
+  std::string sizes;
+  for (const json& s : scenes) {
+    if (!euclidean(s)) continue;
+    const json& timing = s.value("timing", json());
+    const json& c = config[0] ? at(timing, {config}) : timing;
+    if (!c.is_object()) continue;
+    Figure f = sceneFrameTimeFigure(key + "." + s.value("id", "") + ".motor_over_matrix", c, device);
+    figures::put(out, f);
+    if (std::isfinite(f.value)) {
+      perScene.push_back(f.value);
+      if (sizes.find(sizeOf(c)) == std::string::npos) sizes += (sizes.empty() ? "" : ", ") + sizeOf(c);
+    }
+  }
+  Figure all;
+  all.name = key + ".motor_over_matrix";
+  all.unit = "x";
+  all.statistic = kOverScenes;
+  all.scope = std::string(config[0] ? "vertex-bound viewport, " : "whole frame, ") + "Euclidean scenes" +
+              (sizes.empty() ? "" : " at " + sizes);
+  all.device = device;
+  all.definition = "frame time motor / matrix (< 1: motor faster); spread: the interquartile range over the scenes";
+  figures::put(out, figures::withQuartiles(all, figures::quartilesOf(perScene)));
+}
+
+// Per pipeline, the median over scenes of one PipelineStats figure.
+void memoryFigure(json& out, const std::vector<json>& scenes, const std::vector<std::string>& pipelines,
+                  const char* field, const std::string& name, const std::string& unit, const std::string& scope) {
+  for (const std::string& p : pipelines) {
+    std::vector<double> v;
+    for (const json& s : scenes) {
+      const double x = num(at(s, {"pipelines", p.c_str(), "memory", field}));
+      if (x > 0) v.push_back(x);
+    }
+    Figure f;
+    f.name = name + "." + p;
+    f.unit = unit;
+    f.statistic = "median over scenes";
+    f.scope = scope;
+    f.device = "buffers uploaded (PipelineStats)";
+    f.definition = std::string("PipelineStats.") + field + " of the pipeline's uploads, per scene that has it";
+    figures::put(out, figures::withQuartiles(f, figures::quartilesOf(v)));
+  }
+}
+
+double opsTotal(const json& ops) {
+  if (!ops.is_object()) return std::nan("");
+  double t = 0;
+  for (const char* k : {"mul", "add", "div", "sqrt", "other"}) t += num(ops.value(k, json(0)));
+  return t;
+}
+
+Figure opsFigure(const std::string& name, double total, const std::string& scope, const std::string& source) {
+  Figure f;
+  f.name = name;
+  f.value = total;
+  f.unit = "ops";
+  f.n = std::isfinite(total) ? 1 : 0;
+  f.statistic = "count (mul + add + div + sqrt + other)";
+  f.scope = scope;
+  f.device = source;
+  f.definition = "arithmetic operations per vertex; subtraction counts as addition, negation is free";
+  if (!std::isfinite(total)) f.why = "not counted";
+  return f;
+}
+
+// Ops per vertex: counted and SPIR-V of the transform functions compiled alone (the probe), per
+// kind; SPIR-V of the whole vertex shader (main() included) per shader variant.
+void opsFigures(json& out, const json& ops) {
+  const std::pair<const char*, const char*> kinds[] = {{"rigid", "rigid vertex with frame, transform only"},
+                                                       {"skinned", "skinned vertex (4 joints), transform only"},
+                                                       {"toClip", "rigid vertex with frame, object to clip"}};
+  for (const json& row : ops.value("perPipeline", json::array())) {
+    const std::string p = row.value("pipeline", "");
+    for (const auto& [kind, scope] : kinds) {
+      const std::string k = kind == std::string("toClip") ? "to_clip" : kind;
+      figures::put(out, opsFigure("ops_per_vertex." + k + ".counted." + p, opsTotal(at(row, {kind, "counted"})), scope,
+                                  "counted (op-counting scalar through the GLSL shim)"));
+      figures::put(out, opsFigure("ops_per_vertex." + k + ".spirv_probe." + p, opsTotal(at(row, {kind, "spirv"})), scope,
+                                  "SPIR-V (probe): the transform functions compiled alone"));
+    }
+  }
+  for (const json& v : ops.value("variants", json::array()))
+    figures::put(out, opsFigure("ops_per_vertex." + v.value("label", "") + ".spirv_whole_shader." + v.value("pipeline", ""),
+                                opsTotal(v.value("spirv", json())), "whole vertex shader " + v.value("shader", ""),
+                                "SPIR-V (whole shader): main() included"));
+}
+
+// CPU kernels: time of the fastest motor implementation / the fastest matrix implementation
+// (items/s inverted), and the shim sources against each other, named apart.
+void kernelFigures(json& out, const json& kernels, const std::string& cpu) {
+  for (const json& p : kernels.value("pairs", json::array())) {
+    const std::string pair = p.value("pair", "");
+    auto ips = [&](const std::string& side) { return num(at(p, {side.c_str(), "items_per_second"})); };
+    auto add = [&](const std::string& name, const std::string& motor, const std::string& matrix, const std::string& what) {
+      Figure f;
+      f.name = name;
+      f.unit = "x";
+      f.value = ips(motor) > 0 && ips(matrix) > 0 ? ips(matrix) / ips(motor) : std::nan("");
+      f.n = std::isfinite(f.value) ? 1 : 0;
+      f.statistic = "ratio of Google Benchmark throughputs (items/s), expressed as time motor / matrix";
+      f.scope = "CPU kernel " + pair + ": " + what + " (" + motor + " / " + matrix + ")";
+      f.device = cpu;
+      f.definition = "time per item motor / matrix (< 1: motor faster)";
+      if (!std::isfinite(f.value)) f.why = "no throughput for " + motor + " or " + matrix;
+      figures::put(out, f);
+    };
+    add("kernel_time." + pair + ".fastest_motor_over_fastest_matrix", p.value("fastest_motor", "motor"),
+        p.value("fastest_matrix", "matrix"), "fastest motor implementation vs fastest matrix implementation");
+    add("kernel_time." + pair + ".shim_motor_over_shim_matrix", "motor", "matrix",
+        "the shader sources through the GLSL shim on both sides");
+  }
+}
+
+}  // namespace
+
+std::string frameTimeDevice(const json& machine) {
+  const json& gl = at(machine, {"gl"});
+  const std::string renderer = gl.is_object() ? gl.value("renderer", "") : "";
+  const bool software = gl.is_object() && !gl.value("realGpu", false);
+  if (renderer.empty()) return "unknown device";
+  return software ? "CPU rasterizer (" + renderer + "), wall clock" : renderer;
+}
+
+Figure sceneFrameTimeFigure(const std::string& name, const json& config, const std::string& device) {
+  Figure f;
+  f.name = name;
+  f.unit = "x";
+  f.statistic = kPairedStatistic;
+  f.scope = "whole frame" + (sizeOf(config).empty() ? std::string() : " at " + sizeOf(config));
+  f.device = device;
+  f.definition = "frame time motor / matrix (< 1: motor faster)";
+  f.value = num(config.value("paired_ratio_motor_matrix", json()));
+  const json& spread = config.value("paired_ratio_spread", json());
+  if (spread.is_object() && spread.value("q1", json()).is_number()) {
+    f.q1 = spread["q1"].get<double>(), f.q3 = spread["q3"].get<double>();
+    f.n = spread.value("n", 0);
+  } else {  // a report.json before the spread was recorded: the frames of the motor side
+    f.n = at(config, {"pipelines", "motor", "frames"}).is_number() ? at(config, {"pipelines", "motor", "frames"}).get<int>() : 0;
+  }
+  if (!std::isfinite(f.value))
+    f.why = config.contains("skipped") ? config["skipped"].get<std::string>() : "no paired frame ratio";
+  return f;
+}
+
+json reportFigures(const json& machine, const json& settings, const std::vector<json>& scenes, const json& ops,
+                   const json& kernels) {
+  json out = json::object();
+  const std::string device = frameTimeDevice(machine);
+  frameTimeFigures(out, scenes, "", device);
+  frameTimeFigures(out, scenes, "vertexBound", device);
+  const std::vector<std::string> pipelines = settings.value("pipelines", std::vector<std::string>{});
+  memoryFigure(out, scenes, pipelines, "bytesPerVertex", "bytes_per_vertex", "bytes",
+               "shading attributes per vertex (position, frame, uv)");
+  memoryFigure(out, scenes, pipelines, "floatsPerTransform", "floats_per_transform", "floats",
+               "per-draw transform uniforms");
+  opsFigures(out, ops);
+  kernelFigures(out, kernels, machine.value("cpu", "") + " (" + std::to_string(machine.value("logicalCores", 0)) +
+                                  " logical cores)");
+  return out;
+}
+
+}  // namespace mb::report

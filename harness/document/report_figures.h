@@ -1,0 +1,31 @@
+// report.json's "figures" (issue 35): every aggregate the report prints, computed once here
+// from the scenes, op counts and kernel pairs it assembles, each with its definition
+// (harness/figures/figure.h). The report text, the plots, claims and the README tables read
+// them by name.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/figures/figure.h"
+
+namespace mb::report {
+
+// The device a frame time was measured on, from report.json's "machine" ("CPU rasterizer
+// (llvmpipe ...)" or the GPU's GL_RENDERER).
+std::string frameTimeDevice(const nlohmann::json& machine);
+
+// Frame time motor / matrix of one scene's timing configuration (report_timing.h's JSON):
+// the median of per-frame paired ratios with their IQR; NaN with `why` when not measured.
+figures::Figure sceneFrameTimeFigure(const std::string& name, const nlohmann::json& config,
+                                     const std::string& device);
+
+// {name: figure} for the whole report: frame time (normal and vertex-bound, per scene and over
+// scenes), bytes per vertex and floats per transform per pipeline, ops per vertex per pipeline
+// (counted, SPIR-V of the probe, SPIR-V of the whole shader), CPU kernel time ratios.
+nlohmann::json reportFigures(const nlohmann::json& machine, const nlohmann::json& settings,
+                             const std::vector<nlohmann::json>& scenes, const nlohmann::json& ops,
+                             const nlohmann::json& kernels);
+
+}  // namespace mb::report

@@ -1,0 +1,23 @@
+// The statistics every figure uses, defined once (issue 35: one statistic per kind of figure).
+// Times: the median of per-frame paired ratios with their interquartile range; aggregates over
+// scenes: the median with the interquartile range over the scenes' own figures.
+#pragma once
+#include <vector>
+
+namespace mb::figures {
+
+struct Quartiles {
+  double q1 = 0, median = 0, q3 = 0, min = 0, max = 0;
+  int n = 0;  // 0: no samples (every other field meaningless)
+};
+
+// The p-quantile (0..1) of `sorted` by linear interpolation between closest ranks
+// (position p * (n - 1)); the median of an even count is the mean of the middle two.
+double quantileSorted(const std::vector<double>& sorted, double p);
+// Quartiles of `samples` (NaN samples dropped).
+Quartiles quartilesOf(std::vector<double> samples);
+// Per-frame ratios b[i] / a[i] of two series of the same frames (pairs where a[i] > 0 and
+// both are finite), in frame order.
+std::vector<double> pairedRatios(const std::vector<double>& a, const std::vector<double>& b);
+
+}  // namespace mb::figures
