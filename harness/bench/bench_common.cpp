@@ -3,13 +3,21 @@
 #include <cmath>
 
 #include "harness/bench/bandwidth_probe.h"
+#include "harness/timing/disturbance.h"
 #include "kernels/simd/simd_targets.h"
 
 namespace mb::bench {
 
 void registerKernel(const std::string& name, std::function<void(benchmark::State&)> fn) {
-  benchmark::RegisterBenchmark(name.c_str(), [fn](benchmark::State& s) { fn(s); })
-      ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark(name.c_str(), [fn](benchmark::State& s) {
+    // The machine's load around the run (harness/timing/disturbance.h): with the run's CPU and
+    // real time, report_bench judges whether the figure was disturbed.
+    const timing::LoadSample before = timing::sampleLoad();
+    fn(s);
+    const timing::LoadSample after = timing::sampleLoad();
+    s.counters[kLoadBefore] = before.average1, s.counters[kRunnableBefore] = before.runnable;
+    s.counters[kLoadAfter] = after.average1, s.counters[kRunnableAfter] = after.runnable;
+  })->Unit(benchmark::kMicrosecond);
 }
 
 const char* sideKind(const std::string& side) {

@@ -92,7 +92,13 @@ template <class T> using AlignedVector = std::vector<T, Aligned64<T>>;
 // in the same cache set and the ~20 streams of a vertex kernel evict each other).
 inline size_t planeStride(size_t n) { return (n + 1023) / 1024 * 1024 + 16; }
 
-// Registers `fn` as benchmark "name" (time in ns, items/s and bytes/s set by the kernel).
+// Registers `fn` as benchmark "name" (time in ns, items/s and bytes/s set by the kernel), with
+// the machine's load sampled before and after each run as these counters (1-minute load
+// average and runnable threads, harness/timing/disturbance.h; -1 where unreadable).
+inline const char* const kLoadBefore = "load_avg1_before";
+inline const char* const kRunnableBefore = "runnable_before";
+inline const char* const kLoadAfter = "load_avg1_after";
+inline const char* const kRunnableAfter = "runnable_after";
 void registerKernel(const std::string& name, std::function<void(benchmark::State&)> fn);
 
 // Sets items/s and bytes/s for `items` items and `bytes` bytes per iteration; for out-of-cache

@@ -14,6 +14,8 @@ FastestSides fastestSides(const nlohmann::json& pair) {
     if (kind.empty() || !fig.is_object() || !fig.contains("items_per_second") ||
         !fig["items_per_second"].is_number())
       continue;
+    const nlohmann::json dist = fig.value("disturbance", nlohmann::json());
+    if (dist.is_object() && dist.value("disturbed", false)) f.disturbed[side] = dist.value("reason", "");
     const double ips = fig["items_per_second"].get<double>();
     if (!(ips > 0)) continue;
     char b[64];

@@ -14,8 +14,11 @@ struct FastestSides {
   double motor = 0, matrix = 0;      // items/s of the fastest side of each kind (0: none)
   std::string motorSide, matrixSide;  // their names
   std::string all;                    // "matrix 1.2e+08, glm 3.4e+08, motor 1.1e+08" (items/s)
-  // motor time / fastest matrix time per item (< 1: motor faster); -1 when a side is missing.
-  double costRatio() const { return motor > 0 && matrix > 0 ? matrix / motor : -1.0; }
+  // {side: reason} of every side whose figure was disturbed (report_bench's "disturbance").
+  nlohmann::json disturbed = nlohmann::json::object();
+  // motor time / fastest matrix time per item (< 1: motor faster); -1 when a side is missing or
+  // any side was disturbed (not a verdict input, issue 38).
+  double costRatio() const { return motor > 0 && matrix > 0 && disturbed.empty() ? matrix / motor : -1.0; }
 };
 
 // Entries of `pair` that are not a side (kernel, size, ratios) or have no positive items/s

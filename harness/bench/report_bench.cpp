@@ -7,6 +7,7 @@
 #include "harness/bench/bench_common.h"
 #include "harness/bench/fastest_sides.h"
 #include "harness/process/report_workers.h"
+#include "harness/timing/disturbance.h"
 
 namespace mb::report {
 namespace {
@@ -15,10 +16,30 @@ using json = nlohmann::json;
 
 bool isSide(const std::string& s) { return *bench::sideKind(s) != 0; }
 
-json sideFigures(const json& b) {
+// Seconds per unit of Google Benchmark's time_unit.
+double unitSeconds(const std::string& unit) {
+  return unit == "s" ? 1.0 : unit == "ms" ? 1e-3 : unit == "us" ? 1e-6 : 1e-9;
+}
+
+// The figure's disturbance (harness/timing/disturbance.h) from its CPU and real time per
+// iteration and the load counters registerKernel samples; a figure without them (a JSON
+// written before issue 38) is not judged (null).
+json disturbanceOf(const json& b, unsigned cores) {
+  if (!b.contains(bench::kRunnableBefore) || !b.contains("cpu_time")) return nullptr;
+  auto load = [&](const char* avg, const char* runnable) {
+    return timing::LoadSample{b.value(avg, -1.0), int(b.value(runnable, -1.0))};
+  };
+  const double unit = unitSeconds(b.value("time_unit", "ns"));
+  return timing::toJson(timing::judgeDisturbance(b.value("cpu_time", 0.0) * unit, b.value("real_time", 0.0) * unit,
+                                                 load(bench::kLoadBefore, bench::kRunnableBefore),
+                                                 load(bench::kLoadAfter, bench::kRunnableAfter), cores));
+}
+
+json sideFigures(const json& b, unsigned cores) {
   json s = {{"items_per_second", b.value("items_per_second", 0.0)},
             {"bytes_per_second", b.value("bytes_per_second", 0.0)},
-            {"real_time", b.value("real_time", 0.0)}, {"time_unit", b.value("time_unit", "ns")}};
+            {"real_time", b.value("real_time", 0.0)}, {"cpu_time", b.value("cpu_time", 0.0)},
+            {"time_unit", b.value("time_unit", "ns")}, {"disturbance", disturbanceOf(b, cores)}};
   if (b.contains("bw_fraction")) s["bw_fraction"] = b["bw_fraction"];
   if (b.contains("probe_GBps")) s["probe_GBps"] = b["probe_GBps"];
   if (b.contains("label")) s["label"] = b["label"];
@@ -49,6 +70,8 @@ Result<json> readBenchJson(const std::string& path) {
 }
 
 json kernelPairs(const json& bench) {
+  const json context = bench.value("context", json::object());
+  const unsigned cores = unsigned(context.value("num_cpus", 0));
   // name -> figures; a median aggregate replaces the individual repetitions.
   std::map<std::string, json> figures;
   std::map<std::string, bool> fromMedian;
@@ -71,7 +94,8 @@ json kernelPairs(const json& bench) {
     const std::string side = slash == std::string::npos ? "" : name.substr(slash + 1);
     if (!isSide(side)) {
       probe.push_back({{"name", name}, {"bytes_per_second", b.value("bytes_per_second", 0.0)},
-                       {"items_per_second", b.value("items_per_second", 0.0)}});
+                       {"items_per_second", b.value("items_per_second", 0.0)},
+                       {"disturbance", disturbanceOf(b, cores)}});
       continue;
     }
     const std::string prefix = name.substr(0, slash);
@@ -83,7 +107,7 @@ json kernelPairs(const json& bench) {
       pairs.push_back({{"pair", prefix}, {"kernel", sized ? prefix.substr(0, s2) : prefix},
                        {"size", sized ? json(tail) : json(nullptr)}});
     }
-    pairs[pairIndex[prefix]][side] = sideFigures(b);
+    pairs[pairIndex[prefix]][side] = sideFigures(b, cores);
   }
   for (json& p : pairs) {
     auto ips = [&](const std::string& side) {
@@ -94,13 +118,17 @@ json kernelPairs(const json& bench) {
     p["ratio_glm_matrix"] = m > 0 && g > 0 ? json(g / m) : json(nullptr);
     const double sm = ips(bench::kSimdMatrix), smo = ips(bench::kSimdMotor);
     p["ratio_simd_motor_matrix"] = sm > 0 && smo > 0 ? json(smo / sm) : json(nullptr);
-    // The fastest implementation on each side, whatever its source.
+    // The fastest implementation on each side, whatever its source. A pair with a disturbed side
+    // keeps its ratios (printed with the mark) but is not a verdict input (issue 38):
+    // fastestSides' costRatio is -1 for it, and "disturbed" names the sides and reasons.
     const bench::FastestSides f = bench::fastestSides(p);
+    p["disturbed"] = !f.disturbed.empty();
+    p["disturbedSides"] = f.disturbed;
     p["fastest_matrix"] = f.matrixSide.empty() ? json(nullptr) : json(f.matrixSide);
     p["fastest_motor"] = f.motorSide.empty() ? json(nullptr) : json(f.motorSide);
-    p["ratio_motor_fastest_matrix"] = f.costRatio() > 0 ? json(f.motor / f.matrix) : json(nullptr);
+    p["ratio_motor_fastest_matrix"] = f.motor > 0 && f.matrix > 0 ? json(f.motor / f.matrix) : json(nullptr);
   }
-  return {{"context", bench.value("context", json::object())}, {"pairs", pairs}, {"probe", probe}};
+  return {{"context", context}, {"pairs", pairs}, {"probe", probe}};
 }
 
 }  // namespace mb::report

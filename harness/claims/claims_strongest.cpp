@@ -170,10 +170,15 @@ Claim kernelClaim(const std::string& kernel, const json& pairs, const std::strin
   std::string text;
   bool holds = true;
   int sizes = 0;
+  std::string disturbed;  // sizes whose pair was disturbed
   if (pairs.is_array())
     for (const json& p : pairs) {
       if (p.value("kernel", "") != kernel || !p["ratio_motor_fastest_matrix"].is_number()) continue;
       const std::string size = p["size"].is_string() ? p["size"].get<std::string>() : "-";
+      if (p.value("disturbed", false)) {  // taken on shared cores: not a verdict input (issue 38)
+        disturbed += (disturbed.empty() ? "" : ", ") + size;
+        continue;
+      }
       const std::string fm = p["fastest_matrix"].get<std::string>(), fmo = p["fastest_motor"].get<std::string>();
       const double ratio = p["ratio_motor_fastest_matrix"].get<double>();  // > 1: motor faster
       values[size] = {{"fastestMatrix", fm}, {"fastestMotor", fmo}, {"ratioItemsPerSecond", ratio}};
@@ -183,11 +188,14 @@ Claim kernelClaim(const std::string& kernel, const json& pairs, const std::strin
       holds = holds && ratio >= 1.0;
       ++sizes;
     }
-  if (!sizes) {
-    c.measured = "-";
+  if (!sizes || !disturbed.empty()) {  // a verdict needs both working sets, undisturbed
+    c.measured = text.empty() ? "-" : text;
     c.measuredValue = nullptr;
     c.verdict = Verdict::NotMeasurable;
-    c.verdictText = "not measurable here: no " + kernel + " bench pair with a motor and a matrix implementation";
+    c.verdictText = disturbed.empty()
+                        ? "not measurable here: no " + kernel + " bench pair with a motor and a matrix implementation"
+                        : "not measurable here: the " + kernel + " bench pairs (" + disturbed +
+                              ") were timed while other work shared the cores (disturbed)";
     return c;
   }
   c.measured = text;

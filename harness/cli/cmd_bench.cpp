@@ -23,6 +23,7 @@
 #include "harness/bench/report_bench.h"
 #include "harness/cli/command.h"
 #include "harness/process/progress.h"
+#include "harness/timing/disturbance.h"
 
 namespace mb {
 namespace {
@@ -70,7 +71,9 @@ public:
       if (r.error_occurred) continue;
       nlohmann::json b = {{"name", r.benchmark_name()}, {"run_name", r.run_name.str()},
                           {"run_type", r.run_type == Run::RT_Aggregate ? "aggregate" : "iteration"},
-                          {"aggregate_name", r.aggregate_name}, {"label", r.report_label}};
+                          {"aggregate_name", r.aggregate_name}, {"label", r.report_label},
+                          {"real_time", r.GetAdjustedRealTime()}, {"cpu_time", r.GetAdjustedCPUTime()},
+                          {"time_unit", benchmark::GetTimeUnitString(r.time_unit)}};
       for (const auto& [key, c] : r.counters) b[key] = c.value;
       if (b.value("label", "").empty()) b.erase("label");
       benchmarks.push_back(b);
@@ -113,6 +116,27 @@ std::string num(const nlohmann::json& v, const char* fmt = "%.4g") {
   return b;
 }
 
+// Which figures were taken while other work shared the cores (harness/timing/disturbance.h):
+// their pairs are marked DISTURBED above and are not verdict inputs for report or claims.
+void printDisturbed(const nlohmann::json& pairs) {
+  size_t figures = 0, disturbed = 0;
+  std::string first;
+  for (const nlohmann::json& p : pairs)
+    for (const auto& [side, fig] : p.items()) {
+      if (!fig.is_object() || !fig.contains("disturbance") || !fig["disturbance"].is_object()) continue;
+      ++figures;
+      if (!fig["disturbance"].value("disturbed", false)) continue;
+      if (!disturbed++) first = p.value("pair", "") + "/" + side + ": " + fig["disturbance"].value("reason", "");
+    }
+  if (disturbed)
+    std::printf("DISTURBED: %zu of %zu timed figures were taken while other work shared the cores (CPU/real < %.2f "
+                "or more runnable threads than cores before and after); their pairs are not verdict inputs. "
+                "First: %s\n", disturbed, figures, timing::kMinCpuOverReal, first.c_str());
+  else if (figures)
+    std::printf("Undisturbed: all %zu timed figures had CPU/real >= %.2f and no more runnable threads than cores.\n",
+                figures, timing::kMinCpuOverReal);
+}
+
 // The five implementations per pair (and simd_affine, lanes_motor where measured), motor against the
 // shim matrix and against the fastest matrix implementation; out of cache, the fraction of the
 // probe's bandwidth each side moves. withProbe: print the probe (measured when an out-of-cache
@@ -139,18 +163,24 @@ void printSummary(const SummaryReporter& rep, bool withProbe) {
     if (p["ratio_motor_fastest_matrix"].is_number())
       best = num(p["ratio_motor_fastest_matrix"], "%.3g") + " (" + p["fastest_motor"].get<std::string>() + " / " +
              p["fastest_matrix"].get<std::string>() + ")";
-    std::printf(" %9s %28s\n", num(p["ratio_motor_matrix"], "%.3g").c_str(), best.c_str());
+    std::printf(" %9s %28s%s\n", num(p["ratio_motor_matrix"], "%.3g").c_str(), best.c_str(),
+                p.value("disturbed", false) ? "  DISTURBED" : "");
   }
+  printDisturbed(pairs);
   std::printf("load_frames: matrix converts nothing at load (a copy of normal + tangent), motor encodes "
               "tangent rotors, glm does the same with glm::quat_cast.\n");
   if (!withProbe) return;
   std::printf("\nOut of cache: bytes/s and bw = bytes/s over the bandwidth probe (a fraction):\n");
-  std::printf("%-28s", "kernel");
+  std::printf("%-28s %-6s", "kernel", "target");
   for (const char* s : sides) std::printf(" %18s", s);
   std::printf("\n");
   for (const nlohmann::json& p : pairs) {
     if (p.value("size", nlohmann::json()) != "out_of_cache") continue;
-    std::printf("%-28s", p.value("pair", "").c_str());
+    // The Highway target of the simd sides (the scalar sides run what the compiler chose).
+    std::string target = "-";
+    for (const char* s : {"simd_matrix", "simd_motor", "simd_affine"})
+      if (p.contains(s) && p[s].contains("label")) target = p[s]["label"].get<std::string>();
+    std::printf("%-28s %-6s", p.value("pair", "").c_str(), target.c_str());
     for (const char* s : sides) {
       std::string cell = "-";
       if (p.contains(s))
