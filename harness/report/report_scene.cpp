@@ -9,10 +9,12 @@
 #include <set>
 
 #include "harness/render/drawn_check.h"
+#include "harness/render/flip.h"
 #include "harness/render/frame_notes.h"
 #include "harness/render/image_metrics.h"
 #include "harness/report/report_animation.h"
 #include "harness/report/report_sources.h"
+#include "harness/report/vertex_fetch.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/scene/curved_space.h"
 #include "pipelines/scene/drawable.h"
@@ -158,6 +160,7 @@ json measureScene(const SceneJob& job) {
     return out;
   }
   out["vertexMix"] = vertexMix(*scene);
+  if (scene->curved.space == Space::Euclidean) out["overdraw"] = overdrawJson(*scene);  // the mesh alone
   // The animations shown: --anim's choice, else the first (none: the rest pose, anim -1).
   std::vector<int> anims = job.animations;
   const bool chosen = !anims.empty();
@@ -230,6 +233,8 @@ json measureScene(const SceneJob& job) {
       json& pj = out["pipelines"][p];
       if (!pj.contains("memory")) {  // the uploads do not depend on the time; keep the first
         pj["memory"] = memoryJson(f->stats);
+        if (scene->curved.space == Space::Euclidean)  // the GPU vertex stage, not timed
+          pj["vertexFetch"] = vertexFetchJson(*scene, f->stats);
         pj["fallbacks"] = fallbacksJson(f->stats);
         pj["stats"] = toJson(f->stats);
         pj["draws"] = f->stats.draws;
@@ -258,7 +263,18 @@ json measureScene(const SceneJob& job) {
                                   diffHeatmap(images[base], images[p]));
       if (written) frame["diffs"][p] = file;
       else frame["errors"]["diff_" + p] = written.error();
-      frame["metrics"][p] = toJson(*m);  // the compare command's metrics
+      auto flip = computeFlip(images[base], images[p]);  // the baseline is FLIP's reference
+      if (!flip) {
+        frame["errors"]["flip_" + p] = flip.error();
+        frame["metrics"][p] = toJson(*m);
+      } else {
+        frame["metrics"][p] = toJson(*m, *flip);  // the compare command's metrics, FLIP beside PSNR
+        const std::string flipFile = rel + "t" + std::to_string(k) + "_flip_" + p + ".png";
+        if (Status f = writeImage((fs::path(job.outDir) / flipFile).string(), flipErrorImage(*flip)); f)
+          frame["flipMaps"][p] = flipFile;  // beside the diff image
+        else
+          frame["errors"]["flip_" + p] = f.error();
+      }
       // compare's drawn-pixel check: an empty image or counts > 1 % apart marks the frame failed,
       // and only a frame that passes may be called the skinning methods' difference.
       const bool skinned = out["vertexMix"].value("skinned", 0L) > 0;

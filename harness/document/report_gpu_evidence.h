@@ -1,0 +1,16 @@
+// The report's GPU-relevant evidence (issue 36): per scene and pipeline, what the vertex stage of
+// a GPU fetches and transforms per frame for the pipeline's own vertex layout (report.json
+// scenes[].pipelines[p].vertexFetch and scenes[].overdraw, harness/report/vertex_fetch.h).
+// Measured on the mesh and the layout, not timed.
+#pragma once
+#include <nlohmann/json.hpp>
+
+#include "harness/document/report_model.h"
+
+namespace mb::report {
+
+inline constexpr const char* kGpuEvidenceAnchor = "gpu-evidence";
+
+void gpuEvidenceSection(Document& d, const nlohmann::json& report);
+
+}  // namespace mb::report

@@ -1,0 +1,297 @@
+#include "harness/document/report_layout_sections.h"
+
+#include <algorithm>
+#include <map>
+
+#include "harness/document/report_document.h"
+#include "harness/document/report_format.h"
+#include "harness/document/report_layout_common.h"
+#include "harness/document/report_marks.h"
+
+namespace mb::report {
+
+using namespace layout;
+
+namespace {
+
+
+// Worst metrics of `p` over a scene's frames (lowest PSNR, largest changed fraction).
+std::pair<std::string, std::string> worstImage(const json& s, const std::string& p) {
+  double psnr = 1e300, over = -1;
+  bool any = false, allIdentical = true;
+  for (const json& f : s.value("frames", json::array())) {
+    const json& m = at(f, {"metrics"});
+    if (!m.is_object() || !m.contains(p)) continue;
+    any = true;
+    if (!m[p].value("identical", false)) {
+      allIdentical = false;
+      if (m[p]["psnr"].is_number()) psnr = std::min(psnr, m[p]["psnr"].get<double>());
+    }
+    over = std::max(over, m[p].value("fractionOver1", 0.0));
+  }
+  if (!any) return {"-", "-"};
+  return {allIdentical ? "identical" : fixed(json(psnr), 1) + " dB", percent(json(over), 3)};
+}
+
+
+std::vector<std::string> statsLines(const json& st) {
+  if (!st.is_object() || !st.value("loaded", false)) return {};
+  // inspect's JSON groups its counters: geometry, materials, skinning, animation, scale.
+  auto v = [&](const char* group, const char* k) { return str(at(st, {group, k})); };
+  std::vector<std::string> lines = {
+      "geometry: " + v("geometry", "meshes") + " meshes, " + v("geometry", "primitives") + " primitives, " +
+          v("geometry", "vertices") + " vertices, " + v("geometry", "triangles") + " triangles; " +
+          v("geometry", "nodes") + " nodes, " + v("geometry", "meshNodes") + " mesh nodes drawing " +
+          v("geometry", "drawnVertices") + " vertices",
+      "materials: " + v("materials", "materials") + " materials, " + v("materials", "textures") + " textures; " +
+          v("materials", "normalMappedPrimitives") + " normal-mapped primitives (" +
+          v("materials", "authoredTangentPrimitives") + " with authored TANGENT)",
+      "skinning: " + v("skinning", "skins") + " skins, " + v("skinning", "joints") + " joints; animation: " +
+          v("animation", "animations") + " animations, " + v("animation", "channels") + " channels (T " +
+          v("animation", "translation") + ", R " + v("animation", "rotation") + ", S " + v("animation", "scale") + ")"};
+  if (st.contains("scale") && st["scale"].is_object()) {
+    const json& sc = st["scale"];
+    lines.push_back("scale: " + str(sc.value("uniformNodes", json())) + " uniform, " +
+                    str(sc.value("nonUniformNodes", json())) + " non-uniform, " +
+                    str(sc.value("negativeNodes", json())) + " negative, " + str(sc.value("shearNodes", json())) +
+                    " sheared nodes; animated scale on " + str(sc.value("animatedScaleNodes", json())) + " nodes");
+  }
+  std::string fb;
+  for (const auto& [k, val] : members(st, "fallbacks").items())
+    if (val.is_number() && val.get<double>() != 0) fb += (fb.empty() ? "" : ", ") + k + " " + fmt(val);
+  lines.push_back("loader fixes: " + (fb.empty() ? std::string("none") : fb));
+  std::string un;
+  for (const json& u : st.value("unsupported", json::array())) un += (un.empty() ? "" : "; ") + str(u);
+  if (!un.empty()) lines.push_back("unsupported: " + un);
+  return lines;
+}
+
+}  // namespace
+
+void sceneTable(Document& d, const json& r) {
+  const std::vector<std::string> pipes = pipelinesOf(r);
+  d.heading(2, "Scenes", "scenes");
+  std::vector<std::string> head = {"scene", "origin", "status", "vertices (mesh / drawn)", "triangles", "skins / joints", "animations"};
+  for (const std::string& p : pipes) head.push_back(p + " B/vertex");
+  for (const std::string& p : pipes) head.push_back(p + " ops/vertex");
+  for (const std::string& p : pipes) head.push_back(p + " frame ms");
+  head.push_back("frame time motor/matrix");
+  for (size_t i = 1; i < pipes.size(); ++i) head.insert(head.end(), {pipes[i] + " worst PSNR", pipes[i] + " px > 1/255"});
+  d.paragraph(frameTimeOn(at(r, {"machine", "gl"})) + ": the frame ms columns and motor/matrix below.");
+  head.push_back("fallbacks (last pipeline)");
+  std::vector<std::vector<Cell>> rows;
+  for (const json& s : r["scenes"]) {
+    if (!isEuclidean(s)) continue;  // the curved scenes have their own section and pipelines
+    const json& st = s.value("stats", json::object());
+    std::vector<Cell> row = {{str(s["id"]), "", "#scene-" + str(s["id"])}, {str(s["origin"])}, {statusText(s)},
+                             {str(at(st, {"geometry", "vertices"})) + " / " + str(at(st, {"geometry", "drawnVertices"}))},
+                             {str(at(st, {"geometry", "triangles"}))},
+                             {str(at(st, {"skinning", "skins"})) + " / " + str(at(st, {"skinning", "joints"}))},
+                             {str(at(st, {"animation", "animations"}))}};
+    for (const std::string& p : pipes) row.push_back({fmt(at(s, {"pipelines"}).is_object() && s["pipelines"].contains(p) ? at(s["pipelines"][p], {"memory", "bytesPerVertex"}) : json())});
+    for (const std::string& p : pipes) {
+      const json& o = at(s, {"opsPerVertex"});
+      row.push_back({o.is_object() && o.contains(p) && o[p]["counted"].is_object()
+                         ? fmt(json(o[p]["counted"].value("mul", 0.0) + o[p]["counted"].value("add", 0.0)), 4) + " mul+add"
+                         : "-"});
+    }
+    for (const std::string& p : pipes) row.push_back({fixed(at(s, {"timing", "pipelines"}).is_object() && s["timing"]["pipelines"].contains(p) ? s["timing"]["pipelines"][p].value("medianMs", json()) : json(), 2)});
+    row.push_back({ratio(at(s, {"timing", "ratio_motor_matrix"}))});
+    for (size_t i = 1; i < pipes.size(); ++i) {
+      auto [psnr, over] = worstImage(s, pipes[i]);
+      const int wrong = drawnFailures(s, pipes[i]);
+      row.push_back({psnr + (skinningMethodsDiffer(s, pipes[i], pipes[0]) ? " (skinning methods differ)" : "") +
+                     (wrong ? "; " + std::to_string(wrong) + " frame(s) FAILED the drawn-pixel check" : "")});
+      row.push_back({over});
+    }
+    const json& last = at(s, {"pipelines"}).is_object() && s["pipelines"].contains(pipes.back()) ? s["pipelines"][pipes.back()] : json();
+    row.push_back({last.is_object() ? fallbacksText(last) : "-"});
+    rows.push_back(row);
+  }
+  d.table(head, rows);
+}
+
+
+void sceneSection(Document& d, const json& r, const json& s) {
+  const std::vector<std::string> pipes = pipelinesOf(r, s);
+  d.heading(3, str(s["id"]) + (s["spec"] != s["id"] ? " (" + str(s["spec"]) + ")" : ""), "scene-" + str(s["id"]));
+  if (s["error"].is_string()) d.paragraph(std::string(s.value("status", "") == "failed" ? "FAILED" : "Error") + ": " + s["error"].get<std::string>());
+  if (s.contains("workerExit")) d.paragraph("Note: the worker process ended with " + str(s["workerExit"]) + " after writing its result.");
+  if (!isEuclidean(s)) d.paragraph("Curved space: " + str(s["space"]) + ", drawn by its own pipelines (see Curved space).");
+  d.bullets(statsLines(s.value("stats", json())));
+  // Which compared pipelines blend skinned vertices differently from the baseline (issue 18).
+  std::vector<std::string> methodDiffers;
+  for (size_t i = 1; i < pipes.size(); ++i)
+    if (skinningMethodsDiffer(s, pipes[i], pipes[0])) methodDiffers.push_back(pipes[i]);
+  if (!methodDiffers.empty()) {
+    std::string lbs, motors;
+    for (const std::string& p : pipes) {
+      const std::string blend = str(at(s, {"pipelines"}).is_object() && s["pipelines"].contains(p) ? s["pipelines"][p]["skinBlend"] : json(), "");
+      if (blend == "linear blend skinning") lbs += (lbs.empty() ? "" : ", ") + p;
+      if (blend == "motor blending") motors += (motors.empty() ? "" : ", ") + p;
+    }
+    d.paragraph("Skinned scene: " + lbs + " blend joints with linear blend skinning (LBS, a matrix palette); " + motors +
+                " blend joint motors (the dual-quaternion method). Where joints turn far apart the two methods pose "
+                "the mesh differently by design (LBS loses volume: on a half turn, candy_wrapper, the ring between "
+                "the joints collapses towards the axis), so the difference figures of " + motors +
+                " against " + pipes[0] + " below are the methods' expected difference, measured, not an error of either" +
+                (std::any_of(methodDiffers.begin(), methodDiffers.end(), [&](const std::string& p) { return drawnFailures(s, p) > 0; })
+                     ? " -- except in the frames marked FAILED, where one image is empty or the drawn pixels differ by "
+                       "more than 1 %, more than the methods' difference allows."
+                     : "."));
+  }
+  // Thumbnails: one row per shown time (of each animation shown).
+  std::map<int, std::string> animName;
+  for (const json& a : s.value("animations", json::array())) animName[a.value("index", -1)] = a.value("name", "");
+  std::vector<std::string> head = {animName.size() > 1 ? "animation, time [s]" : "time [s]"};
+  for (const std::string& p : pipes) head.push_back(p);
+  for (size_t i = 1; i < pipes.size(); ++i) head.push_back("diff " + pipes[i] + " vs " + pipes[0]);
+  for (size_t i = 1; i < pipes.size(); ++i) head.push_back("FLIP " + pipes[i] + " vs " + pipes[0]);
+  head.push_back("metrics");
+  std::vector<std::vector<Cell>> rows;
+  for (const json& f : s.value("frames", json::array())) {
+    const json& fa = at(f, {"animation"});
+    std::string when = fixed(f["time"], 3);
+    if (animName.size() > 1 && fa.is_number()) when = animName[fa.get<int>()] + ", " + when;
+    std::vector<Cell> row = {{when}};
+    for (const std::string& p : pipes) {
+      const json& img = at(f, {"images"}).is_object() && f["images"].contains(p) ? f["images"][p] : json();
+      if (img.is_string()) row.push_back({"", img.get<std::string>(), img.get<std::string>()});
+      else row.push_back({"error: " + str(at(f, {"errors"}).is_object() && f["errors"].contains(p) ? f["errors"][p] : json())});
+    }
+    std::string metrics;
+    for (size_t i = 1; i < pipes.size(); ++i) {
+      const json& img = at(f, {"diffs"}).is_object() && f["diffs"].contains(pipes[i]) ? f["diffs"][pipes[i]] : json();
+      row.push_back(img.is_string() ? Cell{"", img.get<std::string>(), img.get<std::string>()} : Cell{"-"});
+      const json& m = at(f, {"metrics"}).is_object() && f["metrics"].contains(pipes[i]) ? f["metrics"][pipes[i]] : json();
+      // The methods' label only where the frame's drawn pixels allow it; a failed check says why.
+      const bool method = methodDifferenceAllowed(
+          f, pipes[i], std::find(methodDiffers.begin(), methodDiffers.end(), pipes[i]) != methodDiffers.end());
+      const std::string mark = drawnMark(f, pipes[i]);
+      if (m.is_object())
+        metrics += (metrics.empty() ? "" : "; ") + pipes[i] + (method ? " (skinning method difference)" : "") +
+                   ": " + (mark.empty() ? "" : mark + "; ") + "PSNR " + psnrText(m) + ", RMSE " + fmt(m["rmse"], 3) +
+                   ", max " + fmt(json(255.0 * m.value("maxError", 0.0)), 3) + "/255, > 1/255 " +
+                   percent(m["fractionOver1"], 3) + ", > 4/255 " + percent(m["fractionOver4"], 3) + flipSuffix(m);
+    }
+    // The LDR-FLIP maps (magma: black 0 .. yellow 1), one per compared pipeline, after the diffs.
+    for (size_t i = 1; i < pipes.size(); ++i) {
+      const json& img = at(f, {"flipMaps"}).is_object() && f["flipMaps"].contains(pipes[i]) ? f["flipMaps"][pipes[i]] : json();
+      row.push_back(img.is_string() ? Cell{"", img.get<std::string>(), img.get<std::string>()} : Cell{"-"});
+    }
+    row.push_back({metrics.empty() ? "-" : metrics});
+    rows.push_back(row);
+  }
+  if (!rows.empty()) d.table(head, rows);
+  // One loop of each animation shown, baseline | pipeline | diff, per compared pipeline.
+  json loops = json::array();
+  for (const json& a : s.value("animations", json::array()))
+    if (a.contains("animated") && a["animated"].is_object()) loops.push_back(a["animated"]);
+  if (loops.empty() && s.contains("animated") && s["animated"].is_object()) loops.push_back(s["animated"]);
+  for (const json& loop : loops)
+    for (const auto& [p, a] : loop.items()) {
+      const bool method = std::find(methodDiffers.begin(), methodDiffers.end(), p) != methodDiffers.end();
+      const std::string which = a.contains("name") ? "animation " + str(a.value("animation", json())) + " '" + str(a["name"]) + "'" : "animation 0";
+      if (a.contains("file"))
+        d.figure(a["file"].get<std::string>(), "Animated (" + which + "): " + pipes[0] + " | " + p + " | diff",
+                 "One loop of " + which + " (" + fixed(a["duration"], 2) + " s) in " + str(a["frames"]) + " frames at " +
+                     str(a["fps"]) + " fps: " + pipes[0] + " left, " + p + " middle, diff heat map right; at most " +
+                     percent(a["maxPixelsOver2"], 2) + " of the pixels differ by more than 2/255 in any frame" +
+                     (method ? " (the skinning methods' expected difference)." : "."));
+      else
+        d.paragraph("Animated comparison " + pipes[0] + " vs " + p + " (" + which + ") not made: " + str(a.value("error", json())));
+    }
+  // Per pipeline: memory, conversion, fallbacks, timing.
+  std::vector<std::vector<Cell>> prow;
+  for (const std::string& p : pipes) {
+    if (!at(s, {"pipelines"}).is_object() || !s["pipelines"].contains(p)) continue;
+    const json& pj = s["pipelines"][p];
+    const json& mem = pj.value("memory", json::object());
+    const json& t = at(s, {"timing", "pipelines"}).is_object() && s["timing"]["pipelines"].contains(p) ? s["timing"]["pipelines"][p] : json();
+    const json& o = at(s, {"opsPerVertex"}).is_object() && s["opsPerVertex"].contains(p) ? s["opsPerVertex"][p] : json();
+    prow.push_back({{p}, {fmt(mem.value("bytesPerVertex", json()))}, {fmt(mem.value("floatsPerVertex", json()))},
+                    {mem.value("floatsPerTransform", json()).is_null() && mem.contains("floatsPerTransform")
+                         ? std::string("none (skinned or instanced draws only)")
+                         : fmt(mem.value("floatsPerTransform", json()))},
+                    {fmt(mem.value("floatsPerJoint", json()))},
+                    {str(mem.value("vertexBytes", json())) + " / " + str(mem.value("skinVertexBytes", json())) + " / " +
+                     str(mem.value("indexBytes", json())) + " / " + str(mem.value("textureBytes", json()))},
+                    {str(mem.value("uniformBytesPerFrame", json())) + " / " + str(mem.value("skinBytesPerFrame", json()))},
+                    {str(pj.value("draws", json()))}, {fixed(at(pj, {"conversionMs", "median"}), 3)},
+                    {fallbacksText(pj)}, {o.is_object() ? opsText(o["counted"], 1) : "-"},
+                    {t.is_object() ? fixed(t.value("medianMs", json()), 2) + " (" + fixed(t.value("minMs", json()), 2) + ".." +
+                                         fixed(t.value("maxMs", json()), 2) + ")" : "-"},
+                    {t.is_object() ? fixed(t.value("verticesPerUs", json()), 1) : "-"},
+                    {t.is_object() ? fmt(t.value("updateMedianMs", json()), 3) : "-"},
+                    {pj["error"].is_string() ? pj["error"].get<std::string>() : ""}});
+  }
+  if (!prow.empty()) {
+    d.paragraph(frameTimeOn(at(s, {"timing", "gl"}).is_object() ? at(s, {"timing", "gl"}) : at(r, {"machine", "gl"})) +
+                ": the frame ms column.");
+    d.table({"pipeline", "B/vertex", "floats/vertex", "floats/transform", "floats/joint",
+             "bytes: vertex / skin / index / texture", "bytes per frame: uniforms / joint palette", "draws",
+             "conversion ms (median)", "fallbacks", "ops/vertex (counted, mean)", "frame ms median (min..max)",
+             "vertices/us (drawn vertices x instances / median frame)", "CPU update ms", "error"},
+            prow);
+  }
+  exactFallbackTable(d, s, pipes);
+  // Instanced draws: what each pipeline streams per instance (measured: bytes handed to GL).
+  std::vector<std::vector<Cell>> irow;
+  for (const std::string& p : pipes) {
+    const json& mem = at(s, {"pipelines"}).is_object() && s["pipelines"].contains(p) ? s["pipelines"][p].value("memory", json::object()) : json();
+    if (!mem.is_object() || !mem.contains("instances") || !mem["instances"].is_number() || mem["instances"].get<double>() == 0) continue;
+    const json& fb = s["pipelines"][p].value("fallbacks", json::object());
+    irow.push_back({{p}, {str(mem["instances"])}, {fmt(mem.value("bytesPerInstance", json()))}, {str(mem.value("instanceBytes", json()))},
+                    {str(fb.value("scaleFallbackInstances", json(0)))}});
+  }
+  if (!irow.empty()) {
+    d.paragraph("Instance memory (EXT_mesh_gpu_instancing or --instances): the per-instance transforms every "
+                "pipeline streams once per frame, node world x instance composed on the CPU in the pipeline's "
+                "own form (matrix: model + normal mat4; affine family: mat4x3 + mat3 + mirror; motor family: "
+                "motor + scale, a vec3 scale on the scale fallback).");
+    d.table({"pipeline", "instances", "bytes per instance", "instance bytes per frame", "scale-fallback instances"}, irow);
+  }
+  // The CPU update phase by phase (harness/timing: a block of updates with the phase clock on).
+  std::vector<std::vector<Cell>> urow;
+  for (const std::string& p : pipes) {
+    const json& t = at(s, {"timing", "pipelines"}).is_object() && s["timing"]["pipelines"].contains(p) ? s["timing"]["pipelines"][p] : json();
+    const json& ph = t.is_object() ? t.value("updatePhasesMedianMs", json()) : json();
+    if (!ph.is_object()) continue;
+    std::vector<Cell> row{{p}};
+    for (const char* k : {"sampling", "blending", "conversion", "hierarchy", "palette"})
+      row.push_back({ph.contains(k) && ph[k].is_number() ? fixed(json(1e3 * ph[k].get<double>()), 2) : "-"});
+    row.push_back({t.contains("updateMedianMs") && t["updateMedianMs"].is_number() ? fixed(json(1e3 * t["updateMedianMs"].get<double>()), 2) : "-"});
+    urow.push_back(row);
+  }
+  if (!urow.empty()) {
+    const json& m = r["machine"];
+    d.paragraph("Measured on " + cpuMachineText(m["cpu"], m["logicalCores"], m["simdTarget"]) +
+                " (CPU times hold for this CPU).");
+    d.paragraph("CPU update by phase: microseconds per update call, medians over the timed frames, from a block "
+                "of updates timed with the pipelines' phase clock on (apart from the whole-update timing, whose "
+                "median is the last column; the phases include their clock reads). The matrix forms' hierarchy "
+                "includes the normal matrices of the drawn nodes, computed per node as the Sample Viewer's "
+                "hierarchy pass does; the motor forms need none.");
+    d.table({"pipeline", "sampling us", "blending us", "conversion us", "hierarchy us", "palette us",
+             "whole update us"},
+            urow);
+  }
+  const json& timing = s.value("timing", json());
+  if (timing.is_object()) {
+    if (timing["error"].is_string()) d.paragraph("Frame timing: " + timing["error"].get<std::string>());
+    else if (timing.contains("summary")) {
+      auto ratios = [](const json& c) {
+        return "frame " + ratio(at(c, {"ratio_motor_matrix"})) + ", paired per frame " +
+               ratio(at(c, {"paired_ratio_motor_matrix"})) + ", process CPU time " +
+               ratio(at(c, {"paired_cpu_ratio_motor_matrix"})) + ", CPU update " +
+               ratio(at(c, {"update", "ratio_motor_matrix"}));
+      };
+      const json& vb = timing.value("vertexBound", json());
+      d.paragraph(frameTimeOn(timing.value("gl", at(r, {"machine", "gl"}))) + ": " + str(timing["summary"]) +
+                  " Motor / matrix: " + ratios(timing) +
+                  "; vertex-bound: " + (vb.contains("skipped") ? str(vb["skipped"]) : ratios(vb)) + ".");
+    }
+  }
+}
+
+}  // namespace mb::report
