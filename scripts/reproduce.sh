@@ -9,6 +9,14 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# Timed figures need quiet cores (issue 38): warn now when other work runs. The tools mark each
+# figure taken on shared cores (harness/timing/disturbance.h) and keep it out of the verdicts.
+read -r load1 _ _ runq _ < /proc/loadavg
+if [ "${runq%%/*}" -gt "$(nproc)" ] || awk -v l="$load1" -v n="$(nproc)" 'BEGIN { exit !(l > n) }'; then
+  echo "reproduce: WARNING: the machine is busy (load average $load1, ${runq%%/*} runnable threads on $(nproc) cores):" \
+    "timed figures will be marked disturbed and left out of the verdicts; run again on a quiet machine" >&2
+fi
+
 start=$(date +%s)
 step() { echo "[reproduce $(($(date +%s) - start)) s] $*" >&2; }
 

@@ -128,6 +128,17 @@ void kernelFigures(json& out, const json& kernels, const std::string& cpu) {
       f.statistic = "ratio of Google Benchmark throughputs (items/s), expressed as time motor / matrix";
       f.scope = "CPU kernel " + pair + ": " + what + " (" + motor + " / " + matrix + ")";
       f.device = cpu;
+      // The Highway target beside the CPU where a side is a SIMD kernel (its label).
+      for (const std::string& side : {motor, matrix})
+        if (at(p, {side.c_str(), "label"}).is_string()) {
+          f.device += ", Highway " + at(p, {side.c_str(), "label"}).get<std::string>();
+          break;
+        }
+      // Disturbed when either side's figure was (report_bench: CPU/real and the run queue).
+      for (const std::string& side : {motor, matrix}) {
+        const json& d = at(p, {side.c_str(), "disturbance"});
+        if (d.is_object() && (f.disturbed.is_null() || d.value("disturbed", false))) f.disturbed = d;
+      }
       f.definition = "time per item motor / matrix (< 1: motor faster)";
       if (!std::isfinite(f.value)) f.why = "no throughput for " + motor + " or " + matrix;
       figures::put(out, f);
@@ -158,6 +169,7 @@ Figure sceneFrameTimeFigure(const std::string& name, const json& config, const s
   f.device = device;
   f.definition = "frame time motor / matrix (< 1: motor faster)";
   f.value = num(config.value("paired_ratio_motor_matrix", json()));
+  f.disturbed = config.value("disturbance", json());  // harness/timing/disturbance.h (null before issue 38)
   const json& spread = config.value("paired_ratio_spread", json());
   if (spread.is_object() && spread.value("q1", json()).is_number()) {
     f.q1 = spread["q1"].get<double>(), f.q3 = spread["q3"].get<double>();

@@ -97,7 +97,11 @@ std::string figureText(const Figure& f) {
   add("", f.scope);
   add("", f.device);
   add("tolerance ", f.tolerance);
-  return d.empty() ? s : s + " (" + d + ")";
+  // Timed on shared cores (harness/timing/disturbance.h): printed, marked, not a verdict input.
+  const std::string mark = f.disturbed.is_object() && f.disturbed.value("disturbed", false)
+                               ? " [disturbed: " + f.disturbed.value("reason", "") + "]"
+                               : "";
+  return (d.empty() ? s : s + " (" + d + ")") + mark;
 }
 
 }  // namespace mb::figures

@@ -154,6 +154,8 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   GLuint query = 0;
   if (out.source == FrameTimeSource::GpuTimer) glGenQueries(1, &query);
   const int total = settings.warmup + settings.frames;
+  // Process CPU: llvmpipe's threads work while the calling thread waits in glFinish.
+  const DisturbanceWatch watch(CpuClock::Process);
   for (int i = 0; i < total; ++i) {
     const AnimState st = stateForFrame(scene, i);
     for (size_t k = 0; k < live.size(); ++k) {
@@ -224,6 +226,7 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
       if (query) t.gpuMs.push_back(gpuMs);  // the warm-up frames above absorb first-use costs
     }
   }
+  out.disturbance = watch.finish();
   if (query) glDeleteQueries(1, &query);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     return R::fail(sceneName + ": GL error while timing: " + gl::errorName(err));
@@ -336,7 +339,8 @@ nlohmann::json toJson(const ConfigTiming& c) {
           {"paired_ratio_motor_over_matrix", num(c.pairedFrameRatio)},
           {"paired_ratio_spread", toJson(c.pairedFrame)},
           {"paired_cpu_ratio_motor_over_matrix", num(c.pairedCpuRatio)},
-          {"update_ratio_motor_over_matrix", num(c.updateRatio)}};
+          {"update_ratio_motor_over_matrix", num(c.updateRatio)},
+          {"disturbance", toJson(c.disturbance)}};
 }
 
 }  // namespace mb::timing

@@ -26,6 +26,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/timing/disturbance.h"
 #include "pipelines/gl/context.h"
 #include "pipelines/pipeline.h"
 #include "pipelines/result.h"
@@ -115,6 +116,9 @@ struct ConfigTiming {
   // ratios.
   double frameRatio = -1, pairedFrameRatio = -1, pairedCpuRatio = -1, updateRatio = -1;
   Spread pairedFrame;
+  // The whole measurement's process CPU time / real time and the load around it
+  // (disturbance.h): a disturbed configuration's ratios are printed marked, not verdict inputs.
+  Disturbance disturbance;
 };
 
 // The vertex-bound configuration (a tiny viewport) measures the vertex stage only when the

@@ -45,6 +45,7 @@ json configJson(const timing::ConfigTiming& c, const std::vector<std::string>& p
     out["paired_ratio_spread"] = {{"q1", c.pairedFrame.q1}, {"q3", c.pairedFrame.q3}, {"n", c.pairedFrame.n}};
   out["paired_cpu_ratio_motor_matrix"] = num(c.pairedCpuRatio);
   out["update"] = {{"ratio_motor_matrix", num(c.updateRatio)}};
+  out["disturbance"] = timing::toJson(c.disturbance);
   return out;
 }
 

@@ -47,7 +47,7 @@ std::string timingLegend() {
 
 std::string timingBlock(const ConfigTiming& c) {
   std::string out = c.scene + (c.patchLevel ? " N=" + std::to_string(c.patchLevel) : "") + " (" + c.config + " " +
-                    std::to_string(c.width) + "x" + std::to_string(c.height) + ")\n";
+                    std::to_string(c.width) + "x" + std::to_string(c.height) + ")" + disturbanceMark(c.disturbance) + "\n";
   out += format(kRow, "pipeline", "frame ms [q1-q3]", "update us [q1-q3]", "frame/matrix [q1-q3]",
                 "update/matrix [q1-q3]");
   const PipelineTiming* matrix = nullptr;
