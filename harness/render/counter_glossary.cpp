@@ -83,6 +83,7 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"ImageMetrics", "fractionOver1", "fraction", "fraction of pixels (0..1) with some channel off by more than 1/255"},
       {"ImageMetrics", "fractionOver2", "fraction", "fraction of pixels with some channel off by more than 2/255"},
       {"ImageMetrics", "fractionOver4", "fraction", "fraction of pixels with some channel off by more than 4/255"},
+      {"ImageMetrics", "flip", "", "LDR-FLIP (Andersson et al. 2020, harness/render/flip.h), per pixel 0..1 at 67 ppd: mean, weightedMedian (the authors' error-weighted median), max, maxAt, pixelsPerDegree"},
   };
   return g;
 }

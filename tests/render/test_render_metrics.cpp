@@ -9,20 +9,14 @@
 #include <unistd.h>
 
 #include "harness/render/image_metrics.h"
+#include "tests/support/rgba_images.h"
 
 using namespace mb;
 
 namespace {
 
-RgbaImage solid(int w, int h, uint8_t r, uint8_t g, uint8_t b) {
-  RgbaImage img{w, h, {}};
-  for (int i = 0; i < w * h; ++i) img.rgba.insert(img.rgba.end(), {r, g, b, 255});
-  return img;
-}
-
-uint8_t& at(RgbaImage& img, int x, int y, int c) {
-  return img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4 + size_t(c)];
-}
+using test_images::at;
+using test_images::solid;
 
 // 2x2 grey images; b differs by 1 step at (1,0) R, 3 steps at (0,1) G, 10 steps at (1,1) B.
 struct Pair {
