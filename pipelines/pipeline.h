@@ -30,6 +30,10 @@ struct PipelineStats {
   uint64_t patchPatternBytes = 0;     // the patches' shared (u, v) refinement pattern: not a
                                       // vertex format, so neither in vertexBytes nor vertices
   uint64_t vertices = 0;              // vertices uploaded
+  // Morph targets (pipelines/gl/morph_buffers.h): the delta storage buffers uploaded, and the
+  // targets x vertices they hold (morphBytes / morphTargetVertices: bytes per vertex per target).
+  uint64_t morphBytes = 0, morphTargetVertices = 0;
+  int morphDraws = 0;                 // draws of the last render() that morphed (a non-zero weight)
   // Instanced draws (Node::instances, pipelines/gl/instance_stream.h): the per-instance
   // transforms of the last render() (each pipeline's per-draw transform, node world composed
   // with the instance on the CPU), streamed once per frame, and how many instances they hold.
@@ -82,9 +86,15 @@ struct PipelineStats {
 // Reference, motor: WorldPalette; the goldens were made so), see Pipeline::skinSpace().
 enum class SkinSpace { PipelineDefault, Reference, WorldPalette };
 
+// How the motor family morphs its tangent rotor (issue 37, shaders/motor_transform.glsl):
+// Frame (a): the rotor's normal and tangent plus the glTF deltas, re-formed into a rotor per
+// vertex (the default: exact); Rotor (b): rotor deltas made at load, blended and renormalised.
+enum class MorphMethod { PipelineDefault, Frame, Rotor };
+
 // Settings a pipeline takes before prepare(). A pipeline without the choice ignores it.
 struct PipelineOptions {
   SkinSpace skinSpace = SkinSpace::PipelineDefault;
+  MorphMethod morph = MorphMethod::PipelineDefault;
 };
 
 class Pipeline {

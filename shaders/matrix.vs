@@ -14,18 +14,24 @@
 //                     symmetric configuration; the Sample Viewer applies it)
 //   MB_INSTANCED      model and normal matrix per instance (vertex attributes, divisor 1)
 //                     instead of per draw: EXT_mesh_gpu_instancing / --instances
+//   MB_MORPH          morph targets (morph.glsl): position, normal and tangent deltas added in
+//                     object space before the skin and the model matrix, as the Sample Viewer
 //
 // Handedness: u_NormalMatrix's last column is never used for a direction (w = 0), so its
 // [3][3] entry carries sign(det(model)); a mirrored node flips the tangent handedness, which
 // keeps bitangent = w * cross(n, t) equal to the transformed bitangent.
 
 #include "matrix_transform.glsl"
+#ifdef MB_MORPH
+#include "morph.glsl"
+#endif
 
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 #ifndef MB_NO_TANGENT
 layout(location = 2) in vec4 a_tangent;
 #endif
+
 layout(location = 3) in vec2 a_uv0;
 layout(location = 4) in vec2 a_uv1;
 layout(location = 5) in vec4 a_color;
@@ -64,6 +70,16 @@ out vec2 v_uv1;
 out vec4 v_color;
 
 void main() {
+#ifdef MB_MORPH  // the transform below reads the morphed attributes under the inputs' names
+  vec3 m_position = morphPosition(a_position);
+  vec3 m_normal = morphNormal(a_normal);
+#ifndef MB_NO_TANGENT
+  vec4 m_tangent = vec4(morphTangent(a_tangent.xyz), a_tangent.w);
+#endif
+#define a_position m_position
+#define a_normal m_normal
+#define a_tangent m_tangent
+#endif
   // The transform itself is matrix_transform.glsl's (the source `motorbench ops` counts and
   // `motorbench bench` times); main() adds the varyings' perspective divide and normalisation.
 #ifdef SKINNED

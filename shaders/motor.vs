@@ -31,8 +31,18 @@
 //                     palette only; compact positions dequantised per vertex (u_Dequant)
 //   MB_INSTANCED      motor and scale per instance (vertex attributes, divisor 1) instead of
 //                     per draw: EXT_mesh_gpu_instancing / --instances
+//   MB_MORPH          morph targets (morph.glsl), without MB_COMPACT: the position and the
+//                     tangent rotor morphed in object space before the skin and the motor. The
+//                     frame by method (a) of motor_transform.glsl (deltas: position, normal,
+//                     tangent); with MB_MORPH_ROTOR by method (b) (deltas: position, rotor)
 #include "pga.glsl"
 #include "motor_transform.glsl"
+#ifdef MB_MORPH
+#if defined(MB_COMPACT)
+#error "MB_MORPH is not built for the compact vertex"
+#endif
+#include "morph.glsl"
+#endif
 
 // motor_cf's programs: MB_COMPACT + MB_SIGNED_ROTOR, with MB_FRAGMENT_ROTOR or MB_SCALE_FALLBACK.
 #if defined(MB_FRAGMENT_ROTOR) && (!defined(MB_SIGNED_ROTOR) || defined(MB_SCALE_FALLBACK))
@@ -116,6 +126,21 @@ out vec2 v_uv1;
 out vec4 v_color;
 
 void main() {
+#ifdef MB_MORPH  // the transform below reads the morphed attributes under the inputs' names
+  vec3 m_position = morphPosition(a_position);
+  vec4 m_tangentRotor = a_tangentRotor;
+#ifdef MB_MORPH_ROTOR
+  if (u_MorphNormal > 0)
+    m_tangentRotor = renormaliseRotor(morphVec4(a_tangentRotor, u_MorphNormal), motorHandedness(a_tangentRotor));
+#else
+  if (u_MorphNormal > 0 || u_MorphTangent > 0) {
+    mat2x3 m_frame = rotorFrame(a_tangentRotor);
+    m_tangentRotor = rotorFromFrame(morphNormal(m_frame[0]), morphTangent(m_frame[1]), motorHandedness(a_tangentRotor));
+  }
+#endif
+#define a_position m_position
+#define a_tangentRotor m_tangentRotor
+#endif
 #ifdef MB_INSTANCED
   motor toWorld = motor(a_instanceWorld0, a_instanceWorld1);
 #else

@@ -107,6 +107,49 @@ mat3x4 motorSkinnedVertexReference(motor toWorld, motor j0, motor j1, motor j2, 
                           position, tangentRotor);
 }
 
+// ---- morph targets (issue 37; the delta sums themselves are morph.glsl's) -------------------
+// glTF's deltas are normal and tangent deltas; the motor vertex carries a tangent rotor. Two
+// ways to morph it, both in object space before the skin or the motor:
+//  (a) frame: the rotor's unit normal and tangent (rotorFrame), plus the weighted deltas, back
+//      to a rotor per vertex (rotorFromFrame). Exact: the frame the matrix pipeline shades.
+//  (b) rotor: per target a rotor delta made at load (the morphed frame's rotor minus the base
+//      rotor, in its hemisphere), blended with the weights and renormalised (renormaliseRotor).
+//      4 floats per target instead of 6; a linear blend of rotors is not the rotor of the
+//      blended frame, so it is exact only at weights 0 and 1 of a single target.
+
+// The object-space unit normal (column 0) and tangent (column 1) a unit tangent rotor encodes.
+mat2x3 rotorFrame(vec4 rotor) {
+  mat2x3 nt = extractNormalTangent(motor(rotor, vec4(0.0)));
+  return mat2x3(nt[0] * 2.0, nt[1] * 2.0);
+}
+
+// A rotor of any length back to unit length with its scalar's sign set to `handedness` (+1 /
+// -1, motorHandedness's rule: a rotor and its negation are the same frame).
+vec4 renormaliseRotor(vec4 rotor, float handedness) {
+  float flip = (rotor.x < 0.0) == (handedness < 0.0) ? 1.0 : -1.0;
+  return rotor * (flip * inversesqrt(dot(rotor, rotor)));
+}
+
+// The tangent rotor of the frame (normal, tangent), neither unit nor orthogonal (Gram-Schmidt,
+// the normal wins), carrying `handedness`: encodeTangentRotor's construction
+// (pipelines/motor/companion.h; the largest of the trace and the diagonal picks the formula).
+vec4 rotorFromFrame(vec3 normal, vec3 tangent, float handedness) {
+  vec3 n = normalize(normal);
+  vec3 t = normalize(tangent - n * dot(n, tangent));
+  vec3 b = cross(n, t);  // the columns are t, b, n
+  float tr = t.x + b.y + n.z;
+  vec4 r;
+  if (tr > 0.0)
+    r = vec4(tr + 1.0, n.y - b.z, t.z - n.x, b.x - t.y);
+  else if (t.x > b.y && t.x > n.z)
+    r = vec4(n.y - b.z, 1.0 + t.x - b.y - n.z, t.y + b.x, t.z + n.x);
+  else if (b.y > n.z)
+    r = vec4(t.z - n.x, t.y + b.x, 1.0 + b.y - t.x - n.z, b.z + n.y);
+  else
+    r = vec4(b.x - t.y, t.z + n.x, b.z + n.y, 1.0 + n.z - t.x - b.y);
+  return renormaliseRotor(r, handedness);
+}
+
 // World to clip: the camera motor (world -> view, camera looking down +z with x mirrored, the
 // convention of pga.glsl's project()) and the perspective projection. With the same near,
 // far, vertical fov and aspect this equals glm::perspective * view (GL depth range -1..1).

@@ -25,6 +25,12 @@ void uniform1f(GLint loc, float v, uint64_t& counter) {
   counter += sizeof(float);
 }
 
+void uniform1fv(GLint loc, int count, const float* v, uint64_t& counter) {
+  if (loc < 0 || count <= 0) return;
+  glUniform1fv(loc, count, v);
+  counter += size_t(count) * sizeof(float);
+}
+
 void uniform3f(GLint loc, const float* v, uint64_t& counter) {
   if (loc < 0) return;
   glUniform3fv(loc, 1, v);

@@ -28,6 +28,7 @@ GLuint createBuffer(GLenum target, const std::vector<T>& v, uint64_t& counter,
 
 void uniform1i(GLint loc, int v, uint64_t& counter);
 void uniform1f(GLint loc, float v, uint64_t& counter);
+void uniform1fv(GLint loc, int count, const float* v, uint64_t& counter);  // float[count]
 void uniform3f(GLint loc, const float* v, uint64_t& counter);   // one vec3
 void uniform4f(GLint loc, const float* v, uint64_t& counter);   // one vec4
 void uniform4fv(GLint loc, int count, const float* v, uint64_t& counter);

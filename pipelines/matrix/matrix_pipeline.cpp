@@ -8,7 +8,9 @@
 // variant draws the others. Skinning: SkinSpace::Reference by default (the Sample Viewer's);
 // WorldPalette on request (configure()). Instanced nodes (Node::instances): the same two
 // matrices per instance, node world * instance composed per frame (MB_INSTANCED,
-// pipelines/gl/instance_stream.h: 128 bytes per instance).
+// pipelines/gl/instance_stream.h: 128 bytes per instance). Morph targets: the MB_MORPH variants
+// (shaders/morph.glsl) for draws whose node has a non-zero weight, the glTF deltas as they are
+// (pipelines/gl/morph_buffers.h); instanced draws are drawn unmorphed.
 #include "pipelines/matrix/matrix_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -17,6 +19,7 @@
 #include "pipelines/gl/frame_vertices.h"
 #include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/instance_stream.h"
+#include "pipelines/gl/morph_buffers.h"
 #include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
@@ -50,6 +53,8 @@ private:
 
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][no tangent]
+  std::unique_ptr<gl::Program> morphing_[2][2];  // the same with MB_MORPH (scenes with targets)
+  gl::MorphBuffers morph_;
   std::unique_ptr<gl::Program> instanced_[2];    // MB_INSTANCED [no tangent]
   std::vector<std::vector<glm::mat4>> instanceMatrices_;  // per node: trsMatrix(instance)
   gl::InstanceStream instances_;
@@ -81,6 +86,13 @@ Status MatrixPipeline::prepare(const Scene& scene) {
       if (!program) return Status::fail(program.error());
       programs_[skinned][noTangent] = program.take();
       if (skinned) programs_[skinned][noTangent]->bindStorageBlock("JointPalette", 0);
+      if (!gl::maxMorphTargets(scene)) continue;
+      for (const auto& d : gl::morphDefines(scene)) defines.push_back(d);
+      auto morphing = gl::Program::fromFiles("matrix.vs", "forward.fs", defines);
+      if (!morphing) return Status::fail(morphing.error());
+      morphing_[skinned][noTangent] = morphing.take();
+      if (skinned) morphing_[skinned][noTangent]->bindStorageBlock("JointPalette", 0);
+      morphing_[skinned][noTangent]->bindStorageBlock("MorphDeltas", gl::kMorphBinding);
     }
   instanceMatrices_.assign(scene.nodes.size(), {});
   for (size_t n = 0; n < scene.nodes.size(); ++n)
@@ -103,6 +115,7 @@ Status MatrixPipeline::prepare(const Scene& scene) {
   }
   auto t0 = gl::Clock::now();
   geometry_.upload(scene, gl::floatFrameFormat, stats_);  // variant 1: no tangent
+  morph_.upload(scene, gl::packFrameDeltas, stats_);
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
   prepareMatrixPose(scene, work_);
@@ -117,6 +130,7 @@ void MatrixPipeline::update(const AnimState& state) {
   auto t0 = gl::Clock::now();
   PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
   matrix::poseScene(*scene_, state, worldPalette_, work_, pose_, clock);
+  morph_.update(*scene_, state);
   stats_.updateMs = gl::msSince(t0);
 }
 
@@ -154,6 +168,7 @@ void MatrixPipeline::render(const View& view) {
   if (!scene_) return;
   stats_.uniformBytesPerFrame = 0;
   stats_.draws = 0;
+  stats_.morphDraws = 0;
   stats_.drawnVertices = 0;
   uploadPalettes();
   streamInstances();
@@ -165,12 +180,15 @@ void MatrixPipeline::render(const View& view) {
   // Per-frame uniforms go to a program when the frame first draws with it (unused variants
   // upload nothing, so uniformBytesPerFrame counts what a frame needs).
   // skinned -1: the Bezier patch program (matrix_patch.vs); 2: instanced (MB_INSTANCED).
-  bool frameSet[4][2] = {};
-  auto useProgram = [&](int skinned, int noTangent) -> const gl::Program& {
-    gl::Program& p = skinned < 0 ? *patch_ : skinned == 2 ? *instanced_[noTangent] : *programs_[skinned][noTangent];
+  bool frameSet[4][2][2] = {};
+  auto useProgram = [&](int skinned, int noTangent, bool morph = false) -> const gl::Program& {
+    gl::Program& p = skinned < 0    ? *patch_
+                     : skinned == 2 ? *instanced_[noTangent]
+                     : morph        ? *morphing_[skinned][noTangent]
+                                    : *programs_[skinned][noTangent];
     p.use();
-    if (!frameSet[skinned + 1][noTangent]) {
-      frameSet[skinned + 1][noTangent] = true;
+    if (!frameSet[skinned + 1][noTangent][morph]) {
+      frameSet[skinned + 1][noTangent][morph] = true;
       gl::uniformMatrix4(p.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
                          stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
@@ -198,8 +216,14 @@ void MatrixPipeline::render(const View& view) {
       }
       continue;
     }
-    const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, g.variant == 1 ? 1 : 0);
+    const bool morph = !patch && morph_.active(d);
+    const gl::Program& program =
+        patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, g.variant == 1 ? 1 : 0, morph);
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
+    if (morph) {
+      morph_.bind(program, d, stats_.uniformBytesPerFrame);
+      ++stats_.morphDraws;
+    }
     const glm::mat4& model = pose_.world[size_t(d.node)];
     const glm::mat4& normal = pose_.normals[size_t(d.node)];
     gl::uniformMatrix4(program.uniform("u_ModelMatrix"), 1, glm::value_ptr(model), transformBytes);
@@ -218,6 +242,7 @@ void MatrixPipeline::render(const View& view) {
 
 void MatrixPipeline::release() {
   geometry_.release();
+  morph_.release();
   patches_.release();
   patch_.reset();
   palettes_.release();
@@ -225,6 +250,8 @@ void MatrixPipeline::release() {
   instances_.release();
   for (auto& p : instanced_) p.reset();
   for (auto& row : programs_)
+    for (auto& p : row) p.reset();
+  for (auto& row : morphing_)
     for (auto& p : row) p.reset();
   scene_ = nullptr;
 }

@@ -29,6 +29,9 @@
 // factors, a motor and a mat3 (+ its normal matrix); a skin whose palette is not one common
 // positive scale gets a motor and 24 floats per joint (binding 1). Counted in PipelineStats
 // (linearFallbackDraws, skinFallbackDraws, skinFallbackJoints, fallbackVertices).
+// Morph targets (issue 37): motor and motor_q draw a node with a non-zero weight with the
+// MB_MORPH variants, the rotor morphed by PipelineOptions::morph (Frame by default: exact;
+// morph_rotors.h); motor_c and motor_cf draw the base mesh (not built for the compact vertex).
 #include "pipelines/motor/motor_pipeline.h"
 
 #include <map>
@@ -46,6 +49,7 @@
 #include "pipelines/motor/motor_rig.h"
 #include "pipelines/motor/motor_q_vertices.h"
 #include "pipelines/motor/motor_vertices.h"
+#include "pipelines/motor/morph_rotors.h"
 #include "pipelines/scene/transform.h"
 
 namespace mb {
@@ -73,6 +77,7 @@ public:
   std::string name() const override { return variant_.name; }
   void configure(const PipelineOptions& options) override {
     referenceSkin_ = options.skinSpace == SkinSpace::Reference;
+    morphMethod_ = options.morph;
   }
   SkinSpace skinSpace() const override {
     return referenceSkin_ ? SkinSpace::Reference : SkinSpace::WorldPalette;
@@ -91,6 +96,7 @@ private:
                   const motor::JointPalette* palette, GLuint paletteBuffer, const gl::Program& program,
                   uint64_t& transformBytes, uint64_t& linearBytes, const glm::mat4* world = nullptr);
   void addVariantDefines(gl::Defines& defines, bool scaleFallback) const;
+  Status prepareMorph(const Scene& scene);
   void uploadSignedCompact(const Scene& scene);
   void release();
 
@@ -99,6 +105,9 @@ private:
   std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][scale fallback]
   std::unique_ptr<gl::Program> instanced_[2];    // MB_INSTANCED [scale fallback]
   std::unique_ptr<gl::Program> linear_[2];       // MB_LINEAR_FALLBACK [skinned]
+  std::unique_ptr<gl::Program> morphing_[2][3];  // MB_MORPH [skinned][scale fallback, 2: linear]
+  gl::MorphBuffers morph_;
+  MorphMethod morphMethod_ = MorphMethod::PipelineDefault;
   gl::PaletteBuffers linearBuffers_;             // per palette: the fallback's 24 floats per joint
   std::vector<std::vector<motor::ScaledMotor>> instanceMotors_;  // per node: fromTRS(instance)
   gl::InstanceStream instances_;
@@ -200,6 +209,7 @@ Status MotorPipeline::prepare(const Scene& scene) {
   } else {
     geometry_.upload(scene, interleave, {3, 4, 2}, stats_);  // position, tangent rotor, uv0
   }
+  if (Status m = prepareMorph(scene); !m) return m;
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
   update(AnimState{});
@@ -214,6 +224,7 @@ void MotorPipeline::update(const AnimState& state) {
   motor::RigCounts counts = rig_.bindCounts;
   PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
   motor::poseScene(*scene_, rig_, state, referenceSkin_, pose_, &counts, clock);
+  morph_.update(*scene_, state);
   stats_.updateMs = gl::msSince(t0);
   stats_.nonUniformScaleNodes = counts.nonUniformScaleNodes;
   stats_.negativeScaleNodes = counts.negativeScaleNodes;
@@ -265,6 +276,7 @@ void MotorPipeline::render(const View& view) {
   if (!scene_) return;
   stats_.uniformBytesPerFrame = 0;
   stats_.draws = 0;
+  stats_.morphDraws = 0;
   stats_.drawnVertices = 0;
   stats_.linearFallbackDraws = stats_.skinFallbackDraws = stats_.skinFallbackJoints = 0;
   stats_.fallbackVertices = 0;
@@ -278,15 +290,16 @@ void MotorPipeline::render(const View& view) {
   // upload nothing, so uniformBytesPerFrame counts what a frame needs).
   // skinned -1: the Bezier patch program (motor_patch.vs) of that scale form; 2: MB_INSTANCED.
   // fallback 2: MB_LINEAR_FALLBACK.
-  bool frameSet[4][3] = {};
-  auto useProgram = [&](int skinned, int fallback) -> const gl::Program& {
-    gl::Program& p = skinned < 0    ? *patchPrograms_[fallback]
-                     : skinned == 2 ? *instanced_[fallback]
+  bool frameSet[4][3][2] = {};
+  auto useProgram = [&](int skinned, int fallback, bool morph = false) -> const gl::Program& {
+    gl::Program& p = skinned < 0     ? *patchPrograms_[fallback]
+                     : skinned == 2  ? *instanced_[fallback]
+                     : morph         ? *morphing_[skinned][fallback]
                      : fallback == 2 ? *linear_[skinned]
-                                    : *programs_[skinned][fallback];
+                                     : *programs_[skinned][fallback];
     p.use();
-    if (!frameSet[skinned + 1][fallback]) {
-      frameSet[skinned + 1][fallback] = true;
+    if (!frameSet[skinned + 1][fallback][morph]) {
+      frameSet[skinned + 1][fallback][morph] = true;
       gl::uniform4fv(p.uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
       gl::uniform4f(p.uniform("u_ProjectionK"), &k[0], stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
@@ -326,8 +339,13 @@ void MotorPipeline::render(const View& view) {
     GLuint paletteBuffer = 0;
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = &pose_.palettes[i], paletteBuffer = paletteBuffers_[i];
+    const bool morph = !patch && !variant_.compact && morph_.active(d);
+    auto bindMorph = [&](const gl::Program& program) -> const gl::Program& {
+      if (morph) morph_.bind(program, d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
+      return program;
+    };
     if (palette ? palette->fallback : (!patch && rig_.general[size_t(d.node)])) {
-      drawLinear(d, g, prim, palette, paletteBuffer, useProgram(palette ? 1 : 0, 2), transformBytes,
+      drawLinear(d, g, prim, palette, paletteBuffer, bindMorph(useProgram(palette ? 1 : 0, 2, morph)), transformBytes,
                  transformScaleBytes);
       transforms += palette ? 0 : 1;
       continue;
@@ -344,7 +362,7 @@ void MotorPipeline::render(const View& view) {
       world = &folded;
     }
     const gl::Program& program = patch ? useProgram(-1, scale.fallback ? 1 : 0)
-                                       : useProgram(palette ? 1 : 0, scale.fallback ? 1 : 0);
+                                       : bindMorph(useProgram(palette ? 1 : 0, scale.fallback ? 1 : 0, morph));
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
     if (palette && variant_.compact) setDequant(program, d);
     // glTF: a skinned mesh ignores its node's transform, so with a world-space palette only
@@ -437,6 +455,29 @@ void MotorPipeline::addVariantDefines(gl::Defines& defines, bool scaleFallback) 
   if (variant_.fragmentRotor && !scaleFallback) defines.push_back({"MB_FRAGMENT_ROTOR", ""});
 }
 
+// The MB_MORPH programs and the deltas of the method chosen, for scenes with morph targets
+// (not for the compact vertex: its draws stay unmorphed).
+Status MotorPipeline::prepareMorph(const Scene& scene) {
+  if (variant_.compact || !gl::maxMorphTargets(scene)) return {};
+  for (int skinned = 0; skinned < 2; ++skinned)
+    for (int fallback = 0; fallback < 3; ++fallback) {
+      gl::Defines defines = gl::morphDefines(scene);
+      if (morphMethod_ == MorphMethod::Rotor) defines.push_back({"MB_MORPH_ROTOR", ""});
+      if (skinned) defines.push_back({"MB_SKINNED", ""});
+      if (skinned && referenceSkin_ && fallback < 2) defines.push_back({"MB_SKIN_REFERENCE", ""});
+      if (fallback == 1) defines.push_back({"MB_SCALE_FALLBACK", ""});
+      if (fallback == 2) defines.push_back({"MB_LINEAR_FALLBACK", ""});
+      auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
+      if (!program) return Status::fail(program.error());
+      morphing_[skinned][fallback] = program.take();
+      morphing_[skinned][fallback]->bindStorageBlock("MorphDeltas", gl::kMorphBinding);
+      if (skinned) morphing_[skinned][fallback]->bindStorageBlock("MotorJoints", 0);
+      if (skinned && fallback == 2) morphing_[skinned][fallback]->bindStorageBlock("MotorJointLinear", 1);
+    }
+  morph_.upload(scene, motor::morphPacker(morphMethod_), stats_);
+  return {};
+}
+
 // motor_cf's geometry: every primitive through the sign pass, which may add vertices; the
 // upload reads a scene of the split meshes (nodes and materials as `scene`'s).
 void MotorPipeline::uploadSignedCompact(const Scene& scene) {
@@ -470,6 +511,7 @@ void MotorPipeline::uploadSignedCompact(const Scene& scene) {
 
 void MotorPipeline::release() {
   geometry_.release();
+  morph_.release();
   patches_.release();
   for (auto& p : patchPrograms_) p.reset();
   paletteBuffers_.release();
@@ -479,6 +521,8 @@ void MotorPipeline::release() {
   for (auto& p : instanced_) p.reset();
   for (auto& p : linear_) p.reset();
   for (auto& row : programs_)
+    for (auto& p : row) p.reset();
+  for (auto& row : morphing_)
     for (auto& p : row) p.reset();
   scene_ = nullptr;
 }

@@ -17,12 +17,18 @@ glm::vec3 perpendicular(const glm::vec3& n) {
 
 }  // namespace
 
+VertexFrame vertexFrame(const Primitive& p, size_t v) {
+  VertexFrame f;
+  f.normal = v < p.normals.size() ? p.normals[v] : glm::vec3(0, 0, 1);
+  f.tangent = v < p.tangents.size() ? p.tangents[v] : glm::vec4(perpendicular(f.normal), 1.0f);
+  return f;
+}
+
 VertexStream interleaveVertices(const Primitive& p) {
   VertexStream out;
   out.data.reserve(p.positions.size() * kFloatsPerVertex);
   for (size_t v = 0; v < p.positions.size(); ++v) {
-    const glm::vec3 n = v < p.normals.size() ? p.normals[v] : glm::vec3(0, 0, 1);
-    const glm::vec4 t = v < p.tangents.size() ? p.tangents[v] : glm::vec4(perpendicular(n), 1.0f);
+    const auto [n, t] = vertexFrame(p, v);
     const companion::TangentRotor r = companion::encodeTangentRotor(n, glm::vec3(t), t.w);
     out.zeroScalarFrames += r.scalarWasZero;
     const glm::vec2 uv = v < p.uv0.size() ? p.uv0[v] : glm::vec2(0.0f);

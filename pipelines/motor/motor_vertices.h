@@ -15,6 +15,13 @@ struct VertexStream {
   int zeroScalarFrames = 0;   // frames whose rotor scalar part was exactly 0 (see companion.h)
 };
 
+// The frame of vertex v as interleaveVertices encodes it (absent streams filled as below).
+struct VertexFrame {
+  glm::vec3 normal;
+  glm::vec4 tangent;  // xyz + handedness w
+};
+VertexFrame vertexFrame(const Primitive& p, size_t v);
+
 // Interleaves `p`'s streams, converting (normal, tangent, w) to tangent rotors
 // (companion::encodeTangentRotor). Absent streams are filled as the matrix pipeline fills them,
 // so both pipelines shade the same frames: a missing tangent becomes

@@ -8,6 +8,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "pipelines/scene/instancing.h"
+#include "pipelines/scene/morph.h"
 #include "pipelines/scene/transform.h"
 
 
@@ -35,8 +36,9 @@ struct Bounds {
   bool empty() const { return lo.x > hi.x; }
 };
 
-// Adds the posed vertices of the mesh on node `n`.
-void addMesh(const Scene& scene, const std::vector<glm::mat4>& world, int n, Bounds& b) {
+// Adds the posed vertices of the mesh on node `n` (morphed by the node's `weights`).
+void addMesh(const Scene& scene, const std::vector<glm::mat4>& world, const std::vector<float>& weights, int n,
+             Bounds& b) {
   const Node& node = scene.nodes[size_t(n)];
   if (node.mesh < 0 || size_t(node.mesh) >= scene.meshes.size()) return;
   if (!node.instances.empty()) {  // never skinned: the corners of the mesh bounds per instance
@@ -67,7 +69,7 @@ void addMesh(const Scene& scene, const std::vector<glm::mat4>& world, int n, Bou
     bool skinned = skin && !joints.empty() && p.joints.size() == p.positions.size() &&
                    p.weights.size() == p.positions.size();
     for (size_t v = 0; v < p.positions.size(); ++v) {
-      glm::vec4 q(p.positions[v], 1.0f);
+      glm::vec4 q(morphedPosition(p, v, weights), 1.0f);
       if (!skinned) {
         b.add(glm::vec3(world[size_t(n)] * q));
         continue;
@@ -81,9 +83,10 @@ void addMesh(const Scene& scene, const std::vector<glm::mat4>& world, int n, Bou
   }
 }
 
-Bounds sceneBounds(const Scene& scene, const std::vector<glm::mat4>& world) {
+Bounds sceneBounds(const Scene& scene, const std::vector<glm::mat4>& world,
+                   const std::vector<std::vector<float>>& weights) {
   Bounds b;
-  for (int n : nodesInDrawOrder(scene)) addMesh(scene, world, n, b);
+  for (int n : nodesInDrawOrder(scene)) addMesh(scene, world, weights[size_t(n)], n, b);
   return b;
 }
 
@@ -131,7 +134,7 @@ View frameScene(const Scene& scene, const AnimState& state, float aspect, int ca
     }
   }
 
-  Bounds b = sceneBounds(scene, world);
+  Bounds b = sceneBounds(scene, world, sampleMorphWeights(scene, state));
   if (b.empty()) return view;
   glm::vec3 center = 0.5f * (b.lo + b.hi);
   float radius = 0.5f * glm::length(b.hi - b.lo) * (b.padded ? kSkinPadding : 1.0f);
