@@ -29,7 +29,9 @@ JOBS=${MB_FUZZ_JOBS:-$(nproc)}
 command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ not found (scripts/setup.sh installs clang)" >&2; exit 2; }
 if [ ! -f "$BUILD/CMakeCache.txt" ]; then
   mkdir -p "$BUILD"
-  CC=clang CXX=clang++ cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_FUZZ=ON >"$BUILD/configure.log" 2>&1 \
+  GENERATOR=()
+  command -v ninja > /dev/null && GENERATOR=(-G Ninja)
+  CC=clang CXX=clang++ cmake -S . -B "$BUILD" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_FUZZ=ON >"$BUILD/configure.log" 2>&1 \
     || { cat "$BUILD/configure.log" >&2; exit 2; }
 fi
 cmake --build "$BUILD" --target fuzz_loader fuzz_images fuzz_seeds -j "$JOBS"

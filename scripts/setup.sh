@@ -4,7 +4,7 @@
 set -euo pipefail
 
 PACKAGES=(
-  build-essential cmake pkg-config git
+  build-essential cmake ninja-build pkg-config git   # ninja: the scripts' generator (faster than make)
   clang libclang-rt-14-dev          # sanitizers and libFuzzer
   libglm-dev                        # matrix pipeline, test reference
   libtinygltf-dev nlohmann-json3-dev libstb-dev
