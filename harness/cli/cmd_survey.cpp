@@ -19,6 +19,7 @@
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
 #include "harness/cli/survey_probe.h"
+#include "harness/render/skin_reference.h"
 #include "harness/options/args.h"
 #include "harness/render/counter_glossary.h"
 #include "harness/render/gpu_option.h"
@@ -79,7 +80,7 @@ json tieJson(const std::vector<uint8_t>& mask, TieProbe probe) {
   std::vector<int64_t> set;
   for (size_t i = 0; i < mask.size(); ++i)
     if (mask[i]) set.push_back(int64_t(i));
-  return {{"pixels", set.size()}, {"renders", 2 * probe.pairs}, {"set", set}};
+  return {{"pixels", set.size()}, {"renders", tieRenders(probe)}, {"set", set}};
 }
 
 struct Shot {
@@ -160,6 +161,30 @@ int runSurvey(const std::vector<std::string>& argv) {
 
   std::vector<RgbaImage> base;  // the baseline's images, one per shot
   std::vector<std::vector<uint8_t>> ties;  // and their tie masks (tieMasks; rigid files)
+  // The skinned rule's reference for the motor family (skinned files): matrix drawing the pose
+  // skinned on the CPU by the motor blend (survey_skin_reference.h), one image per shot.
+  std::vector<RgbaImage> motorBlendBase;
+  if (skinned) {
+    json reference = {{"available", true}, {"why", nullptr}};
+    const std::vector<View> views = framings(scene, settings);  // the skinned scene's camera
+    for (size_t k = 0; k < settings.size(); ++k) {
+      PreSkinnedScene pre(*loaded, settings[k].anim);
+      if (!pre.available()) {
+        reference = {{"available", false}, {"why", pre.why()}};
+        motorBlendBase.clear();
+        break;
+      }
+      auto frame = drawFromViews(scene, baseline, {settings[k]}, {views[k]});
+      if (!frame) {
+        reference = {{"available", false}, {"why", frame.error()}};
+        motorBlendBase.clear();
+        break;
+      }
+      motorBlendBase.push_back(frame->front());
+      doc["frames"][k]["motorBlendReference"] = {{"drawnPixels", drawnPixels(frame->front())}};
+    }
+    doc["motorBlendReference"] = reference;
+  }
   // The 16-byte rule's references (rigid files, made at the first 16-byte pipeline): the
   // baseline's frames in the geometry view and their int16-cell tie masks.
   std::vector<RgbaImage> geometryBase;
@@ -205,6 +230,9 @@ int runSurvey(const std::vector<std::string>& argv) {
           f["psnr"] = m->rmse == 0.0 ? json(nullptr) : json(m->psnr);
           f["maxError"] = m->maxError;
         }
+        if (k < motorBlendBase.size())
+          if (auto mb = compareImages(motorBlendBase[k], frame->image))  // against the motor blend's reference
+            f["motorBlend"] = {{"identical", mb->rmse == 0.0}, {"psnr", mb->rmse == 0.0 ? json(nullptr) : json(mb->psnr)}};
         // The same judged outside the tie pixels: those set to the baseline's value.
         if (tie) {
           const std::vector<uint8_t> diff = differingMask(base[k], frame->image);

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "harness/render/render_frame.h"
+#include "pipelines/compact/compact_encoding.h"
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
 #include "pipelines/pipeline.h"
@@ -172,6 +173,35 @@ double jitterAmplitude(const std::vector<glm::vec3>& from, TieJitter jitter) {
 
 }  // namespace
 
+int tieRenders(TieProbe probe) { return 2 * probe.pairs + (probe.jitter == TieJitter::Int16Cell ? 1 : 0); }
+
+std::vector<View> framings(const Scene& scene, const std::vector<FrameSettings>& settings) {
+  std::vector<View> views;
+  for (const FrameSettings& f : settings) views.push_back(frameScene(scene, f.anim, float(f.width) / float(f.height), f.camera));
+  return views;
+}
+
+Result<std::vector<RgbaImage>> drawFromViews(const Scene& scene, const std::string& pipeline,
+                                             const std::vector<FrameSettings>& settings, const std::vector<View>& views) {
+  using R = Result<std::vector<RgbaImage>>;
+  auto ctx = gl::sharedContext();
+  if (!ctx) return R::fail(ctx.error());
+  std::unique_ptr<Pipeline> p = createPipeline(pipeline);
+  if (!p) return R::fail(pipeline + ": unknown or unimplemented pipeline");
+  if (Status ok = p->prepare(scene); !ok) return R::fail(ok.error());
+  std::vector<RgbaImage> images;
+  for (size_t k = 0; k < settings.size() && k < views.size(); ++k) {
+    const FrameSettings& f = settings[k];
+    auto fb = gl::Framebuffer::create(f.width, f.height);
+    if (!fb) return R::fail(fb.error());
+    p->update(f.anim);
+    (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
+    p->render(views[k]);
+    images.push_back(RgbaImage{f.width, f.height, (*fb)->readRgba()});
+  }
+  return images;
+}
+
 // The tie masks of every shot: the baseline pipeline drawn from the scene with probe.pairs x 2
 // jitters of its positions (each prepared once, posed and drawn per shot) against `base`, its
 // images of the scene. The positions are jittered in place (a copy would copy every texture)
@@ -186,8 +216,7 @@ Result<std::vector<std::vector<uint8_t>>> tieMasks(Scene& scene, const std::stri
   try {
     auto ctx = gl::sharedContext();
     if (!ctx) return R::fail(where + ctx.error());
-    std::vector<View> views;
-    for (const FrameSettings& f : settings) views.push_back(frameScene(scene, f.anim, float(f.width) / float(f.height), f.camera));
+    const std::vector<View> views = framings(scene, settings);  // the unjittered scene's: the baseline's camera
     std::vector<std::vector<glm::vec3>> original;
     for (const Mesh& mesh : scene.meshes)
       for (const Primitive& prim : mesh.primitives) original.push_back(prim.positions);
@@ -200,13 +229,23 @@ Result<std::vector<std::vector<uint8_t>>> tieMasks(Scene& scene, const std::stri
           for (Primitive& prim : mesh.primitives) prim.positions = std::move(original[n++]);
       }
     } restore{scene, original};
-    for (int render = 0; render < 2 * probe.pairs; ++render) {
+    for (int render = 0; render < tieRenders(probe); ++render) {
       const double sign = render % 2 ? -1.0 : 1.0;  // antithetic: +j, then -j
+      const bool rounded = render == 2 * probe.pairs;  // Int16Cell's last render: the int16 grid itself
       size_t n = 0;
       for (size_t m = 0; m < scene.meshes.size(); ++m)
         for (size_t q = 0; q < scene.meshes[m].primitives.size(); ++q) {
           const std::vector<glm::vec3>& from = original[n++];
           std::vector<glm::vec3>& to = scene.meshes[m].primitives[q].positions;
+          if (rounded) {
+            const compact::PositionCube cube = compact::positionCube(from);
+            for (size_t i = 0; i < from.size(); ++i) {
+              int16_t code[4];
+              compact::quantizePosition(from[i], cube, code);
+              to[i] = compact::dequantizePosition(code, cube);
+            }
+            continue;
+          }
           const double amplitude = jitterAmplitude(from, probe.jitter);
           const uint64_t prim = uint64_t(m) << 20 | uint64_t(q);
           for (size_t i = 0; i < from.size(); ++i)
@@ -216,19 +255,10 @@ Result<std::vector<std::vector<uint8_t>>> tieMasks(Scene& scene, const std::stri
               to[i][c] = float(double(from[i][c]) + sign * amplitude * u);
             }
         }
-      std::unique_ptr<Pipeline> p = createPipeline(baseline);
-      if (!p) return R::fail(where + "unknown or unimplemented pipeline");
-      if (Status ok = p->prepare(scene); !ok) return R::fail(where + ok.error());
+      auto images = drawFromViews(scene, baseline, settings, views);
+      if (!images) return R::fail(where + images.error());
       for (size_t k = 0; k < settings.size(); ++k) {
-        const FrameSettings& f = settings[k];
-        auto fb = gl::Framebuffer::create(f.width, f.height);
-        if (!fb) return R::fail(where + fb.error());
-        p->update(f.anim);
-        const View view = views[k];  // the framing of the unjittered scene: the baseline's camera
-        (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
-        p->render(view);
-        const RgbaImage img{f.width, f.height, (*fb)->readRgba()};
-        const std::vector<uint8_t> d = differingMask(base[k], img);
+        const std::vector<uint8_t> d = differingMask(base[k], (*images)[k]);
         for (size_t i = 0; i < d.size(); ++i) masks[k][i] |= d[i];
       }
     }

@@ -47,16 +47,28 @@ enum class TieJitter {
   // rounding by which two correct float pipelines differ (rigid rule).
   FloatRounding,
   // To a corner of its int16 quantisation cell, +-half the step h/32767 of the 16-byte
-  // pipelines' positions (h: the primitive's largest half side): what the quantised positions
-  // leave undetermined (16-byte rule).
+  // pipelines' positions (h: the primitive's largest half side), and in one more render to the
+  // int16 grid point the 16-byte pipelines store (compact_encoding.h): what the quantised
+  // positions leave undetermined (16-byte rule).
   Int16Cell,
 };
 struct TieProbe {
   TieJitter jitter;
   int pairs;  // antithetic pairs of renders (+j, -j) per frame
 };
+// The baseline's renders per frame: the pairs, plus the int16 grid render for Int16Cell.
+int tieRenders(TieProbe probe);
 constexpr TieProbe kFloatTies{TieJitter::FloatRounding, 1};
 constexpr TieProbe kInt16Ties{TieJitter::Int16Cell, 2};
+
+// The automatic framing of each frame (frameScene with its animation, aspect and camera), as
+// renderFrame frames it.
+std::vector<View> framings(const Scene& scene, const std::vector<FrameSettings>& settings);
+
+// Every frame of `settings` drawn by `pipeline` (prepared once) from `views`, one per frame, not
+// framed anew: a scene changed in place (jittered, pre-skinned) seen by the unchanged scene's camera.
+Result<std::vector<RgbaImage>> drawFromViews(const Scene& scene, const std::string& pipeline,
+                                             const std::vector<FrameSettings>& settings, const std::vector<View>& views);
 
 // The tie masks of every frame: the pixels `baseline` draws differently from `base` (its images
 // of the unjittered scene, one per `settings`) in any of the probe's jittered renders. The
