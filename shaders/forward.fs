@@ -120,14 +120,16 @@ vec3 shadingNormal() {
 
 void main() {
   vec4 base = u_BaseColorFactor * v_color;
-  if (u_BaseColorUV >= 0) base *= texture(u_BaseColorTexture, uvSet(u_BaseColorUV, u_BaseColorUVTransform));
-  if (u_AlphaMode == 1 && base.a < u_AlphaCutoff) discard;
 #ifdef MB_GEOMETRY_VIEW
-  // The geometry view (survey, corpus-check's 16-byte rule): the base colour alone, no frame and
-  // no light, so that only positions, uv and vertex colour decide a pixel.
+  // The geometry view (survey, corpus-check's 16-byte rule): the material's base colour factor and
+  // the vertex colour alone, no texture, no frame, no light, so that positions decide the pixels
+  // (the 16-byte vertex's half-float uv moves sharp texel edges by a texel or two, which is not a
+  // position error).
   o_color = vec4(linearToSrgb(base.rgb), u_AlphaMode == 2 ? base.a : 1.0);
   return;
 #endif
+  if (u_BaseColorUV >= 0) base *= texture(u_BaseColorTexture, uvSet(u_BaseColorUV, u_BaseColorUVTransform));
+  if (u_AlphaMode == 1 && base.a < u_AlphaCutoff) discard;
 
   float metallic = u_MetallicFactor, roughness = u_RoughnessFactor;
   if (u_MetallicRoughnessUV >= 0) {
