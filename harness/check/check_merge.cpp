@@ -51,7 +51,9 @@ CheckItem itemFromJson(const json& e) {
   it.outcome = outcomeFromName(e.value("outcome", ""));
   it.compared = e.contains("metrics");
   if (it.compared) it.metrics = metricsFromJson(e["metrics"]);
+  if (it.compared) it.flip = flipFromJson(e["metrics"].value("flip", json()));
   it.expected = e.value("expected", ""), it.actual = e.value("actual", ""), it.diff = e.value("diff", "");
+  it.flipMap = e.value("flipMap", "");
   return it;
 }
 
@@ -95,7 +97,8 @@ int mergeCheckRuns(const std::vector<std::string>& dirs, const std::string& outD
   for (const std::string& scene : parts[0].inputs)
     for (const auto& [e, dir] : byScene[scene]) {
       run.items.push_back(itemFromJson(e));
-      for (const std::string* f : {&run.items.back().expected, &run.items.back().actual, &run.items.back().diff})
+      const CheckItem& it = run.items.back();
+      for (const std::string* f : {&it.expected, &it.actual, &it.diff, &it.flipMap})
         if (!f->empty()) fs::copy_file(fs::path(dir) / *f, fs::path(outDir) / *f, fs::copy_options::overwrite_existing, ec);
     }
   int counts[4] = {0, 0, 0, 0};

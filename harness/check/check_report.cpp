@@ -15,13 +15,13 @@ namespace {
 
 using report::html;
 
-std::string metricsText(const ImageMetrics& m) {
+std::string metricsText(const ImageMetrics& m, const FlipResult& flip) {
   if (m.rmse == 0.0) return "identical";
   char buf[200];
   std::snprintf(buf, sizeof buf, "PSNR %.2f dB, max %.0f/255 at (%d,%d), >1/255 %.3f%%, >4/255 %.3f%%",
                 m.psnr, std::round(m.maxError * 255.0), m.maxX, m.maxY, 100 * m.fractionOver1,
                 100 * m.fractionOver4);
-  return buf;
+  return std::string(buf) + "; " + flipText(flip);
 }
 
 std::string image(const std::string& file, const char* caption) {
@@ -44,7 +44,7 @@ const char* outcomeName(CheckItem::Outcome o) {
 
 std::string consoleLine(const CheckItem& it) {
   std::string s = std::string(outcomeName(it.outcome)) + "  " + it.file;
-  if (it.compared) s += "  [" + it.level + "] " + metricsText(it.metrics);
+  if (it.compared) s += "  [" + it.level + "] " + metricsText(it.metrics, it.flip);
   if (!it.reason.empty()) s += "  -- " + it.reason;
   return s;
 }
@@ -75,9 +75,10 @@ Status writeCheckReport(const std::string& dir, const CheckRun& run) {
     any = true;
     const char* name = outcomeName(it.outcome);
     h += "<h3 class=\"" + std::string(name) + "\">" + name + " " + html(it.file) + "</h3><p>" +
-         html(it.reason) + (it.compared ? "<br>[" + html(it.level) + "] " + html(metricsText(it.metrics)) : "") +
+         html(it.reason) + (it.compared ? "<br>[" + html(it.level) + "] " + html(metricsText(it.metrics, it.flip)) : "") +
          "</p>\n<table><tr>" + image(it.expected, "expected (golden)") +
          image(it.actual, "actual") + image(it.diff, "diff (blue 1 step .. white 64+)") +
+         image(it.flipMap, "LDR-FLIP (magma: black 0 .. yellow 1)") +
          "</tr></table>\n";
   }
   if (!any) h += "<p>none</p>\n";
@@ -88,7 +89,7 @@ Status writeCheckReport(const std::string& dir, const CheckRun& run) {
     const char* name = outcomeName(it.outcome);
     h += "<tr><td class=\"" + std::string(name) + "\">" + name + "</td><td class=\"l\">" +
          html(it.file) + "</td><td>" + html(it.level) + "</td><td class=\"l\">" +
-         (it.compared ? html(metricsText(it.metrics)) : html(it.reason)) + "</td></tr>\n";
+         (it.compared ? html(metricsText(it.metrics, it.flip)) : html(it.reason)) + "</td></tr>\n";
   }
   h += "</table></body></html>\n";
 
@@ -107,8 +108,8 @@ Status writeCheckReport(const std::string& dir, const CheckRun& run) {
     nlohmann::json e = {{"file", it.file}, {"scene", it.scene}, {"pipeline", it.pipeline},
                         {"pose", it.pose}, {"outcome", outcomeName(it.outcome)},
                         {"level", it.level}, {"reason", it.reason}, {"expected", it.expected},
-                        {"actual", it.actual}, {"diff", it.diff}};
-    if (it.compared) e["metrics"] = toJson(it.metrics);
+                        {"actual", it.actual}, {"diff", it.diff}, {"flipMap", it.flipMap}};
+    if (it.compared) e["metrics"] = toJson(it.metrics, it.flip);
     j["images"].push_back(e);
   }
   const std::string jsonPath = (fs::path(dir) / "check.json").string();

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "harness/render/flip.h"
 #include "harness/render/image_metrics.h"
 #include "pipelines/result.h"
 
@@ -21,7 +22,8 @@ struct CheckItem {
   ImageMetrics metrics;
   std::string reason;  // why it warned, failed or errored; "" on a clean pass
   // Files written into the output folder, relative to it ("" when not written).
-  std::string expected, actual, diff;
+  std::string expected, actual, diff, flipMap;
+  FlipResult flip;  // LDR-FLIP of the actual frame against the golden (summary; no map kept)
 };
 
 struct CheckRun {

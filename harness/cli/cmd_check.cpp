@@ -21,6 +21,7 @@
 #include "harness/cli/command.h"
 #include "harness/check/golden.h"
 #include "harness/check/golden_device.h"
+#include "harness/render/flip.h"
 #include "harness/render/gpu_option.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/gl/context.h"
@@ -95,6 +96,10 @@ void checkOne(const Scene& scene, const golden::Manifest& manifest,
   if (!metrics) return error(metrics.error());
   item.compared = true;
   item.metrics = *metrics;
+  auto flip = computeFlip(*expected, frame->image);  // the golden is the reference
+  if (!flip) return error(flip.error());
+  item.flip = *flip;
+  item.flip.error.clear();  // the summary is kept; the map is written below for a failure
   Verdict failed = judge(*expected, frame->image, level.fail);
   Thresholds warnAt{level.warn, level.warnPercent, std::numeric_limits<double>::infinity()};
   Verdict warned = judge(*expected, frame->image, warnAt);
@@ -116,6 +121,9 @@ void checkOne(const Scene& scene, const golden::Manifest& manifest,
   }
   Status d = writeImage((fs::path(sel.outDir) / item.diff).string(), diffHeatmap(*expected, frame->image));
   if (!d) return error(d.error());
+  item.flipMap = stem + ".flip.png";
+  if (Status f = writeImage((fs::path(sel.outDir) / item.flipMap).string(), flipErrorImage(*flip)); !f)
+    return error(f.error());
 }
 
 int check(const Selection& sel) {
@@ -128,7 +136,7 @@ int check(const Selection& sel) {
   // Images of an earlier run would pass for this run's failures: remove them (only ours).
   for (const auto& f : fs::directory_iterator(sel.outDir, ec)) {
     const std::string n = f.path().filename().string();
-    for (const char* suffix : {".actual.png", ".expected.png", ".diff.png"})
+    for (const char* suffix : {".actual.png", ".expected.png", ".diff.png", ".flip.png"})
       if (n.size() > std::strlen(suffix) && n.ends_with(suffix)) fs::remove(f.path(), ec);
   }
   CheckRun run;

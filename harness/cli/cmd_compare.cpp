@@ -1,6 +1,7 @@
 // motorbench compare SCENE [--pipelines A,B] [frame options] [--fail F --failpercent P
-//   --hardfail H] -o DIR: renders both, writes DIR/A.png, DIR/B.png, DIR/diff.png and
-// DIR/diff_legend.png and DIR/metrics.json, prints one summary line; exit 1 when the idiff
+//   --hardfail H] -o DIR: renders both, writes DIR/A.png, DIR/B.png, DIR/diff.png,
+// DIR/diff_legend.png, DIR/flip.png (the LDR-FLIP error map) and DIR/metrics.json, prints the
+// measured differences (PSNR, FLIP...) and one summary line; exit 1 when the idiff
 // thresholds are exceeded (or the drawn-pixel check fails). Units: --fail and --hardfail are
 // channel differences as a fraction of full scale (0..1; 1/255 = one byte step), --failpercent
 // a percentage of pixels (0..100).
@@ -17,6 +18,7 @@
 #include "harness/options/args.h"
 #include "harness/render/counter_glossary.h"
 #include "harness/render/drawn_check.h"
+#include "harness/render/flip.h"
 #include "harness/render/frame_notes.h"
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
@@ -94,7 +96,7 @@ int runCompare(const std::vector<std::string>& argv) {
     if (args.positional().size() == 1)
       if (Status ok = checkSceneSpec(args.positional()[0]); !ok) return fail(ok.error());
     if (!dir.empty())
-      if (Status ok = prepareOutputFolder("-o", dir, "A.png, B.png, diff.png, diff_legend.png, metrics.json"); !ok)
+      if (Status ok = prepareOutputFolder("-o", dir, "A.png, B.png, diff.png, diff_legend.png, flip.png, metrics.json"); !ok)
         return fail(ok.error());
   }
   auto cmd = parseSceneCommand(args, "DIR");
@@ -123,6 +125,8 @@ int runCompare(const std::vector<std::string>& argv) {
   commandNotes("compare", {"drawn on " + describeGl(frames[0].gl) + " (both pipelines: one process, one device)"});
   auto metrics = compareImages(frames[0].image, frames[1].image);
   if (!metrics) return fail(metrics.error());
+  auto flip = computeFlip(frames[0].image, frames[1].image);  // the first pipeline is the reference
+  if (!flip) return fail(flip.error());
   Verdict verdict = judge(frames[0].image, frames[1].image, t);
   const int64_t drawn[2] = {drawnPixels(frames[0].image), drawnPixels(frames[1].image)};
   // Skinned primitives drawn: skinned vertices on nodes the scene reaches (the report's vertexMix).
@@ -146,8 +150,11 @@ int runCompare(const std::vector<std::string>& argv) {
   Status d = writeImage((fs::path(dir) / "diff.png").string(),
                         diffHeatmap(frames[0].image, frames[1].image));
   if (!d) return fail(d.error());
-  Status legend = writeImage((fs::path(dir) / "diff_legend.png").string(), heatLegend());
+  std::string legendWarning;
+  Status legend = writeImage((fs::path(dir) / "diff_legend.png").string(), heatLegend(&legendWarning));
   if (!legend) return fail(legend.error());
+  if (!legendWarning.empty()) commandNotes("compare", {"warning: " + legendWarning});
+  if (Status f = writeImage((fs::path(dir) / "flip.png").string(), flipErrorImage(*flip)); !f) return fail(f.error());
 
   nlohmann::json j = {
       {"scene", scene.source},
@@ -155,6 +162,7 @@ int runCompare(const std::vector<std::string>& argv) {
       {"images", {names[0] + ".png", names[1] + ".png"}},
       {"diff", "diff.png"},
       {"diffLegend", heatLegendJson()},
+      {"flipMap", "flip.png"},  // magma: black 0 .. light yellow 1
       {"settings", toJson(settings)},
       {"animation", settings.anim.anim < 0
                         ? nlohmann::json(nullptr)
@@ -165,7 +173,7 @@ int runCompare(const std::vector<std::string>& argv) {
       {"loaderFallbacks", loaderFallbackJson(scene)},
       {"view", toJson(frames[0].view)},
       {"gl", toJson(frames[0].gl)},  // both images: one device (the equivalence figures)
-      {"metrics", toJson(*metrics)},
+      {"metrics", toJson(*metrics, *flip)},
       {"drawnPixels", {{names[0], drawn[0]}, {names[1], drawn[1]}, {"total", int64_t(metrics->width) * metrics->height}}},
       {"skinningMethods", {{names[0], report::skinBlendOf(names[0])}, {names[1], report::skinBlendOf(names[1])},
                            {"methodsDiffer", skinnedDrawn && methodsDiffer(names[0], names[1])},
@@ -192,6 +200,8 @@ int runCompare(const std::vector<std::string>& argv) {
   std::printf("  drawn pixels (not background): %s %lld, %s %lld of %lld\n", names[0].c_str(), (long long)drawn[0],
               names[1].c_str(), (long long)drawn[1], (long long)metrics->width * metrics->height);
   for (const std::string& line : metricLines(*metrics)) std::printf("  %s\n", line.c_str());
+  std::printf("  %s (LDR-FLIP, 0..1, %.0f pixels per degree; map: flip.png)\n", flipText(*flip).c_str(),
+              flip->pixelsPerDegree);
   if (!skinning.empty()) std::printf("  note: %s\n", skinning.c_str());
   // Two background-only frames agree trivially: nothing was compared.
   if (nothingDrawn && !thresholdsGiven) {  // nothing judged, but said
@@ -219,13 +229,13 @@ MB_COMMAND(compare, "compare",
            "SCENE [--pipelines matrix,motor] [--anim A] [--time T] [--anim2 B --time2 T2 --blend W] "
            "[--camera C] [--size WxH] [--instances N] [--fail F(0..1)] [--failpercent P(0..100)] [--hardfail H(0..1)] "
            "[--gpu auto|llvmpipe|N] -o DIR",
-           "render a scene with two pipelines; write both images, diff.png, diff_legend.png and "
-           "metrics.json; exit 1 when a threshold given is exceeded (F, H: channel difference / 255) or one image "
+           "render a scene with two pipelines; write both images, diff.png, diff_legend.png, flip.png and "
+           "metrics.json (PSNR, LDR-FLIP); exit 1 when a threshold given is exceeded (F, H: channel difference / 255) or one image "
            "is empty or the drawn pixels differ by more than 1 %",
            mb::runCompare);
 MB_COMMAND_HELP(compare, "compare",
                "  SCENE              a .gltf/.glb file or a built-in scene name\n"
-               "  -o, --output DIR   a folder (created): A.png, B.png, diff.png, diff_legend.png, metrics.json\n"
+               "  -o, --output DIR   a folder (created): A.png, B.png, diff.png, diff_legend.png, flip.png, metrics.json\n"
                "  --pipelines A,B    the two pipelines (default matrix,motor; curved scenes: their space's pair)\n"
                "  --fail F           a channel difference (fraction of full scale, 0..1; 1/255 = one byte step)\n"
                "  --failpercent P    % of pixels (0..100) allowed over F\n"

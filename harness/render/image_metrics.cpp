@@ -205,17 +205,27 @@ const std::vector<int>& heatLegendSteps() {
   return steps;
 }
 
-RgbaImage heatLegend() {
-  const int block = 32;
+RgbaImage heatLegend(std::string* warning) {
+  const int block = 32, labels = 16;
   const auto& steps = heatLegendSteps();
-  RgbaImage img{block * int(steps.size()), block, {}};
+  RgbaImage img{block * int(steps.size()), block + labels, {}};
   img.rgba.resize(size_t(img.width) * size_t(img.height) * 4);
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) {
-      const auto rgb = heatColour(steps[size_t(x / block)]);
+      const auto rgb = y < block ? heatColour(steps[size_t(x / block)]) : std::array<uint8_t, 3>{32, 32, 32};
       uint8_t* o = &img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4];
       o[0] = rgb[0], o[1] = rgb[1], o[2] = rgb[2], o[3] = 255;
     }
+  // Each block's difference in byte steps (/255) under it, white on dark grey.
+  OIIO::ImageBuf buf = wrap(img);
+  bool drawn = true;
+  for (size_t i = 0; i < steps.size(); ++i) {
+    const std::string text = std::to_string(steps[i]) + (i + 1 == steps.size() ? "+" : "");
+    drawn = drawn && OIIO::ImageBufAlgo::render_text(buf, int(i) * block + block / 2, img.height - 3, text, 13,
+                                                     "DejaVuSans", {1.0f, 1.0f, 1.0f, 1.0f}, OIIO::ImageBufAlgo::TextAlignX::Center);
+  }
+  if (!drawn && warning)
+    *warning = "diff_legend.png: no font for its numbers (" + buf.geterror() + "; install fonts-dejavu-core): colours only";
   return img;
 }
 
@@ -229,7 +239,7 @@ nlohmann::json heatLegendJson() {
           {"scale", "a changed pixel is coloured by its largest channel difference in byte steps (1/255), on a "
                     "log2 scale: 1 step blue, 2 purple, 4 red, 8 orange, 16 yellow, 32 pale yellow, 64 and more white"},
           {"stops", stops},
-          {"image", "diff_legend.png: one 32x32 block per stop, left to right"}};
+          {"image", "diff_legend.png: one 32x32 block per stop, left to right, its steps (/255) written under it"}};
 }
 
 Status checkImageOutput(const std::string& path, const std::string& option) {

@@ -74,10 +74,12 @@ RgbaImage diffHeatmap(const RgbaImage& a, const RgbaImage& b);
 // The heat map's colour for a largest channel difference of `steps` byte steps (>= 1).
 std::array<uint8_t, 3> heatColour(int steps);
 // The legend of diffHeatmap: one 32x32 block per stop of heatLegendSteps() (1, 2, 4, ... 64
-// steps), left to right; and the same as JSON (what unchanged pixels show, the scale, each
-// stop's steps, maxError and rgb) for metrics.json and the report.
+// steps), left to right, each with its number of steps written in a 16 px strip under it
+// ("64+" for the last; `warning` set when no font could be loaded: the colours alone); and the
+// same as JSON (what unchanged pixels show, the scale, each stop's steps, maxError and rgb) for
+// metrics.json and the report.
 const std::vector<int>& heatLegendSteps();
-RgbaImage heatLegend();
+RgbaImage heatLegend(std::string* warning = nullptr);
 nlohmann::json heatLegendJson();
 
 // Checks an image path for `option` (e.g. "-o") before anything is rendered: not a folder,

@@ -134,7 +134,7 @@ TEST(CliVisibility, CompareWritesTheHeatMapLegend) {
   auto legend = mb::readImage((dir / "diff_legend.png").string());
   ASSERT_TRUE(legend) << legend.error();
   ASSERT_EQ(legend->width, 32 * 7);
-  ASSERT_EQ(legend->height, 32);
+  ASSERT_EQ(legend->height, 32 + 16);  // the blocks, then their numbers (issue 36)
   auto pixel = [&](const mb::RgbaImage& img, int x, int y) {
     const uint8_t* p = &img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4];
     return std::vector<int>{p[0], p[1], p[2]};
@@ -146,6 +146,13 @@ TEST(CliVisibility, CompareWritesTheHeatMapLegend) {
     EXPECT_EQ(block, stops[i]["rgb"].get<std::vector<int>>()) << "block " << i;
     const int steps = stops[i]["steps"];
     if (stated.count(steps)) EXPECT_EQ(block, stated.at(steps)) << steps << " steps";
+  }
+  // Each block's number of steps written under it (issue 36): light text on the dark strip.
+  for (size_t i = 0; i < stops.size(); ++i) {
+    int light = 0;
+    for (int y = 32; y < 48; ++y)
+      for (int x = int(i) * 32; x < int(i) * 32 + 32; ++x) light += pixel(*legend, x, y)[0] > 160;
+    EXPECT_GT(light, 5) << "no number under block " << i;
   }
   // The diff's worst pixel has the legend colour of its difference when that is a stop.
   const int steps = int(std::lround(j["metrics"]["maxError"].get<double>() * 255));
