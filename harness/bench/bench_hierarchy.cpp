@@ -1,6 +1,8 @@
-// hierarchy: a scene-graph update of a deep hierarchy (kNodes nodes, parents before children,
-// mostly chains, so the depth is in the hundreds). Per frame and node: the local transform
-// from its animated TRS, composed with the parent's world transform.
+// hierarchy: a scene-graph update (parents before children) in three shapes: `hierarchy` deep
+// (kNodes nodes, mostly chains, the depth in the hundreds), `hierarchy_wide` (kNodes nodes, a
+// bushy tree a few levels deep) and `hierarchy_skeleton` (a real character's node tree from
+// ../shared/corpus-wide, in its rest pose; only where that folder is). Per frame and node: the local transform from its animated TRS, composed
+// with the parent's world transform.
 // Matrix: T R S as a mat4, parent * local with matrix_transform.glsl's matrixCompose (the full
 // mat4 product the Sample Viewer's GLM code does). Motor: T R as gp_tr of pga.glsl, uniform
 // scale tracked as one float (the parent's scale scales the local translation), gp_mm.
@@ -8,10 +10,11 @@
 // 4-lane product reads the local motor the loop has just built with scalar stores back as
 // vectors, a store-forwarding stall the pipelines' update does not have — their locals are
 // converted in an earlier pass. compose/lanes_motor times the product alone.)
-// simd_matrix / simd_motor: kernels/simd's hierarchy update (the same TRS, locals and products,
-// mat4x3 for the matrix side) level by level: the nodes of one depth are one SIMD batch, so
-// this chain-heavy hierarchy (about one node per level) runs mostly one lane at a time.
+// simd_matrix / simd_motor: kernels/simd's hierarchy update (the same TRS, locals and products)
+// as ozz-animation's local-to-model job: locals computed a full vector of nodes at a time, then
+// each node's product with its parent on 4-lane vectors, in the nodes' own order.
 #include <algorithm>
+#include <deque>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -19,11 +22,17 @@
 #include "harness/bench/bench_common.h"
 #include "harness/bench/bench_kernels.h"
 #include "kernels/simd/simd_kernels.h"
+#include "pipelines/scene/loader.h"
 
 namespace mb::bench {
 namespace {
 
 constexpr int kNodes = 1536;
+
+// The two shapes timed: deep (chains: three in four nodes continue the chain, the rest branch
+// off a recent node; depth in the hundreds) and wide (every node's parent drawn among the first
+// eighth of the nodes before it: a bushy tree a few levels deep, many siblings per parent).
+enum class Shape { Deep, Wide };
 
 struct Hierarchy {
   std::vector<int> parent;
@@ -35,27 +44,47 @@ struct Hierarchy {
   std::vector<PS::motor> motorWorld;
   std::vector<float> motorScale;
   std::vector<glm::mat4> glmWorld;
-  Hierarchy() {
+  explicit Hierarchy(Shape shape) {
     Rng r;
     std::vector<int> d(kNodes, 0);
     for (int i = 0; i < kNodes; ++i) {
-      // Three in four nodes continue the chain; the rest branch off a recent node.
-      parent.push_back(i == 0 ? -1 : r.index(4) ? i - 1 : std::max(0, i - 1 - r.index(16)));
+      if (shape == Shape::Wide) parent.push_back(i == 0 ? -1 : r.index(std::max(1, i / 8)));
+      else parent.push_back(i == 0 ? -1 : r.index(4) ? i - 1 : std::max(0, i - 1 - r.index(16)));
       d[size_t(i)] = i == 0 ? 0 : d[size_t(parent.back())] + 1;
       depth = std::max(depth, d[size_t(i)]);
       q.push_back(randomQuat(r));
       t.push_back(PS::vec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)));
       s.push_back(r.uniform(0.9f, 1.1f));
     }
-    matrixWorld.resize(kNodes), motorWorld.resize(kNodes), motorScale.resize(kNodes);
-    glmWorld.resize(kNodes);
+    allocate();
+  }
+  // A real skeleton: the node tree of a glTF file in its rest pose, parents first (the uniform
+  // scale: the x scale; the rest poses of characters are uniform).
+  explicit Hierarchy(const Scene& scene) {
+    std::vector<int> order, slot(scene.nodes.size(), -1), d;
+    for (size_t i = 0; i < scene.nodes.size(); ++i)
+      if (scene.nodes[i].parent < 0) order.push_back(int(i));
+    for (size_t k = 0; k < order.size(); ++k)  // breadth first: parents before children
+      for (int c : scene.nodes[size_t(order[k])].children) order.push_back(c);
+    for (size_t k = 0; k < order.size(); ++k) slot[size_t(order[k])] = int(k);
+    for (int i : order) {
+      const Node& n = scene.nodes[size_t(i)];
+      parent.push_back(n.parent < 0 ? -1 : slot[size_t(n.parent)]);
+      d.push_back(parent.back() < 0 ? 0 : d[size_t(parent.back())] + 1);
+      depth = std::max(depth, d.back());
+      const glm::quat r = n.local.rotation;
+      q.push_back({r.x, r.y, r.z, r.w});
+      t.push_back(PS::vec3(n.local.translation.x, n.local.translation.y, n.local.translation.z));
+      s.push_back(n.local.scale.x);
+    }
+    allocate();
+  }
+  size_t size() const { return parent.size(); }
+  void allocate() {
+    matrixWorld.resize(size()), motorWorld.resize(size()), motorScale.resize(size());
+    glmWorld.resize(size());
   }
 };
-
-Hierarchy& hierarchy() {
-  static Hierarchy h;
-  return h;
-}
 
 // T R S from a unit quaternion (x, y, z, w), translation and uniform scale, on shim floats.
 MS::mat4 trsMatrix(const Quat& q, const PS::vec3& t, float s) {
@@ -70,29 +99,28 @@ MS::mat4 trsMatrix(const Quat& q, const PS::vec3& t, float s) {
 
 // One update of the whole hierarchy per iteration: node(k, parent) sets node k's world
 // transform (parent < 0: a root), parents always first.
-template <class Node> [[gnu::flatten]] void hierarchyPass(benchmark::State& state, Node node) {
-  Hierarchy& h = hierarchy();
+template <class Node> [[gnu::flatten]] void hierarchyPass(benchmark::State& state, const Hierarchy& h, Node node) {
+  const size_t n = h.size();
+  const int* parent = h.parent.data();
   for (auto _ : state) {
-    for (size_t k = 0; k < size_t(kNodes); ++k) node(k, h.parent[k]);
+    for (size_t k = 0; k < n; ++k) node(k, parent[k]);
     benchmark::ClobberMemory();
   }
-  setThroughput(state, kNodes, 0, Size::InCache);
+  setThroughput(state, h.size(), 0, Size::InCache);
   state.counters["depth"] = h.depth;
 }
 
-void hierarchyMatrix(benchmark::State& state) {
-  Hierarchy& h = hierarchy();
+void hierarchyMatrix(benchmark::State& state, Hierarchy& h) {
   MS S;
-  hierarchyPass(state, [&](size_t k, int p) {
+  hierarchyPass(state, h, [&](size_t k, int p) {
     const MS::mat4 local = trsMatrix(h.q[k], h.t[k], h.s[k]);
     h.matrixWorld[k] = p < 0 ? local : S.matrixCompose(h.matrixWorld[size_t(p)], local);
   });
 }
 
-void hierarchyMotor(benchmark::State& state) {
-  Hierarchy& h = hierarchy();
+void hierarchyMotor(benchmark::State& state, Hierarchy& h) {
   PS P;
-  hierarchyPass(state, [&](size_t k, int p) {
+  hierarchyPass(state, h, [&](size_t k, int p) {
     const PS::motor T(PS::vec4(1.0f, 0.0f, 0.0f, 0.0f), PS::vec4(h.t[k] * -0.5f, 0.0f));
     const PS::motor local = P.gp_tr(T, PS::motor(rotorOf(h.q[k]), PS::vec4(0.0f)));
     if (p < 0) {
@@ -106,9 +134,8 @@ void hierarchyMotor(benchmark::State& state) {
   });
 }
 
-void hierarchyGlm(benchmark::State& state) {
-  Hierarchy& h = hierarchy();
-  hierarchyPass(state, [&](size_t k, int p) {
+void hierarchyGlm(benchmark::State& state, Hierarchy& h) {
+  hierarchyPass(state, h, [&](size_t k, int p) {
     glm::mat4 local = glm::mat4_cast(glm::quat(h.q[k].w, h.q[k].x, h.q[k].y, h.q[k].z));
     local[0] *= h.s[k], local[1] *= h.s[k], local[2] *= h.s[k];
     local[3] = glm::vec4(h.t[k].x, h.t[k].y, h.t[k].z, 1.0f);
@@ -117,54 +144,58 @@ void hierarchyGlm(benchmark::State& state) {
 }
 
 
-// The hierarchy grouped by depth (parents first), as planes for kernels/simd.
-struct LevelOrder {
-  size_t stride = planeStride(kNodes);
+// The hierarchy's TRS as planes for kernels/simd, in the nodes' own parents-first order.
+struct TrsPlanes {
+  size_t stride;
   std::vector<int32_t> parent;
-  std::vector<uint32_t> levelEnd;
-  AlignedVector<float> trs, world;  // 8 planes; 12 (affine) or 9 (motor + scale) planes
-  LevelOrder() : parent(kNodes), trs(8 * stride), world(12 * stride) {
-    const Hierarchy& h = hierarchy();
-    std::vector<int> depth(kNodes);
-    std::vector<size_t> order(kNodes), slot(kNodes);
-    for (size_t i = 0; i < size_t(kNodes); ++i) {
-      depth[i] = h.parent[i] < 0 ? 0 : depth[size_t(h.parent[i])] + 1;
-      order[i] = i;
-    }
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return depth[a] < depth[b]; });
-    for (size_t k = 0; k < size_t(kNodes); ++k) slot[order[k]] = k;
-    for (size_t k = 0; k < size_t(kNodes); ++k) {
-      const size_t i = order[k];
-      parent[k] = h.parent[i] < 0 ? -1 : int32_t(slot[size_t(h.parent[i])]);
-      if (k + 1 == size_t(kNodes) || depth[order[k + 1]] != depth[i]) levelEnd.push_back(uint32_t(k + 1));
-      const float v[8] = {h.q[i].x, h.q[i].y, h.q[i].z, h.q[i].w, h.t[i].x, h.t[i].y, h.t[i].z, h.s[i]};
+  AlignedVector<float> trs, world;  // 8 planes; 16 floats (affine) or 12 (motor) per node
+  explicit TrsPlanes(const Hierarchy& h)
+      : stride(planeStride(h.size())), parent(h.parent.begin(), h.parent.end()), trs(8 * stride),
+        world(h.size() * simd::kHierarchyAffineFloats) {
+    for (size_t k = 0; k < h.size(); ++k) {
+      const float v[8] = {h.q[k].x, h.q[k].y, h.q[k].z, h.q[k].w, h.t[k].x, h.t[k].y, h.t[k].z, h.s[k]};
       for (size_t c = 0; c < 8; ++c) trs[c * stride + k] = v[c];
     }
   }
 };
 
-template <bool kMotor> void hierarchySimd(benchmark::State& state) {
-  static LevelOrder l;
+template <bool kMotor> void hierarchySimd(benchmark::State& state, const Hierarchy& h, TrsPlanes& l) {
   const simd::ConstPlanes trs{l.trs.data(), l.stride};
-  const simd::Planes world{l.world.data(), l.stride};
   for (auto _ : state) {
-    if (kMotor) simd::hierarchyMotor(trs, l.parent.data(), l.levelEnd.data(), l.levelEnd.size(), world);
-    else simd::hierarchyAffine(trs, l.parent.data(), l.levelEnd.data(), l.levelEnd.size(), world);
+    if (kMotor) simd::hierarchyMotor(trs, l.parent.data(), h.size(), l.world.data());
+    else simd::hierarchyAffine(trs, l.parent.data(), h.size(), l.world.data());
     benchmark::ClobberMemory();
   }
   setSimdLabel(state);
-  setThroughput(state, kNodes, 0, Size::InCache);
-  state.counters["depth"] = hierarchy().depth;
+  setThroughput(state, h.size(), 0, Size::InCache);
+  state.counters["depth"] = h.depth;
+}
+
+// The five sides of one hierarchy; the data lives for the process (the benchmarks run after
+// registration; a deque keeps its elements in place).
+void registerHierarchy(const std::string& kernel, Hierarchy&& hierarchy) {
+  static std::deque<Hierarchy> hierarchies;
+  static std::deque<TrsPlanes> planes;
+  Hierarchy* h = &hierarchies.emplace_back(std::move(hierarchy));
+  TrsPlanes* l = &planes.emplace_back(*h);
+  registerKernel(kernel + "/matrix", [h](benchmark::State& s) { hierarchyMatrix(s, *h); });
+  registerKernel(kernel + "/motor", [h](benchmark::State& s) { hierarchyMotor(s, *h); });
+  registerKernel(kernel + "/glm", [h](benchmark::State& s) { hierarchyGlm(s, *h); });
+  registerKernel(kernel + "/" + kSimdMatrix, [h, l](benchmark::State& s) { hierarchySimd<false>(s, *h, *l); });
+  registerKernel(kernel + "/" + kSimdMotor, [h, l](benchmark::State& s) { hierarchySimd<true>(s, *h, *l); });
 }
 
 }  // namespace
 
+// The real character of issue 38 (../shared/corpus-wide, Mixamo-style zombie: 81 nodes, 74
+// joints), read relative to the working directory (the repository root, as reproduce.sh runs).
+const char* const kSkeletonFile = "../shared/corpus-wide/Mugen87+yuka/examples/fuzzy/model/zombie.glb";
+
 void registerHierarchyBenchmarks() {
-  registerKernel("hierarchy/matrix", hierarchyMatrix);
-  registerKernel("hierarchy/motor", hierarchyMotor);
-  registerKernel("hierarchy/glm", hierarchyGlm);
-  registerKernel(std::string("hierarchy/") + kSimdMatrix, hierarchySimd<false>);
-  registerKernel(std::string("hierarchy/") + kSimdMotor, hierarchySimd<true>);
+  registerHierarchy("hierarchy", Hierarchy(Shape::Deep));
+  registerHierarchy("hierarchy_wide", Hierarchy(Shape::Wide));
+  // Without the corpus (a fresh clone alone) the skeleton pair is not registered.
+  if (auto scene = loadGltfFile(kSkeletonFile)) registerHierarchy("hierarchy_skeleton", Hierarchy(*scene));
 }
 
 }  // namespace mb::bench

@@ -29,4 +29,16 @@ nlohmann::json toJson(const CpuMachine& m) {
   return {{"cpu", m.cpu}, {"logicalCores", m.logicalCores}, {"simdTarget", m.simdTarget}};
 }
 
+std::string forceSimdTarget(const std::string& name) {
+  std::string names;
+  for (const simd::Target& t : simd::supportedTargets()) {
+    if (t.name == name) {
+      simd::forceTarget(t.bits);
+      return "";
+    }
+    names += (names.empty() ? "" : ", ") + t.name;
+  }
+  return "--simd-target '" + name + "' is not a target this CPU supports (" + names + ")";
+}
+
 }  // namespace mb::bench

@@ -22,4 +22,9 @@ std::string cpuMachineLine(const CpuMachine& m);
 
 nlohmann::json toJson(const CpuMachine& m);
 
+// `motorbench bench --simd-target NAME`: the SIMD kernels dispatch to the Highway target NAME
+// ("AVX3", "AVX2", "SSE4", ...) for the rest of the process, so each pair can be measured per
+// target. Returns "" when done, else why not (not a target this CPU supports, with the list).
+std::string forceSimdTarget(const std::string& name);
+
 }  // namespace mb::bench

@@ -22,6 +22,7 @@
 #include "harness/bench/cpu_machine.h"
 #include "harness/bench/report_bench.h"
 #include "harness/cli/command.h"
+#include "harness/cli/output_paths.h"
 #include "harness/process/progress.h"
 #include "harness/timing/disturbance.h"
 
@@ -208,13 +209,25 @@ int runBench(const std::vector<std::string>& args) {
         std::fprintf(stderr, "motorbench bench: error: --out needs a file name\n");
         return 2;
       }
+      // Google Benchmark exits 1 without a word when it cannot open the file: its folder is made
+      // and checked here, before any benchmark runs.
+      if (Status ok = prepareOutputFile("--out", file); !ok) {
+        std::fprintf(stderr, "motorbench bench: error: %s\n", ok.error().c_str());
+        return 2;
+      }
       flags.push_back("--benchmark_out=" + file);
       flags.push_back("--benchmark_out_format=json");
     } else if (a.rfind("--benchmark_", 0) == 0) {
       minTime = minTime || a.rfind("--benchmark_min_time", 0) == 0;
       flags.push_back(a);
+    } else if (a == "--simd-target" || a.rfind("--simd-target=", 0) == 0) {
+      const std::string name = a == "--simd-target" ? (i + 1 < args.size() ? args[++i] : "") : a.substr(14);
+      if (const std::string error = bench::forceSimdTarget(name); !error.empty()) {
+        std::fprintf(stderr, "motorbench bench: error: %s\n", error.c_str());
+        return 2;
+      }
     } else if (a == "--help" || a == "-h") {
-      std::printf("usage: motorbench bench [--out FILE] [--benchmark_filter=REGEX] "
+      std::printf("usage: motorbench bench [--out FILE] [--simd-target NAME] [--benchmark_filter=REGEX] "
                   "[--benchmark_repetitions=N] [--benchmark_min_time=S] [--benchmark_list_tests] "
                   "[--benchmark_*...]\n");
       return 0;
@@ -267,7 +280,7 @@ MB_COMMAND(bench, "bench", "[--out FILE] [--benchmark_filter=REGEX] [--benchmark
            "Google Benchmark: matrix vs motor (vs glm) kernels in and out of cache, STREAM probe",
            mb::runBench);
 MB_COMMAND_HELP(bench, "bench",
-               "  --out FILE               Google Benchmark JSON (report --bench-json reads it)\n"
+               "  --out FILE               Google Benchmark JSON (report --bench-json reads it; missing folders are created)\n"
                "  --benchmark_filter=REGEX  only the kernels matching (e.g. ^compose/)\n"
                "  --benchmark_*             any other Google Benchmark option (min time, repetitions, colour)\n",
                 "motorbench bench --benchmark_filter=^compose/ --out out/bench.json", false);

@@ -93,16 +93,18 @@ void paletteMotor(ConstPlanes world, const int32_t* node, ConstPlanes inverseBin
                   size_t n);
 
 // ---- hierarchy update: world = parent world * local, parents first -----------------------
-// Nodes are grouped by depth: level k holds nodes [levelEnd[k-1], levelEnd[k]) (levelEnd[-1] =
-// 0), every parent in an earlier level; level 0 holds the roots (parent < 0). Within a level
-// the nodes are independent and run as one SIMD batch (the parents' world gathered per
-// component): wide hierarchies vectorise, chains run one lane at a time.
+// Nodes in parents-first order (parent[k] < k; -1: a root), n of them. The nodes are walked in
+// groups of one full vector: the group's local transforms computed together (structure of
+// arrays), then each node's product with its parent's world on 4-lane vectors (ozz-animation's
+// local-to-model job; simd_hierarchy.cpp). Wide and deep (chain) hierarchies alike.
 // `trs`: 8 planes, quaternion x, y, z, w (unit), translation xyz, uniform scale.
-// Affine: local = T R S as a mat4x3 (the bench's trsMatrix), world = matrixCompose(parent,
-// local) on its first three rows; `world` 12 planes.
+// Affine: local = T R S (the bench's trsMatrix), world = matrixCompose(parent, local) as a mat4:
+// 16 floats per node (column-major, last row 0 0 0 1).
 // Motor: local = gp_tr(T, R) with the parent's uniform scale applied to its e0 half, world =
-// gp_mm(parent, local), world scale = parent scale * scale; `world` 9 planes (motor, scale).
-void hierarchyAffine(ConstPlanes trs, const int32_t* parent, const uint32_t* levelEnd, size_t levels, Planes world);
-void hierarchyMotor(ConstPlanes trs, const int32_t* parent, const uint32_t* levelEnd, size_t levels, Planes world);
+// gp_mm(parent, local), world scale = parent scale * scale: 12 floats per node (the motor's 8,
+// the scale, 3 unused).
+inline constexpr size_t kHierarchyAffineFloats = 16, kHierarchyMotorFloats = 12;
+void hierarchyAffine(ConstPlanes trs, const int32_t* parent, size_t n, float* world);
+void hierarchyMotor(ConstPlanes trs, const int32_t* parent, size_t n, float* world);
 
 }  // namespace mb::simd

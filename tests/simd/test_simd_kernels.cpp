@@ -432,8 +432,9 @@ TEST(SimdKernels, LargeAlignedBatchesStreamWithTheSameResults) {
 
 namespace {
 
-// Hierarchy update, level by level, against the shader products node by node: matrixCompose of
-// the T R S matrices, and gp_mm of gp_tr(T, R) with the parent's scale on the e0 half.
+// Hierarchy update against the shader products node by node: matrixCompose of the T R S
+// matrices, and gp_mm of gp_tr(T, R) with the parent's scale on the e0 half. The nodes in level
+// order (every level wide) and in their own order (a random forest: parents anywhere before).
 TEST(SimdKernels, HierarchyMatchesTheShaderProducts) {
   constexpr size_t kNodes = 30011;
   Rng r;
@@ -487,29 +488,45 @@ TEST(SimdKernels, HierarchyMatchesTheShaderProducts) {
     refP[k] = P.gp_mm(refP[size_t(p)], PS::motor(lm[0], lm[1] * refS[size_t(p)]));
     refS[k] = refS[size_t(p)] * s;
   }
-  Planar wm(kNodes, 12), wp(kNodes, 9);
-  forEachTarget([&](const std::string&) {
-    mb::simd::hierarchyAffine(trs.cplanes(), parent.data(), levelEnd.data(), levelEnd.size(), wm.planes());
-    mb::simd::hierarchyMotor(trs.cplanes(), parent.data(), levelEnd.data(), levelEnd.size(), wp.planes());
+  // The same nodes in their own (random forest) order: node i is level-order node slot[i].
+  Planar trsOwn(kNodes, 8);
+  for (size_t i = 0; i < kNodes; ++i)
+    for (size_t c = 0; c < 8; ++c) trsOwn.at(c, i) = trs.at(c, slot[i]);
+  constexpr size_t WA = mb::simd::kHierarchyAffineFloats, WM = mb::simd::kHierarchyMotorFloats;
+  std::vector<float> wm(kNodes * WA), wp(kNodes * WM);
+  forEachTarget([&](const std::string& target) {
+   for (const bool own : {false, true}) {
+    SCOPED_TRACE(target + (own ? ", own order" : ", level order"));
+    if (own) {
+      mb::simd::hierarchyAffine(trsOwn.cplanes(), parent0.data(), kNodes, wm.data());
+      mb::simd::hierarchyMotor(trsOwn.cplanes(), parent0.data(), kNodes, wp.data());
+      // Back to level order for the comparison.
+      std::vector<float> m2(wm.size()), p2(wp.size());
+      for (size_t i = 0; i < kNodes; ++i) {
+        std::copy_n(&wm[i * WA], WA, &m2[slot[i] * WA]);
+        std::copy_n(&wp[i * WM], WM, &p2[slot[i] * WM]);
+      }
+      wm.swap(m2), wp.swap(p2);
+    } else {
+      mb::simd::hierarchyAffine(trs.cplanes(), parent.data(), kNodes, wm.data());
+      mb::simd::hierarchyMotor(trs.cplanes(), parent.data(), kNodes, wp.data());
+    }
     Worst a, m;
     for (size_t k = 0; k < kNodes; ++k) {
       for (int c = 0; c < 4; ++c) {
-        const float ref[3] = {refM[k][c].x, refM[k][c].y, refM[k][c].z};
-        float got[3];
-        for (int q = 0; q < 3; ++q) got[q] = wm.at(size_t(c * 3 + q), k);
-        a.vec(got, ref, 3, "column " + std::to_string(c), k);
+        const float ref[4] = {refM[k][c].x, refM[k][c].y, refM[k][c].z, refM[k][c].w};
+        a.vec(&wm[k * WA + size_t(4 * c)], ref, 4, "column " + std::to_string(c), k);
       }
       for (int h = 0; h < 2; ++h) {
         const float ref[4] = {refP[k][h].x, refP[k][h].y, refP[k][h].z, refP[k][h].w};
-        float got[4];
-        for (int q = 0; q < 4; ++q) got[q] = wp.at(size_t(4 * h + q), k);
-        m.vec(got, ref, 4, "half " + std::to_string(h), k);
+        m.vec(&wp[k * WM + size_t(4 * h)], ref, 4, "half " + std::to_string(h), k);
       }
-      const float rs[1] = {refS[k]}, gs[1] = {wp.at(8, k)};
-      m.vec(gs, rs, 1, "scale", k);
+      const float rs[1] = {refS[k]};
+      m.vec(&wp[k * WM + 8], rs, 1, "scale", k);
     }
     EXPECT_LE(a.err, kTol) << "hierarchy affine " << a.where;
     EXPECT_LE(m.err, kTol) << "hierarchy motor " << m.where;
+   }
   });
 }
 
