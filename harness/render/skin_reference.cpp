@@ -45,6 +45,20 @@ Joint splitJoint(const glm::mat4& j) {
   return out;
 }
 
+// The primitive's morph targets added with `weights` into its base streams (glTF 2.0 3.7.2.2:
+// deltas of POSITION, NORMAL and TANGENT xyz), and the targets removed.
+void applyMorph(Primitive& p, const std::vector<float>& weights) {
+  for (size_t t = 0; t < p.targets.size() && t < weights.size(); ++t) {
+    const MorphTarget& target = p.targets[t];
+    const float w = weights[t];
+    for (size_t i = 0; i < target.positions.size() && i < p.positions.size(); ++i) p.positions[i] += w * target.positions[i];
+    for (size_t i = 0; i < target.normals.size() && i < p.normals.size(); ++i) p.normals[i] += w * target.normals[i];
+    for (size_t i = 0; i < target.tangents.size() && i < p.tangents.size(); ++i)
+      p.tangents[i] += glm::vec4(w * target.tangents[i], 0.0f);
+  }
+  p.targets.clear();
+}
+
 }  // namespace
 
 SkinnedVertex dualQuaternionSkin(const std::vector<glm::mat4>& jointMatrices, const glm::u16vec4& joints,
@@ -74,6 +88,7 @@ SkinnedVertex dualQuaternionSkin(const std::vector<glm::mat4>& jointMatrices, co
 
 PreSkinnedScene::PreSkinnedScene(Scene& scene, const AnimState& anim) : scene_(scene) {
   const std::vector<glm::mat4> world = worldMatrices(scene, samplePose(scene, anim));
+  const std::vector<std::vector<float>> morphWeights = sampleMorphWeights(scene, anim);
   std::vector<int> users(scene.meshes.size(), 0);
   for (int n : nodesInDrawOrder(scene))
     if (scene.nodes[size_t(n)].mesh >= 0 && size_t(scene.nodes[size_t(n)].mesh) < scene.meshes.size())
@@ -85,10 +100,6 @@ PreSkinnedScene::PreSkinnedScene(Scene& scene, const AnimState& anim) : scene_(s
     Mesh& mesh = scene.meshes[size_t(node.mesh)];
     if (users[size_t(node.mesh)] > 1) {
       why_ = "a skinned mesh drawn by more than one node";
-      return;
-    }
-    if (morphTargetCount(mesh) > 0) {
-      why_ = "a skinned mesh with morph targets";
       return;
     }
     const glm::dmat4 nodeWorld(world[size_t(n)]);
@@ -107,8 +118,10 @@ PreSkinnedScene::PreSkinnedScene(Scene& scene, const AnimState& anim) : scene_(s
     const glm::dmat4 toNode = glm::inverse(nodeWorld);
     const glm::dmat3 normalToNode = glm::transpose(glm::dmat3(nodeWorld));
     meshes_.emplace_back(node.mesh, mesh);
+    const std::vector<float>& morph = n < int(morphWeights.size()) ? morphWeights[size_t(n)] : std::vector<float>{};
     for (Primitive& p : mesh.primitives) {
       if (p.joints.size() != p.positions.size() || p.weights.size() != p.positions.size()) continue;
+      applyMorph(p, morph);  // glTF order: morph, then skin
       for (size_t i = 0; i < p.positions.size(); ++i) {
         const glm::vec3 n = i < p.normals.size() ? p.normals[i] : glm::vec3(0, 0, 1);
         const glm::vec3 t = i < p.tangents.size() ? glm::vec3(p.tangents[i]) : glm::vec3(1, 0, 0);

@@ -29,10 +29,11 @@ SkinnedVertex dualQuaternionSkin(const std::vector<glm::mat4>& jointMatrices, co
                                  const glm::vec3& tangent);
 
 // While it lives, every skinned node of `scene` drawn at `anim` has its primitives replaced by
-// their dualQuaternionSkin result (moved into the node's frame by its inverse world, so that the
+// their (morphed) dualQuaternionSkin result (moved into the node's frame by its inverse world, so that the
 // node's own transform puts them back) and its skin removed; the destructor restores the scene.
 // available() is false, with the reason, when the reference cannot stand for the method here: a
-// mesh skinned by one node and drawn by another, morph targets, a singular node world.
+// mesh skinned by one node and drawn by another, a singular node world. Morph targets are
+// applied first, at the frame's weights (glTF order: morph, then skin), and removed.
 class PreSkinnedScene {
 public:
   PreSkinnedScene(Scene& scene, const AnimState& anim);

@@ -291,6 +291,16 @@ class SurveyTiePixels(unittest.TestCase):
         bent = [f["motorBlend"] for f in doc["pipelines"]["hybrid"]["frames"][1:]]
         self.assertTrue(all(not b["identical"] and b["psnr"] < 50 for b in bent), bent)
 
+    @unittest.skipUnless(os.path.isdir(CORPUS), "../shared/corpus-wide absent (a clone without ../shared)")
+    def test_robot_morph_then_skin_reference(self):
+        # robot-draco.glb: skinned primitives with morph targets; the reference morphs at the
+        # frame's weights, then skins (glTF order): motor draws it (measured: identical).
+        doc = self.survey(os.path.join(CORPUS, "pmndrs+examples/demos/staging-and-camerashake/src/robot-draco.glb"),
+                          "--pipelines", "motor")
+        self.assertTrue(doc["motorBlendReference"]["available"], doc["motorBlendReference"])
+        for k, f in enumerate(doc["pipelines"]["motor"]["frames"]):
+            self.assertTrue(f["motorBlend"]["identical"] or f["motorBlend"]["psnr"] >= 60, (k, f["motorBlend"]))
+
 
 class SkinnedRule(unittest.TestCase):
     """The skinned rule on synthetic surveys: each pipeline against its skinning method's reference."""
