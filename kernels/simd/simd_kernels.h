@@ -8,7 +8,8 @@
 // what is shared): the same planar layout, the same loop (one full vector per step, a one-lane
 // tail), the same software prefetch of every input plane, the same per-draw uniforms broadcast
 // once before the loop, fused multiply-add wherever the math has a product plus a sum, and the
-// same gathers (one GatherIndex per palette component) for joint palettes, and the same store
+// same palette fetch for joint palettes (held in registers and permuted where the palette fits
+// in four vectors per component, else one GatherIndex per component), and the same store
 // rule: non-temporal (streaming) stores when a call writes >= 64 MiB to planes aligned to 64
 // bytes (no write-allocate read of the lines it overwrites), ordinary stores otherwise.
 #pragma once

@@ -220,6 +220,45 @@ HWY_INLINE void gatherPlanes(D d, ConstPlanes palette, VI idx, hn::Vec<D> (&v)[C
   MB_UNROLL for (size_t c = 0; c < C; ++c) v[c] = hn::GatherIndex(d, palette[c], idx);
 }
 
+// The palette fetch of the skinned pair (issue 38): where the whole palette fits in at most
+// kMaxBlocks vectors per component (AVX-512: 64 joints, AVX2: 32, SSE4: 16), it is held in
+// registers (one vector of joints per block) and each lane's entry is a lane permutation per
+// block, the blocks chosen by the index's high bits; else, and for the one-lane tail, one
+// GatherIndex per component (a gather costs many micro-ops per lane: the skinned kernels'
+// limit, kernels/simd/README.md).
+template <class D, size_t C> struct PaletteFetch {
+  using V = hn::Vec<D>;
+  static constexpr size_t kMaxBlocks = 4;
+  V table[C][kMaxBlocks];
+  size_t blocks = 0;  // 0: gathered
+  ConstPlanes palette;
+  PaletteFetch(D d, ConstPlanes p, bool inRegisters) : palette(p) {
+    const size_t L = hn::Lanes(d), J = p.stride, n = (J + L - 1) / L;
+    if (!inRegisters || L == 1 || n > kMaxBlocks) return;
+    blocks = n;
+    HWY_ALIGN float lanes[HWY_LANES(float)];
+    for (size_t c = 0; c < C; ++c)
+      for (size_t b = 0; b < n; ++b) {
+        for (size_t i = 0; i < L; ++i) lanes[i] = b * L + i < J ? p[c][b * L + i] : 0.0f;
+        table[c][b] = hn::Load(d, lanes);
+      }
+  }
+  template <class VI> HWY_INLINE void operator()(D d, VI idx, V (&v)[C]) const {
+    if (!blocks) {
+      MB_UNROLL for (size_t c = 0; c < C; ++c) v[c] = hn::GatherIndex(d, palette[c], idx);
+      return;
+    }
+    const hn::RebindToSigned<D> di;
+    const int32_t L = int32_t(hn::Lanes(d));
+    const auto lane = hn::IndicesFromVec(d, hn::And(idx, hn::Set(di, L - 1)));
+    MB_UNROLL for (size_t c = 0; c < C; ++c) v[c] = hn::TableLookupLanes(table[c][0], lane);
+    for (size_t b = 1; b < blocks; ++b) {
+      const auto inBlock = hn::RebindMask(d, hn::Gt(idx, hn::Set(di, int32_t(b) * L - 1)));
+      MB_UNROLL for (size_t c = 0; c < C; ++c) v[c] = hn::IfThenElse(inBlock, hn::TableLookupLanes(table[c][b], lane), v[c]);
+    }
+  }
+};
+
 // Joint indices of plane k at item i as int32 lanes.
 template <class D> HWY_INLINE hn::Vec<hn::RebindToSigned<D>> jointIndices(D d, JointPlanes j, size_t k, size_t i) {
   const hn::Rebind<uint16_t, D> d16;

@@ -75,13 +75,14 @@ void SkinnedVertexMatrix(ConstPlanes palette, float mirror, ConstPlanes in, Join
   forEachBatch(n, nt, [&](auto d, size_t b, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     const V mir = hn::Set(d, mirror);
+    const PaletteFetch<decltype(d), 12> fetch(d, palette, main);
     V v[10], w[4], skin[12], j[12], cof[9], o[10];
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
       loadSkinned(d, main, in, weights, joints, i, v, w);
-      gatherPlanes(d, palette, jointIndices(d, joints, 0, i), j);
+      fetch(d, jointIndices(d, joints, 0, i), j);
       MB_UNROLL for (size_t c = 0; c < 12; ++c) skin[c] = hn::Mul(w[0], j[c]);
       MB_UNROLL for (size_t k = 1; k < 4; ++k) {
-        gatherPlanes(d, palette, jointIndices(d, joints, k, i), j);
+        fetch(d, jointIndices(d, joints, k, i), j);
         MB_UNROLL for (size_t c = 0; c < 12; ++c) skin[c] = hn::MulAdd(w[k], j[c], skin[c]);
       }
       cofactor(skin, cof);
@@ -98,13 +99,14 @@ void SkinnedVertexMotor(ConstPlanes palette, float scale, ConstPlanes in, JointP
     using V = hn::Vec<decltype(d)>;
     const V s = hn::Set(d, scale), two = hn::Set(d, 2.0f), half = hn::Set(d, 0.5f), one = hn::Set(d, 1.0f);
     const V zero = hn::Zero(d);
+    const PaletteFetch<decltype(d), 8> fetch(d, palette, main);
     V v[7], w[4], r[8], j[8], c[3], o[10];
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
       loadSkinned(d, main, in, weights, joints, i, v, w);
-      gatherPlanes(d, palette, jointIndices(d, joints, 0, i), j);
+      fetch(d, jointIndices(d, joints, 0, i), j);
       MB_UNROLL for (size_t k = 0; k < 8; ++k) r[k] = hn::Mul(j[k], w[0]);
       MB_UNROLL for (size_t k = 1; k < 4; ++k) {
-        gatherPlanes(d, palette, jointIndices(d, joints, k, i), j);
+        fetch(d, jointIndices(d, joints, k, i), j);
         // Hemisphere rule: the weight is negated when dot(r rotor half, joint rotor half) <= 0.
         const V dot = hn::MulAdd(r[0], j[0], hn::MulAdd(r[1], j[1], hn::MulAdd(r[2], j[2], hn::Mul(r[3], j[3]))));
         const V wk = hn::IfThenElse(hn::Le(dot, zero), hn::Neg(w[k]), w[k]);

@@ -232,58 +232,63 @@ TEST(SimdKernels, VertexFrameMatchesTheShader) {
   });
 }
 
+// Palettes of 5, 16 and 48 joints are held in registers on the targets where they fit in at most
+// four vectors per component (PaletteFetch, simd_math-inl.h), 300 joints are gathered everywhere:
+// both fetches against the shader on every target.
 TEST(SimdKernels, SkinnedVertexMatchesTheShader) {
-  constexpr size_t kJoints = 48;
-  const Vertices v;
-  Rng r;
-  Planar palM(kJoints, 12), palP(kJoints, 8);
-  std::vector<AS::mat4x3> jm(kJoints);
-  std::vector<PS::motor> jp(kJoints);
-  for (size_t j = 0; j < kJoints; ++j) {
-    float m16[16];
-    jp[j] = r.motor(m16);
-    for (int c = 0; c < 4; ++c)
-      for (int k = 0; k < 3; ++k) palM.at(size_t(c * 3 + k), j) = jm[j][c][k] = m16[c * 4 + k];
-    for (int k = 0; k < 4; ++k) palP.at(size_t(k), j) = jp[j][0][k], palP.at(size_t(4 + k), j) = jp[j][1][k];
-  }
-  std::vector<uint16_t> joints(4 * kItems);
-  Planar weights(kItems, 4);
-  for (size_t i = 0; i < kItems; ++i) {
-    float w[4], sum = 0;
-    for (float& x : w) sum += x = r.u(0.05f, 1.0f);
-    for (size_t k = 0; k < 4; ++k)
-      joints[k * kItems + i] = uint16_t(std::uniform_int_distribution<int>(0, kJoints - 1)(r.g)), weights.at(k, i) = w[k] / sum;
-  }
-  const mb::simd::JointPlanes jp4{joints.data(), kItems};
-  Planar out(kItems, 10);
-  AS A;
-  PS P;
-  forEachTarget([&](const std::string&) {
-    mb::simd::skinnedVertexMatrix(palM.cplanes(), -1.0f, v.matrix.cplanes(), jp4, weights.cplanes(), out.planes(), kItems);
-    Worst wa;
-    for (size_t i = 0; i < kItems; ++i) {
-      auto J = [&](size_t k) { return jm[joints[k * kItems + i]]; };
-      const AS::mat3x4 e = A.affineSkinnedVertex(
-          J(0), J(1), J(2), J(3), AS::vec4(weights.at(0, i), weights.at(1, i), weights.at(2, i), weights.at(3, i)), -1.0f,
-          AS::vec3(v.matrix.at(0, i), v.matrix.at(1, i), v.matrix.at(2, i)),
-          AS::vec3(v.matrix.at(3, i), v.matrix.at(4, i), v.matrix.at(5, i)),
-          AS::vec4(v.matrix.at(6, i), v.matrix.at(7, i), v.matrix.at(8, i), v.matrix.at(9, i)));
-      wa.vertex(out, i, e);
+  for (const size_t kJoints : {size_t(5), size_t(16), size_t(48), size_t(300)}) {
+  SCOPED_TRACE(std::to_string(kJoints) + " joints");
+    const Vertices v;
+    Rng r;
+    Planar palM(kJoints, 12), palP(kJoints, 8);
+    std::vector<AS::mat4x3> jm(kJoints);
+    std::vector<PS::motor> jp(kJoints);
+    for (size_t j = 0; j < kJoints; ++j) {
+      float m16[16];
+      jp[j] = r.motor(m16);
+      for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 3; ++k) palM.at(size_t(c * 3 + k), j) = jm[j][c][k] = m16[c * 4 + k];
+      for (int k = 0; k < 4; ++k) palP.at(size_t(k), j) = jp[j][0][k], palP.at(size_t(4 + k), j) = jp[j][1][k];
     }
-    EXPECT_LE(wa.err, kTol) << "affineSkinnedVertex " << wa.where;
+    std::vector<uint16_t> joints(4 * kItems);
+    Planar weights(kItems, 4);
+    for (size_t i = 0; i < kItems; ++i) {
+      float w[4], sum = 0;
+      for (float& x : w) sum += x = r.u(0.05f, 1.0f);
+      for (size_t k = 0; k < 4; ++k)
+        joints[k * kItems + i] = uint16_t(std::uniform_int_distribution<int>(0, kJoints - 1)(r.g)), weights.at(k, i) = w[k] / sum;
+    }
+    const mb::simd::JointPlanes jp4{joints.data(), kItems};
+    Planar out(kItems, 10);
+    AS A;
+    PS P;
+    forEachTarget([&](const std::string&) {
+      mb::simd::skinnedVertexMatrix(palM.cplanes(), -1.0f, v.matrix.cplanes(), jp4, weights.cplanes(), out.planes(), kItems);
+      Worst wa;
+      for (size_t i = 0; i < kItems; ++i) {
+        auto J = [&](size_t k) { return jm[joints[k * kItems + i]]; };
+        const AS::mat3x4 e = A.affineSkinnedVertex(
+            J(0), J(1), J(2), J(3), AS::vec4(weights.at(0, i), weights.at(1, i), weights.at(2, i), weights.at(3, i)), -1.0f,
+            AS::vec3(v.matrix.at(0, i), v.matrix.at(1, i), v.matrix.at(2, i)),
+            AS::vec3(v.matrix.at(3, i), v.matrix.at(4, i), v.matrix.at(5, i)),
+            AS::vec4(v.matrix.at(6, i), v.matrix.at(7, i), v.matrix.at(8, i), v.matrix.at(9, i)));
+        wa.vertex(out, i, e);
+      }
+      EXPECT_LE(wa.err, kTol) << "affineSkinnedVertex " << wa.where;
 
-    mb::simd::skinnedVertexMotor(palP.cplanes(), 1.25f, v.motor.cplanes(), jp4, weights.cplanes(), out.planes(), kItems);
-    Worst wm;
-    for (size_t i = 0; i < kItems; ++i) {
-      auto J = [&](size_t k) { return jp[joints[k * kItems + i]]; };
-      const PS::mat3x4 e = P.motorSkinnedVertex(
-          J(0), J(1), J(2), J(3), PS::vec4(weights.at(0, i), weights.at(1, i), weights.at(2, i), weights.at(3, i)), 1.25f,
-          PS::vec3(v.motor.at(0, i), v.motor.at(1, i), v.motor.at(2, i)),
-          PS::vec4(v.motor.at(3, i), v.motor.at(4, i), v.motor.at(5, i), v.motor.at(6, i)));
-      wm.vertex(out, i, e);
-    }
-    EXPECT_LE(wm.err, kTol) << "motorSkinnedVertex " << wm.where;
-  });
+      mb::simd::skinnedVertexMotor(palP.cplanes(), 1.25f, v.motor.cplanes(), jp4, weights.cplanes(), out.planes(), kItems);
+      Worst wm;
+      for (size_t i = 0; i < kItems; ++i) {
+        auto J = [&](size_t k) { return jp[joints[k * kItems + i]]; };
+        const PS::mat3x4 e = P.motorSkinnedVertex(
+            J(0), J(1), J(2), J(3), PS::vec4(weights.at(0, i), weights.at(1, i), weights.at(2, i), weights.at(3, i)), 1.25f,
+            PS::vec3(v.motor.at(0, i), v.motor.at(1, i), v.motor.at(2, i)),
+            PS::vec4(v.motor.at(3, i), v.motor.at(4, i), v.motor.at(5, i), v.motor.at(6, i)));
+        wm.vertex(out, i, e);
+      }
+      EXPECT_LE(wm.err, kTol) << "motorSkinnedVertex " << wm.where;
+    });
+  }
 }
 
 TEST(SimdKernels, ComposeAndPaletteMatchTheShader) {
