@@ -18,7 +18,15 @@
 //                position + normal + uv, 32-byte vertices
 //   MB_INSTANCED model, normal matrix and mirror per instance (vertex attributes, divisor 1)
 //                instead of per draw: EXT_mesh_gpu_instancing / --instances
+//   MB_MORPH     morph targets (morph.glsl), float frame only: position, normal and tangent
+//                deltas added in object space before the skin and the model, as matrix.vs
 #include "affine_transform.glsl"
+#ifdef MB_MORPH
+#if defined(MB_QTANGENT) || defined(MB_COMPACT)
+#error "MB_MORPH is built for the float frame only"
+#endif
+#include "morph.glsl"
+#endif
 
 layout(location = 0) in vec3 a_position;
 #ifdef MB_QTANGENT
@@ -71,6 +79,16 @@ out vec2 v_uv1;
 out vec4 v_color;
 
 void main() {
+#ifdef MB_MORPH  // the transform below reads the morphed attributes under the inputs' names
+  vec3 m_position = morphPosition(a_position);
+  vec3 m_normal = morphNormal(a_normal);
+#ifndef MB_NO_TANGENT
+  vec4 m_tangent = vec4(morphTangent(a_tangent.xyz), a_tangent.w);
+#endif
+#define a_position m_position
+#define a_normal m_normal
+#define a_tangent m_tangent
+#endif
 #ifdef MB_SKINNED
 #ifdef MB_COMPACT
   mat3x4 v = compactSkinnedVertex(u_joints[a_joints.x], u_joints[a_joints.y],

@@ -130,13 +130,10 @@ void main() {
   vec3 m_position = morphPosition(a_position);
   vec4 m_tangentRotor = a_tangentRotor;
 #ifdef MB_MORPH_ROTOR
-  if (u_MorphNormal > 0)
-    m_tangentRotor = renormaliseRotor(morphVec4(a_tangentRotor, u_MorphNormal), motorHandedness(a_tangentRotor));
+  if (u_MorphNormal > 0) m_tangentRotor = morphRotorBlend(a_tangentRotor, morphVec4(vec4(0.0), u_MorphNormal));
 #else
-  if (u_MorphNormal > 0 || u_MorphTangent > 0) {
-    mat2x3 m_frame = rotorFrame(a_tangentRotor);
-    m_tangentRotor = rotorFromFrame(morphNormal(m_frame[0]), morphTangent(m_frame[1]), motorHandedness(a_tangentRotor));
-  }
+  if (u_MorphNormal > 0 || u_MorphTangent > 0)
+    m_tangentRotor = morphRotorFrame(a_tangentRotor, morphNormal(vec3(0.0)), morphTangent(vec3(0.0)));
 #endif
 #define a_position m_position
 #define a_tangentRotor m_tangentRotor

@@ -150,6 +150,19 @@ vec4 rotorFromFrame(vec3 normal, vec3 tangent, float handedness) {
   return renormaliseRotor(r, handedness);
 }
 
+// Method (a) per vertex: the rotor of its frame plus the summed weighted normal and tangent
+// deltas (morph.glsl's sums), handedness kept.
+vec4 morphRotorFrame(vec4 rotor, vec3 normalDelta, vec3 tangentDelta) {
+  mat2x3 f = rotorFrame(rotor);
+  return rotorFromFrame(f[0] + normalDelta, f[1] + tangentDelta, motorHandedness(rotor));
+}
+
+// Method (b) per vertex: the rotor plus the summed weighted rotor deltas, renormalised,
+// handedness kept.
+vec4 morphRotorBlend(vec4 rotor, vec4 rotorDelta) {
+  return renormaliseRotor(rotor + rotorDelta, motorHandedness(rotor));
+}
+
 // World to clip: the camera motor (world -> view, camera looking down +z with x mirrored, the
 // convention of pga.glsl's project()) and the perspective projection. With the same near,
 // far, vertical fov and aspect this equals glm::perspective * view (GL depth range -1..1).

@@ -166,6 +166,21 @@ std::vector<VertexKernel> motorKernels() {
        "o_0 = vec4(l[0], l[1].x); o_1 = vec4(l[1].yz, l[2].xy); o_2 = vec4(l[2].z);",
        motorIncl + kMotorAttribs + "uniform mat3 u_l[4];\n",
        "per skinned vertex on the fallback, twice (linear part and normal matrix) beside motorBlendJoints"},
+      // Morph targets (issue 37): the rotor's own part of each method, per morphing vertex; the
+      // delta sums come on top (morph.glsl: per target with a non-zero weight, 1 mul + 1 add per
+      // float: 9 per target for the frame method's position + normal + tangent, 7 for the
+      // rotor method's position + rotor). shaders/motor_transform.glsl explains both.
+      {"motor, motor_q", "morph rotor, frame method (a)", "morphRotorFrame",
+       [&] { P.morphRotorFrame(in.rotor, PC::vec3(0.1, -0.2, 0.05), PC::vec3(0.0, 0.15, -0.1)); },
+       "vec4 r = morphRotorFrame(a_tangentRotor, a_weights.xyz, a_position); o_0 = r; o_1 = r; o_2 = r;",
+       motorIncl + kMotorAttribs,
+       "rotorFrame (extractNormalTangent, doubled) + deltas + rotorFromFrame (Gram-Schmidt, one branch "
+       "of the trace/diagonal rule, renormalise with the base rotor's handedness)"},
+      {"motor, motor_q", "morph rotor, rotor method (b)", "morphRotorBlend",
+       [&] { P.morphRotorBlend(in.rotor, PC::vec4(0.05, -0.1, 0.02, 0.1)); },
+       "vec4 r = morphRotorBlend(a_tangentRotor, a_weights); o_0 = r; o_1 = r; o_2 = r;",
+       motorIncl + kMotorAttribs,
+       "rotor + summed rotor deltas, renormalised with the base rotor's handedness"},
   };
 }
 

@@ -9,6 +9,9 @@
 // 22 floats, 88 bytes per instance). matrix_c (FrameFormat::Compact, issue 29): rigid draws
 // get the mesh's quantisation cube folded into u_ModelMatrix (model * translate * scale);
 // skinned and instanced draws get it as u_Dequant (a vec4 per draw, in uniformBytesPerFrame).
+// Morph targets (issue 37): the float frame (affine, hybrid) draws a node with a non-zero weight
+// with the MB_MORPH variants, the glTF deltas as matrix does; qtangent and matrix_c and
+// instanced draws draw the base mesh (not built for their frame forms).
 #include "pipelines/affine/affine_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -20,6 +23,7 @@
 #include "pipelines/gl/frame_vertices.h"
 #include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/instance_stream.h"
+#include "pipelines/gl/morph_buffers.h"
 #include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
@@ -74,6 +78,8 @@ private:
   // [rigid, skinned, instanced (MB_INSTANCED)][no tangent] (qtangent: [.][0] only); the
   // instanced row only for scenes with instances.
   std::unique_ptr<gl::Program> programs_[3][2];
+  std::unique_ptr<gl::Program> morphing_[2][2];  // MB_MORPH [skinned][no tangent], float frame only
+  gl::MorphBuffers morph_;
   std::vector<std::vector<glm::mat4>> instanceMatrices_;  // per node: trsMatrix(instance)
   gl::InstanceStream instances_;
   std::unique_ptr<gl::Program> patch_;  // affine_patch.vs, only for scenes with patches
@@ -105,6 +111,13 @@ Status AffinePipeline::prepare(const Scene& scene) {
       if (!program) return Status::fail(program.error());
       programs_[kind][noTangent] = program.take();
       if (kind == 1) programs_[kind][noTangent]->bindStorageBlock("AffineJoints", 0);
+      if (kind == 2 || qtangent || compact || !gl::maxMorphTargets(scene)) continue;
+      for (const auto& d : gl::morphDefines(scene)) defines.push_back(d);
+      auto morphing = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
+      if (!morphing) return Status::fail(morphing.error());
+      morphing_[kind][noTangent] = morphing.take();
+      if (kind == 1) morphing_[kind][noTangent]->bindStorageBlock("AffineJoints", 0);
+      morphing_[kind][noTangent]->bindStorageBlock("MorphDeltas", gl::kMorphBinding);
     }
   instanceMatrices_.assign(scene.nodes.size(), {});
   for (size_t n = 0; n < scene.nodes.size(); ++n)
@@ -132,6 +145,7 @@ Status AffinePipeline::prepare(const Scene& scene) {
     geometry_.uploadPacked(scene, interleaveCompact, compact::attributes(), stats_);
   } else {
     geometry_.upload(scene, gl::floatFrameFormat, stats_);  // as matrix: tangent only where needed
+    if (gl::maxMorphTargets(scene)) morph_.upload(scene, gl::packFrameDeltas, stats_);
   }
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
@@ -148,6 +162,7 @@ void AffinePipeline::update(const AnimState& state) {
   PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
   poser_->pose(*scene_, state, pose_, stats_, clock);
   drawnNormalMatrices(*scene_, pose_);
+  morph_.update(*scene_, state);
   clock.lap(&UpdatePhases::hierarchyMs);
   stats_.updateMs = gl::msSince(t0);
 }
@@ -190,6 +205,7 @@ void AffinePipeline::render(const View& view) {
   if (!scene_) return;
   stats_.uniformBytesPerFrame = 0;
   stats_.draws = 0;
+  stats_.morphDraws = 0;
   stats_.drawnVertices = 0;
   uploadPalettes();
   streamInstances();
@@ -201,12 +217,12 @@ void AffinePipeline::render(const View& view) {
   // Per-frame uniforms go to a program when the frame first draws with it (as matrix and
   // motor do: a program the frame does not use uploads nothing).
   // kind -1: the Bezier patch program; 0 rigid, 1 skinned, 2 instanced.
-  bool frameSet[4][2] = {};
-  auto useProgram = [&](int kind, int noTangent) -> const gl::Program& {
-    gl::Program& p = kind < 0 ? *patch_ : *programs_[kind][noTangent];
+  bool frameSet[4][2][2] = {};
+  auto useProgram = [&](int kind, int noTangent, bool morph = false) -> const gl::Program& {
+    gl::Program& p = kind < 0 ? *patch_ : morph ? *morphing_[kind][noTangent] : *programs_[kind][noTangent];
     p.use();
-    if (!frameSet[kind + 1][noTangent]) {
-      frameSet[kind + 1][noTangent] = true;
+    if (!frameSet[kind + 1][noTangent][morph]) {
+      frameSet[kind + 1][noTangent][morph] = true;
       gl::uniformMatrix4(p.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
                          stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
@@ -236,7 +252,12 @@ void AffinePipeline::render(const View& view) {
       }
       continue;
     }
-    const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, noTangent);
+    const bool morph = !patch && morphing_[0][0] && morph_.active(d);  // float frame only
+    const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, noTangent, morph);
+    if (morph) {
+      morph_.bind(program, d, stats_.uniformBytesPerFrame);
+      ++stats_.morphDraws;
+    }
     glm::mat4x3 model = pose_.world[size_t(d.node)];
     const float sign = pose_.mirrors[size_t(d.node)];
     if (format_ == FrameFormat::Compact && !patch && !palette) {  // the mesh's cube folded in
@@ -271,6 +292,9 @@ void AffinePipeline::setDequant(const gl::Program& program, const gl::DrawItem& 
 
 void AffinePipeline::release() {
   geometry_.release();
+  morph_.release();
+  for (auto& row : morphing_)
+    for (auto& p : row) p.reset();
   patches_.release();
   patch_.reset();
   palettes_.release();

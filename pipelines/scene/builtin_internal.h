@@ -15,6 +15,7 @@ void buildScaledHierarchy(GlbBuilder& b);
 void buildCrowd(GlbBuilder& b);
 void buildTeapot(GlbBuilder& b);
 void buildInstancedGrid(GlbBuilder& b);
+void buildMorphTorus(GlbBuilder& b);
 
 // Tangent-space normal map (RGBA8, size x size) of a height field of sin bumps with the given
 // number of periods along u and v; deterministic.

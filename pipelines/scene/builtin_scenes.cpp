@@ -19,6 +19,7 @@ Builder builderFor(const std::string& name) {
   if (name == "dense_torus") return &buildDenseTorus;
   if (name == "teapot") return &buildTeapot;
   if (name == "instanced_grid") return &buildInstancedGrid;
+  if (name == "morph_torus") return &buildMorphTorus;
   return nullptr;
 }
 

@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <cstring>
+#include <map>
 #include <sstream>
 
 namespace mb {
@@ -78,8 +79,16 @@ int GlbBuilder::addMesh(const std::string& name, const MeshData& m, int material
   idx.type = TINYGLTF_TYPE_SCALAR;
   model_->accessors.push_back(idx);
   p.indices = int(model_->accessors.size() - 1);
+  for (const MorphTargetData& t : m.targets) {
+    std::map<std::string, int> target;
+    if (!t.positions.empty()) target["POSITION"] = addFloatAccessor(&t.positions[0].x, n, 3, true);
+    if (!t.normals.empty()) target["NORMAL"] = addFloatAccessor(&t.normals[0].x, n, 3);
+    if (!t.tangents.empty()) target["TANGENT"] = addFloatAccessor(&t.tangents[0].x, n, 3);
+    p.targets.push_back(target);
+  }
   tinygltf::Mesh mesh;
   mesh.name = name;
+  mesh.weights.assign(m.targetWeights.begin(), m.targetWeights.end());
   mesh.primitives.push_back(p);
   model_->meshes.push_back(mesh);
   ++facts_.meshes;
@@ -179,7 +188,7 @@ void GlbBuilder::addChannel(int anim, int node, const std::string& path, const s
   auto& a = model_->animations[size_t(anim)];
   tinygltf::AnimationSampler s;
   s.input = inputAccessor >= 0 ? inputAccessor : addFloatAccessor(times.data(), times.size(), 1, true);
-  int comps = path == "rotation" ? 4 : 3;
+  int comps = path == "rotation" ? 4 : path == "weights" ? 1 : 3;
   s.output = outputAccessor >= 0 ? outputAccessor
                                  : addFloatAccessor(values.data(), values.size() / size_t(comps), comps);
   s.interpolation = interpolation;

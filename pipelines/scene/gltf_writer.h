@@ -18,6 +18,11 @@ class Model;
 
 namespace mb {
 
+// One morph target's deltas (empty streams are not written).
+struct MorphTargetData {
+  std::vector<glm::vec3> positions, normals, tangents;
+};
+
 // One triangle-list primitive as plain streams (empty streams are not written).
 struct MeshData {
   std::vector<glm::vec3> positions, normals;
@@ -26,6 +31,8 @@ struct MeshData {
   std::vector<glm::u16vec4> joints;
   std::vector<glm::vec4> weights;
   std::vector<uint32_t> indices;
+  std::vector<MorphTargetData> targets;  // morph targets
+  std::vector<float> targetWeights;      // the mesh's default weights (empty: not written)
 };
 
 // What a generator put into a file (meshes counted once, not per instance).
@@ -63,7 +70,8 @@ public:
   int addSkin(const std::string& name, const std::vector<int>& joints, int ibmAccessor);
   int addInverseBindMatrices(const std::vector<glm::mat4>& m);
   int addAnimation(const std::string& name);
-  // path: "translation" | "rotation" (values x,y,z,w) | "scale"; interpolation "LINEAR" etc.
+  // path: "translation" | "rotation" (values x,y,z,w) | "scale" | "weights" (scalars, one per
+  // target per key); interpolation "LINEAR" etc.
   // `inputAccessor` may be shared (-1: written from `times`).
   void addChannel(int anim, int node, const std::string& path, const std::vector<float>& times,
                   const std::vector<float>& values, const std::string& interpolation = "LINEAR",

@@ -8,9 +8,10 @@
 
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
-#include "pipelines/gl/context.h"
-#include "pipelines/gl/framebuffer.h"
 #include "pipelines/pipeline.h"
+#include "pipelines/scene/animation.h"
+#include "pipelines/scene/loader.h"
+#include "tests/support/render_options.h"
 
 using namespace mb;
 
@@ -94,25 +95,8 @@ Frame render(const Scene& scene, const std::string& pipeline) {
   return f ? f.take() : Frame{};
 }
 
-// renderFrame with PipelineOptions (the morph method), as render_frame.cpp draws.
 Frame renderWith(const Scene& scene, const std::string& pipeline, const PipelineOptions& options) {
-  Frame f;
-  auto ctx = gl::sharedContext();
-  auto fb = gl::Framebuffer::create(kSize, kSize);
-  std::unique_ptr<Pipeline> p = createPipeline(pipeline);
-  if (!ctx || !fb || !p) {
-    ADD_FAILURE() << "no context, framebuffer or pipeline " << pipeline;
-    return f;
-  }
-  p->configure(options);
-  Status prepared = p->prepare(scene);
-  EXPECT_TRUE(prepared) << prepared.error();
-  p->update(AnimState{});
-  (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
-  p->render(frameScene(scene, AnimState{}, 1.0f));
-  f.image = {kSize, kSize, (*fb)->readRgba()};
-  f.stats = p->stats();
-  return f;
+  return mbtest::renderWithOptions(scene, pipeline, options, AnimState{}, kSize);
 }
 
 ImageMetrics compare(const Frame& a, const Frame& b) {
@@ -161,4 +145,44 @@ TEST(MorphPipelines, MotorMethodsAgainstMatrix) {
     EXPECT_EQ(rotor.stats.morphBytes, rotor.stats.morphTargetVertices * 7 * 4) << pipeline;
     std::printf("%s vs matrix: frame %.1f dB, rotor %.1f dB\n", pipeline, a.psnr, b.psnr);
   }
+}
+
+// affine (the float frame of affine.vs) adds the glTF deltas as matrix does; the pipelines not
+// built for morphing (qtangent, hybrid, matrix_c, motor_c, motor_cf) draw the base mesh and
+// count no morphing draw.
+TEST(MorphPipelines, AffineAgainstMatrixAndTheOthersUnmorphed) {
+  const Scene morph = morphGrid({0.6f, 0.3f});
+  const Frame matrix = render(morph, "matrix");
+  const Frame affine = render(morph, "affine");
+  EXPECT_EQ(affine.stats.morphDraws, 1);
+  EXPECT_GE(compare(matrix, affine).psnr, 50.0);
+  for (const char* pipeline : {"qtangent", "hybrid", "matrix_c", "motor_c", "motor_cf"}) {
+    const Frame f = render(morph, pipeline);
+    EXPECT_EQ(f.stats.morphDraws, 0) << pipeline;
+    EXPECT_EQ(f.stats.morphBytes, 0u) << pipeline;
+  }
+}
+
+// The built-in morph scene with its weights animated (t = 1.4 s: weights (1, 0.4)): every
+// morphing pipeline against matrix; the frame method exact to 50 dB, the rotor method measured.
+TEST(MorphPipelines, BuiltinMorphTorusAnimated) {
+  auto scene = loadScene("morph_torus");
+  ASSERT_TRUE(scene) << scene.error();
+  const AnimState st{0, 1.4f};
+  auto weights = sampleMorphWeights(*scene, st)[0];
+  ASSERT_EQ(weights.size(), 2u);
+  EXPECT_FLOAT_EQ(weights[0], 1.0f);
+  EXPECT_NEAR(weights[1], 0.4f, 1e-6f);
+  const Frame matrix = mbtest::renderWithOptions(*scene, "matrix", {}, st, kSize);
+  EXPECT_EQ(matrix.stats.morphDraws, 1);
+  EXPECT_GT(compare(matrix, mbtest::renderWithOptions(*scene, "matrix", {}, AnimState{}, kSize)).maxError, 0.1);
+  for (const char* pipeline : {"motor", "motor_q", "affine"}) {
+    const Frame f = mbtest::renderWithOptions(*scene, pipeline, {}, st, kSize);
+    EXPECT_EQ(f.stats.morphDraws, 1) << pipeline;
+    const double psnr = compare(matrix, f).psnr;
+    EXPECT_GE(psnr, 50.0) << pipeline;
+    std::printf("morph_torus t 1.4 %s vs matrix: %.1f dB\n", pipeline, psnr);
+  }
+  const Frame rotor = mbtest::renderWithOptions(*scene, "motor", {SkinSpace::PipelineDefault, MorphMethod::Rotor}, st, kSize);
+  std::printf("morph_torus t 1.4 motor rotor method vs matrix: %.1f dB\n", compare(matrix, rotor).psnr);
 }
