@@ -3,7 +3,7 @@
 // 3 add, normalize(vec3) 6 mul + 2 add + 1 inversesqrt, cross 6 / 3, comparisons free).
 #include <gtest/gtest.h>
 
-#include <map>
+#include <array>
 #include <string>
 
 #include "harness/ops/ops_vertex.h"
@@ -19,30 +19,27 @@ OpCounts counted(const std::string& function) {
   return {};
 }
 
+// mul, add, div, other (no sqrt: inversesqrt counts as other).
+void expectOps(const OpCounts& c, std::array<uint64_t, 4> want, const std::string& what) {
+  const std::array<uint64_t, 5> got{c.mul, c.add, c.div, c.sqrt, c.other};
+  EXPECT_EQ(got, (std::array<uint64_t, 5>{want[0], want[1], want[2], 0, want[3]})) << what;
+}
+
 }  // namespace
 
 TEST(MorphOps, RotorMethodIsAnAddAndARenormalisation) {
-  const OpCounts c = counted("morphRotorBlend");
   // rotor + delta 0/4; handedness sign(1/x) 1 div + 1 other; dot 4/3, inversesqrt, flip * s 1/0,
   // rotor * s 4/0.
-  EXPECT_EQ(c.mul, 9u);
-  EXPECT_EQ(c.add, 7u);
-  EXPECT_EQ(c.div, 1u);
-  EXPECT_EQ(c.sqrt, 0u);
-  EXPECT_EQ(c.other, 2u);
+  expectOps(counted("morphRotorBlend"), {9, 7, 1, 2}, "rotor method");
 }
 
 TEST(MorphOps, FrameMethodDecodesAndReformsTheRotor) {
-  const OpCounts c = counted("morphRotorFrame");
   // rotorFrame: extractNormalTangent 9/8 + doubling 6/0; deltas 0/6; handedness 1 div 1 other;
   // rotorFromFrame: normalize 6/2, dot 3/2, n * d 3/0, subtract 0/3, normalize 6/2, cross 6/3,
   // trace 0/2, the fourth branch (the probe's frame has its largest diagonal on n.z) 0/6,
   // renormaliseRotor 9/3 + inversesqrt; three inversesqrt in all.
-  EXPECT_EQ(c.mul, 15u + 6 + 3 + 3 + 6 + 6 + 9);
-  EXPECT_EQ(c.add, 8u + 6 + 2 + 2 + 3 + 2 + 3 + 2 + 6 + 3);
-  EXPECT_EQ(c.div, 1u);
-  EXPECT_EQ(c.sqrt, 0u);
-  EXPECT_EQ(c.other, 4u);
+  expectOps(counted("morphRotorFrame"),
+            {15 + 6 + 3 + 3 + 6 + 6 + 9, 8 + 6 + 2 + 2 + 3 + 2 + 3 + 2 + 6 + 3, 1, 4}, "frame method");
 }
 
 // The SPIR-V side (glslang + spirv-opt -O of each kernel's probe), printed beside the counted
