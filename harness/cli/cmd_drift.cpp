@@ -31,6 +31,8 @@ int runDrift(const std::vector<std::string>& argv) {
   if (!args.error().empty()) return fail(args.error());
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
   const std::optional<double> steps = double(args.integer("steps", 1000000, 1, 1000000000));
+  if (const auto path = args.get("json"))  // refused (or its folder made) before the steps
+    if (Status ok = prepareOutputFile("--json", *path); !ok) return fail(ok.error());
   const nlohmann::json j = report::driftJson(int64_t(*steps));
   std::printf("Camera drift after %.0f steps (turn 2e-3 rad + move 1e-3 per step, float):\n"
               "distance from the group: matrix max|M^T eta M - eta|, motor max(|M~M - 1|) "

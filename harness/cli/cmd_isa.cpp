@@ -76,3 +76,11 @@ int runIsaCommand(const std::vector<std::string>& argv) {
 MB_COMMAND(isa, "isa", "[--family F,...] [--json FILE] [--isa-text DIR] [--device] [--jobs N]",
            "AMD ISA statistics (instructions, registers, occupancy) of every pipeline's shaders "
            "from Mesa RADV's null device, GCN 1 to RDNA 3", runIsaCommand);
+MB_COMMAND_HELP(isa, "isa",
+               "  --family F,...     GPU families (a name selects both NGG settings, e.g. navi21; an id one,\n"
+               "                     e.g. navi21-ngg); default: every family, GCN 1 to RDNA 3\n"
+               "  --json FILE        every statistic as JSON (missing folders are created; checked first)\n"
+               "  --isa-text DIR     the disassembly of every shader, one file each\n"
+               "  --device           also every real Vulkan device that reports its statistics (pipeline executable properties)\n"
+               "  --jobs N           compiles in parallel (1..64; default: the cores)\n",
+                "motorbench isa --family navi21,gfx1100 --json out/isa.json", false);

@@ -8,6 +8,7 @@
 #include "harness/options/args.h"
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
+#include "harness/process/progress.h"
 #include "harness/ops/op_count.h"
 #include "harness/ops/op_kernels.h"
 #include "harness/isa/isa_ops.h"
@@ -31,7 +32,11 @@ int runOps(const std::vector<std::string>& argv) {
       std::fprintf(stderr, "motorbench ops: %s\n", ok.error().c_str());
       return 2;
     }
+  // Four steps, about a minute in all (the SPIR-V and ISA compiles): a line on stderr after each,
+  // so a silent terminal never looks hung.
+  mb::Progress progress("ops", "steps done", 4, false);
   const std::vector<mb::ops::Row> rows = mb::ops::measureAll(mb::ops::allKernels());
+  progress.done("kernels counted (" + std::to_string(rows.size()) + ")");
 
   std::printf("Arithmetic per kernel, counted by executing shaders/pga.glsl and the GLSL matrix\n"
               "operators on an op-counting scalar (subtraction = add, negation free).\n"
@@ -44,15 +49,18 @@ int runOps(const std::vector<std::string>& argv) {
 
   // Per-vertex transforms of each pipeline, counted and from SPIR-V (harness/ops/ops_vertex.h).
   const mb::opsv::VertexOps perVertex = mb::opsv::measureVertexOps();
+  progress.done("per-vertex transforms counted and compiled to SPIR-V");
   std::printf("\n");
   std::fputs(mb::opsv::formatVertexOps(perVertex).c_str(), stdout);
   const std::vector<mb::opsv::PipelineOps> perPipeline = mb::opsv::pipelineOps(perVertex);
+  progress.done("per-pipeline ops");
   std::printf("\n");
   std::fputs(mb::opsv::formatPipelineOps(perPipeline).c_str(), stdout);
 
   // The same variants as AMD's compiler builds them (harness/isa), when RADV is installed.
   std::fflush(stdout);
   const auto isa = mb::isa::runIsa({});
+  progress.done(isa ? "AMD ISA compiled (RADV)" : "no AMD ISA (" + isa.error() + ")");
   if (isa) std::fputs(mb::isa::formatIsaBesideOps(perVertex, *isa).c_str(), stdout);
   else std::printf("\nNo ISA columns: %s\n", isa.error().c_str());
 

@@ -1,5 +1,7 @@
-// `motorbench time [SCENE|DIR...] [--frames N] [--warmup W] [--size WxH] [--tiny WxH]
-//  [--best-of K] [--level N[,M...]] [--instances N] [--lp-threads N] [--json FILE]`: frame time of every registered pipeline on each scene
+// `motorbench time [SCENE|DIR...] [--pipelines A,B...] [--anim A] [--frames N] [--warmup W] [--size WxH]
+//  [--tiny WxH] [--best-of K] [--level N[,M...]] [--instances N] [--lp-threads N] [--json FILE]`: frame time
+// of every registered pipeline (or those --pipelines names) on each scene, playing one animation
+// (--anim, default 0; said per scene, never a blend of two)
 // (harness/timing/frame_timing.h), printed as medians with quartiles and as motor/matrix ratios
 // measured in the same run. No SCENE: every built-in scene. A scene that draws at least
 // timing::kVertexBoundVerticesPerPixel vertices per pixel of a tiny viewport (--tiny, default
@@ -70,7 +72,16 @@ int timeOneScene(const std::string& name, const timing::Settings& normal, const 
     std::fprintf(stderr, "motorbench time: error: %s\n", scene.error().c_str());
     rows.push_back({{"scene", name}, {"error", scene.error()}});
     status = 2;
-  } else {
+  }
+  // The one animation played, said before the rows (a file with several would otherwise leave
+  // the reader guessing which pose was timed).
+  Result<ChosenAnimation> anim = scene ? chooseAnimation(args, *scene) : Result<ChosenAnimation>::fail("");
+  if (scene && !anim) {
+    std::fprintf(stderr, "motorbench time: error: %s\n", anim.error().c_str());
+    rows.push_back({{"scene", name}, {"error", anim.error()}});
+    status = 2;
+  } else if (scene) {
+    std::printf("%s: timing %s\n", name.c_str(), anim->text.c_str());
     // Bezier patch scenes: one pass per refinement level asked for (--level), all in this run.
     std::vector<int> passes = {scene->patchLevel};
     if (!levels.empty() && computeFileStats(*scene).patches > 0) passes = levels;
@@ -78,7 +89,9 @@ int timeOneScene(const std::string& name, const timing::Settings& normal, const 
       scene->patchLevel = level;
       std::vector<timing::Settings> configs = {normal};
       if (timing::drawsVertexBoundAt(*scene, tiny.width, tiny.height)) configs.push_back(tiny);
-      for (const timing::Settings& cfg : configs) {
+      for (timing::Settings& cfg : configs) {
+        cfg.animation = anim->index;
+        if (auto list = args.get("pipelines")) cfg.pipelines = splitList(*list);
         auto r = timing::timeScene(*scene, name, cfg);
         if (!r) {
           std::fprintf(stderr, "motorbench time: error: %s\n", r.error().c_str());
@@ -89,6 +102,8 @@ int timeOneScene(const std::string& name, const timing::Settings& normal, const 
         printRow(*r);
         for (const auto& t : r->pipelines) status = t.error.empty() ? status : 2;
         rows.push_back(timing::toJson(*r));
+        rows.back()["animation"] = {{"index", anim->index < 0 ? nlohmann::json(nullptr) : nlohmann::json(anim->index)},
+                                    {"text", anim->text}};
       }
     }
     // The bytes each level costs, instanced vs pre-tessellated (measured uploads).
@@ -116,7 +131,7 @@ int runTime(const std::vector<std::string>& argv) {
     return 2;
   };
   const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level",
-                          "instances", "gpu"},
+                          "instances", "gpu", "pipelines", "anim"},
                          {},
                          {}});
   if (!args.error().empty()) return fail(args.error());
@@ -131,6 +146,10 @@ int runTime(const std::vector<std::string>& argv) {
   tiny.config = "vertex-bound";
   std::tie(tiny.width, tiny.height) = args.size("tiny", 64, 64);
   args.integer("instances", 1, 1, kMaxInstances);  // checked here; each worker applies it
+  if (auto list = args.get("pipelines")) {  // checked before any scene is timed
+    if (splitList(*list).empty()) return fail("--pipelines " + *list + ": expected pipeline names, e.g. matrix,motor");
+    if (Status ok = checkPipelineNames("--pipelines", splitList(*list)); !ok) return fail(ok.error());
+  }
   // llvmpipe reads LP_NUM_THREADS when the context is created, which has not happened yet.
   if (args.has("lp-threads"))
     setenv("LP_NUM_THREADS", std::to_string(args.integer("lp-threads", 0, 0, 1024)).c_str(), 1);
@@ -190,7 +209,7 @@ int runTime(const std::vector<std::string>& argv) {
   Progress progress("time", "scenes done", names.size(), false);
   for (const std::string& name : names) {
     std::vector<std::string> child = {"time", name, "--worker", scratch};
-    for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level", "instances"})
+    for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level", "instances", "pipelines", "anim"})
       if (auto v = args.get(key)) child.insert(child.end(), {std::string("--") + key, *v});
     std::filesystem::remove(scratch);
     std::fflush(stdout);  // the child prints its rows to the same stdout
@@ -249,7 +268,7 @@ int runTime(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(time, "time",
-           "[SCENE|DIR...] [--frames N] [--warmup W] [--best-of K] [--size WxH] [--tiny WxH] "
+           "[SCENE|DIR...] [--pipelines A,B...] [--anim A] [--frames N] [--warmup W] [--best-of K] [--size WxH] [--tiny WxH] "
            "[--level N[,M...]] [--instances N] [--lp-threads N] [--gpu auto|llvmpipe|N] [--json FILE]",
            "frame time (glFinish wall clock) and CPU update time of every pipeline; motor/matrix "
            "ratios from one interleaved run; scenes with >= 10 drawn vertices per tiny-viewport pixel "
@@ -257,6 +276,8 @@ MB_COMMAND(time, "time",
            mb::runTime);
 MB_COMMAND_HELP(time, "time",
                "  SCENE|DIR...       scenes to time (default: the built-in scenes)\n"
+               "  --pipelines A,B..  the pipelines timed (default: every registered one; ratios need matrix)\n"
+               "  --anim A           the one animation played, index or name (default 0; each scene says which)\n"
                "  --frames N         measured frames per pipeline (default 30);  --warmup W  dropped first (default 5)\n"
                "  --best-of K        renders per frame, the fastest kept (default 3)\n"
                "  --size WxH         viewport (default 512x512);  --tiny WxH  the vertex-bound viewport (default 64x64)\n"
@@ -264,5 +285,5 @@ MB_COMMAND_HELP(time, "time",
                "  --lp-threads N     LP_NUM_THREADS for llvmpipe\n"
                "  --json FILE        every sample, spread and ratio as JSON (missing folders are created; checked first)\n"
                "  Ratios are motor/matrix (< 1: motor faster) with their spread [q1-q3]; \"noise\" marks a ratio\n"
-               "  whose quartiles lie on both sides of 1.\n",
+               "  whose quartiles lie on both sides of 1; \"too few frames\" one measured on fewer than 5 frames.\n",
                 "motorbench time normal_torus --frames 5 --warmup 1 --json out/time.json", false);

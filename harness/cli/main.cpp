@@ -34,6 +34,12 @@ static const mb::Command* findCommand(const char* name) {
 int main(int argc, char** argv) {
   // `motorbench help CMD`: that command's help, as `motorbench CMD --help`.
   if (argc == 3 && !std::strcmp(argv[1], "help")) {
+    if (!std::strcmp(argv[2], "help")) {  // help about help: how to ask, and the commands
+      std::printf("usage: motorbench help <command>\n  the command's usage, options, pipeline names and an example "
+                  "(the same as motorbench <command> --help); motorbench help alone lists the commands\n\n");
+      usage();
+      return 0;
+    }
     const mb::Command* c = findCommand(argv[2]);
     if (!c) {
       std::fprintf(stderr, "motorbench help: unknown command '%s' (motorbench --help lists them)\n", argv[2]);

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstdlib>
+#include <system_error>
 #include <filesystem>
 #include <fstream>
 
@@ -32,6 +35,15 @@ Status writableFolder(const std::string& option, const std::string& path, const 
   if (ec) return Status::fail(option + " " + path + ": cannot create folder " + d.string() + ": " + ec.message());
   if (::access(d.c_str(), W_OK | X_OK) != 0)
     return Status::fail(option + " " + path + ": cannot write into folder " + d.string() + " (no write permission)");
+  // access() says yes to root on any folder, and knows nothing of read-only mounts: make and
+  // remove a file there, so the refusal comes now and not after the work.
+  std::string probe = (d / ".motorbench-write-probe-XXXXXX").string();
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0)
+    return Status::fail(option + " " + path + ": cannot write into folder " + d.string() + " (" +
+                        std::error_code(errno, std::generic_category()).message() + ")");
+  ::close(fd);
+  ::unlink(probe.c_str());
   return Status();
 }
 

@@ -108,7 +108,14 @@ double Args::real(const std::string& key, double fallback, double min, double ma
   auto v = get(key);
   if (!v) return fallback;
   char* end = nullptr;
-  const double d = std::strtod(v->c_str(), &end);
+  double d = std::strtod(v->c_str(), &end);
+  // A fraction N/D too ("--fail 1/255": the help speaks of byte steps in /255).
+  if (!v->empty() && end != v->c_str() && *end == '/') {
+    char* denEnd = nullptr;
+    const double den = std::strtod(end + 1, &denEnd);
+    d = denEnd != end + 1 && den != 0 ? d / den : std::nan("");
+    end = denEnd;
+  }
   if (v->empty() || *end != '\0' || !std::isfinite(d) || d < min || d > max)
     throw OptionError("--" + key + ": expected " + what + " " + rangeText(min, max, false, *end == '\0' && d > max) +
                       ", got '" +

@@ -53,7 +53,7 @@ public:
   // --key as a whole number in [min, max] (`fallback` when absent). Throws OptionError:
   // "--frames: expected a whole number >= 1, got 'abc'" / "... in 1..256, got '0'".
   long integer(const std::string& key, long fallback, long min, long max) const;
-  // --key as a finite number in [min, max]; `what` names the quantity in the error
+  // --key as a finite number, or a fraction N/D ("1/255"), in [min, max]; `what` names the quantity in the error
   // ("a time in seconds" -> "--time: expected a time in seconds >= 0, got '-1'").
   double real(const std::string& key, double fallback, double min, double max,
               const std::string& what = "a number") const;

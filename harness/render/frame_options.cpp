@@ -108,6 +108,21 @@ Status checkPipelineNames(const std::string& option, const std::vector<std::stri
   return Status();
 }
 
+Result<ChosenAnimation> chooseAnimation(const Args& args, const Scene& scene) {
+  ChosenAnimation c;
+  if (auto a = args.get("anim")) {
+    auto i = resolveIndex("anim", *a, scene.animations.size(), [&](size_t k) { return scene.animations[k].name; },
+                          scene.source + " (animations)");
+    if (!i) return Result<ChosenAnimation>::fail(i.error());
+    c.index = *i;
+  } else if (!scene.animations.empty()) {
+    c.index = 0;
+  }
+  c.text = c.index < 0 ? "the rest pose (no animations)" : animText(scene, c.index);
+  if (!args.has("anim") && scene.animations.size() > 1) c.text += "; --anim picks another";
+  return c;
+}
+
 Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene, std::vector<std::string>* notesOut) {
   using R = Result<FrameSettings>;
   std::vector<std::string> notes;

@@ -69,6 +69,12 @@ Result<SceneCommand> parseSceneCommand(const Args& args, const std::string& outp
 // (automatic framing, or the glTF camera's index, name and type), "size: WxH".
 std::vector<std::string> describeFrame(const Scene& scene, const FrameSettings& settings);
 
+// The one animation `time` plays: --anim A (index or name) resolved against `scene`; without
+// --anim, 0 when the scene has animations, else -1 (the rest pose). `text` says which, e.g.
+// "animation 1 'Run' (2 of 3, duration 0.8 s)" or "the rest pose (no animations)".
+struct ChosenAnimation { int index = -1; std::string text; };
+Result<ChosenAnimation> chooseAnimation(const Args& args, const Scene& scene);
+
 // Prints "motorbench <command>: error: <message>" on stderr; returns 2, the error exit code.
 int commandError(const char* command, const std::string& message);
 // Prints "motorbench <command>: <line>" on stderr for each line.

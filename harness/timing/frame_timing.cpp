@@ -49,17 +49,14 @@ int timerBits() {
   return bits;
 }
 
-// The animation state of frame `i`: animation 0 playing at 60 Hz (wrapped), blended halfway
-// with animation 1 when the scene has two, so the update samples and blends as it would.
-AnimState stateForFrame(const Scene& scene, int i) {
+// The animation state of frame `i`: animation `anim` alone playing at 60 Hz (wrapped); the rest
+// pose for -1 or a scene without that animation. (Blending two silently mixed a file's
+// animations into a pose neither shows.)
+AnimState stateForFrame(const Scene& scene, int i, int anim) {
   AnimState st;
-  if (scene.animations.empty()) return st;
-  auto at = [&](int a) {
-    const float d = scene.animations[size_t(a)].duration;
-    return d > 0 ? std::fmod(float(i) / 60.0f, d) : 0.0f;
-  };
-  st.anim = 0, st.time = at(0);
-  if (scene.animations.size() > 1) st.anim2 = 1, st.time2 = at(1), st.blend = 0.5f;
+  if (anim < 0 || size_t(anim) >= scene.animations.size()) return st;
+  const float d = scene.animations[size_t(anim)].duration;
+  st.anim = anim, st.time = d > 0 ? std::fmod(float(i) / 60.0f, d) : 0.0f;
   return st;
 }
 
@@ -130,6 +127,9 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   std::vector<std::unique_ptr<Pipeline>> live;  // parallel to `slots`
   std::vector<size_t> slots;                    // index into out.pipelines
   for (const std::string& name : pipelineNames(scene.curved.space)) {  // the scene's space's pair
+    if (!settings.pipelines.empty() &&
+        std::find(settings.pipelines.begin(), settings.pipelines.end(), name) == settings.pipelines.end())
+      continue;  // --pipelines: only those named
     PipelineTiming t;
     t.pipeline = name;
     auto p = createPipeline(name);
@@ -147,7 +147,7 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   }
 
   // A fixed camera (the rest pose's framing): the same view for every frame and pipeline.
-  const View view = frameScene(scene, stateForFrame(scene, 0),
+  const View view = frameScene(scene, stateForFrame(scene, 0, settings.animation),
                                float(settings.width) / float(settings.height));
   out.source = chooseFrameTimeSource(machine->realGpu, timerBits(), settings.forceTimerQueries);
   // One query object, reused: each result is read after the glFinish that ends its sample.
@@ -157,7 +157,7 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   // Process CPU: llvmpipe's threads work while the calling thread waits in glFinish.
   const DisturbanceWatch watch(CpuClock::Process);
   for (int i = 0; i < total; ++i) {
-    const AnimState st = stateForFrame(scene, i);
+    const AnimState st = stateForFrame(scene, i, settings.animation);
     for (size_t k = 0; k < live.size(); ++k) {
       // Alternate the order every frame: A B, B A, A B ...
       const size_t idx = i % 2 ? live.size() - 1 - k : k;

@@ -72,6 +72,10 @@ struct Settings {
   int width = 512, height = 512;
   std::string config = "normal";  // label: "normal", "vertex-bound"
   PipelineOptions options;        // given to every pipeline (e.g. the same SkinSpace for both)
+  // The one animation played (at 60 Hz, wrapped; -1: the rest pose), never a blend of two.
+  int animation = 0;
+  // The pipelines timed (registry order kept); empty: every registered one of the scene's space.
+  std::vector<std::string> pipelines;
   // Tests only: time with GL timer queries on a CPU rasteriser too (chooseFrameTimeSource).
   bool forceTimerQueries = false;
 };

@@ -32,6 +32,9 @@ std::string RatioText::text() const {
   if (spread.n == 0) return "-";
   char b[96];
   std::snprintf(b, sizeof b, "%.3f [%.3f-%.3f]%s", spread.median, spread.q1, spread.q3, noise() ? " noise" : "");
+  if (tooFewFrames())
+    std::snprintf(b, sizeof b, "%.3f [%.3f-%.3f] too few frames (%d < %d)", spread.median, spread.q1, spread.q3,
+                  spread.n, kMinRatioFrames);
   return b;
 }
 

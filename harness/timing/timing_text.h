@@ -9,12 +9,18 @@
 
 namespace mb::timing {
 
+// Fewer paired frames than this give no spread to judge a ratio by: from 5 on, the median and
+// the two quartiles are three different frames (with 1 frame all three are that frame).
+inline constexpr int kMinRatioFrames = 5;
+
 // A ratio's spread over paired per-frame ratios.
 struct RatioText {
   Spread spread;  // n == 0: not measured
   // Both quartiles on different sides of 1 (or on it): the frames do not decide which is faster.
   bool noise() const { return spread.n > 0 && spread.q1 <= 1.0 && spread.q3 >= 1.0; }
-  std::string text() const;  // "0.874 [0.801-0.950] noise", "-" when not measured
+  bool tooFewFrames() const { return spread.n > 0 && spread.n < kMinRatioFrames; }
+  // "0.874 [0.801-0.950] noise", "1.020 [1.020-1.020] too few frames (1 < 5)", "-" when not measured
+  std::string text() const;
 };
 RatioText pairedRatio(const std::vector<double>& baseline, const std::vector<double>& other);
 
