@@ -260,7 +260,7 @@ template <class D, size_t C> struct PaletteFetch {
 };
 
 // Joint indices of plane k at item i as int32 lanes.
-template <class D> HWY_INLINE hn::Vec<hn::RebindToSigned<D>> jointIndices(D d, JointPlanes j, size_t k, size_t i) {
+template <class D> HWY_INLINE hn::Vec<hn::RebindToSigned<D>> jointIndices(D /*d*/, JointPlanes j, size_t k, size_t i) {
   const hn::Rebind<uint16_t, D> d16;
   const hn::RebindToUnsigned<D> du;
   return hn::BitCast(hn::RebindToSigned<D>(), hn::PromoteTo(du, hn::LoadU(d16, j[k] + i)));
