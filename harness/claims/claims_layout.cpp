@@ -1,6 +1,7 @@
 #include "harness/claims/claims_layout.h"
 
 #include <map>
+#include <set>
 
 #include "harness/document/report_format.h"
 
@@ -17,8 +18,10 @@ json claimsJson(const std::vector<Claim>& claims, const json& machine, const jso
   json list = json::array();
   const json zero = {{"reproduced", 0}, {"differs", 0}, {"inconclusive", 0}, {"not measurable here", 0}, {"baseline", 0}};
   json counts = zero, paper = zero, own = zero;
+  std::set<std::string> tallied;  // a table row printed as a pair (gp_rt / gp_tr) counts once
   for (const Claim& c : claims) {
     list.push_back(toJson(c));
+    if (!tallied.insert(c.tallyAs.empty() ? c.id : c.tallyAs).second) continue;
     const std::string v = verdictName(c.verdict);
     counts[v] = counts[v].get<int>() + 1;
     json& side = originOf(c) == "paper" ? paper : own;
@@ -42,9 +45,11 @@ report::Document claimsDocument(const json& j) {
            " inconclusive, " + s(c["not measurable here"]) + " not measurable here";
   };
   if (j.contains("paperCounts")) {
-    d.paragraph("The paper's claims: " + tally(j["paperCounts"]) + ". Our own rows (reviewer baselines, the motor "
-                "against the strongest matrix variant, curved space, rows the paper does not claim; marked \"own\" "
-                "below): " + tally(j["ownCounts"]) + ", " + s(j["ownCounts"]["baseline"]) + " baselines.");
+    d.paragraph("The paper's claims (each row quotes the sentence or table row it tests; a table row printed as a "
+                "pair, such as gp_rt / gp_tr, counts once): " + tally(j["paperCounts"]) + ". Our own rows (no sentence "
+                "of the paper: reviewer baselines, the motor against the strongest matrix variant, curved space, "
+                "skinning volume, blending; marked \"own\" below): " + tally(j["ownCounts"]) + ", " +
+                s(j["ownCounts"]["baseline"]) + " baselines.");
   } else {
     d.paragraph(tally(j["counts"]) + "; " + s(j["counts"]["baseline"]) + " reviewer baselines.");
   }
@@ -57,7 +62,8 @@ report::Document claimsDocument(const json& j) {
   std::vector<std::string> lines;
   for (const json& cl : j["claims"])
     lines.push_back("`" + s(cl["id"]) + "`" + (cl.value("origin", "paper") == "paper" ? "" : " (" + s(cl["origin"]) + ")") +
-                    " " + s(cl["statement"]) + ": " + s(cl["verdictText"]) + " (paper: " +
+                    " " + s(cl["statement"]) + (cl.value("quote", json()).is_string() ? " — paper: " + s(cl["quote"]) : std::string()) +
+                    ": " + s(cl["verdictText"]) + " (paper: " +
                     s(cl["paper"]) + "; measured: " + s(cl["measured"]) + ")");
   d.bullets(lines);
   // Sections in first-seen order.

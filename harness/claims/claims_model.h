@@ -35,6 +35,10 @@ struct Claim {
   // "" : a claim the paper makes; else one of our own rows, by kind ("baseline", "vs strongest",
   // "curved"): counted apart from the paper's claims in the tally (issue 26 item 4).
   std::string origin;
+  // The paper's sentence (or table row) this row tests (claims_quotes.cpp); empty: ours.
+  std::string quote;
+  // Rows the paper prints as one table entry share a key and are tallied once ("" = the id).
+  std::string tallyAs;
 };
 
 // "paper" or "own: <kind>": the origin above, plus rows whose paper value says the paper does

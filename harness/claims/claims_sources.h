@@ -1,7 +1,10 @@
 // The families of claims `motorbench claims` checks, each measured where it is implemented:
 //   claims_ops.cpp       arithmetic of the PGA kernels and the matrix operators (counted)
 //   claims_memory.cpp    floats per vertex / transform / joint (PipelineStats of real uploads)
-//   claims_speed.cpp     "as fast as matrices" (bench kernel ratios + frame timing)
+//   claims_speed.cpp     "as fast as matrices": the rigid vertex (the paper's sentence), the skinned one
+//   claims_ranking.cpp   where counted ops, SPIR-V and ISA order the pipelines differently
+//   claims_isa_strongest.cpp  AMD ISA instructions and occupancy against the strongest matrix form
+//   claims_quotes.cpp    the paper's sentence each paper row tests (rows without one are ours)
 //   claims_corpus.cpp    animated / non-uniform scale (1e-4 rule) over a corpus of real files
 //   claims_skinning.cpp  volume kept by motor skinning vs LBS (candy wrapper)
 //   claims_baselines.cpp affine matrix path, full world-to-clip, skinning per vertex
@@ -80,7 +83,9 @@ std::vector<Claim> baselineClaims();
 
 // Curved space (section "Curved space"): floats per instance, ops per vertex, frame time
 // (when `runTiming`, `frames` per pipeline), drift over 10^6 steps. Needs GL.
-std::vector<Claim> curvedClaims(bool runTiming, int frames);
+// `reportScenes` (report.json's "scenes", or null): their curved scenes' timing is the frame-time
+// figure when present; else timed here when `runTiming`.
+std::vector<Claim> curvedClaims(bool runTiming, int frames, const nlohmann::json& reportScenes = nullptr);
 
 // Every pipeline's bytes per vertex, floats per transform and joint (renders of built-in
 // scenes), ops per vertex (counted and SPIR-V) and time ratios (`timings`: {scene: timing JSON},

@@ -18,6 +18,7 @@
 #include "harness/options/args.h"
 #include "harness/claims/claims_device.h"
 #include "harness/claims/claims_layout.h"
+#include "harness/claims/claims_quotes.h"
 #include "harness/claims/corpus_stats.h"
 #include "harness/claims/claims_sources.h"
 #include "harness/cli/command.h"
@@ -256,13 +257,14 @@ int runClaims(const std::vector<std::string>& argv) {
   add(all, claims::skinnedFileVolumeClaims(corpus.corpusDir));
   add(all, claims::baselineClaims(), "baseline");
   say("curved space (uploads, ops, frame timing, drift)");
-  add(all, claims::curvedClaims(run, int(args.integer("frames", 20, 1, 100000))), "curved");
+  add(all, claims::curvedClaims(run, int(args.integer("frames", 20, 1, 100000)), report.value("scenes", json())), "curved");
   say("against the strongest baseline (every pipeline)");
   add(all, claims::strongestBaselineClaims(speed.timings, sources["frameTiming"].get<std::string>(), speed.kernelPairs,
                                            speed.kernelSource, speed.sceneStats, speed.timingMachine),
       "vs strongest");
   add(all, claims::isaStrongestClaims(speed.isa, speed.isaSource), "vs strongest");
 
+  claims::applyPaperQuotes(all);  // a row quoting the paper is the paper's; the rest are ours
   json machine = report::machineJson();
   json scope = {{"cpu", claims::cpuScope(speed.kernelMachine)},
                 {"frameTimeDevice", claims::timingDevice(speed.timingMachine).label()}};

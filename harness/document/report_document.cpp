@@ -150,6 +150,13 @@ json assembleReport(json machine, json settings, std::vector<json> scenes, json 
     auto differ = [&](const json& s) { return skinningMethodsDiffer(s, pipelines[i], pipelines[0]); };
     summary["images"][pipelines[i]] = imageSummary(scenes, pipelines[i], differ, false);
     summary["skinningMethodImages"][pipelines[i]] = imageSummary(scenes, pipelines[i], differ, true);
+    // The vertex format's own image cost (issue 35 item 5): frames of scenes where the pipeline
+    // uploads its mesh vertices (a scene of patches, the teapot, draws none of them).
+    const std::string p = pipelines[i];
+    auto ownVertices = [&](const json& s) {
+      return differ(s) || !(number(s, {"pipelines", p.c_str(), "memory", "bytesPerVertex"}) > 0);
+    };
+    summary["vertexFormatImages"][p] = imageSummary(scenes, p, ownVertices, false);
   }
   json curved = json::array(), origins = {{"built-in", 0}, {"file", 0}};
   for (const json& s : scenes) {

@@ -1,6 +1,7 @@
 #include "harness/document/report_figures.h"
 
 #include <cmath>
+#include <map>
 
 #include "harness/document/report_format.h"
 
@@ -38,6 +39,27 @@ void frameTimeFigures(json& out, const std::vector<json>& scenes, const char* co
       perScene.push_back(f.value);
       if (sizes.find(sizeOf(c)) == std::string::npos) sizes += (sizes.empty() ? "" : ", ") + sizeOf(c);
     }
+  }
+  // Every pipeline against the matrix pipeline, from each scene's paired ratios (report_timing's
+  // pairedRatioToMatrix): the compact table and the plots read these.
+  std::map<std::string, std::vector<double>> byPipeline;
+  for (const json& s : scenes) {
+    if (!euclidean(s)) continue;
+    const json& c = config[0] ? at(s.value("timing", json()), {config}) : s.value("timing", json());
+    const json& ps = at(c, {"pipelines"});
+    if (!ps.is_object()) continue;
+    for (const auto& [p, v] : ps.items())
+      if (at(v, {"pairedRatioToMatrix", "median"}).is_number()) byPipeline[p].push_back(v["pairedRatioToMatrix"]["median"]);
+  }
+  for (const auto& [p, v] : byPipeline) {
+    Figure f;
+    f.name = key + "." + p + "_over_matrix";
+    f.unit = "x";
+    f.statistic = kOverScenes;
+    f.scope = std::string(config[0] ? "vertex-bound viewport, " : "whole frame, ") + "Euclidean scenes";
+    f.device = device;
+    f.definition = "frame time " + p + " / matrix (< 1: " + p + " faster); spread: the interquartile range over the scenes";
+    figures::put(out, figures::withQuartiles(f, figures::quartilesOf(v)));
   }
   Figure all;
   all.name = key + ".motor_over_matrix";

@@ -31,8 +31,17 @@ json configJson(const timing::ConfigTiming& c, const std::vector<std::string>& p
                                     {"gpuMedianMs", t.gpuMs.empty() ? json() : json(t.gpu.median)},
                                     {"cpuMedianMs", t.cpu.median},
                                     {"updateMedianMs", t.update.median},
+                                    {"updateCallsPerBlock", t.updateRepeats},
                                     {"drawnVertices", t.stats.drawnVertices},
                                     {"verticesPerUs", timing::verticesPerUs(t)}};
+    // Frame time / the space's matrix pipeline: the median of per-frame paired ratios with their
+    // quartiles (the one statistic of a time ratio, harness/figures).
+    for (const timing::PipelineTiming& m : c.pipelines)
+      if (m.error.empty() && (m.pipeline == "matrix" || m.pipeline.ends_with("_matrix"))) {
+        const timing::Spread r = timing::spreadOf(timing::pairedRatios(m.frameMs, t.frameMs));
+        if (r.n > 0)
+          out["pipelines"][t.pipeline]["pairedRatioToMatrix"] = {{"median", r.median}, {"q1", r.q1}, {"q3", r.q3}, {"n", r.n}};
+      }
     json phases = json::object();  // the update's phases, median ms per call
     for (int k = 0; k < timing::kUpdatePhaseCount; ++k) phases[timing::kUpdatePhases[k].key] = t.phases[k].median;
     out["pipelines"][t.pipeline]["updatePhasesMedianMs"] = phases;

@@ -75,23 +75,30 @@ ScaleReport analyzeScale(const Scene& scene) {
       ns.animated = true;
       const glm::vec3 rest = scene.nodes[size_t(c.node)].local.scale;
       const std::vector<glm::vec3> keys = scaleKeys(c);
-      bool changes = false, keyNonUniform = false;
+      bool changes = false, offRest = false, keyNonUniform = false;
       for (const glm::vec3& s : keys) {
         ns.animatedNonUniform |= isNonUniform(s);
         ns.animatedNegative |= s.x * s.y * s.z < 0.0f;
         const double nu = scaleNonUniformity(s);
         if (nu > ns.nonUniformity) ns.nonUniformity = nu, ns.leastUniform = s;
         keyNonUniform |= nu > kPaperScaleTolerance;
-        // Against the rest scale and the first key: a key that differs from either changes the
-        // pose's scale (a channel of constant keys equal to the rest scale animates nothing).
-        changes |= scaleChange(rest, s) > kPaperScaleTolerance || scaleChange(keys.front(), s) > kPaperScaleTolerance;
+        // Animating scale = the keys change over time (issue 35 item 6): a key differs from the
+        // first. Constant keys (all 1, or a fixed scale other than the rest scale) are counted
+        // apart: they set a scale, they do not animate it.
+        changes |= scaleChange(keys.front(), s) > kPaperScaleTolerance;
+        offRest |= scaleChange(rest, s) > kPaperScaleTolerance;
       }
       r.changingScaleChannels += changes;
       r.nonUniformChangingChannels += changes && keyNonUniform;
+      r.constantScaleChannels += !changes;
+      r.constantScaleChannelsOffRest += !changes && offRest;
+      r.animatedNonUniformKeys |= keyNonUniform;
     }
   for (size_t i = 0; i < r.nodes.size(); ++i) {
     const NodeScale& ns = r.nodes[i];
-    bool nonUniform = ns.restNonUniform || ns.animatedNonUniform || ns.shear;
+    // The statistics take one tolerance (kPaperScaleTolerance, relative): the per-node flags above
+    // (kScaleTolerance) are the motor fallback's, not a statistic.
+    const bool nonUniform = ns.shear || ns.nonUniformity > kPaperScaleTolerance;
     r.uniformNodes += ns.restClass == ScaleClass::Uniform;
     r.nonUniformNodes += ns.restNonUniform;
     r.negativeNodes += ns.restClass == ScaleClass::Negative || ns.animatedNegative;
@@ -101,7 +108,7 @@ ScaleReport analyzeScale(const Scene& scene) {
     r.nonUniformScale |= nonUniform;
     r.negativeScale |= ns.restClass == ScaleClass::Negative || ns.animatedNegative;
     r.animatedScale |= ns.animated;
-    r.animatedNonUniformScale |= ns.animatedNonUniform;
+    r.animatedNonUniformScale = r.animatedNonUniformKeys;
     if (nonUniform && !ns.leaf) r.nonUniformOnlyOnLeaves = false;
     if (!ns.leaf && ns.nonUniformity > kPaperScaleTolerance) {
       ++r.innerNonUniformNodes;

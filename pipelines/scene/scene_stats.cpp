@@ -156,9 +156,11 @@ nlohmann::json toJson(const FileStats& f) {
                 {"nonUniform", r.nonUniformScale}, {"negative", r.negativeScale},
                 {"animated", r.animatedScale}, {"animatedNonUniform", r.animatedNonUniformScale},
                 {"nonUniformOnlyOnLeaves", r.nonUniformOnlyOnLeaves},
-                // The paper's 1e-4 relative rule (scale_analysis.h): the corpus statistics.
+                // The statistics' one relative tolerance (scale_analysis.h): 1e-4.
                 {"paperTolerance", kPaperScaleTolerance}, {"scaleChannels", r.scaleChannels},
                 {"changingScaleChannels", r.changingScaleChannels},
+                {"constantScaleChannels", r.constantScaleChannels},
+                {"constantScaleChannelsOffRest", r.constantScaleChannelsOffRest},
                 {"nonUniformChangingChannels", r.nonUniformChangingChannels},
                 {"innerNonUniformNodes", r.innerNonUniformNodes}};
   if (r.innerNonUniformNode >= 0) {
@@ -189,7 +191,7 @@ nlohmann::json aggregateFileJson(const nlohmann::json& files) {
       withUnsupported = 0, withFallbacks = 0, skinned = 0, normalMapped = 0;
   // The paper's 1e-4 rule: changing scale channels, of them non-uniform, inner non-uniform nodes
   // (and of those beyond 1 %, so a reader sees how far beyond the tolerance they are).
-  int changing = 0, changingNonUniform = 0, inner = 0, innerBeyondPercent = 0;
+  int changing = 0, changingNonUniform = 0, inner = 0, innerBeyondPercent = 0, constantOnly = 0;
   long vertices = 0, triangles = 0, primitives = 0, joints = 0, channels = 0;
   const nlohmann::json noFallbacks = toJson(LoadStats{});
   for (const nlohmann::json& f : files) {
@@ -202,6 +204,7 @@ nlohmann::json aggregateFileJson(const nlohmann::json& files) {
     negative += sc.value("negative", false);
     leavesOnly += sc.value("nonUniform", false) && sc.value("nonUniformOnlyOnLeaves", false);
     changing += sc.value("changingScaleChannels", 0) > 0;
+    constantOnly += sc.value("changingScaleChannels", 0) == 0 && sc.value("constantScaleChannels", 0) > 0;
     changingNonUniform += sc.value("nonUniformChangingChannels", 0) > 0;
     inner += sc.value("innerNonUniformNodes", 0) > 0;
     const nlohmann::json worst = sc.value("innerNonUniformityMax", nlohmann::json());
@@ -227,6 +230,7 @@ nlohmann::json aggregateFileJson(const nlohmann::json& files) {
           {"filesWithNonUniformOnlyOnLeaves", leavesOnly},
           {"paperTolerance", kPaperScaleTolerance},
           {"filesWithChangingScale", changing}, {"fractionChangingScale", frac(changing)},
+          {"filesWithOnlyConstantScaleChannels", constantOnly},
           {"filesWithNonUniformChangingScale", changingNonUniform},
           {"filesWithInnerNonUniformScale", inner}, {"filesWithInnerNonUniformScaleBeyond1Percent", innerBeyondPercent},
           {"filesWithNegativeScale", negative}, {"fractionNegativeScale", frac(negative)},

@@ -88,12 +88,14 @@ TEST(ClaimsCorpus, ChangingChannelsAndInnerNodes) {
   EXPECT_DOUBLE_EQ(r.innerNonUniformityMax, 1.0);  // |1/2 - 1| and |2/1 - 1|: the larger is 1
   EXPECT_EQ(r.innerNonUniformScale, glm::vec3(1, 2, 1));
 
-  // A constant channel that differs from the rest scale changes the posed scale.
+  // A constant channel that differs from the rest scale sets a scale; it does not animate one
+  // (issue 35 item 6): counted apart.
   Scene rest = twoNodes({1, 1, 1}, {3, 3, 3});
   Animation b;
   b.channels.push_back(scaleChannel(1, {{1, 1, 1}, {1, 1, 1}}));
   rest.animations.push_back(b);
-  EXPECT_EQ(analyzeScale(rest).changingScaleChannels, 1);
+  EXPECT_EQ(analyzeScale(rest).changingScaleChannels, 0);
+  EXPECT_EQ(analyzeScale(rest).constantScaleChannelsOffRest, 1);
 
   // CUBICSPLINE [in, value, out] per key: tangents of (9, 1, 9) must not count as a change.
   Scene cubic = twoNodes({1, 1, 1}, {1, 1, 1});
@@ -177,4 +179,48 @@ TEST(ClaimsCorpus, VerdictsCountTheGivenFilesByKind) {
   in.sceneGraphs = json::array({files[0], files[1]});
   EXPECT_EQ(only(claims::corpusClaims(in), "animated_scale_corpus").verdict, claims::Verdict::NotMeasurable);
   fs::remove_all(dir);
+}
+
+// Issue 35 item 6, against scales worked by hand: a scale channel animates scale only when its
+// keys change over time (constant channels, equal to the rest scale or not, are counted apart),
+// and one relative tolerance (1e-4) decides non-uniformity for every statistic, so "only on
+// leaves" and the inner-node count can never disagree.
+TEST(ScaleDefinitions, ConstantChannelsAreCountedApartFromAnimatedOnes) {
+  Scene s = twoNodes({1, 1, 1}, {1, 1, 1});
+  Animation a;
+  a.channels.push_back(scaleChannel(1, {{1, 1, 1}, {1, 1, 1}, {1, 1, 1}}));  // RiggedSimple's kind: all 1
+  a.channels.push_back(scaleChannel(0, {{2, 2, 2}, {2, 2, 2}}));              // constant, not the rest scale 1
+  a.channels.push_back(scaleChannel(1, {{1, 1, 1}, {1.5f, 1.5f, 1.5f}}));     // changes by 50 %
+  a.channels.push_back(scaleChannel(1, {{1, 1, 1}, {1.00005f, 1, 1}}));       // 5e-5: within 1e-4, constant
+  s.animations.push_back(a);
+  const ScaleReport r = analyzeScale(s);
+  EXPECT_EQ(r.scaleChannels, 4);
+  EXPECT_EQ(r.changingScaleChannels, 1);
+  EXPECT_EQ(r.constantScaleChannels, 3);
+  EXPECT_EQ(r.constantScaleChannelsOffRest, 1);
+  const nlohmann::json j = toJson(computeFileStats(s));
+  EXPECT_EQ(j["scale"]["constantScaleChannels"], 3);
+  const nlohmann::json agg = aggregateFileJson(nlohmann::json::array({j}));
+  EXPECT_EQ(agg["filesWithChangingScale"], 1);
+  EXPECT_EQ(agg["filesWithOnlyConstantScaleChannels"], 0);
+}
+
+TEST(ScaleDefinitions, OneNonUniformToleranceForLeavesAndInnerNodes) {
+  // (1, 1.00005, 1): |1/1.00005 - 1| = 5.0e-5 < 1e-4 -> uniform for every statistic (the motor
+  // fallback's own 1e-5 still sees it, per node).
+  ScaleReport r = analyzeScale(twoNodes({1, 1.00005f, 1}, {1, 1, 1}));
+  EXPECT_EQ(r.innerNonUniformNodes, 0);
+  EXPECT_TRUE(r.nonUniformOnlyOnLeaves);
+  EXPECT_FALSE(r.nonUniformScale);
+  EXPECT_TRUE(r.nodes[0].restNonUniform);
+  // (1, 1.001, 1): 1e-3 > 1e-4 on the inner node -> non-uniform, not only on leaves.
+  r = analyzeScale(twoNodes({1, 1.001f, 1}, {1, 1, 1}));
+  EXPECT_EQ(r.innerNonUniformNodes, 1);
+  EXPECT_FALSE(r.nonUniformOnlyOnLeaves);
+  EXPECT_TRUE(r.nonUniformScale);
+  // On the leaf only: non-uniform, only on leaves.
+  r = analyzeScale(twoNodes({1, 1, 1}, {1, 1.001f, 1}));
+  EXPECT_EQ(r.innerNonUniformNodes, 0);
+  EXPECT_TRUE(r.nonUniformOnlyOnLeaves);
+  EXPECT_TRUE(r.nonUniformScale);
 }

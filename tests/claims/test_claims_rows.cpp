@@ -75,17 +75,24 @@ TEST(ClaimsSceneGraph, FastestMatrixSideAndHybridExcluded) {
                                    {"matrix", {{"items_per_second", 100.0}}},
                                    {"glm", {{"items_per_second", 300.0}}},
                                    {"motor", {{"items_per_second", 200.0}}}}});
+  // The update's hierarchy phase is the evidence (issue 35 item 7), not the whole update (which
+  // also builds the skin palette): motor 1.0 against affine's 1.5 (hybrid and motor_q are no
+  // matrix side), whatever the whole updates say.
+  auto update = [](double whole, double hierarchy) {
+    return json{{"updateMedianMs", whole}, {"updatePhasesMedianMs", {{"hierarchy", hierarchy}}}};
+  };
   const json timings = {{"a",
                          {{"pipelines",
-                           {{"matrix", {{"updateMedianMs", 2.0}}},
-                            {"affine", {{"updateMedianMs", 1.5}}},
-                            {"hybrid", {{"updateMedianMs", 0.1}}},
-                            {"motor", {{"updateMedianMs", 1.0}}},
-                            {"motor_q", {{"updateMedianMs", 0.5}}}}}}}};
+                           {{"matrix", update(2.0, 2.0)},
+                            {"affine", update(0.2, 1.5)},
+                            {"hybrid", update(0.1, 0.1)},
+                            {"motor", update(9.0, 1.0)},
+                            {"motor_q", update(0.5, 0.5)}}}}}};
   const claims::Claim c = only(claims::sceneGraphClaims(pairs, timings, "test"), "scene_graph_update");
   const json& v = c.measuredValue;
   EXPECT_DOUBLE_EQ(v["hierarchy kernel (motorbench bench pair hierarchy)"]["costRatio"].get<double>(), 1.5);
-  EXPECT_DOUBLE_EQ(v["Pipeline::update on a"]["costRatio"].get<double>(), 1.0 / 1.5);
+  EXPECT_DOUBLE_EQ(v["hierarchy phase of Pipeline::update on a"]["costRatio"].get<double>(), 1.0 / 1.5);
+  EXPECT_EQ(c.measured.find("under load"), std::string::npos);
   EXPECT_EQ(c.verdict, claims::Verdict::Inconclusive) << c.verdictText;
   // Both gains: reproduced; nothing measured: not measurable.
   json faster = pairs;
@@ -266,12 +273,13 @@ TEST(ClaimsSpeed, KernelEvidenceIsFastestAgainstFastest) {
   EXPECT_EQ(f.matrixSide, "glm");
   EXPECT_DOUBLE_EQ(f.costRatio(), 0.8);
   const claims::Claim c = only(claims::speedClaims(in), "as_fast_as_matrices");
-  const json& cpu = c.measuredValue["CPU kernel vertex_frame vs the fastest matrix code measured"];
+  const json& cpu = c.measuredValue["kinds"]["CPU kernel vertex_frame, fastest motor vs fastest 4x4 matrix implementation"];
   ASSERT_TRUE(cpu["costRatio"].is_number()) << c.measuredValue.dump(2);
   EXPECT_DOUBLE_EQ(cpu["costRatio"].get<double>(), 2.0);
   EXPECT_NE(cpu["detail"].get<std::string>().find("simd_motor"), std::string::npos);
-  // No frame timing: some evidence is missing, so the verdict cannot be "reproduced".
+  // The CPU kind disagrees (2.0 > 1.1); no frame timing is listed, not counted.
   EXPECT_NE(c.verdict, claims::Verdict::Reproduced);
+  EXPECT_FALSE(c.measuredValue["kinds"]["frame time, vertex-bound dense_torus (median of per-frame paired ratios)"]["usable"]);
 }
 
 // When the fastest matrix side is another implementation class (GLM), the verdict names the
