@@ -24,7 +24,13 @@ COLOURS = {
     "s3_matrix": "#8c564b", "s3_motor": "#e377c2", "h3_matrix": "#393b79", "h3_motor": "#ad494a",
     "frame": "#3182bd", "64x64 viewport (vertex-bound)": "#e6550d", "CPU update": "#31a354",
     "in cache": "#6baed6", "out of cache (>= 256 MiB)": "#fd8d3c", "one working set": "#969696",
+    "matrix family": "#08519c", "motor family": "#e6550d",
 }
+# Every label is at least 10 px high at the plots' 90 dpi: 8 pt = 8 * 90 / 72 = 10 px.
+DPI = 90
+FONT = 8
+# One convention in every plot: ratios are cost motor side / matrix side, < 1 = motor side cheaper.
+CONVENTION = "< 1: motor side cheaper"
 SPARE = ["#637939", "#8c6d31", "#843c39", "#7b4173", "#5254a3", "#cedb9c"]
 
 
@@ -39,26 +45,52 @@ def num(x):
     return x if isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x) else None
 
 
+def figure(report, name):
+    """The figure `name` of report.json's "figures" (issue 35) or None; plots quote figures,
+    never recompute them."""
+    f = (report.get("figures") or {}).get(name)
+    return f if isinstance(f, dict) and num(f.get("value")) is not None else None
+
+
+def iqr(f):
+    """(q1, q3) of a figure's spread, or None."""
+    sp = (f or {}).get("spread") or {}
+    return (sp["q1"], sp["q3"]) if num(sp.get("q1")) is not None and num(sp.get("q3")) is not None else None
+
+
+def frame_device(report):
+    """Where frame times were measured, as the figures name it (else machine.gl)."""
+    f = figure(report, "frame_time.motor_over_matrix")
+    if f and f.get("device"):
+        return f["device"]
+    gl = (report.get("machine") or {}).get("gl") or {}
+    return gl.get("renderer", "unknown device") + ("" if gl.get("realGpu") else " (a CPU rasterizer)")
+
+
 def scenes_with(report, pred):
     return [s for s in report.get("scenes", []) if pred(s)]
 
 
 def save(fig, outdir, name):
     fig.tight_layout(rect=(0, 0, 1, 0.94))
-    fig.savefig(os.path.join(outdir, name + ".png"), dpi=90, metadata={"Software": None})
+    fig.savefig(os.path.join(outdir, name + ".png"), dpi=DPI, metadata={"Software": None})
 
 
-def grouped_bars(ax, labels, series, ylabel, digits=3, reference=None, bars=None, panel=None, texts=None):
+def grouped_bars(ax, labels, series, ylabel, digits=3, reference=None, bars=None, panel=None, texts=None,
+                 spreads=None):
     """Bars grouped per label: one bar per series in each group, side by side (never at the same
     x), coloured by the series' name (COLOURS), values written vertically above each bar so that
     neighbours do not overlap. series: [(name, [value or None])]; None values are left out.
     texts: {(series, label): text} drawn instead of a value (a bar of full axis height, hatched:
-    e.g. "identical" where a PSNR is infinite). Every bar drawn is appended to `bars` (the
-    plot's data in index.json): series, label, x, value, text, colour, panel."""
+    e.g. "identical" where a PSNR is infinite): a short hatched stub at the foot of the axis,
+    never a tall bar. spreads: {(series, label): (q1, q3)} drawn as error bars (the IQR). Every
+    bar drawn is appended to `bars` (the plot's data in index.json): series, label, x, value,
+    text, colour, panel, iqr."""
     n = max(1, len(series))
     width = 0.8 / n
     texts = texts or {}
-    finite = [v for _, vs in series for v in vs if v is not None]
+    spreads = spreads or {}
+    finite = [v for _, vs in series for v in vs if v is not None] + [q[1] for q in spreads.values()]
     top = max(finite) * 1.25 if finite else 1.0
     for i, (name, values) in enumerate(series):
         col = colour(name)
@@ -67,22 +99,29 @@ def grouped_bars(ax, labels, series, ylabel, digits=3, reference=None, bars=None
             text = texts.get((name, label))
             if v is None and text is None:
                 continue
+            spread = spreads.get((name, label))
+            height = top * 0.04 if text is not None else v
             if text is not None:
-                ax.bar(x, top, width, color=col, alpha=0.35, hatch="//", edgecolor=col)
-                ax.annotate(text, (x, top * 0.5), ha="center", va="center", rotation=90, fontsize=7)
+                ax.bar(x, top * 0.04, width, color=col, alpha=0.35, hatch="//", edgecolor=col)
+                ax.annotate(text, (x, top * 0.05), ha="center", va="bottom", rotation=90, fontsize=FONT)
             else:
                 ax.bar(x, v, width, color=col)
-                ax.annotate(f"{v:.{digits}g}", (x, v), ha="center", va="bottom", rotation=90, fontsize=6,
-                            xytext=(0, 2), textcoords="offset points")
+                if spread:
+                    ax.errorbar(x, v, yerr=[[max(0.0, v - spread[0])], [max(0.0, spread[1] - v)]],
+                                color="black", capsize=2, lw=0.8)
+                ax.annotate(f"{v:.{digits}g}", (x, max(v, spread[1] if spread else v)), ha="center", va="bottom",
+                            rotation=90, fontsize=FONT, xytext=(0, 2), textcoords="offset points")
             if bars is not None:
                 bars.append({"panel": panel, "series": name, "label": label, "x": round(x, 6),
-                             "value": v, "text": text, "colour": col})
+                             "value": v, "text": text, "colour": col, "iqr": list(spread) if spread else None,
+                             "height": height, "axisTop": top})
     if reference is not None:
         ax.axhline(reference, color="black", lw=0.8)
     ax.set_ylim(0, top * 1.15 if finite or texts else 1.0)
     ax.set_xticks(range(len(labels)))
-    ax.set_xticklabels(labels, rotation=30, ha="right", fontsize=8)
-    ax.set_ylabel(ylabel)
+    ax.set_xticklabels(labels, rotation=30, ha="right", fontsize=FONT)
+    ax.tick_params(axis="y", labelsize=FONT)
+    ax.set_ylabel(ylabel, fontsize=FONT + 1)
 
 
 def legend(fig, names):
@@ -90,7 +129,7 @@ def legend(fig, names):
     series' colour from the table."""
     from matplotlib.patches import Patch
     handles = [Patch(facecolor=colour(n), label=n) for n in names]
-    fig.legend(handles=handles, loc="upper center", ncol=min(len(names), 6), fontsize=8,
+    fig.legend(handles=handles, loc="upper center", ncol=min(len(names), 6), fontsize=FONT,
                bbox_to_anchor=(0.5, 1.0), frameon=False)
 
 
@@ -109,7 +148,8 @@ def plot_bytes_per_vertex(plt, report, outdir):
               for p in pipes]
     bars = []
     grouped_bars(ax, [s["id"] for s in scenes], series, "bytes / vertex", bars=bars)
-    ax.set_title("Vertex attribute bytes per vertex (position + frame + uv, from the uploads)", fontsize=9, pad=24)
+    ax.set_title("Vertex attribute bytes per vertex (position + frame + uv; device: the buffers uploaded)",
+                 fontsize=9, pad=24)
     legend(fig, pipes)
     save(fig, outdir, "bytes_per_vertex")
     return ("bytes_per_vertex", "Bytes per vertex",
@@ -133,8 +173,8 @@ def plot_ops_per_vertex(plt, report, outdir):
         series.append((p, vals))
     bars = []
     grouped_bars(ax, [s["id"] for s in scenes], series, "mul + add per vertex", bars=bars)
-    ax.set_title("Counted ops per drawn vertex (vertex shader incl. world to clip, "
-                 "weighted rigid/skinned)", fontsize=9, pad=24)
+    ax.set_title("Counted ops per drawn vertex (vertex shader incl. world to clip, weighted rigid/skinned; "
+                 "device: op-counting scalar)", fontsize=9, pad=24)
     legend(fig, pipes)
     save(fig, outdir, "ops_per_vertex")
     return ("ops_per_vertex", "Ops per vertex",
@@ -144,7 +184,10 @@ def plot_ops_per_vertex(plt, report, outdir):
 
 
 def plot_kernel_ratios(plt, report, outdir):
-    pairs = [p for p in report.get("kernels", {}).get("pairs", []) if num(p.get("ratio_motor_matrix"))]
+    # Time per item motor / matrix (the inverse of the throughput ratio): < 1 = motor side cheaper,
+    # as in every other plot. One Google Benchmark run per kernel: no spread to draw.
+    pairs = [dict(p, time_ratio=1.0 / p["ratio_motor_matrix"])
+             for p in report.get("kernels", {}).get("pairs", []) if num(p.get("ratio_motor_matrix"))]
     if not pairs:
         return None
     kernels = []
@@ -157,51 +200,70 @@ def plot_kernel_ratios(plt, report, outdir):
     fig, ax = plt.subplots(figsize=(8, 0.45 * len(kernels) + 1.4))
     bars = []
     for size, label, offset in sizes:
-        pts = [(k, p["ratio_motor_matrix"]) for k, name in enumerate(kernels) for p in pairs
+        pts = [(k, p["time_ratio"]) for k, name in enumerate(kernels) for p in pairs
                if p["kernel"] == name and p.get("size") == size]
         if not pts:
             continue
         ys = [k + offset for k, _ in pts]
         ax.barh(ys, [v for _, v in pts], 0.4, label=label, color=colour(label))
         for y, (k, v) in zip(ys, pts):
-            ax.annotate(f"{v:.2f}", (v, y), va="center", fontsize=7)
+            ax.annotate(f"{v:.2f}", (v, y), va="center", fontsize=FONT)
             bars.append({"panel": None, "series": label, "label": kernels[k], "x": round(y, 6), "value": v,
                          "text": None, "colour": colour(label)})
     ax.axvline(1.0, color="black", lw=0.8)
     ax.set_yticks(range(len(kernels)))
-    ax.set_yticklabels(kernels, fontsize=8)
+    ax.set_yticklabels(kernels, fontsize=FONT)
+    ax.tick_params(axis="x", labelsize=FONT)
     ax.invert_yaxis()
-    ax.set_xlabel("motor / matrix throughput (items/s; > 1: motor faster)")
-    ax.set_title("CPU kernel throughput ratios (Google Benchmark, shim-compiled shader source)", fontsize=9)
-    ax.legend(fontsize=8)
+    ax.set_xlabel("time per item motor / matrix (%s)" % CONVENTION, fontsize=FONT + 1)
+    ctx = report.get("kernels", {}).get("context") or {}
+    cpu = ctx.get("cpu_model") or (report.get("machine") or {}).get("cpu", "unnamed CPU")
+    ax.set_title("CPU kernel time ratios on %s (Google Benchmark, one run: no spread)" % cpu, fontsize=9)
+    ax.legend(fontsize=FONT)
     save(fig, outdir, "kernel_ratios")
-    return ("kernel_ratios", "Kernel throughput ratios",
-            "motorbench bench: items/s of the motor kernel over the matrix kernel of each pair, in "
-            "cache and out of cache.", bars)
+    return ("kernel_ratios", "Kernel time ratios",
+            "motorbench bench: time per item of the motor kernel over the matrix kernel of each pair (the "
+            "inverse of the throughput ratio; < 1: motor faster), in cache and out of cache; one run per "
+            "kernel, so no error bars.", bars)
 
 
 def plot_frame_time_ratio(plt, report, outdir):
-    scenes = scenes_with(report, lambda s: num((s.get("timing") or {}).get("ratio_motor_matrix")))
+    """Per scene, the figures the text quotes (frame_time.<scene>.motor_over_matrix and the
+    vertex-bound one: medians of per-frame paired ratios) with their IQR as error bars."""
+    scenes = [s for s in report.get("scenes", [])
+              if figure(report, "frame_time.%s.motor_over_matrix" % s.get("id"))
+              or num((s.get("timing") or {}).get("ratio_motor_matrix"))]
     if not scenes:
         return None
     labels = [s["id"] for s in scenes]
-    series = [("frame", [s["timing"]["ratio_motor_matrix"] for s in scenes])]
-    vb = [num((s["timing"].get("vertexBound") or {}).get("ratio_motor_matrix")) for s in scenes]
-    if any(v is not None for v in vb):
-        series.append(("64x64 viewport (vertex-bound)", vb))
+    series, spreads = [], {}
+    for name, key in (("frame", "frame_time"), ("64x64 viewport (vertex-bound)", "frame_time_vertex_bound")):
+        vals = []
+        for s in scenes:
+            f = figure(report, "%s.%s.motor_over_matrix" % (key, s["id"]))
+            if f is None and key == "frame_time":  # a report.json before the figures layer
+                vals.append(num((s.get("timing") or {}).get("ratio_motor_matrix")))
+                continue
+            vals.append(f["value"] if f else None)
+            if f and iqr(f):
+                spreads[(name, s["id"])] = iqr(f)
+        if any(v is not None for v in vals):
+            series.append((name, vals))
     cpu = [num((s["timing"].get("update") or {}).get("ratio_motor_matrix")) for s in scenes]
     if any(v is not None for v in cpu):
         series.append(("CPU update", cpu))
     fig, ax = plt.subplots(figsize=(width_for(len(scenes), len(series)), 4.0))
     bars = []
-    grouped_bars(ax, labels, series, "motor / matrix time (< 1: motor faster)", digits=2, reference=1.0, bars=bars)
-    ax.set_title("Frame-time ratios (median wall clock around glFinish)", fontsize=9, pad=24)
+    grouped_bars(ax, labels, series, "motor / matrix time (%s)" % CONVENTION, digits=3, reference=1.0, bars=bars,
+                 spreads=spreads)
+    ax.set_title("Frame-time ratios on %s" % frame_device(report), fontsize=9, pad=24)
     legend(fig, [name for name, _ in series])
     save(fig, outdir, "frame_time_ratio")
     return ("frame_time_ratio", "Frame-time ratios",
-            "Median frame time of the motor pipeline over the matrix pipeline's (curved scenes: their "
-            "space's pair, e.g. s3_motor / s3_matrix), both measured in one process with frames "
-            "interleaved; the CPU update (hierarchy, animation, skin palette) timed apart.", bars)
+            "Per scene, frame time motor / matrix: the median of per-frame paired ratios (both pipelines "
+            "render each frame back to back), error bars the interquartile range of those ratios; the values "
+            "are report.json's figures, the same the text quotes. CPU update: ratio of medians, timed apart "
+            "(no spread recorded). On a CPU rasterizer these times cannot discriminate GPU costs.", bars)
 
 
 def image_error_series(report, scenes, pipes):
@@ -241,17 +303,84 @@ def plot_image_error(plt, report, outdir):
     grouped_bars(a1, labels, psnr, "worst PSNR [dB]", digits=3, bars=bars, panel="psnr", texts=identical)
     grouped_bars(a2, labels, frac, "% pixels off by > 1/255", digits=2, bars=bars, panel="fractionOver1",
                  texts={k: "identical" for k in identical})
-    a1.set_title("Worst PSNR against %s (curved scenes: their space's matrix); hatched: identical" % baseline,
-                 fontsize=9, pad=24)
-    a2.set_title("Changed pixels (worst time)", fontsize=9)
+    a1.set_title("Worst PSNR against %s (curved scenes: their space's matrix); hatched stub: identical; "
+                 "device: images rendered on %s" % (baseline, frame_device(report)), fontsize=9, pad=24)
+    a2.set_title("Changed pixels (worst time); hatched stub: identical (0 %)", fontsize=9)
     legend(fig, pipes)
     save(fig, outdir, "image_error")
     return ("image_error", "Image error per scene",
             "Worst PSNR and largest fraction of pixels differing by more than one 8-bit step, "
             "over the scene's animation times, one bar per pipeline and scene; a scene whose frames "
-            "are identical to the baseline shows a hatched bar marked \"identical\". On skinned scenes "
+            "are identical to the baseline shows a short hatched stub marked \"identical\" (never a tall bar). On skinned scenes "
             "a pipeline that blends joint motors differs from the LBS baseline by design (the methods' "
             "expected difference, not an error).", bars)
+
+
+def design_space_points(report):
+    """One point per pipeline: x = bytes fetched per vertex, y = ISA instructions of the rigid
+    vertex shader on the newest AMD family measured (else counted ops to clip, said on the axis),
+    family and the GPU frame time over the baseline where a GPU measured it. All figures."""
+    pipes = (report.get("settings") or {}).get("pipelines", [])
+    families = report.get("pipelineFamilies") or {}
+    isa = [f.get("id") for f in ((report.get("isa") or {}).get("families") or [])]
+    fam = isa[-1] if isa else None
+    gpu = bool(((report.get("machine") or {}).get("gl") or {}).get("realGpu"))
+    if fam:
+        ylabel = "ISA instructions, rigid VS (RADV %s)" % fam
+    else:
+        ylabel = "ops per vertex, rigid to clip (counted; no ISA in this report)"
+    points = []
+    for p in pipes:
+        x = figure(report, "vertex_fetch.bytes_per_vertex." + p)
+        y = figure(report, ("isa.instructions.rigid.%s.%s" % (fam, p)) if fam else "ops_per_vertex.to_clip.counted." + p)
+        if not x or not y:
+            continue
+        t = figure(report, "frame_time.over_baseline." + p) if gpu else None
+        points.append({"pipeline": p, "family": families.get(p, "matrix") + " family", "x": x["value"],
+                       "y": y["value"], "time": t["value"] if t else None})
+    return points, ylabel, gpu
+
+
+def plot_design_space(plt, report, outdir):
+    points, ylabel, gpu = design_space_points(report)
+    if not points:
+        return None
+    fig, ax = plt.subplots(figsize=(7.0, 3.0))
+    bars = []
+    seen = {}
+    for pt in points:
+        col = colour(pt["family"])
+        # Pipelines at the same point: one label, and each later marker smaller so every
+        # family's colour shows.
+        key = (round(pt["x"], 3), round(pt["y"], 3))
+        seen.setdefault(key, []).append(pt)
+        ax.scatter([pt["x"]], [pt["y"]], color=col, s=60 / len(seen[key]), zorder=2 + len(seen[key]))
+        bars.append({"panel": None, "series": pt["family"], "label": pt["pipeline"], "x": pt["x"], "value": pt["y"],
+                     "text": None if pt["time"] is None else "%.2fx" % pt["time"], "colour": col, "iqr": None})
+    xs = [p["x"] for p in points]
+    ys = [p["y"] for p in points]
+    close = (max(ys) - min(ys)) * 0.06
+    placed = []
+    for (x, y), pts in sorted(seen.items(), key=lambda kv: -kv[0][1]):
+        text = ", ".join(p["pipeline"] + ("" if p["time"] is None else " %.2fx" % p["time"]) for p in pts)
+        # A label near one already placed at the same x goes below its point, not over it.
+        below = any(abs(px - x) < 1e-6 and abs(py - y) <= close for px, py in placed)
+        ax.annotate(text, (x, y), xytext=(5, -11 if below else 3), textcoords="offset points", fontsize=FONT)
+        placed.append((x, y))
+    ax.set_xlim(0, max(xs) * 1.35)
+    ax.set_ylim(min(ys) * 0.9, max(ys) * 1.1)
+    ax.set_xlabel("bytes fetched per vertex (meshoptimizer model, not timed)", fontsize=FONT + 1)
+    ax.set_ylabel(ylabel, fontsize=FONT)
+    ax.tick_params(labelsize=FONT)
+    ax.grid(alpha=0.3)
+    ax.set_title("Design space; labels: GPU frame time / baseline (%s)" % frame_device(report) if gpu else
+                 "Design space (no GPU timed: no frame times shown)", fontsize=9, pad=18)
+    legend(fig, sorted({p["family"] for p in points}))
+    save(fig, outdir, "design_space")
+    return ("design_space", "Design space",
+            "One point per pipeline: bytes a GPU fetches per vertex with its layout (median over scenes) "
+            "against its vertex shader's instructions; lower left is cheaper on both. Motor and matrix "
+            "families in two colours.", bars)
 
 
 def main():
@@ -271,7 +400,7 @@ def main():
     if plt is not None:
         with open(src) as f:
             report = json.load(f)
-        for fn in (plot_bytes_per_vertex, plot_ops_per_vertex, plot_kernel_ratios,
+        for fn in (plot_design_space, plot_bytes_per_vertex, plot_ops_per_vertex, plot_kernel_ratios,
                    plot_frame_time_ratio, plot_image_error):
             got = fn(plt, report, outdir)
             plt.close("all")

@@ -5,6 +5,7 @@
 
 #include "harness/document/report_document.h"
 #include "harness/document/report_format.h"
+#include "harness/document/report_answer.h"
 #include "harness/document/report_compact.h"
 #include "harness/document/report_gpu_evidence.h"
 #include "harness/document/report_isa.h"
@@ -145,6 +146,7 @@ void plots(Document& d, const json& r) {
 Document reportDocument(const json& r) {
   Document d;
   d.title = "motorbench report";
+  answerSection(d, r);  // the answer first (issue 36), then what was measured and how
   header(d, r);
   summary(d, r);
   plots(d, r);

@@ -140,49 +140,50 @@ void sceneSection(Document& d, const json& r, const json& s) {
                        "more than 1 %, more than the methods' difference allows."
                      : "."));
   }
-  // Thumbnails: one row per shown time (of each animation shown).
+  // Small multiples per shown time (of each animation shown): each pipeline's image with its
+  // diff heat map and LDR-FLIP map (magma: black 0 .. yellow 1) under it, wrapping to the page
+  // width; the metrics in their own compact table after the images.
   std::map<int, std::string> animName;
   for (const json& a : s.value("animations", json::array())) animName[a.value("index", -1)] = a.value("name", "");
-  std::vector<std::string> head = {animName.size() > 1 ? "animation, time [s]" : "time [s]"};
-  for (const std::string& p : pipes) head.push_back(p);
-  for (size_t i = 1; i < pipes.size(); ++i) head.push_back("diff " + pipes[i] + " vs " + pipes[0]);
-  for (size_t i = 1; i < pipes.size(); ++i) head.push_back("FLIP " + pipes[i] + " vs " + pipes[0]);
-  head.push_back("metrics");
-  std::vector<std::vector<Cell>> rows;
+  auto file = [](const json& f, const char* key, const std::string& p) {
+    const json& v = at(f, {key, p.c_str()});
+    return v.is_string() ? v.get<std::string>() : std::string();
+  };
+  std::vector<std::vector<Cell>> metricRows;
   for (const json& f : s.value("frames", json::array())) {
     const json& fa = at(f, {"animation"});
-    std::string when = fixed(f["time"], 3);
+    std::string when = "t = " + fixed(f["time"], 3) + " s";
     if (animName.size() > 1 && fa.is_number()) when = animName[fa.get<int>()] + ", " + when;
-    std::vector<Cell> row = {{when}};
-    for (const std::string& p : pipes) {
-      const json& img = at(f, {"images"}).is_object() && f["images"].contains(p) ? f["images"][p] : json();
-      if (img.is_string()) row.push_back({"", img.get<std::string>(), img.get<std::string>()});
-      else row.push_back({"error: " + str(at(f, {"errors"}).is_object() && f["errors"].contains(p) ? f["errors"][p] : json())});
+    d.paragraph(when + ": each pipeline, with its diff against " + pipes[0] + " and its FLIP map under it.");
+    std::vector<std::vector<Cell>> cards;
+    for (size_t i = 0; i < pipes.size(); ++i) {
+      const std::string& p = pipes[i];
+      std::vector<Cell> card = {{p}};
+      if (const std::string img = file(f, "images", p); !img.empty()) card.push_back({"", img, img});
+      else card.push_back({"error: " + str(at(f, {"errors", p.c_str()}))});
+      if (i == 0) card.push_back({"(the baseline)"});
+      if (const std::string diff = file(f, "diffs", p); i > 0 && !diff.empty()) card.push_back({"diff", diff, diff});
+      if (const std::string flip = file(f, "flipMaps", p); i > 0 && !flip.empty()) card.push_back({"FLIP", flip, flip});
+      cards.push_back(std::move(card));
     }
-    std::string metrics;
+    d.gallery(std::move(cards));
     for (size_t i = 1; i < pipes.size(); ++i) {
-      const json& img = at(f, {"diffs"}).is_object() && f["diffs"].contains(pipes[i]) ? f["diffs"][pipes[i]] : json();
-      row.push_back(img.is_string() ? Cell{"", img.get<std::string>(), img.get<std::string>()} : Cell{"-"});
-      const json& m = at(f, {"metrics"}).is_object() && f["metrics"].contains(pipes[i]) ? f["metrics"][pipes[i]] : json();
+      const json& m = at(f, {"metrics", pipes[i].c_str()});
+      if (!m.is_object()) continue;
       // The methods' label only where the frame's drawn pixels allow it; a failed check says why.
       const bool method = methodDifferenceAllowed(
           f, pipes[i], std::find(methodDiffers.begin(), methodDiffers.end(), pipes[i]) != methodDiffers.end());
       const std::string mark = drawnMark(f, pipes[i]);
-      if (m.is_object())
-        metrics += (metrics.empty() ? "" : "; ") + pipes[i] + (method ? " (skinning method difference)" : "") +
-                   ": " + (mark.empty() ? "" : mark + "; ") + "PSNR " + psnrText(m) + ", RMSE " + fmt(m["rmse"], 3) +
-                   ", max " + fmt(json(255.0 * m.value("maxError", 0.0)), 3) + "/255, > 1/255 " +
-                   percent(m["fractionOver1"], 3) + ", > 4/255 " + percent(m["fractionOver4"], 3) + flipSuffix(m);
+      metricRows.push_back({{when}, {pipes[i] + (method ? " (skinning method difference)" : "")}, {psnrText(m)},
+                            {fmt(m["rmse"], 3)}, {fmt(json(255.0 * m.value("maxError", 0.0)), 3)},
+                            {percent(m["fractionOver1"], 3)}, {percent(m["fractionOver4"], 3)},
+                            {fmt(at(m, {"flip", "mean"}), 3)}, {fmt(at(m, {"flip", "max"}), 3)}, {mark}});
     }
-    // The LDR-FLIP maps (magma: black 0 .. yellow 1), one per compared pipeline, after the diffs.
-    for (size_t i = 1; i < pipes.size(); ++i) {
-      const json& img = at(f, {"flipMaps"}).is_object() && f["flipMaps"].contains(pipes[i]) ? f["flipMaps"][pipes[i]] : json();
-      row.push_back(img.is_string() ? Cell{"", img.get<std::string>(), img.get<std::string>()} : Cell{"-"});
-    }
-    row.push_back({metrics.empty() ? "-" : metrics});
-    rows.push_back(row);
   }
-  if (!rows.empty()) d.table(head, rows);
+  if (!metricRows.empty())
+    d.table({"time", "pipeline vs " + pipes[0], "PSNR", "RMSE", "max /255", "> 1/255", "> 4/255", "FLIP mean",
+             "FLIP max", "drawn-pixel check"},
+            metricRows);
   // One loop of each animation shown, baseline | pipeline | diff, per compared pipeline.
   json loops = json::array();
   for (const json& a : s.value("animations", json::array()))

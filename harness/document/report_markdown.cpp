@@ -51,6 +51,24 @@ std::string toMarkdown(const Document& doc) {
         out += "\n";
         break;
       }
+      case Block::Kind::Gallery:  // rows of up to 5 cards: titles, then each image under its title
+        for (size_t first = 0; first < b.rows.size(); first += 5) {
+          const size_t end = std::min(b.rows.size(), first + 5);
+          size_t depth = 0;
+          std::string head = "|", rule = "|";
+          for (size_t k = first; k < end; ++k) {
+            head += " " + (b.rows[k].empty() ? std::string() : cellText(b.rows[k][0])) + " |", rule += "---|";
+            depth = std::max(depth, b.rows[k].size());
+          }
+          out += head + "\n" + rule + "\n";
+          for (size_t i = 1; i < depth; ++i) {
+            std::string line = "|";
+            for (size_t k = first; k < end; ++k) line += " " + (i < b.rows[k].size() ? cellText(b.rows[k][i]) : std::string()) + " |";
+            out += line + "\n";
+          }
+          out += "\n";
+        }
+        break;
       case Block::Kind::Figure:
         out += "**" + b.title + "**\n\n![" + b.title + "](" + b.image + ")\n\n";
         if (!b.text.empty()) out += "*" + b.text + "*\n\n";

@@ -16,14 +16,15 @@ struct Cell {
 };
 
 struct Block {
-  enum class Kind { Heading, Paragraph, Bullets, Table, Figure, Code };
+  enum class Kind { Heading, Paragraph, Bullets, Table, Figure, Code, Gallery };
   Kind kind = Kind::Paragraph;
   int level = 2;                          // Heading: 1..4
   std::string text;                       // Heading, Paragraph, Code; Figure: caption
   std::string anchor;                     // Heading: id to link to ("" = none)
   std::vector<std::string> items;         // Bullets
   std::vector<std::string> header;        // Table
-  std::vector<std::vector<Cell>> rows;    // Table
+  std::vector<std::vector<Cell>> rows;    // Table; Gallery: one card per row, its title cell
+                                          // then the images stacked under it
   std::string image, title;               // Figure
 };
 
@@ -46,6 +47,12 @@ struct Document {
     Block b{Block::Kind::Table};
     b.header = std::move(header);
     b.rows = std::move(rows);
+    blocks.push_back(std::move(b));
+  }
+  // Small multiples that wrap to the page width (HTML) or rows of a few cards (Markdown).
+  void gallery(std::vector<std::vector<Cell>> cards) {
+    Block b{Block::Kind::Gallery};
+    b.rows = std::move(cards);
     blocks.push_back(std::move(b));
   }
   void figure(std::string image, std::string title, std::string caption) {

@@ -11,29 +11,13 @@
 #include <set>
 
 #include "harness/render/image_metrics.h"
+#include "tests/support/chromium.h"
 #include "tests/support/cli_test_support.h"
 
 namespace mb::cli_test {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string browser() {
-  for (const char* name : {"chromium", "chromium-browser"})
-    if (std::system((std::string("command -v ") + name + " >/dev/null 2>&1").c_str()) == 0) return name;
-  return "";
-}
-
-// Headless Chromium on file://page with its own profile folder; `extra` adds --dump-dom or
-// --screenshot=... . A time limit keeps a stuck browser from hanging the suite.
-std::string chromium(const std::string& exe, const fs::path& profile, const fs::path& page, const std::string& extra,
-                     int* status) {
-  std::string out;
-  *status = runCommand("timeout 120 " + exe + " --headless --no-sandbox --disable-gpu --no-first-run "
-                       "--user-data-dir=" + quoted(profile) + " --virtual-time-budget=10000 --window-size=1200,900 " +
-                       extra + " " + cli_test::quoted(fs::path("file://" + fs::absolute(page).string())) + " 2>/dev/null", &out);
-  return out;
-}
 
 struct ImageCount {
   int images = -1, broken = -1;
@@ -48,7 +32,7 @@ ImageCount countImages(const std::string& dom) {
 }
 
 TEST(Browser, ReportImagesDecodeAndPageIsNotBlank) {
-  const std::string exe = browser();
+  const std::string exe = chromiumExe();
   if (exe.empty()) GTEST_SKIP() << "Chromium not installed (scripts/setup.sh installs it)";
   const fs::path dir = scratchDir("browser");
   std::string out;
@@ -57,14 +41,14 @@ TEST(Browser, ReportImagesDecodeAndPageIsNotBlank) {
   const fs::path page = dir / "report" / "report.html";
 
   int status = 0;
-  const ImageCount ok = countImages(chromium(exe, dir / "profile", page, "--dump-dom", &status));
+  const ImageCount ok = countImages(runChromium(exe, dir / "profile", page, "--dump-dom", &status));
   ASSERT_EQ(status, 0);
   // 2 scenes x (images + diffs) + the animated comparison + the plots: well over ten.
   EXPECT_GT(ok.images, 10);
   EXPECT_EQ(ok.broken, 0);
 
   const fs::path shot = dir / "shot.png";
-  chromium(exe, dir / "profile", page, "--screenshot=" + quoted(shot), &status);
+  runChromium(exe, dir / "profile", page, "--screenshot=" + quoted(shot), &status);
   ASSERT_EQ(status, 0);
   auto img = readImage(shot.string());
   ASSERT_TRUE(img) << img.error();
@@ -79,7 +63,7 @@ TEST(Browser, ReportImagesDecodeAndPageIsNotBlank) {
 
   // The same page with one image file gone must report it.
   fs::remove(dir / "report" / "images" / "textured_box" / "t0_motor.png");
-  const ImageCount missing = countImages(chromium(exe, dir / "profile", page, "--dump-dom", &status));
+  const ImageCount missing = countImages(runChromium(exe, dir / "profile", page, "--dump-dom", &status));
   EXPECT_EQ(missing.images, ok.images);
   EXPECT_EQ(missing.broken, 1);
   fs::remove_all(dir);

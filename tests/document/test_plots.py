@@ -51,19 +51,25 @@ def report():
     return {"settings": {"pipelines": PIPES, "baseline": "matrix"}, "scenes": scenes}
 
 
+def run_plots(report_json, prefix):
+    """Writes `report_json` to a scratch folder, runs plot.py on it; returns (folder, index.json,
+    {name: plot})."""
+    folder = tempfile.mkdtemp(prefix=prefix)
+    src = os.path.join(folder, "report.json")
+    with open(src, "w") as f:
+        json.dump(report_json, f)
+    run = subprocess.run([PYTHON, PLOT, src, os.path.join(folder, "plots")], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    with open(os.path.join(folder, "plots", "index.json")) as f:
+        index = json.load(f)
+    return folder, index, {p["name"]: p for p in index["files"]}
+
+
 @unittest.skipUnless(has_matplotlib(), "matplotlib not installed (python3-matplotlib)")
 class Plots(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.dir = tempfile.mkdtemp(prefix="motorbench_plots_")
-        src = os.path.join(cls.dir, "report.json")
-        with open(src, "w") as f:
-            json.dump(report(), f)
-        run = subprocess.run([PYTHON, PLOT, src, os.path.join(cls.dir, "plots")], capture_output=True, text=True)
-        assert run.returncode == 0, run.stderr
-        with open(os.path.join(cls.dir, "plots", "index.json")) as f:
-            cls.index = json.load(f)
-        cls.plots = {p["name"]: p for p in cls.index["files"]}
+        cls.dir, cls.index, cls.plots = run_plots(report(), "motorbench_plots_")
 
     @classmethod
     def tearDownClass(cls):

@@ -1,0 +1,162 @@
+#include "harness/document/report_answer.h"
+
+#include <cmath>
+#include <optional>
+
+#include "harness/document/report_answer_figures.h"
+#include "harness/document/report_format.h"
+#include "harness/document/report_layout_common.h"
+#include "harness/figures/figure.h"
+
+namespace mb::report {
+namespace {
+
+using namespace layout;
+using figures::Figure;
+
+// The figures a line quotes, each looked up once and remembered for the test.
+struct Quote {
+  const json& report;
+  AnswerLine& line;
+  std::optional<Figure> get(const std::string& name) {
+    line.figures.push_back(name);
+    std::optional<Figure> f = figures::figureNamed(report, name);
+    return f && std::isfinite(f->value) ? f : std::nullopt;
+  }
+  std::string value(const std::string& name) {
+    const std::optional<Figure> f = get(name);
+    return f ? figures::valueText(*f) : "-";
+  }
+};
+
+std::string spreadOf(const Figure& f) {
+  if (!f.q1 || !f.q3) return "";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, " [IQR %.3g..%.3g]", *f.q1, *f.q3);
+  return buf;
+}
+
+// The headline pair: the baseline and "motor" (else the first motor-family pipeline).
+std::pair<std::string, std::string> headline(const json& r) {
+  const std::vector<std::string> pipes = pipelinesOf(r);
+  std::string matrix = pipes.empty() ? "matrix" : pipes[0], motor;
+  for (const std::string& p : pipes)
+    if (p == "motor" || (motor.empty() && pipelineFamily(p) == "motor")) motor = p;
+  return {matrix, motor.empty() ? "motor" : motor};
+}
+
+std::string cheaper(double ratio, const std::string& what) {
+  if (!std::isfinite(ratio)) return "not measured";
+  if (ratio < 1) return "motor side cheaper: " + what;
+  if (ratio > 1) return "matrix side cheaper: " + what;
+  return "equal";
+}
+
+AnswerLine bytesLine(const json& r, const std::string& m, const std::string& M) {
+  AnswerLine l{"bytes per vertex and per frame fetched", "#gpu-evidence"};
+  Quote q{r, l};
+  const auto ratio = q.get("vertex_fetch.bytes_per_frame_over_baseline." + M);
+  l.text = "fetched per vertex (GPU fetch model, not timed): " + m + " " + q.value("vertex_fetch.bytes_per_vertex." + m) +
+           ", " + M + " " + q.value("vertex_fetch.bytes_per_vertex." + M) + "; per frame " + M + " / " + m + " " +
+           (ratio ? figures::valueText(*ratio) + spreadOf(*ratio) + " over " + std::to_string(ratio->n) + " scene(s)" : "-") +
+           "; uploaded per vertex: " + m + " " + q.value("bytes_per_vertex." + m) + ", " + M + " " +
+           q.value("bytes_per_vertex." + M);
+  l.verdict = cheaper(ratio ? ratio->value : std::nan(""), "it fetches fewer bytes");
+  return l;
+}
+
+AnswerLine opsLine(const json& r, const std::string& m, const std::string& M) {
+  AnswerLine l{"ops counted and SPIR-V", "#ops"};
+  Quote q{r, l};
+  const auto a = q.get("ops_per_vertex.to_clip.counted." + m), b = q.get("ops_per_vertex.to_clip.counted." + M);
+  l.text = "rigid vertex with frame, object to clip: counted " + m + " " + q.value("ops_per_vertex.to_clip.counted." + m) +
+           ", " + M + " " + q.value("ops_per_vertex.to_clip.counted." + M) + "; SPIR-V " + m + " " +
+           q.value("ops_per_vertex.to_clip.spirv_probe." + m) + ", " + M + " " +
+           q.value("ops_per_vertex.to_clip.spirv_probe." + M);
+  l.verdict = a && b ? cheaper(b->value / a->value, "it runs fewer arithmetic ops") : "not counted";
+  return l;
+}
+
+AnswerLine isaLine(const json& r, const std::string& m, const std::string& M) {
+  AnswerLine l{"AMD ISA per family", "#isa"};
+  Quote q{r, l};
+  int fewer = 0, more = 0, families = 0;
+  std::string text;
+  for (const json& fam : at(r, {"isa", "families"}).is_array() ? r["isa"]["families"] : json::array()) {
+    const std::string id = fam.value("id", "");
+    const auto a = q.get("isa.instructions.rigid." + id + "." + m), b = q.get("isa.instructions.rigid." + id + "." + M);
+    if (!a || !b) continue;
+    ++families;
+    fewer += b->value < a->value, more += b->value > a->value;
+    text += (text.empty() ? "" : ", ") + id + " " + fmt(b->value, 4) + "/" + fmt(a->value, 4);
+  }
+  if (!families) {
+    l.text = "not measured in this report (motorbench isa --json FILE, then report --isa-json FILE)";
+    l.verdict = "not measured";
+    return l;
+  }
+  l.text = "rigid vertex shader instructions " + M + "/" + m + " (RADV null device, not timed): " + text;
+  l.verdict = fewer == families ? "motor side cheaper on every family"
+              : more == families ? "matrix side cheaper on every family"
+                                 : "motor fewer on " + std::to_string(fewer) + ", more on " + std::to_string(more) +
+                                       " of " + std::to_string(families) + " families";
+  return l;
+}
+
+AnswerLine timeLine(const json& r) {
+  AnswerLine l{"time", "#scenes"};
+  Quote q{r, l};
+  const auto f = q.get("frame_time.motor_over_matrix");
+  const json& gl = at(r, {"machine", "gl"});
+  const bool cpu = gl.is_object() && !gl.value("realGpu", false);  // llvmpipe, softpipe
+  l.text = "frame motor / matrix " + (f ? figures::valueText(*f) + spreadOf(*f) + " over " + std::to_string(f->n) + " scene(s)" : "-") +
+           " on " + str(at(r, {"machine", "gl", "renderer"}), "an unnamed device") +
+           (cpu ? " (a CPU rasterizer)" : "");
+  if (cpu) l.verdict = "inconclusive: a CPU rasterizer cannot discriminate";
+  else if (!f || !f->q1 || !f->q3) l.verdict = "not measured";
+  else l.verdict = *f->q3 < 1 ? "motor side faster" : *f->q1 > 1 ? "matrix side faster" : "no difference beyond the spread";
+  return l;
+}
+
+AnswerLine imageLine(const json& r, const std::string& m, const std::string& M) {
+  AnswerLine l{"image cost (PSNR, FLIP)", "#scenes"};
+  Quote q{r, l};
+  const auto psnr = q.get("image.worst_psnr." + M);
+  const auto same = q.get("image.identical_frames." + M);
+  const auto flip = q.get("image.flip_mean_worst." + M);
+  l.text = M + " vs " + m + ": worst PSNR " + (psnr ? figures::valueText(*psnr) : "- (none differs)") + ", " +
+           (same ? fmt(same->value, 6) + " of " + std::to_string(same->n) : std::string("-")) + " frames identical" +
+           "; worst frame mean FLIP " + (flip ? fmt(flip->value, 3) : std::string("not measured"));
+  if (!same || same->n == 0) l.verdict = "not compared";
+  else if (!psnr || psnr->value >= 50) l.verdict = "equivalent (every differing frame >= 50 dB)";
+  else l.verdict = "differs: worst " + figures::valueText(*psnr);
+  return l;
+}
+
+}  // namespace
+
+std::string answerQuestion() {
+  return "\"Look, Ma, No Matrices!\" (SIGGRAPH 2024) asks: can PGA motors replace 4x4 matrices in a forward "
+         "renderer's vertex stage with fewer bytes, no more arithmetic or time, and the same images?";
+}
+
+std::vector<AnswerLine> answerLines(const json& r) {
+  const auto [m, M] = headline(r);
+  return {bytesLine(r, m, M), opsLine(r, m, M), isaLine(r, m, M), timeLine(r), imageLine(r, m, M)};
+}
+
+void answerSection(Document& d, const json& r) {
+  d.heading(2, "The answer", "answer");
+  d.paragraph(answerQuestion());
+  std::vector<std::vector<Cell>> rows;
+  for (const AnswerLine& l : answerLines(r)) rows.push_back({{l.evidence, "", l.anchor}, {l.text}, {l.verdict}});
+  d.table({"evidence", "figures (report.json \"figures\")", "verdict"}, rows);
+  d.blocks.back().anchor = "answer-table";
+  for (const json& f : at(r, {"plots", "files"}).is_array() ? r["plots"]["files"] : json::array())
+    if (f.value("name", "") == "design_space") {
+      d.figure(f.value("file", ""), f.value("title", ""), f.value("caption", ""));
+      d.blocks.back().anchor = "design-space";
+    }
+}
+
+}  // namespace mb::report

@@ -1,0 +1,30 @@
+// The answer block that opens report.md / report.html (issue 36): the paper's question in one
+// line, one line per kind of evidence (bytes, ops, AMD ISA, time, image cost) with its verdict
+// and a link to its table, then the design-space figure. Every value is a figure of
+// report.json's "figures", quoted by name (report_answer_figures.h, report_figures.h).
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/document/report_model.h"
+
+namespace mb::report {
+
+struct AnswerLine {
+  std::string evidence;              // "bytes", "ops", ...
+  std::string anchor;                // the table it links to ("#gpu-evidence")
+  std::string text;                  // the figures, as printed
+  std::string verdict;
+  std::vector<std::string> figures;  // the names of the figures the text quotes
+};
+
+// "Look, Ma, No Matrices!" asks: ...
+std::string answerQuestion();
+std::vector<AnswerLine> answerLines(const nlohmann::json& report);
+// Heading "The answer" (id "answer"), the question, the lines as a table (id "answer-table"),
+// the design-space plot (id "design-space") when plot.py drew it.
+void answerSection(Document& d, const nlohmann::json& report);
+
+}  // namespace mb::report

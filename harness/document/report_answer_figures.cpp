@@ -1,0 +1,157 @@
+#include "harness/document/report_answer_figures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "harness/document/report_document.h"
+#include "harness/document/report_figures.h"
+#include "harness/document/report_format.h"
+#include "harness/document/report_isa.h"
+#include "harness/figures/figure.h"
+
+namespace mb::report {
+namespace {
+
+using json = nlohmann::json;
+using figures::Figure;
+
+double num(const json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
+
+const char* kFetchDevice = "meshoptimizer's analyzers on the mesh and the pipeline's vertex layout (not timed)";
+
+Figure overScenes(std::string name, std::string unit, std::string scope, std::string device, std::string definition,
+                  const std::vector<double>& perScene) {
+  Figure f;
+  f.name = std::move(name), f.unit = std::move(unit), f.scope = std::move(scope), f.device = std::move(device);
+  f.statistic = "median over scenes";
+  f.definition = std::move(definition);
+  f = figures::withQuartiles(f, figures::quartilesOf(perScene));
+  if (f.n == 0) f.value = std::nan(""), f.why = "no scene measured it";
+  return f;
+}
+
+void fetchFigures(json& out, const json& r, const std::vector<std::string>& pipes, const std::string& base) {
+  for (const std::string& p : pipes) {
+    std::vector<double> perVertex, perFrame;
+    for (const json& s : r["scenes"]) {
+      if (!isEuclidean(s)) continue;
+      const json& f = at(s, {"pipelines", p.c_str(), "vertexFetch"});
+      const double b = num(at(s, {"pipelines", base.c_str(), "vertexFetch", "bytesFetchedPerFrame"}));
+      if (!f.is_object()) continue;
+      if (std::isfinite(num(f["bytesFetchedPerVertex"]))) perVertex.push_back(num(f["bytesFetchedPerVertex"]));
+      if (b > 0 && std::isfinite(num(f["bytesFetchedPerFrame"]))) perFrame.push_back(num(f["bytesFetchedPerFrame"]) / b);
+    }
+    const std::string scope = "shading-attribute stream of every drawn primitive, one frame, Euclidean scenes";
+    figures::put(out, overScenes("vertex_fetch.bytes_per_vertex." + p, "bytes", scope, kFetchDevice,
+                                 "bytes a GPU fetches (64-byte lines) per vertex referenced, with " + p + "'s stride",
+                                 perVertex));
+    figures::put(out, overScenes("vertex_fetch.bytes_per_frame_over_baseline." + p, "x", scope, kFetchDevice,
+                                 "bytes fetched per frame " + p + " / " + base + " (< 1: " + p + " cheaper)", perFrame));
+  }
+}
+
+void isaFigures(json& out, const json& r, const std::vector<std::string>& pipes) {
+  const json& isa = at(r, {"isa"});
+  for (const json& fam : at(isa, {"families"}).is_array() ? isa["families"] : json::array())
+    for (const std::string& p : pipes) {
+      const std::string id = fam.value("id", "");
+      const json* row = isaRow(isa, p, "rigid", id);
+      Figure f;
+      f.name = "isa.instructions.rigid." + id + "." + p;
+      f.unit = "instructions";
+      f.statistic = "count";
+      f.scope = "rigid vertex shader, one vertex (one lane of a wave)";
+      f.device = "RADV " + id + " (" + fam.value("generation", "") + "), compiler statistics on the null device, not timed";
+      f.definition = "ISA instructions of the compiled vertex shader";
+      f.value = row ? num((*row)["instructions"]) : std::nan("");
+      f.n = std::isfinite(f.value) ? 1 : 0;
+      if (!row) f.why = "no rigid vertex shader of " + p + " for " + id;
+      figures::put(out, f);
+    }
+}
+
+// Frames where both pipelines should agree (the skinning methods' difference left out).
+void imageFigures(json& out, const json& r, const std::vector<std::string>& pipes) {
+  const std::string base = pipes.empty() ? "" : pipes[0];
+  for (size_t i = 1; i < pipes.size(); ++i) {
+    const std::string& p = pipes[i];
+    std::vector<double> psnr, flip;
+    int compared = 0, identical = 0;
+    for (const json& s : r["scenes"]) {
+      if (!isEuclidean(s) || skinningMethodsDiffer(s, p, base)) continue;
+      for (const json& fr : s.value("frames", json::array())) {
+        const json& m = at(fr, {"metrics", p.c_str()});
+        if (!m.is_object()) continue;
+        ++compared;
+        if (m.value("identical", false)) ++identical;
+        else if (m["psnr"].is_number()) psnr.push_back(m["psnr"].get<double>());
+        if (at(m, {"flip", "mean"}).is_number()) flip.push_back(m["flip"]["mean"].get<double>());
+      }
+    }
+    const std::string scope = "frames where " + p + " and " + base + " should agree, Euclidean scenes";
+    Figure w;
+    w.name = "image.worst_psnr." + p, w.unit = "dB", w.scope = scope, w.device = "the rendered images (8-bit RGBA)";
+    w.statistic = "minimum over the frames that differ";
+    w.definition = "PSNR of " + p + " against " + base + "; identical frames (infinite PSNR) are counted apart";
+    w.n = int(psnr.size());
+    w.value = psnr.empty() ? std::nan("") : *std::min_element(psnr.begin(), psnr.end());
+    if (psnr.empty()) w.why = compared ? "every compared frame identical" : "no frame compared";
+    figures::put(out, w);
+    Figure id;
+    id.name = "image.identical_frames." + p, id.unit = "frames", id.scope = scope, id.device = w.device;
+    id.statistic = "count", id.value = identical, id.n = compared;
+    id.definition = "frames whose every pixel equals " + base + "'s, of n compared";
+    figures::put(out, id);
+    if (flip.empty()) continue;
+    Figure fl;
+    fl.name = "image.flip_mean_worst." + p, fl.unit = "", fl.scope = scope, fl.device = w.device;
+    fl.statistic = "maximum over frames of each frame's mean LDR-FLIP";
+    fl.definition = "perceptual difference of " + p + " against " + base + " (0: none, 1: largest)";
+    fl.value = *std::max_element(flip.begin(), flip.end()), fl.n = int(flip.size());
+    figures::put(out, fl);
+  }
+}
+
+// Each pipeline's median frame time over the baseline's, per scene (ratio of the medians), then
+// the median over scenes: the design space's label where a GPU measured it.
+void timeFigures(json& out, const json& r, const std::vector<std::string>& pipes) {
+  const std::string base = pipes.empty() ? "" : pipes[0];
+  for (const std::string& p : pipes) {
+    std::vector<double> perScene;
+    for (const json& s : r["scenes"]) {
+      const double a = num(at(s, {"timing", "pipelines", base.c_str(), "medianMs"}));
+      const double b = num(at(s, {"timing", "pipelines", p.c_str(), "medianMs"}));
+      if (isEuclidean(s) && a > 0 && std::isfinite(b)) perScene.push_back(b / a);
+    }
+    figures::put(out, overScenes("frame_time.over_baseline." + p, "x", "whole frame, Euclidean scenes",
+                                 frameTimeDevice(r["machine"]),
+                                 "median frame time " + p + " / " + base + " per scene (< 1: " + p + " faster)",
+                                 perScene));
+  }
+}
+
+}  // namespace
+
+std::string pipelineFamily(const std::string& p) {
+  return p.find("motor") != std::string::npos || p == "hybrid" ? "motor" : "matrix";
+}
+
+void addAnswerFigures(json& r) {
+  const std::vector<std::string> pipes = at(r, {"settings", "pipelines"}).is_array()
+                                             ? r["settings"]["pipelines"].get<std::vector<std::string>>()
+                                             : std::vector<std::string>{};
+  if (!r.contains("figures") || !r["figures"].is_object()) r["figures"] = json::object();
+  if (!r.contains("scenes") || !r["scenes"].is_array()) r["scenes"] = json::array();
+  json& out = r["figures"];
+  const std::string base = pipes.empty() ? "" : pipes[0];
+  fetchFigures(out, r, pipes, base);
+  isaFigures(out, r, pipes);
+  imageFigures(out, r, pipes);
+  timeFigures(out, r, pipes);
+  json families = json::object();
+  for (const std::string& p : pipes) families[p] = pipelineFamily(p);
+  r["pipelineFamilies"] = families;
+}
+
+}  // namespace mb::report

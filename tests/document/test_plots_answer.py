@@ -1,0 +1,93 @@
+"""scripts/plot.py (issue 36 item 3): the frame-time bars are report.json's figures with their IQR
+as error bars, every ratio follows one convention (< 1: motor side cheaper, kernel plot included),
+identical frames are a short stub not a tall bar, the design space has one point per pipeline in
+two family colours. Read from index.json's "bars" (the data as drawn), never from pixels.
+"""
+import os
+import shutil
+import sys
+import unittest
+
+sys.path.insert(0, os.path.dirname(__file__))
+from test_plots import REPO, has_matplotlib, run_plots  # noqa: E402
+
+sys.path.insert(0, os.path.join(REPO, "scripts"))
+
+
+def fig(value, unit="x", q1=None, q3=None, device="CPU rasterizer (llvmpipe), wall clock"):
+    f = {"value": value, "unit": unit, "device": device, "n": 3}
+    if q1 is not None:
+        f["spread"] = {"q1": q1, "q3": q3, "kind": "interquartile range"}
+    return f
+
+
+def report():
+    pipes = ["matrix", "motor", "qtangent"]
+    figures = {"frame_time.motor_over_matrix": fig(0.95, q1=0.9, q3=1.0),
+               "frame_time.a.motor_over_matrix": fig(0.8, q1=0.7, q3=0.9),
+               "frame_time.b.motor_over_matrix": fig(1.1, q1=1.05, q3=1.2),
+               "vertex_fetch.bytes_per_vertex.matrix": fig(48, "bytes"),
+               "vertex_fetch.bytes_per_vertex.motor": fig(36, "bytes"),
+               "vertex_fetch.bytes_per_vertex.qtangent": fig(28, "bytes"),
+               "isa.instructions.rigid.gfx1100.matrix": fig(153, "instructions"),
+               "isa.instructions.rigid.gfx1100.motor": fig(162, "instructions"),
+               "isa.instructions.rigid.gfx1100.qtangent": fig(156, "instructions")}
+    identical = {"psnr": None, "identical": True, "fractionOver1": 0.0}
+    scenes = [{"id": sid, "timing": {"ratio_motor_matrix": 0.5},  # the old ratio of medians: not drawn
+               "frames": [{"time": 0, "metrics": {"motor": identical, "qtangent": identical}}]} for sid in "ab"]
+    return {"settings": {"pipelines": pipes, "baseline": "matrix"}, "scenes": scenes, "figures": figures,
+            "pipelineFamilies": {"matrix": "matrix", "motor": "motor", "qtangent": "matrix"},
+            "isa": {"families": [{"id": "tahiti"}, {"id": "gfx1100"}]},
+            "machine": {"gl": {"renderer": "llvmpipe", "realGpu": False}},
+            "kernels": {"pairs": [{"kernel": "compose", "size": None, "ratio_motor_matrix": 2.0}]}}
+
+
+@unittest.skipUnless(has_matplotlib(), "matplotlib not installed (python3-matplotlib)")
+class AnswerPlots(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.dir, _, cls.plots = run_plots(report(), "motorbench_plots_answer_")
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.dir, ignore_errors=True)
+
+    def test_frame_bars_are_the_figures_with_their_iqr(self):
+        bars = {b["label"]: b for b in self.plots["frame_time_ratio"]["bars"] if b["series"] == "frame"}
+        self.assertEqual(bars["a"]["value"], 0.8)
+        self.assertEqual(bars["a"]["iqr"], [0.7, 0.9])
+        self.assertEqual(bars["b"]["value"], 1.1)
+        self.assertEqual(bars["b"]["iqr"], [1.05, 1.2])
+
+    def test_kernel_ratio_is_time_motor_over_matrix(self):
+        # 2x the throughput = half the time: 0.5, below 1 as motor is cheaper.
+        (bar,) = self.plots["kernel_ratios"]["bars"]
+        self.assertEqual(bar["value"], 0.5)
+
+    def test_device_and_convention_in_titles_and_captions(self):
+        import plot
+        self.assertEqual(plot.CONVENTION, "< 1: motor side cheaper")
+        self.assertGreaterEqual(plot.FONT * plot.DPI / 72, 10)  # labels >= 10 px at the saved dpi
+        self.assertIn("no error bars", self.plots["kernel_ratios"]["caption"])
+
+    def test_identical_frames_are_stubs_not_tall_bars(self):
+        # PSNR: no value (infinite); changed pixels: 0 %. Either way drawn as a stub of 4 % of
+        # the axis, not the tallest bar.
+        for b in self.plots["image_error"]["bars"]:
+            self.assertEqual(b["text"], "identical")
+            self.assertIn(b["value"], (None, 0.0))
+            self.assertLessEqual(b["height"], 0.05 * b["axisTop"])
+
+    def test_design_space_one_point_per_pipeline_in_family_colours(self):
+        bars = self.plots["design_space"]["bars"]
+        self.assertEqual(sorted(b["label"] for b in bars), ["matrix", "motor", "qtangent"])
+        points = {b["label"]: (b["x"], b["value"], b["series"]) for b in bars}
+        self.assertEqual(points["motor"], (36, 162, "motor family"))
+        self.assertEqual(points["qtangent"], (28, 156, "matrix family"))  # the newest ISA family
+        colours = {b["series"]: b["colour"] for b in bars}
+        self.assertNotEqual(colours["motor family"], colours["matrix family"])
+        self.assertTrue(all(b["text"] is None for b in bars))  # no GPU timed: no time labels
+
+
+if __name__ == "__main__":
+    unittest.main()
