@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "harness/document/report_document.h"
-#include "harness/document/report_figures.h"
 #include "harness/document/report_format.h"
 #include "harness/document/report_isa.h"
 #include "harness/figures/figure.h"
@@ -113,24 +112,6 @@ void imageFigures(json& out, const json& r, const std::vector<std::string>& pipe
   }
 }
 
-// Each pipeline's median frame time over the baseline's, per scene (ratio of the medians), then
-// the median over scenes: the design space's label where a GPU measured it.
-void timeFigures(json& out, const json& r, const std::vector<std::string>& pipes) {
-  const std::string base = pipes.empty() ? "" : pipes[0];
-  for (const std::string& p : pipes) {
-    std::vector<double> perScene;
-    for (const json& s : r["scenes"]) {
-      const double a = num(at(s, {"timing", "pipelines", base.c_str(), "medianMs"}));
-      const double b = num(at(s, {"timing", "pipelines", p.c_str(), "medianMs"}));
-      if (isEuclidean(s) && a > 0 && std::isfinite(b)) perScene.push_back(b / a);
-    }
-    figures::put(out, overScenes("frame_time.over_baseline." + p, "x", "whole frame, Euclidean scenes",
-                                 frameTimeDevice(r["machine"]),
-                                 "median frame time " + p + " / " + base + " per scene (< 1: " + p + " faster)",
-                                 perScene));
-  }
-}
-
 }  // namespace
 
 std::string pipelineFamily(const std::string& p) {
@@ -148,7 +129,6 @@ void addAnswerFigures(json& r) {
   fetchFigures(out, r, pipes, base);
   isaFigures(out, r, pipes);
   imageFigures(out, r, pipes);
-  timeFigures(out, r, pipes);
   json families = json::object();
   for (const std::string& p : pipes) families[p] = pipelineFamily(p);
   r["pipelineFamilies"] = families;

@@ -1,7 +1,7 @@
 // The figures the report's answer block quotes beyond the figures layer's own (issue 36): the
 // vertex fetch per pipeline (bytes per vertex, bytes per frame against the baseline), AMD ISA
 // instructions per pipeline and family, the worst image difference (PSNR, FLIP) per pipeline,
-// each pipeline's frame time against the baseline, and which family each pipeline belongs to.
+// and which family each pipeline belongs to. (Frame time per pipeline is report_figures.h's.)
 // Computed once from report.json's scenes and isa into report["figures"]; the answer block,
 // the plots and claims read them by name.
 #pragma once
@@ -18,7 +18,7 @@ std::string pipelineFamily(const std::string& pipeline);
 // Adds to report["figures"]: vertex_fetch.bytes_per_vertex.<p>,
 // vertex_fetch.bytes_per_frame_over_baseline.<p>, isa.instructions.rigid.<family id>.<p>,
 // image.worst_psnr.<p>, image.identical_frames.<p>, image.flip_mean_worst.<p> (when FLIP was
-// measured), frame_time.over_baseline.<p>; and report["pipelineFamilies"] {p: family}.
+// measured); and report["pipelineFamilies"] {p: family}.
 void addAnswerFigures(nlohmann::json& report);
 
 }  // namespace mb::report

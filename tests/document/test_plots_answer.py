@@ -88,6 +88,17 @@ class AnswerPlots(unittest.TestCase):
         self.assertNotEqual(colours["motor family"], colours["matrix family"])
         self.assertTrue(all(b["text"] is None for b in bars))  # no GPU timed: no time labels
 
+    def test_design_space_labels_gpu_time_where_a_gpu_measured_it(self):
+        r = report()
+        r["machine"]["gl"] = {"renderer": "NVIDIA H100", "realGpu": True}
+        r["figures"]["frame_time_vertex_bound.motor_over_matrix"] = fig(0.8, device="NVIDIA H100")
+        r["figures"]["frame_time.qtangent_over_matrix"] = fig(0.9, device="NVIDIA H100")
+        folder, _, plots = run_plots(r, "motorbench_plots_gpu_")
+        shutil.rmtree(folder, ignore_errors=True)
+        texts = {b["label"]: b["text"] for b in plots["design_space"]["bars"]}
+        # Vertex-bound where measured, else the whole frame; none where neither was timed.
+        self.assertEqual(texts, {"motor": "0.80x", "qtangent": "0.90x", "matrix": None})
+
 
 if __name__ == "__main__":
     unittest.main()
