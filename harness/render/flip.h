@@ -64,7 +64,8 @@ nlohmann::json toJson(const FlipResult& flip);
 FlipResult flipFromJson(const nlohmann::json& j);
 // The image metrics JSON (render_frame.h) with "flip" beside psnr: compare, check, report.
 nlohmann::json toJson(const ImageMetrics& metrics, const FlipResult& flip);
-// "FLIP mean 0.0123, weighted median 0.2500, max 0.6000 at (12,40)" ("FLIP 0 (identical)").
+// "FLIP mean 0.0123, weighted median 0.25, max 0.6 at (12,40)" (3 significant digits: a mean of
+// a few changed pixels stays readable, 2.1e-05); "FLIP 0 (no difference)".
 std::string flipText(const FlipResult& flip);
 
 }  // namespace mb
