@@ -34,6 +34,10 @@ struct PipelineStats {
   // targets x vertices they hold (morphBytes / morphTargetVertices: bytes per vertex per target).
   uint64_t morphBytes = 0, morphTargetVertices = 0;
   int morphDraws = 0;                 // draws of the last render() that morphed (a non-zero weight)
+  // Set by the harness after a render (harness/render/render_frame.cpp), not by the pipeline:
+  // the drawn nodes with a non-zero morph weight when the pipeline morphed no draw, i.e. drew
+  // them in their base shape (issue 37: qtangent, hybrid and the 16-byte pipelines do not morph).
+  int morphNotDrawnNodes = 0;
   // Instanced draws (Node::instances, pipelines/gl/instance_stream.h): the per-instance
   // transforms of the last render() (each pipeline's per-draw transform, node world composed
   // with the instance on the CPU), streamed once per frame, and how many instances they hold.

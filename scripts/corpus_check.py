@@ -41,7 +41,7 @@ MIN_PSNR = 50.0          # dB: rigid frames of the full-precision pipelines agai
 MAX_DRAWN_DIFF = 0.01    # skinned frames: drawn-pixel counts at most 1 % apart
 FALLBACKS = ["linearFallbackDraws", "skinFallbackDraws", "skinFallbackJoints", "fallbackVertices",
              "nonUniformScaleNodes", "negativeScaleNodes", "shearMatrixNodes", "scaleFallbackInstances",
-             "zeroScalarFrames", "biasedFrames", "rotorSplitVertices", "rotorUnresolvedTriangles"]
+             "zeroScalarFrames", "biasedFrames", "rotorSplitVertices", "rotorUnresolvedTriangles", "morphNotDrawnNodes"]
 
 
 def gltf_files(paths):

@@ -65,7 +65,8 @@ json fallbackJson(const PipelineStats& s) {
           {"biasedFrames", s.biasedFrames}, {"scaleFallbackInstances", s.scaleFallbackInstances},
           {"rotorSplitVertices", s.rotorSplitVertices}, {"rotorUnresolvedTriangles", s.rotorUnresolvedTriangles},
           {"linearFallbackDraws", s.linearFallbackDraws}, {"skinFallbackDraws", s.skinFallbackDraws},
-          {"skinFallbackJoints", s.skinFallbackJoints}, {"fallbackVertices", s.fallbackVertices}};
+          {"skinFallbackJoints", s.skinFallbackJoints}, {"fallbackVertices", s.fallbackVertices},
+          {"morphNotDrawnNodes", s.morphNotDrawnNodes}};
 }
 
 // Per counter, the largest value over the frames (each counts "the last render()").

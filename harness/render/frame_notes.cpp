@@ -10,7 +10,8 @@ const std::vector<std::string>& pipelineFallbackKeys() {
   static const std::vector<std::string> keys = {
       "nonUniformScaleNodes", "negativeScaleNodes", "shearMatrixNodes",    "zeroScalarFrames",
       "biasedFrames",         "scaleFallbackInstances", "rotorSplitVertices", "rotorUnresolvedTriangles",
-      "linearFallbackDraws",  "skinFallbackDraws",  "skinFallbackJoints",  "fallbackVertices"};
+      "linearFallbackDraws",  "skinFallbackDraws",  "skinFallbackJoints",  "fallbackVertices",
+      "morphNotDrawnNodes"};
   return keys;
 }
 

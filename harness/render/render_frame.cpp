@@ -1,5 +1,6 @@
 #include "harness/render/render_frame.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -8,6 +9,7 @@
 
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
+#include "pipelines/scene/animation.h"
 #include "pipelines/scene/camera_rule.h"
 #include "pipelines/scene/loader.h"
 
@@ -92,10 +94,20 @@ Result<Frame> renderFrameUnguarded(const Scene& scene, const std::string& pipeli
   GLenum err = glGetError();
   if (err != GL_NO_ERROR) return R::fail(where + "GL error after render: " + gl::errorName(err));
   frame.stats = p->stats();
+  if (frame.stats.morphDraws == 0) frame.stats.morphNotDrawnNodes = morphedNodes(scene, settings.anim);
   return frame;
 }
 
 }  // namespace
+
+int morphedNodes(const Scene& scene, const AnimState& anim) {
+  const std::vector<std::vector<float>> weights = sampleMorphWeights(scene, anim);
+  int nodes = 0;
+  for (int n : nodesInDrawOrder(scene))
+    if (size_t(n) < weights.size() && std::any_of(weights[size_t(n)].begin(), weights[size_t(n)].end(), [](float w) { return w != 0.0f; }))
+      ++nodes;
+  return nodes;
+}
 
 Result<std::vector<RgbaImage>> renderFrames(const Scene& scene, const std::string& pipeline,
                                             const FrameSettings& settings, const std::vector<float>& times) {
@@ -136,7 +148,8 @@ nlohmann::json toJson(const PipelineStats& s) {
           {"biasedFrames", s.biasedFrames}, {"scaleFallbackInstances", s.scaleFallbackInstances},
           {"rotorSplitVertices", s.rotorSplitVertices}, {"rotorUnresolvedTriangles", s.rotorUnresolvedTriangles},
           {"linearFallbackDraws", s.linearFallbackDraws}, {"skinFallbackDraws", s.skinFallbackDraws},
-          {"skinFallbackJoints", s.skinFallbackJoints}, {"fallbackVertices", s.fallbackVertices}};
+          {"skinFallbackJoints", s.skinFallbackJoints}, {"fallbackVertices", s.fallbackVertices},
+          {"morphNotDrawnNodes", s.morphNotDrawnNodes}};
 }
 
 nlohmann::json toJson(const gl::ContextInfo& gl) {

@@ -37,6 +37,10 @@ int64_t drawnPixels(const RgbaImage& image);
 // scene source and the reason: unknown pipeline (listing the registered ones), a placeholder
 // pipeline (registered, factory returns nullptr), GL context/shader/upload failures, and an
 // exception thrown inside the pipeline ("internal error (exception): map::at"): never thrown on.
+// The drawn nodes whose morph weights at `anim` are not all zero (sampleMorphWeights): what a
+// pipeline that morphs no draw leaves in the base shape (PipelineStats::morphNotDrawnNodes).
+int morphedNodes(const Scene& scene, const AnimState& anim);
+
 Result<Frame> renderFrame(const Scene& scene, const std::string& pipeline,
                           const FrameSettings& settings);
 
