@@ -142,10 +142,17 @@ def pipeline_row(file, name, doc, rec, kinds, bounds):
     p = doc["pipelines"][name]
     base = doc["pipelines"][doc["baseline"]]["frames"]
     frames = p["frames"]
+    # Frames where this pipeline drew morphed nodes in their base shape (a counted omission,
+    # PipelineStats::morphNotDrawnNodes; issue 37) are judged by no image rule: listed apart.
+    omitted = [(f.get("fallbacks") or {}).get("morphNotDrawnNodes", 0) for f in frames]
+    omissions = [{"frame": i, "kind": k, "nodes": n, "psnr": psnr_of(f)}
+                 for i, (f, k, n) in enumerate(zip(frames, kinds, omitted)) if n]
+    first_kind = kinds[0] if kinds else None
+    kinds = [("omitted" if n else k) for k, n in zip(kinds, omitted)] + list(kinds[len(omitted):])
     row = {"file": file, "pipeline": name, "exit": rec["exit"], "signal": rec["signal"], "status": "ok",
            "error": p.get("error"), "seconds": round(p.get("seconds", 0.0), 3),
-           "drawnPixels": [f["drawnPixels"] for f in frames], "kind": kinds[0] if kinds else None,
-           "fallbacks": p.get("fallbacks", {})}
+           "drawnPixels": [f["drawnPixels"] for f in frames], "kind": first_kind,
+           "fallbacks": p.get("fallbacks", {}), "omittedFrames": omissions}
     if row["error"]:
         row["status"] = "error"
     # Drawn: some pixel in every frame where the baseline drew some, and in one frame at least.
@@ -271,6 +278,7 @@ def evaluate(files):
     crashed += [f"{f['file']} [{r['pipeline']}]: {r['signal']}" for f in files for r in f["rows"] if r.get("status") == "crashed"]
     load = [f"{f['file']}: {f['error']}" for f in files if f["status"] == "load-failed"]
     drawn, rigid, compact, skinned, rigid_ties, compact_ties, skinned_method = [], [], [], [], [], [], []
+    omitted_lines = []  # frames no image rule judges: a feature the pipeline counts as not drawn
     for f in files:
         by_name = {r["pipeline"]: r for r in f["rows"]}
         for r in f["rows"]:
@@ -301,6 +309,10 @@ def evaluate(files):
                                + ("" if r["pipeline"] == "matrix_c" or "matrix_c" not in by_name else
                                   f"; matrix_c, the same positions through matrix math: "
                                   f"{by_name['matrix_c'].get('outsideEnvelope') or 0} px") + ")")
+            omitted_lines += [(f"counted omission: {r['pipeline']} does not morph (issue 37)",
+                               f"{name} {frame_name(f, o['frame'])}: {o['nodes']} morphed node(s) drawn in their base shape"
+                               + ("" if o["psnr"] is None else f", {fmt_psnr(o['psnr'])} dB against matrix"))
+                              for o in r.get("omittedFrames") or []]
             when = lambda diffs: ", ".join(("rest" if fr["animation"] is None else f"t={fr['time']:.3g}") + f" {100 * x:.1f} %"
                                            for fr, x in zip(f["frames"], diffs))
             if r.get("worstSkinnedReferenceDrawnDiff") is not None and r["worstSkinnedReferenceDrawnDiff"] > MAX_DRAWN_DIFF:
@@ -319,7 +331,8 @@ def evaluate(files):
              compact, compact_ties),
             (f"skinned frames: drawn pixels within {100 * MAX_DRAWN_DIFF:.0f} % of their skinning method's reference "
              f"(matrix; for {', '.join(MOTOR_BLEND)} the motor blend by GLM dual quaternions, drawn by matrix)",
-             skinned, skinned_method)]
+             skinned, skinned_method),
+            ("frames judged by no image rule: a feature the pipeline counts as not drawn", [], omitted_lines)]
 
 
 def frame_name(f, i):
@@ -333,6 +346,10 @@ def rule_lines(rules):
     out = []
     for name, fails, ties in rules:
         method = name.startswith("skinned")  # its marked passes: the motor blend apart from matrix by design
+        if name.startswith("frames judged by no"):  # a list, not a rule
+            out.append(f"- COUNTED: {name} ({len(ties)})")
+            out += [f"  - {label}: {line}" for label, line in ties]
+            continue
         out.append(f"- {'PASS' if not fails else 'FAIL'}: {name}" + (f" ({len(fails)})" if fails else "")
                    + (f" ({len(ties)} more than {100 * MAX_DRAWN_DIFF:.0f} % from matrix's linear blend)" if ties and method else
                       f" ({len(ties)} frames pass on ties)" if ties else ""))

@@ -220,6 +220,22 @@ class TieRule(unittest.TestCase):
         fails, ties = rule(corpus_check.evaluate([res]), "rigid frames of motor")
         self.assertEqual((len(fails), ties), (1, []))
 
+    def test_a_counted_morph_omission_is_listed_not_judged(self):
+        # qtangent draws a morphed node in its base shape and counts it (morphNotDrawnNodes): no
+        # image rule judges that frame; it is listed apart with its count and PSNR.
+        res = synthetic_result(motor={"identical": False, "psnr": 22.0, "fallbacks": {"morphNotDrawnNodes": 1}})
+        rules = corpus_check.evaluate([res])
+        fails, _ = rule(rules, "rigid frames of motor")
+        self.assertEqual(fails, [])
+        _, listed = rule(rules, "frames judged by no image rule")
+        self.assertEqual(listed, [("counted omission: motor does not morph (issue 37)",
+                                   "x.glb [motor] rest: 1 morphed node(s) drawn in their base shape, 22.0 dB against matrix")])
+        self.assertIn("- COUNTED: frames judged by no image rule: a feature the pipeline counts as not drawn (1)",
+                      corpus_check.rule_lines(rules))
+        # The same frame without the count is a failure.
+        fails, _ = rule(corpus_check.evaluate([synthetic_result(motor={"identical": False, "psnr": 22.0})]), "rigid frames of motor")
+        self.assertEqual(len(fails), 1)
+
     def test_the_16_byte_rule_both_ways(self):
         ok = synthetic_result(matrix_c={"identical": False, "psnr": 45.0, "outsideEnvelope": 2, "envelopeExcess": 90,
                                         "outsideEnvelopeNotTies": 0, "envelopeExcessNotTies": 3})
