@@ -546,7 +546,10 @@ def main(argv):
                "loadFailures": {f["file"]: f["error"] for f in files if f["status"] == "load-failed"},
                "crashes": {f["file"]: f["error"] for f in files if f["status"] in ("crashed", "worker-error")}}
     doc = {"summary": summary, "pipelines": per,
-           "rules": [{"rule": n, "pass": not fails, "failures": fails, "passedOnTies": ties} for n, fails, ties in rules],
+           "rules": [{"rule": n, "pass": not fails, "failures": fails, "passedOnTies": ties} for n, fails, ties in rules
+                     if not n.startswith("frames judged by no")],
+           "countedOmissions": [{"mark": m, "frame": line} for n, _, ties in rules if n.startswith("frames judged by no")
+                                for m, line in ties],
            "files": [{k: v for k, v in f.items() if k != "rows"} for f in files],
            "rows": [r for f in files for r in f["rows"]]}
     os.makedirs(a.out, exist_ok=True)

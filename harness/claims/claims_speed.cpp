@@ -140,6 +140,14 @@ Evidence frameEvidence(const SpeedInputs& in, const Scope& s, const TimingDevice
   if (vb.value("paired_ratio_spread", json()).is_object())
     e.detail += ", IQR " + fmt("%.3g", vb["paired_ratio_spread"].value("q1", 0.0)) + ".." +
                 fmt("%.3g", vb["paired_ratio_spread"].value("q3", 0.0));
+  // A skinned scene timed with each pipeline's default skinning configuration (report.json before
+  // issue 18) compares two configurations, not two representations: not usable.
+  if (in.frameTimes.is_array())
+    for (const json& f : in.frameTimes)
+      if (f.value("scene", "") == s.scene && f.value("skinSpace", "-").find("defaults") != std::string::npos) {
+        e.detail += "; skinning: " + f["skinSpace"].get<std::string>();
+        e.why = "asymmetric: the pipelines' default skinning configurations differ";
+      }
   std::map<std::string, double> times;
   const json pipelines = vb.value("pipelines", json::object());  // named: items() of a temporary dangles
   for (const auto& [p, v] : pipelines.items())

@@ -257,7 +257,7 @@ int runClaims(const std::vector<std::string>& argv) {
   add(all, claims::skinnedFileVolumeClaims(corpus.corpusDir));
   add(all, claims::baselineClaims(), "baseline");
   say("curved space (uploads, ops, frame timing, drift)");
-  add(all, claims::curvedClaims(run, int(args.integer("frames", 20, 1, 100000)), report.value("scenes", json())), "curved");
+  add(all, claims::curvedClaims(run, int(args.integer("frames", 20, 1, 100000)), report.is_object() ? report.value("scenes", json()) : json()), "curved");  // no --report: null
   say("against the strongest baseline (every pipeline)");
   add(all, claims::strongestBaselineClaims(speed.timings, sources["frameTiming"].get<std::string>(), speed.kernelPairs,
                                            speed.kernelSource, speed.sceneStats, speed.timingMachine),

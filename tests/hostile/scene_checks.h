@@ -157,7 +157,8 @@ inline std::string checkSceneInvariants(const Scene& s) {
       auto where = [&] { err << "animation " << a << " channel " << c << ": "; };
       if (ch.node < 0 || ch.node >= nNodes) return (where(), err << "node " << ch.node << " out of range", err.str());
       if (ch.times.empty()) return (where(), err << "no keyframes", err.str());
-      const size_t width = ch.path == AnimPath::Rotation ? 4 : 3;
+      // Floats per key: 4 (rotation), the node's morph target count (weights), else 3.
+      const size_t width = ch.path == AnimPath::Rotation ? 4 : ch.path == AnimPath::Weights ? size_t(ch.weightCount) : 3;
       const size_t per = ch.interpolation == Interpolation::CubicSpline ? 3 : 1;
       if (ch.values.size() != ch.times.size() * width * per)
         return (where(), err << ch.values.size() << " values for " << ch.times.size() << " keys", err.str());
