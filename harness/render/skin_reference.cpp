@@ -9,6 +9,7 @@
 #include <glm/gtx/dual_quaternion.hpp>
 
 #include "pipelines/scene/camera_rule.h"
+#include "pipelines/scene/morph.h"
 
 namespace mb {
 namespace {
@@ -45,16 +46,14 @@ Joint splitJoint(const glm::mat4& j) {
   return out;
 }
 
-// The primitive's morph targets added with `weights` into its base streams (glTF 2.0 3.7.2.2:
-// deltas of POSITION, NORMAL and TANGENT xyz), and the targets removed.
+// The primitive's morph targets added with `weights` into its base streams (morph.h, glTF 2.0
+// 3.7.2.2), and the targets removed.
 void applyMorph(Primitive& p, const std::vector<float>& weights) {
-  for (size_t t = 0; t < p.targets.size() && t < weights.size(); ++t) {
-    const MorphTarget& target = p.targets[t];
-    const float w = weights[t];
-    for (size_t i = 0; i < target.positions.size() && i < p.positions.size(); ++i) p.positions[i] += w * target.positions[i];
-    for (size_t i = 0; i < target.normals.size() && i < p.normals.size(); ++i) p.normals[i] += w * target.normals[i];
-    for (size_t i = 0; i < target.tangents.size() && i < p.tangents.size(); ++i)
-      p.tangents[i] += glm::vec4(w * target.tangents[i], 0.0f);
+  if (p.targets.empty()) return;
+  for (size_t i = 0; i < p.positions.size(); ++i) {
+    p.positions[i] = morphedPosition(p, i, weights);
+    if (i < p.normals.size()) p.normals[i] = morphedNormal(p, i, weights);
+    if (i < p.tangents.size()) p.tangents[i] = morphedTangent(p, i, weights);
   }
   p.targets.clear();
 }
