@@ -193,11 +193,9 @@ int runSurvey(const std::vector<std::string>& argv) {
   auto geometryBaseline = [&]() -> Status {
     if (!geometryBase.empty()) return {};
     GeometryView view;
-    for (const FrameSettings& f : settings) {
-      auto frame = renderFrame(scene, baseline, f);
-      if (!frame) return Status::fail(frame.error());
-      geometryBase.push_back(frame->image);
-    }
+    auto images = drawFromViews(scene, baseline, settings, framings(scene, settings));  // one prepare for every shot
+    if (!images) return Status::fail(images.error());
+    geometryBase = std::move(*images);
     auto masks = tieMasks(*loaded, baseline, settings, geometryBase, kInt16Ties);
     if (!masks) return Status::fail(masks.error());
     for (size_t k = 0; k < masks->size(); ++k) doc["frames"][k]["int16Ties"] = tieJson((*masks)[k], kInt16Ties);
