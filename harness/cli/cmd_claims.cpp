@@ -3,9 +3,11 @@
 // quantitative claim of the paper with the paper's value, the value measured now, how, and a
 // verdict; plus our own rows (baselines, vs the strongest matrix variant, curved space), counted
 // apart. Op counts and uploads are always measured here. Speed comes from a report (its kernel
-// pairs, frame timings, device and ISA statistics) or a bench JSON when given, else from a short
-// bench run (vertex kernels only) and frame timing of four built-in scenes in this process;
-// --no-run skips those runs (and the composition timing and curved frame timing). Scene
+// pairs, frame timings, device, uploads and ISA statistics) or a bench JSON when given, else from
+// a short bench run (vertex and compose kernels only) and frame timing of four built-in scenes in
+// this process; --no-run skips those runs (and the curved frame timing). Given a report, claims
+// opens no GL context, renders and times nothing (issue 35): a figure the report lacks is "not
+// measurable here" with the reason. Scene
 // statistics come from the report's scenes (else the built-in scenes) plus --corpus, or from
 // the scene-graph corpus of --scene-graphs.
 #include <unistd.h>
@@ -24,6 +26,7 @@
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
 #include "harness/bench/report_bench.h"
+#include "harness/document/report_answer.h"
 #include "harness/document/report_format.h"
 #include "harness/report/report_machine.h"
 #include "harness/render/gpu_option.h"
@@ -136,11 +139,12 @@ claims::SpeedInputs speedInputs(const Args& args, const json& report, json& sour
     if (j) in.kernelPairs = report::kernelPairs(*j)["pairs"], in.kernelSource = *b;
     else missing += j.error() + "; ";
   }
-  const bool run = !args.has("no-run");
+  // Beside a report nothing is run: its figures are the ones it measured (issue 35).
+  const bool run = !args.has("no-run") && !report.is_object();
   if (in.kernelPairs.is_null() && run) {
     const std::string tmp = (fs::temp_directory_path() / ("motorbench-claims-bench-" + std::to_string(getpid()) + ".json")).string();
-    say("running motorbench bench (vertex_frame, skinned_vertex and hierarchy kernels, short)");
-    Status s = report::runBench(tmp, tmp + ".txt", 0.1, "^(vertex_frame|skinned_vertex|hierarchy)/");
+    say("running motorbench bench (vertex_frame, skinned_vertex, hierarchy and compose kernels, short)");
+    Status s = report::runBench(tmp, tmp + ".txt", 0.1, "^(vertex_frame|skinned_vertex|hierarchy|compose)/");
     auto j = s ? report::readBenchJson(tmp) : Result<json>::fail(s.error());
     if (j) in.kernelPairs = report::kernelPairs(*j)["pairs"], in.kernelSource = "motorbench bench run by claims (min time 0.1 s)";
     else missing += j.error() + "; ";
@@ -179,11 +183,13 @@ claims::SpeedInputs speedInputs(const Args& args, const json& report, json& sour
   if (in.kernelPairs.is_null())
     missing += std::string("no kernel throughput (") +
                (report.is_object() ? reportPath + " has no kernel pairs" : std::string("no --report")) +
-               (args.has("bench-json") ? "" : ", no --bench-json") + (run ? "" : ", and --no-run skips the bench run") + "); ";
+               (args.has("bench-json") ? "" : ", no --bench-json") +
+               (run ? "" : report.is_object() ? ", and claims runs nothing beside a report" : ", and --no-run skips the bench run") + "); ";
   if (in.frameTimes.is_null() || in.frameTimes.empty())
     missing += std::string("no frame timing (") + (report.is_object() ? reportPath + " has none" : std::string("no --report")) +
-               (run ? "" : ", and --no-run skips timing") + "); ";
-  if (in.kernelMachine.is_null()) in.kernelMachine = report::machineJson();
+               (run ? "" : report.is_object() ? ", and claims times nothing beside a report" : ", and --no-run skips timing") + "); ";
+  // The machine of the kernel figures: the report's (its bench ran there), else this one.
+  if (in.kernelMachine.is_null()) in.kernelMachine = report.is_object() ? report.value("machine", json()) : report::machineJson();
   if (!missing.empty()) missing.resize(missing.size() - 2);
   in.missing = missing;
   sources["kernels"] = in.kernelSource.empty() ? "none" : in.kernelSource;
@@ -228,25 +234,28 @@ int runClaims(const std::vector<std::string>& argv) {
     corpus.sceneGraphs = *files;
     corpus.sceneGraphSource = std::to_string(files->size()) + " scene graphs of " + *g;
   }
+  // Given a report, every upload figure is the report's (claims_uploads.h): no GL context here.
+  const claims::Uploads uploads =
+      report.is_object() ? claims::Uploads(report.value("scenes", json()), *args.get("report")) : claims::Uploads();
   json sources = {{"opCounts", "shaders/pga.glsl, shaders/matrix_transform.glsl, shaders/motor_transform.glsl "
                                 "executed on mb::Counted; SPIR-V via glslangValidator + spirv-opt"},
-                  {"memory", "PipelineStats of renders of the built-in normal_torus and skinned_tube"},
+                  {"memory", "PipelineStats of the built-in normal_torus and skinned_tube: " + uploads.source()},
                   {"sceneStatistics", corpus.sceneGraphs.is_array() ? corpus.sceneGraphSource
                                       : (report.is_object() ? "the scenes of " + corpus.reportSource : std::string("built-in scenes")) +
                                             " + " + corpus.corpusDir}};
   std::vector<claims::Claim> all;
-  const bool run = !args.has("no-run");
+  const bool run = !args.has("no-run") && !report.is_object();  // beside a report: nothing timed
   say("counting ops");
   add(all, claims::opClaims());
-  say(run ? "composition (counted and timed)" : "composition (counted; --no-run: not timed)");
+  say("composition (counted; timed by the bench's compose pair)");
   claims::SpeedInputs speed = speedInputs(args, report, sources);
-  add(all, claims::compositionClaims(run, speed.kernelPairs));
+  add(all, claims::compositionClaims(speed.kernelPairs));
   say("conversions, handedness rule, blending");
-  add(all, claims::conversionClaims());
+  add(all, claims::conversionClaims(uploads));
   add(all, claims::handednessClaims());
   add(all, claims::blendingClaims());
   say("measuring uploads");
-  add(all, claims::memoryClaims());
+  add(all, claims::memoryClaims(uploads));
   add(all, claims::compactClaims(speed.isa, speed.isaSource, report, args.get("report", "")), "compact");
   add(all, claims::speedClaims(speed));
   add(all, claims::sceneGraphClaims(speed.kernelPairs, speed.timings, sources["frameTiming"].get<std::string>(), speed.sceneStats));
@@ -257,23 +266,38 @@ int runClaims(const std::vector<std::string>& argv) {
   add(all, claims::skinnedFileVolumeClaims(corpus.corpusDir));
   add(all, claims::baselineClaims(), "baseline");
   say("curved space (uploads, ops, frame timing, drift)");
-  add(all, claims::curvedClaims(run, int(args.integer("frames", 20, 1, 100000)), report.is_object() ? report.value("scenes", json()) : json()), "curved");  // no --report: null
+  add(all, claims::curvedClaims(run, int(args.integer("frames", 20, 1, 100000)),
+                                report.is_object() ? report.value("scenes", json()) : json(), uploads),
+      "curved");  // no --report: null
   say("against the strongest baseline (every pipeline)");
   add(all, claims::strongestBaselineClaims(speed.timings, sources["frameTiming"].get<std::string>(), speed.kernelPairs,
-                                           speed.kernelSource, speed.sceneStats, speed.timingMachine),
+                                           speed.kernelSource, speed.sceneStats, speed.timingMachine, uploads),
       "vs strongest");
   add(all, claims::isaStrongestClaims(speed.isa, speed.isaSource), "vs strongest");
 
   claims::applyPaperQuotes(all);  // a row quoting the paper is the paper's; the rest are ours
-  json machine = report::machineJson();
+  // The machine the figures were measured on: the report's when given (claims itself measures
+  // only deterministic counts), so that the same inputs give the same claims, byte for byte.
+  json machine = report.is_object() ? report.value("machine", json()) : report::machineJson();
   json scope = {{"cpu", claims::cpuScope(speed.kernelMachine)},
                 {"frameTimeDevice", claims::timingDevice(speed.timingMachine).label()}};
-  const json j = claims::claimsJson(all, machine, sources, scope);
-  const std::string md = report::toMarkdown(claims::claimsDocument(j));
+  json j = claims::claimsJson(all, machine, sources, scope);
+  const std::string mdPath = args.get("o", args.get("output", ""));
+  report::Document doc = claims::claimsDocument(j);
+  if (report.is_object()) {
+    // The answer first, the same lines as report.md's: read from the report's figures, measured here never.
+    j["answer"] = report::answerJson(report);
+    const fs::path reportMd = fs::path(*args.get("report")).parent_path() / "report.md";
+    const fs::path mdDir = mdPath.empty() ? fs::current_path() : fs::absolute(mdPath).parent_path();
+    doc = report::withAnswerFirst(doc, report, fs::absolute(reportMd).lexically_relative(mdDir).generic_string());
+  } else {
+    doc.blocks.insert(doc.blocks.begin(), {report::Block::Kind::Paragraph, 0,
+                                           "No answer block: it quotes a report's figures (claims --report report.json)."});
+  }
+  const std::string md = report::toMarkdown(doc);
   if (auto path = args.get("json")) {
     if (Status ok = writeTextFile(*path, report::dumpJson(j, 2) + "\n"); !ok) return fail(ok.error());
   }
-  const std::string mdPath = args.get("o", args.get("output", ""));
   if (mdPath.empty()) {
     std::fputs(md.c_str(), stdout);
   } else {
@@ -299,14 +323,15 @@ MB_COMMAND(claims, "claims",
 MB_COMMAND_HELP(claims, "claims",
                "  -o FILE            claims.md (default: stdout);  --json FILE  claims.json\n"
                "                     (missing folders are created; both checked before the work)\n"
-               "  --report FILE      kernel ratios and frame timings from a report.json\n"
+               "  --report FILE      kernel ratios, frame timings, uploads and image figures from a report.json;\n"
+               "                     with it claims opens no GL context, renders and times nothing\n"
                "  --bench-json FILE  kernel ratios from a `motorbench bench --out` file\n"
                "  --isa FILE         ISA statistics (a `motorbench isa --json` file; else the report's \"isa\")\n"
                "  --scene-graphs F   scale statistics of a corpus: an inspect --json file or a folder, e.g.\n"
                "                     ../shared/corpus-graph\n"
                "  --corpus DIR       the real glTF files for the statistics and skinning rows (default ../shared/corpus)\n"
                "  --frames N         frames per pipeline when claims times scenes itself (default 20)\n"
-               "  --no-run           run no benchmark and time no frame (no composition timing, no curved-space\n"
+               "  --no-run           run no benchmark and time no frame (no curved-space\n"
                "                     frame timing): speed rows come only from --report or\n"
                "                     --bench-json (else \"not measurable here\"). Everything else is still measured:\n"
                "                     op counts (shim and SPIR-V, glslangValidator + spirv-opt per shader variant),\n"

@@ -23,11 +23,14 @@ struct Quote {
     std::optional<Figure> f = figures::figureNamed(report, name);
     return f && std::isfinite(f->value) ? f : std::nullopt;
   }
+  // The figure's value, marked with its name (figureMark), or "-".
   std::string value(const std::string& name) {
     const std::optional<Figure> f = get(name);
-    return f ? figures::valueText(*f) : "-";
+    return f ? figureMark(name, figures::valueText(*f)) : "-";
   }
 };
+
+std::string marked(const Figure& f) { return figureMark(f.name, figures::valueText(f)); }
 
 std::string spreadOf(const Figure& f) {
   if (!f.q1 || !f.q3) return "";
@@ -58,7 +61,7 @@ AnswerLine bytesLine(const json& r, const std::string& m, const std::string& M) 
   const auto ratio = q.get("vertex_fetch.bytes_per_frame_over_baseline." + M);
   l.text = "fetched per vertex (GPU fetch model, not timed): " + m + " " + q.value("vertex_fetch.bytes_per_vertex." + m) +
            ", " + M + " " + q.value("vertex_fetch.bytes_per_vertex." + M) + "; per frame " + M + " / " + m + " " +
-           (ratio ? figures::valueText(*ratio) + spreadOf(*ratio) + " over " + std::to_string(ratio->n) + " scene(s)" : "-") +
+           (ratio ? marked(*ratio) + spreadOf(*ratio) + " over " + std::to_string(ratio->n) + " scene(s)" : "-") +
            "; uploaded per vertex: " + m + " " + q.value("bytes_per_vertex." + m) + ", " + M + " " +
            q.value("bytes_per_vertex." + M);
   l.verdict = cheaper(ratio ? ratio->value : std::nan(""), "it fetches fewer bytes");
@@ -88,7 +91,7 @@ AnswerLine isaLine(const json& r, const std::string& m, const std::string& M) {
     if (!a || !b) continue;
     ++families;
     fewer += b->value < a->value, more += b->value > a->value;
-    text += (text.empty() ? "" : ", ") + id + " " + fmt(b->value, 4) + "/" + fmt(a->value, 4);
+    text += (text.empty() ? "" : ", ") + id + " " + figureMark(b->name, fmt(b->value, 4)) + "/" + figureMark(a->name, fmt(a->value, 4));
   }
   if (!families) {
     l.text = "not measured in this report (motorbench isa --json FILE, then report --isa-json FILE)";
@@ -109,7 +112,7 @@ AnswerLine timeLine(const json& r) {
   const auto f = q.get("frame_time.motor_over_matrix");
   const json& gl = at(r, {"machine", "gl"});
   const bool cpu = gl.is_object() && !gl.value("realGpu", false);  // llvmpipe, softpipe
-  l.text = "frame motor / matrix " + (f ? figures::valueText(*f) + spreadOf(*f) + " over " + std::to_string(f->n) + " scene(s)" : "-") +
+  l.text = "frame motor / matrix " + (f ? marked(*f) + spreadOf(*f) + " over " + std::to_string(f->n) + " scene(s)" : "-") +
            " on " + str(at(r, {"machine", "gl", "renderer"}), "an unnamed device") +
            (cpu ? " (a CPU rasterizer)" : "");
   if (cpu) l.verdict = "inconclusive: a CPU rasterizer cannot discriminate";
@@ -124,13 +127,19 @@ AnswerLine imageLine(const json& r, const std::string& m, const std::string& M) 
   const auto psnr = q.get("image.worst_psnr." + M);
   const auto same = q.get("image.identical_frames." + M);
   const auto flip = q.get("image.flip_mean_worst." + M);
-  l.text = M + " vs " + m + ": worst PSNR " + (psnr ? figures::valueText(*psnr) : "- (none differs)") + ", " +
+  l.text = M + " vs " + m + ": worst PSNR " + (psnr ? marked(*psnr) : "- (none differs)") + ", " +
            (same ? fmt(same->value, 6) + " of " + std::to_string(same->n) : std::string("-")) + " frames identical" +
-           "; worst frame mean FLIP " + (flip ? fmt(flip->value, 3) : std::string("not measured"));
+           "; worst frame mean FLIP " + (flip ? figureMark(flip->name, fmt(flip->value, 3)) : std::string("not measured"));
   if (!same || same->n == 0) l.verdict = "not compared";
   else if (!psnr || psnr->value >= 50) l.verdict = "equivalent (every differing frame >= 50 dB)";
   else l.verdict = "differs: worst " + figures::valueText(*psnr);
   return l;
+}
+
+// "dir/" of "dir/report.md" ("" for "" or "report.md").
+std::string folderOf(const std::string& path) {
+  const size_t slash = path.rfind('/');
+  return slash == std::string::npos ? "" : path.substr(0, slash + 1);
 }
 
 }  // namespace
@@ -142,21 +151,38 @@ std::string answerQuestion() {
 
 std::vector<AnswerLine> answerLines(const json& r) {
   const auto [m, M] = headline(r);
-  return {bytesLine(r, m, M), opsLine(r, m, M), isaLine(r, m, M), timeLine(r), imageLine(r, m, M)};
+  std::vector<AnswerLine> lines = {bytesLine(r, m, M), opsLine(r, m, M), isaLine(r, m, M), timeLine(r), imageLine(r, m, M)};
+  for (AnswerLine& l : lines) l.marked = l.text, l.text = withoutFigureMarks(l.text);
+  return lines;
 }
 
-void answerSection(Document& d, const json& r) {
+json answerJson(const json& r) {
+  json lines = json::array();
+  for (const AnswerLine& l : answerLines(r))
+    lines.push_back({{"evidence", l.evidence}, {"table", l.anchor}, {"text", l.text}, {"verdict", l.verdict}, {"figures", l.figures}});
+  return {{"question", answerQuestion()}, {"lines", lines}};
+}
+
+void answerSection(Document& d, const json& r, const std::string& reportPath) {
   d.heading(2, "The answer", "answer");
   d.paragraph(answerQuestion());
   std::vector<std::vector<Cell>> rows;
-  for (const AnswerLine& l : answerLines(r)) rows.push_back({{l.evidence, "", l.anchor}, {l.text}, {l.verdict}});
+  for (const AnswerLine& l : answerLines(r)) rows.push_back({{l.evidence, "", reportPath + l.anchor}, {l.marked}, {l.verdict}});
   d.table({"evidence", "figures (report.json \"figures\")", "verdict"}, rows);
   d.blocks.back().anchor = "answer-table";
   for (const json& f : at(r, {"plots", "files"}).is_array() ? r["plots"]["files"] : json::array())
     if (f.value("name", "") == "design_space") {
-      d.figure(f.value("file", ""), f.value("title", ""), f.value("caption", ""));
+      d.figure(folderOf(reportPath) + f.value("file", ""), f.value("title", ""), f.value("caption", ""));
       d.blocks.back().anchor = "design-space";
     }
+}
+
+Document withAnswerFirst(const Document& doc, const json& report, const std::string& reportPath) {
+  Document answer;
+  answerSection(answer, report, reportPath);
+  Document out = doc;
+  out.blocks.insert(out.blocks.begin(), answer.blocks.begin(), answer.blocks.end());
+  return out;
 }
 
 }  // namespace mb::report

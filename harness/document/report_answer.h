@@ -16,6 +16,7 @@ struct AnswerLine {
   std::string evidence;              // "bytes", "ops", ...
   std::string anchor;                // the table it links to ("#gpu-evidence")
   std::string text;                  // the figures, as printed
+  std::string marked;                // the same with each figure marked by name (figureMark)
   std::string verdict;
   std::vector<std::string> figures;  // the names of the figures the text quotes
 };
@@ -23,8 +24,14 @@ struct AnswerLine {
 // "Look, Ma, No Matrices!" asks: ...
 std::string answerQuestion();
 std::vector<AnswerLine> answerLines(const nlohmann::json& report);
+// {"question", "lines": [{"evidence", "table", "text", "verdict", "figures"}]}: the block in claims.json.
+nlohmann::json answerJson(const nlohmann::json& report);
 // Heading "The answer" (id "answer"), the question, the lines as a table (id "answer-table"),
-// the design-space plot (id "design-space") when plot.py drew it.
-void answerSection(Document& d, const nlohmann::json& report);
+// the design-space plot (id "design-space") when plot.py drew it. `reportPath`: where report.md
+// lies from the document written ("" in report.md itself; "report.md" for claims.md beside it),
+// put before each line's table link and the figure's folder.
+void answerSection(Document& d, const nlohmann::json& report, const std::string& reportPath = "");
+// `doc` with the answer block of `report` in front (claims.md: the same lines as report.md's).
+Document withAnswerFirst(const Document& doc, const nlohmann::json& report, const std::string& reportPath);
 
 }  // namespace mb::report

@@ -107,6 +107,39 @@ std::string cell(const std::string& s) {
   return out;
 }
 
+namespace {
+// Control characters no figure name, value or document text holds.
+constexpr char kMarkOpen = '\x02', kMarkSplit = '\x1f', kMarkClose = '\x03';
+
+// Each mark of `s` through `write(name, text)`; the rest of `s` unchanged.
+template <class Write>
+std::string replaceMarks(const std::string& s, Write write) {
+  std::string out;
+  size_t pos = 0;
+  for (size_t open; (open = s.find(kMarkOpen, pos)) != std::string::npos;) {
+    const size_t split = s.find(kMarkSplit, open), close = s.find(kMarkClose, open);
+    if (split == std::string::npos || close == std::string::npos || split > close) break;
+    out += s.substr(pos, open - pos) + write(s.substr(open + 1, split - open - 1), s.substr(split + 1, close - split - 1));
+    pos = close + 1;
+  }
+  return out + s.substr(pos);
+}
+}  // namespace
+
+std::string figureMark(const std::string& name, const std::string& text) {
+  return kMarkOpen + name + kMarkSplit + text + kMarkClose;
+}
+
+std::string figureMarksAsSpans(const std::string& s) {
+  return replaceMarks(s, [](const std::string& name, const std::string& text) {
+    return "<span title=\"" + html(name) + "\">" + text + "</span>";
+  });
+}
+
+std::string withoutFigureMarks(const std::string& s) {
+  return replaceMarks(s, [](const std::string&, const std::string& text) { return text; });
+}
+
 std::string cpuMachineText(const json& cpu, const json& cores, const json& simdTarget) {
   auto text = [](const json& v) {
     return v.is_string() ? v.get<std::string>() : v.is_number() ? std::to_string(v.get<long long>()) : std::string("unknown");

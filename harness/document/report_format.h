@@ -45,4 +45,13 @@ std::string html(const std::string& s);
 // Markdown table cell: "|" escaped and newlines folded.
 std::string cell(const std::string& s);
 
+// A figure of report.json quoted by name inside document text (issue 36): both writers print it
+// as <span title="NAME">TEXT</span>, so a reader sees the figure's name on hover and
+// tests/document/test_documents_agree.py finds every value a document quotes, by name.
+std::string figureMark(const std::string& name, const std::string& text);
+// The marks of `s` written as those spans (the writers' last step).
+std::string figureMarksAsSpans(const std::string& s);
+// The text of `s` with its marks dropped (the quoted values kept).
+std::string withoutFigureMarks(const std::string& s);
+
 }  // namespace mb::report

@@ -109,7 +109,7 @@ std::string toHtml(const Document& doc) {
         break;
     }
   }
-  return out + kImageCheck + "</body>\n</html>\n";
+  return figureMarksAsSpans(out) + kImageCheck + "</body>\n</html>\n";
 }
 
 }  // namespace mb::report

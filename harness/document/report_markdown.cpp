@@ -75,7 +75,7 @@ std::string toMarkdown(const Document& doc) {
         break;
     }
   }
-  return out;
+  return figureMarksAsSpans(out);
 }
 
 }  // namespace mb::report

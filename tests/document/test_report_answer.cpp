@@ -2,8 +2,12 @@
 // figures by name, and each verdict follows from those figures as the line's rule says.
 #include <gtest/gtest.h>
 
+#include <regex>
+
+#include "harness/claims/claims_layout.h"
 #include "harness/document/report_answer.h"
 #include "harness/document/report_answer_figures.h"
+#include "harness/document/report_format.h"
 #include "harness/figures/figure.h"
 
 namespace mb::report {
@@ -111,6 +115,54 @@ TEST(ReportAnswer, MissingEvidenceIsSaidNotInvented) {
   EXPECT_EQ(line(lines, "bytes").verdict, "not measured");
   EXPECT_EQ(line(lines, "AMD ISA").verdict, "not measured");
   EXPECT_EQ(line(lines, "image").verdict, "not compared");
+}
+
+// The rows of a Markdown document's answer table (between "## The answer" and the next heading):
+// evidence | figures | verdict, the evidence's link dropped (claims.md links into report.md).
+std::vector<std::string> answerRows(const std::string& md) {
+  const size_t start = md.find("## The answer");
+  EXPECT_NE(start, std::string::npos) << md.substr(0, 300);
+  if (start == std::string::npos) return {};
+  const size_t end = md.find("\n## ", start + 1);
+  const std::string block = md.substr(start, end == std::string::npos ? std::string::npos : end - start);
+  std::vector<std::string> rows;
+  const std::regex row("\\| \\[([^\\]]*)\\]\\([^)]*\\) \\|([^\\n]*)");
+  for (auto it = std::sregex_iterator(block.begin(), block.end(), row); it != std::sregex_iterator(); ++it)
+    rows.push_back((*it)[1].str() + " |" + (*it)[2].str());
+  return rows;
+}
+
+// report.md's answer block as reportDocument lays it out (first, as in report_layout.cpp).
+std::string reportAnswerMd(const json& r) {
+  Document d;
+  answerSection(d, r);
+  return toMarkdown(d);
+}
+
+// claims.md opens with the same answer lines as report.md, made from the same report.json
+// (claims reads the figures; it measures none of them), each figure marked by its name.
+// tests/document/test_documents_agree.py checks the same on results/ (real report.json).
+TEST(ReportAnswer, ClaimsOpenWithTheReportsAnswerLines) {
+  const json r = syntheticReport(false);
+  const std::string reportMd = reportAnswerMd(r);
+  const json machine = {{"cpu", "a CPU"}, {"logicalCores", 2}, {"os", "Linux"}, {"date", "today"}};
+  const json claimsJson = claims::claimsJson({}, machine, json::object());
+  const std::string claimsMd = toMarkdown(withAnswerFirst(claims::claimsDocument(claimsJson), r, "report.md"));
+  const std::vector<std::string> fromReport = answerRows(reportMd), fromClaims = answerRows(claimsMd);
+  ASSERT_EQ(fromReport.size(), 5u) << reportMd.substr(0, 2000);
+  EXPECT_EQ(fromClaims, fromReport);
+  EXPECT_LT(claimsMd.find("## The answer"), claimsMd.find("## Verdicts"));  // first in claims.md
+  EXPECT_NE(claimsMd.find("](report.md#gpu-evidence)"), std::string::npos);  // links into report.md
+  // Every figure a line prints is marked with its name, its value as report.json has it.
+  EXPECT_NE(fromReport[0].find("<span title=\"bytes_per_vertex.motor\">36 bytes</span>"), std::string::npos) << fromReport[0];
+  EXPECT_NE(fromReport[3].find("<span title=\"frame_time.motor_over_matrix\">0.9x</span>"), std::string::npos) << fromReport[3];
+  EXPECT_EQ(withoutFigureMarks(figureMark("a.b", "1 B") + " and " + figureMark("c", "2")), "1 B and 2");
+  // A changed figure changes both documents' line alike.
+  json changed = r;
+  figures::put(changed["figures"], fig("frame_time.motor_over_matrix", 1.2, "x", 3, 1.1, 1.3));
+  const std::vector<std::string> after = answerRows(toMarkdown(withAnswerFirst(claims::claimsDocument(claimsJson), changed, "report.md")));
+  EXPECT_NE(after, fromReport);
+  EXPECT_EQ(after, answerRows(reportAnswerMd(changed)));
 }
 
 }  // namespace
