@@ -17,6 +17,12 @@ const std::string kTexels = "the 16 control points are texelFetch (no arithmetic
 // Instanced draws (EXT_mesh_gpu_instancing, --instances): the rigid transform with its per-draw
 // data read from per-instance attributes; the same arithmetic as the non-instanced variant.
 const std::string kInstanced = "the per-draw transform read from per-instance attributes (divisor 1)";
+// Morph targets (issue 37, morph.glsl): the ISA and SPIR-V of a morphing rigid vertex beside the
+// rigid one, for matrix and the motor family's two methods. Two targets, as morph_torus.
+const std::vector<std::pair<std::string, std::string>> kMorph = {{"MB_MORPH", ""}, {"MB_MORPH_TARGETS", "2"}};
+const std::string kMorphSums =
+    "morph.glsl's delta sums, per target with a non-zero weight 1 mul + 1 add per float of the target "
+    "(storage-buffer reads by the vertex index), before the transform";
 
 void matrixVariants(std::vector<ShaderVariant>& out) {
   const std::string ref = "the Sample Viewer's: skin, then u_ModelMatrix per vertex";
@@ -40,6 +46,7 @@ void matrixVariants(std::vector<ShaderVariant>& out) {
        kMatrixMain + "; " + kInstanced},
       {"matrix", "matrix.vs", D{{"MB_INSTANCED", ""}, {"MB_NO_TANGENT", ""}}, "rigid, no tangent, instanced",
        {"matrixRigidVertexNoTangent", clip}, kInstanced},
+      {"matrix", "matrix.vs", kMorph, "rigid, morph", {"matrixRigidVertex", clip}, kMatrixMain + "; " + kMorphSums},
   });
 }
 
@@ -95,6 +102,14 @@ void motorVariants(std::vector<ShaderVariant>& out) {
          {"motorScaledVertex", clip}, kInstanced},
     });
   }
+  D rotor = kMorph;
+  rotor.push_back({"MB_MORPH_ROTOR", ""});
+  out.insert(out.end(), {
+      {"motor", "motor.vs", kMorph, "rigid, morph frame (a)", {"morphRotorFrame", "motorRigidVertex", clip},
+       kMorphSums + " (position, normal, tangent deltas: 9 floats)"},
+      {"motor", "motor.vs", rotor, "rigid, morph rotor (b)", {"morphRotorBlend", "motorRigidVertex", clip},
+       kMorphSums + " (position, rotor deltas: 7 floats)"},
+  });
 }
 
 // matrix_c (affine.vs) and motor_c (motor.vs) with MB_COMPACT (issue 29): rigid draws fold the
