@@ -1,0 +1,132 @@
+#!/usr/bin/env python3
+"""Differences between two results/ folders in every figure that is not a timing.
+
+    scripts/results_diff.py                  committed results/ (git HEAD) vs the working tree's
+    scripts/results_diff.py git:REV results  results/ at commit REV vs the folder results
+    scripts/results_diff.py OLD NEW          two folders
+
+Every *.json below each folder is read; timings and the run's circumstances (what a rerun of
+scripts/reproduce.sh changes by itself) are left out by the rules below, everything else is
+compared value for value: op counts, bytes, ISA statistics, image metrics, scene statistics,
+claims on those. Prints one line per difference and exits 1 when there is one (0: the same).
+"""
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+# A key whose value is a timing, derived from one, or the run's circumstances (machine, load,
+# date) is left out whole. Keys are split into words (camelCase, snake_case); these words mark
+# a timing: ...Ms, ..._time, seconds, per_second, fps, ratios of times, disturbance, load.
+TIMING_WORDS = {"ms", "time", "seconds", "second", "timing", "fps", "iterations", "ratio", "ratios",
+                "spread", "disturbance", "disturbed", "runnable", "load", "mhz", "gbps", "bw"}
+# Keys left out by name: the run's circumstances, and a count calibrated on the clock.
+TIMING_NAMES = {"machine", "context", "date", "host_name", "cpu", "cpuOverReal", "bestOf", "best_of",
+                "warmup", "update_calls_per_block"}
+# Keys with a timing word that are not timings: animation times (of a frame, of a scene's
+# frames, where a skin is thinnest) and counts of keyframe times.
+NOT_TIMING = {"time", "times", "lbsTime", "motorTime", "timeWidth", "timeHeight"}
+# Figures (report.json "figures", keyed by name) that are timings.
+TIMING_FIGURE = re.compile(r"^(frame_time|kernel_time)")
+# A claim or answer line judged on a timing: its sentence and verdict move with the machine's
+# load (their structure and non-timing values are still compared).
+JUDGED_TEXT = ("measured", "verdict", "verdictText", "text")
+
+
+def words(key):
+    return {w.lower() for w in re.findall(r"[A-Z]+(?![a-z])|[A-Z]?[a-z]+|[0-9]+", key)}
+
+
+def is_timing_key(key):
+    return key not in NOT_TIMING and (key in TIMING_NAMES or bool(words(key) & TIMING_WORDS))
+
+
+def strip(value, key=""):
+    """value without its timing parts."""
+    if isinstance(value, list):
+        return [strip(v, key) for v in value]
+    if not isinstance(value, dict) or key == "glossary":  # the glossary's meanings are text
+        return value
+    out = {}
+    for k, v in value.items():
+        if is_timing_key(k) or (key == "figures" and TIMING_FIGURE.search(k)):
+            continue
+        out[k] = strip(v, k)
+    judged_on_time = (
+        # a claim whose measured value held a timing, or that names time or speed
+        ("measuredValue" in value and (strip(value["measuredValue"]) != value["measuredValue"] or
+                                       value.get("section") == "Speed" or
+                                       words(str(value.get("id", ""))) & {"time", "update"}))
+        # an answer line quoting a timing figure
+        or any(isinstance(f, str) and TIMING_FIGURE.search(f) for f in value.get("figures", []) or []
+               if isinstance(value.get("figures"), list)))
+    if judged_on_time:
+        for k in JUDGED_TEXT:
+            out.pop(k, None)
+    return out
+
+
+def differences(a, b, path, out):
+    if isinstance(a, dict) and isinstance(b, dict):
+        for k in sorted(set(a) | set(b)):
+            where = f"{path}.{k}" if path else k
+            if k not in a:
+                out.append(f"{where}: only in the new results")
+            elif k not in b:
+                out.append(f"{where}: only in the old results")
+            else:
+                differences(a[k], b[k], where, out)
+    elif isinstance(a, list) and isinstance(b, list):
+        if len(a) != len(b):
+            out.append(f"{path}: {len(a)} entries before, {len(b)} now")
+        for i, (x, y) in enumerate(zip(a, b)):
+            differences(x, y, f"{path}[{i}]", out)
+    elif a != b:
+        out.append(f"{path}: {json.dumps(a)[:80]} -> {json.dumps(b)[:80]}")
+
+
+def load_tree(spec):
+    """{relative path: parsed JSON} of every .json in a folder or in git:REV's results/."""
+    files = {}
+    if spec.startswith("git:"):
+        rev = spec[4:]
+        names = subprocess.run(["git", "ls-tree", "-r", "--name-only", rev, "results/"],
+                               check=True, capture_output=True, text=True).stdout.split()
+        for name in names:
+            if name.endswith(".json"):
+                text = subprocess.run(["git", "show", f"{rev}:{name}"], check=True,
+                                      capture_output=True, text=True).stdout
+                files[name[len("results/"):]] = json.loads(text)
+    else:
+        root = Path(spec)
+        if not root.is_dir():
+            sys.exit(f"results_diff: {spec}: not a folder (or git:REV)")
+        for p in sorted(root.rglob("*.json")):
+            files[str(p.relative_to(root))] = json.loads(p.read_text())
+    return files
+
+
+def compare(old, new):
+    """Lines naming each non-timing difference between two {path: JSON} trees."""
+    out = []
+    differences({k: strip(v) for k, v in old.items()}, {k: strip(v) for k, v in new.items()}, "", out)
+    return out
+
+
+def main(argv):
+    if len(argv) > 2 or any(a in ("-h", "--help") for a in argv):
+        print(__doc__.strip())
+        return 0 if argv and argv[0] in ("-h", "--help") else 2
+    old_spec = argv[0] if argv else "git:HEAD"
+    new_spec = argv[1] if len(argv) > 1 else "results"
+    lines = compare(load_tree(old_spec), load_tree(new_spec))
+    for line in lines:
+        print(line)
+    print(f"results_diff: {len(lines)} difference(s) outside timings between {old_spec} and {new_spec}",
+          file=sys.stderr)
+    return 1 if lines else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
