@@ -131,6 +131,9 @@ ISA=()
 [ -s "$OUT/isa.json" ] && ISA=(--isa "$OUT/isa.json")
 "$MB" claims --report "$OUT/report.json" --bench-json "$OUT/bench.json" --corpus "$CORPUS" \
   "${SCENE_GRAPHS[@]}" "${ISA[@]}" -o "$OUT/claims.md" --json "$OUT/claims.json"
+# The README's figure tables and results/curved/README.md from the figures just written
+# (tests/document/test_documents_agree.py: every document quotes one value per figure).
+python3 scripts/document_figures.py --results "$OUT"
 
 # An index for the repository page (GitHub shows a folder's README.md).
 cat > "$OUT/README.md" <<INDEX
