@@ -19,6 +19,7 @@ PACKAGES=(
   python3 python3-matplotlib
   parallel python3-yaml              # sharded runs (motorbench --shard, tests/cli, README examples)
   chromium                          # the report opened in a real browser (tests/cli/test_cli_browser.cpp)
+  python3-markdown                  # scripts/screenshot.sh: claims.md's answer block as a page
   fonts-dejavu-core                 # the numbers on diff_legend.png (OpenImageIO's render_text)
 )
 
