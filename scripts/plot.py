@@ -361,14 +361,18 @@ def plot_design_space(plt, report, outdir):
                      "text": None if pt["time"] is None else "%.2fx" % pt["time"], "colour": col, "iqr": None})
     xs = [p["x"] for p in points]
     ys = [p["y"] for p in points]
-    close = (max(ys) - min(ys)) * 0.06
-    placed = []
+    close_y = (max(ys) - min(ys)) * 0.08
+    close_x = max(xs) * 0.03  # 16.0 and 16.01 bytes fetched are one column
+    placed = []  # (x, y, side) of the labels so far
     for (x, y), pts in sorted(seen.items(), key=lambda kv: -kv[0][1]):
         text = ", ".join(p["pipeline"] + ("" if p["time"] is None else " %.2fx" % p["time"]) for p in pts)
-        # A label near one already placed at the same x goes below its point, not over it.
-        below = any(abs(px - x) < 1e-6 and abs(py - y) <= close for px, py in placed)
-        ax.annotate(text, (x, y), xytext=(5, -11 if below else 3), textcoords="offset points", fontsize=FONT)
-        placed.append((x, y))
+        # A label near one already placed in the same column goes to the other side of its point,
+        # then below it, so no two labels overlap.
+        taken = {side for px, py, side in placed if abs(px - x) <= close_x and abs(py - y) <= close_y}
+        side = next((sd for sd in ("right", "left", "below") if sd not in taken), "below")
+        offset, ha = {"right": ((5, 3), "left"), "left": ((-5, 3), "right"), "below": ((5, -11), "left")}[side]
+        ax.annotate(text, (x, y), xytext=offset, textcoords="offset points", fontsize=FONT, ha=ha)
+        placed.append((x, y, side))
     ax.set_xlim(0, max(xs) * 1.35)
     ax.set_ylim(min(ys) * 0.9, max(ys) * 1.1)
     ax.set_xlabel("bytes fetched per vertex (meshoptimizer model, not timed)", fontsize=FONT + 1)
