@@ -21,6 +21,9 @@ struct Bandwidth {
   }
 };
 
+// The out-of-cache kernels' counter: bytes/s over the probe's copy (bench_common.h).
+inline const char* const kCopyFraction = "copy_fraction";
+
 // Array size: four times the last-level cache (sysconf), at least 64 MiB.
 size_t streamArrayBytes();
 

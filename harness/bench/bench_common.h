@@ -102,7 +102,9 @@ inline const char* const kRunnableAfter = "runnable_after";
 void registerKernel(const std::string& name, std::function<void(benchmark::State&)> fn);
 
 // Sets items/s and bytes/s for `items` items and `bytes` bytes per iteration; for out-of-cache
-// kernels also "bw_fraction" (bytes/s over the bandwidth probe's best) and "probe_GBps".
+// kernels also "bw_fraction" (bytes/s over the bandwidth probe's best) and "probe_GBps", and
+// kCopyFraction (bytes/s over the probe's STREAM copy) and "copy_GBps". Both fractions are rate
+// counters: their value is the plain fraction (kCopyFraction: bandwidth_probe.h).
 void setThroughput(benchmark::State& state, size_t items, size_t bytes, Size size);
 
 // Labels the run with the Highway target the simd kernels dispatch to ("AVX3", "AVX2", ...).

@@ -15,7 +15,8 @@
 // copies of the same vertices and palettes (same bytes per vertex): vertex_frame
 // matrixAffineVertex (the same products as matrixRigidVertex for these affine uniforms) vs
 // motorRigidVertex; skinned_vertex affineSkinnedVertex (mat4x3 joints, cofactor normals: the
-// cheapest matrix LBS of the shaders, 12 floats gathered per joint) vs motorSkinnedVertex.
+// cheapest matrix LBS of the shaders, 12 floats per joint) vs motorSkinnedVertex, the palette
+// held in registers; skinned_vertex_gather: the same simd pair gathering every palette entry.
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -305,17 +306,19 @@ void frameSimdMotor(benchmark::State& state, Size s) {
   });
 }
 
-void skinSimdMatrix(benchmark::State& state, Size s) {
+// `fetch`: the palette in registers (skinned_vertex, the default) or gathered per component
+// (skinned_vertex_gather), the same on both sides.
+template <simd::PaletteFetchMode fetch> void skinSimdMatrix(benchmark::State& state, Size s) {
   runSimd(state, s, kSkinMatrixBytes, [&](SoaArrays& a) {
     simd::skinnedVertexMatrix({a.paletteAffine.data(), size_t(kJoints)}, draw().normal[3][3], a.in(a.matrix),
-                              {a.joints.data(), a.stride}, a.in(a.weights), a.outPlanes(), a.n);
+                              {a.joints.data(), a.stride}, a.in(a.weights), a.outPlanes(), a.n, fetch);
   });
 }
 
-void skinSimdMotor(benchmark::State& state, Size s) {
+template <simd::PaletteFetchMode fetch> void skinSimdMotor(benchmark::State& state, Size s) {
   runSimd(state, s, kSkinMotorBytes, [&](SoaArrays& a) {
     simd::skinnedVertexMotor({a.paletteMotor.data(), size_t(kJoints)}, draw().scale, a.in(a.motor),
-                             {a.joints.data(), a.stride}, a.in(a.weights), a.outPlanes(), a.n);
+                             {a.joints.data(), a.stride}, a.in(a.weights), a.outPlanes(), a.n, fetch);
   });
 }
 
@@ -327,7 +330,10 @@ void registerVertexBenchmarks() {
     const char* name;
     Fn matrix, motor, glm, simdMatrix, simdMotor;  // simd: nullptr where kernels/simd has no such form
   } families[] = {{"vertex_frame", frameMatrix, frameMotor, frameGlm, frameSimdMatrix, frameSimdMotor},
-                  {"skinned_vertex", skinMatrix<false>, skinMotor<false>, skinGlm<false>, skinSimdMatrix, skinSimdMotor},
+                  {"skinned_vertex", skinMatrix<false>, skinMotor<false>, skinGlm<false>,
+                   skinSimdMatrix<simd::PaletteFetchMode::InRegisters>, skinSimdMotor<simd::PaletteFetchMode::InRegisters>},
+                  {"skinned_vertex_gather", nullptr, nullptr, nullptr, skinSimdMatrix<simd::PaletteFetchMode::Gathered>,
+                   skinSimdMotor<simd::PaletteFetchMode::Gathered>},
                   {"skinned_vertex_reference", skinMatrix<true>, skinMotor<true>, skinGlm<true>, nullptr, nullptr}};
   for (const auto& f : families)
     for (Size s : {Size::InCache, Size::OutOfCache}) {

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <map>
 
+#include "harness/bench/bandwidth_probe.h"
 #include "harness/bench/bench_common.h"
 #include "harness/bench/fastest_sides.h"
 #include "harness/process/report_workers.h"
@@ -42,6 +43,8 @@ json sideFigures(const json& b, unsigned cores) {
             {"time_unit", b.value("time_unit", "ns")}, {"disturbance", disturbanceOf(b, cores)}};
   if (b.contains("bw_fraction")) s["bw_fraction"] = b["bw_fraction"];
   if (b.contains("probe_GBps")) s["probe_GBps"] = b["probe_GBps"];
+  for (const char* key : {bench::kCopyFraction, "copy_GBps"})
+    if (b.contains(key)) s[key] = b[key];
   if (b.contains("label")) s["label"] = b["label"];
   return s;
 }
@@ -127,8 +130,23 @@ json kernelPairs(const json& bench) {
     p["fastest_matrix"] = f.matrixSide.empty() ? json(nullptr) : json(f.matrixSide);
     p["fastest_motor"] = f.motorSide.empty() ? json(nullptr) : json(f.motorSide);
     p["ratio_motor_fastest_matrix"] = f.motor > 0 && f.matrix > 0 ? json(f.motor / f.matrix) : json(nullptr);
+    json target = nullptr;
+    for (const char* side : {bench::kSimdMatrix, bench::kSimdAffine, bench::kSimdMotor})
+      if (p.contains(side) && p[side].contains("label")) target = p[side]["label"];
+    p["machine"] = {{"cpu", context.value("cpu_model", json(nullptr))},
+                    {"logicalCores", context.value("num_cpus", json(nullptr))}, {"simdTarget", target}};
   }
   return {{"context", context}, {"pairs", pairs}, {"probe", probe}};
+}
+
+std::string pairMachineText(const json& pair) {
+  const json m = pair.value("machine", json::object());
+  if (!m.value("cpu", json()).is_string()) return "an unrecorded CPU";
+  std::string s = m["cpu"].get<std::string>() + " (";
+  s += m.value("logicalCores", json()).is_number() ? std::to_string(m["logicalCores"].get<int>()) + " logical cores"
+                                                   : std::string("cores not recorded");
+  if (m.value("simdTarget", json()).is_string()) s += ", Highway " + m["simdTarget"].get<std::string>();
+  return s + ")";
 }
 
 }  // namespace mb::report

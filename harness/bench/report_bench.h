@@ -22,11 +22,19 @@ Result<nlohmann::json> readBenchJson(const std::string& path);
 // "<kernel>[/<size>]/<side>" with side matrix|motor|glm|simd_matrix|simd_affine|simd_motor; one
 // figure per benchmark (the median aggregate when repeated). Each pair: kernel, size (in_cache |
 // out_of_cache | null), per side items_per_second, bytes_per_second, bw_fraction (out of
-// cache: bytes/s over the STREAM probe), label (simd: the Highway target); ratios of items/s
+// cache: bytes/s over the STREAM probe's best), copy_fraction (over its copy), label (simd: the
+// Highway target); ratios of items/s
 // (> 1: the first faster): ratio_motor_matrix and ratio_glm_matrix (to the shim matrix),
 // ratio_simd_motor_matrix (simd_motor / simd_matrix), and fastest_matrix / fastest_motor (the
 // side with the most items/s of each kind) with ratio_motor_fastest_matrix (fastest motor /
 // fastest matrix).
+// Each pair also carries "machine" (issue 38: a CPU figure names its CPU and SIMD target):
+// {"cpu", "logicalCores"} from the bench JSON's context and "simdTarget", the Highway target the
+// pair's SIMD sides ran on (their label; null for a pair without SIMD sides).
 nlohmann::json kernelPairs(const nlohmann::json& bench);
+
+// "AMD EPYC (2 logical cores, Highway AVX3)" for a pair of kernelPairs, for text beside a CPU
+// figure or verdict; "an unrecorded CPU" for a pair without "machine" (a report written before).
+std::string pairMachineText(const nlohmann::json& pair);
 
 }  // namespace mb::report

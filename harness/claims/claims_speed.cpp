@@ -12,6 +12,7 @@
 #include <map>
 
 #include "harness/bench/fastest_sides.h"
+#include "harness/bench/report_bench.h"
 #include "harness/claims/claims_device.h"
 #include "harness/claims/claims_ranking.h"
 #include "harness/claims/claims_sources.h"
@@ -106,9 +107,11 @@ Evidence isaEvidence(const json& isa, const Scope& s, bool occupancy) {
 Evidence cpuEvidence(const SpeedInputs& in, const Scope& s) {
   Evidence e{std::string("CPU kernel ") + s.kernel + ", fastest motor vs fastest 4x4 matrix implementation"};
   std::vector<double> ratios;
+  std::string machine;  // the CPU and SIMD target the pairs ran on (issue 38)
   if (in.kernelPairs.is_array())
     for (const json& p : in.kernelPairs) {
       if (p.value("kernel", "") != s.kernel) continue;
+      machine = report::pairMachineText(p);
       const bench::FastestSides f = bench::fastestSides(p);
       const std::string size = p["size"].is_string() ? p["size"].get<std::string>() : std::string("?");
       if (!f.disturbed.empty()) {
@@ -121,6 +124,7 @@ Evidence cpuEvidence(const SpeedInputs& in, const Scope& s) {
     }
   if (!ratios.empty()) e.costRatio = *std::max_element(ratios.begin(), ratios.end());
   else if (e.why.empty()) e.why = std::string("no ") + s.kernel + " bench pair";
+  if (!machine.empty()) e.detail += (e.detail.empty() ? "on " : "; on ") + machine;
   return e;
 }
 

@@ -72,10 +72,17 @@ void mat4ToAffine(const float model[16], const float normal[16], float model12[1
 // Motor: motorSkinnedVertex (motor_transform.glsl): blend of four joint motors with the
 // hemisphere rule, normalize_m, motorRigidVertex; `palette`: 8 planes.
 // Both: `joints` 4 planes of indices < the palette size, `weights` 4 planes summing to 1.
+// `fetch`: how each lane's palette entry is read, the same on both sides. InRegisters (the
+// default, the faster: kernels/simd/README.md) holds a palette of at most four vectors per
+// component in registers and permutes lanes, gathering larger palettes; Gathered always gathers
+// (one GatherIndex per component and joint slot), kept to measure the two side by side.
+enum class PaletteFetchMode { InRegisters, Gathered };
 void skinnedVertexMatrix(ConstPlanes palette, float mirror, ConstPlanes in, JointPlanes joints,
-                         ConstPlanes weights, Planes out, size_t n);
+                         ConstPlanes weights, Planes out, size_t n,
+                         PaletteFetchMode fetch = PaletteFetchMode::InRegisters);
 void skinnedVertexMotor(ConstPlanes palette, float scale, ConstPlanes in, JointPlanes joints,
-                        ConstPlanes weights, Planes out, size_t n);
+                        ConstPlanes weights, Planes out, size_t n,
+                        PaletteFetchMode fetch = PaletteFetchMode::InRegisters);
 
 // ---- compose: out[i] = a[i] b[i] ----------------------------------------------------------
 // mat4: matrixCompose (16 planes each). Affine: the same product for mat4x3 operands (12 planes

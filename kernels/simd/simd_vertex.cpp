@@ -51,8 +51,10 @@ void VertexFrameMotor(const float* motor, float scale, ConstPlanes in, Planes ou
 }
 
 // Pair skinned vertex: the same planar vertex streams as the vertex frame pair plus 4 uint16
-// joint planes and 4 weight planes (all prefetched); each joint's palette entry is gathered
-// component by component (GatherIndex: matrix 4 x 12 = 48, motor 4 x 8 = 32). Matrix: blend
+// joint planes and 4 weight planes (all prefetched); each joint's palette entry is read by
+// PaletteFetch (lane permutations of a palette held in registers, or GatherIndex component by
+// component: matrix 4 x 12 = 48 gathers, motor 4 x 8 = 32, with PaletteFetchMode::Gathered or
+// a palette too large for the registers). Matrix: blend
 // 12 mul + 36 fused, cofactor 18, matrixAffineVertex 28 (affineSkinnedVertex). Motor: blend
 // with the hemisphere rule 8 mul + 3 x (4 fused, 1 select, 8 fused), normalize_m ~22 with an
 // estimate + Newton step for inversesqrt, then motorRigidVertex 51 (motorSkinnedVertex).
@@ -70,12 +72,12 @@ HWY_INLINE void loadSkinned(D d, bool main, ConstPlanes in, ConstPlanes weights,
 }
 
 void SkinnedVertexMatrix(ConstPlanes palette, float mirror, ConstPlanes in, JointPlanes joints, ConstPlanes weights,
-                         Planes out, size_t n) {
+                         Planes out, size_t n, PaletteFetchMode mode) {
   const bool nt = streamOutput(out, 10, n);
   forEachBatch(n, nt, [&](auto d, size_t b, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     const V mir = hn::Set(d, mirror);
-    const PaletteFetch<decltype(d), 12> fetch(d, palette, main);
+    const PaletteFetch<decltype(d), 12> fetch(d, palette, main && mode == PaletteFetchMode::InRegisters);
     V v[10], w[4], skin[12], j[12], cof[9], o[10];
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
       loadSkinned(d, main, in, weights, joints, i, v, w);
@@ -93,13 +95,13 @@ void SkinnedVertexMatrix(ConstPlanes palette, float mirror, ConstPlanes in, Join
 }
 
 void SkinnedVertexMotor(ConstPlanes palette, float scale, ConstPlanes in, JointPlanes joints, ConstPlanes weights,
-                        Planes out, size_t n) {
+                        Planes out, size_t n, PaletteFetchMode mode) {
   const bool nt = streamOutput(out, 10, n);
   forEachBatch(n, nt, [&](auto d, size_t b, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
     const V s = hn::Set(d, scale), two = hn::Set(d, 2.0f), half = hn::Set(d, 0.5f), one = hn::Set(d, 1.0f);
     const V zero = hn::Zero(d);
-    const PaletteFetch<decltype(d), 8> fetch(d, palette, main);
+    const PaletteFetch<decltype(d), 8> fetch(d, palette, main && mode == PaletteFetchMode::InRegisters);
     V v[7], w[4], r[8], j[8], c[3], o[10];
     for (size_t i = b; i < e; i += hn::Lanes(d)) {
       loadSkinned(d, main, in, weights, joints, i, v, w);
@@ -139,12 +141,12 @@ void vertexFrameMotor(const float motor[8], float scale, ConstPlanes in, Planes 
   HWY_DYNAMIC_DISPATCH(VertexFrameMotor)(motor, scale, in, out, n);
 }
 void skinnedVertexMatrix(ConstPlanes palette, float mirror, ConstPlanes in, JointPlanes joints, ConstPlanes weights,
-                         Planes out, size_t n) {
-  HWY_DYNAMIC_DISPATCH(SkinnedVertexMatrix)(palette, mirror, in, joints, weights, out, n);
+                         Planes out, size_t n, PaletteFetchMode fetch) {
+  HWY_DYNAMIC_DISPATCH(SkinnedVertexMatrix)(palette, mirror, in, joints, weights, out, n, fetch);
 }
 void skinnedVertexMotor(ConstPlanes palette, float scale, ConstPlanes in, JointPlanes joints, ConstPlanes weights,
-                        Planes out, size_t n) {
-  HWY_DYNAMIC_DISPATCH(SkinnedVertexMotor)(palette, scale, in, joints, weights, out, n);
+                        Planes out, size_t n, PaletteFetchMode fetch) {
+  HWY_DYNAMIC_DISPATCH(SkinnedVertexMotor)(palette, scale, in, joints, weights, out, n, fetch);
 }
 
 void mat4ToAffine(const float model[16], const float normal[16], float model12[12], float normal9[9], float* mirror) {

@@ -33,4 +33,21 @@ TEST(SimdBenchPairs, FastestOfEachKindIsNamedAndCompared) {
   EXPECT_TRUE(c["ratio_simd_motor_matrix"].is_null());  // no simd_matrix side
 }
 
+// Issue 38: a CPU figure names its CPU and the SIMD target it ran on, read from the bench JSON
+// (context and the SIMD sides' labels), never from the machine the report runs on.
+TEST(SimdBenchPairs, EachPairNamesItsCpuAndSimdTarget) {
+  json simd = run("skinned_vertex/out_of_cache/simd_motor", 3);
+  simd["label"] = "AVX2";
+  const json bench = {{"context", {{"cpu_model", "Test CPU 9000"}, {"num_cpus", 16}}},
+                      {"benchmarks", {run("skinned_vertex/out_of_cache/glm", 2), simd, run("anim_blend/glm", 1),
+                                      run("anim_blend/motor", 1)}}};
+  const json pairs = mb::report::kernelPairs(bench)["pairs"];
+  ASSERT_EQ(pairs.size(), 2u) << pairs.dump(2);
+  EXPECT_EQ(pairs[0]["machine"]["simdTarget"], "AVX2");
+  EXPECT_EQ(mb::report::pairMachineText(pairs[0]), "Test CPU 9000 (16 logical cores, Highway AVX2)");
+  EXPECT_TRUE(pairs[1]["machine"]["simdTarget"].is_null());  // no SIMD side: no target to name
+  EXPECT_EQ(mb::report::pairMachineText(pairs[1]), "Test CPU 9000 (16 logical cores)");
+  EXPECT_EQ(mb::report::pairMachineText(json{{"pair", "compose"}}), "an unrecorded CPU");
+}
+
 }  // namespace

@@ -262,8 +262,13 @@ TEST(SimdKernels, SkinnedVertexMatchesTheShader) {
     Planar out(kItems, 10);
     AS A;
     PS P;
+    // Both palette fetches (in registers where the palette fits, and always gathered) on every target.
+    for (const auto mode : {mb::simd::PaletteFetchMode::InRegisters, mb::simd::PaletteFetchMode::Gathered})
     forEachTarget([&](const std::string&) {
-      mb::simd::skinnedVertexMatrix(palM.cplanes(), -1.0f, v.matrix.cplanes(), jp4, weights.cplanes(), out.planes(), kItems);
+      SCOPED_TRACE(mode == mb::simd::PaletteFetchMode::Gathered ? "gathered" : "in registers");
+      std::fill(out.v.begin(), out.v.end(), std::nanf(""));
+      mb::simd::skinnedVertexMatrix(palM.cplanes(), -1.0f, v.matrix.cplanes(), jp4, weights.cplanes(), out.planes(), kItems,
+                                    mode);
       Worst wa;
       for (size_t i = 0; i < kItems; ++i) {
         auto J = [&](size_t k) { return jm[joints[k * kItems + i]]; };
@@ -276,7 +281,9 @@ TEST(SimdKernels, SkinnedVertexMatchesTheShader) {
       }
       EXPECT_LE(wa.err, kTol) << "affineSkinnedVertex " << wa.where;
 
-      mb::simd::skinnedVertexMotor(palP.cplanes(), 1.25f, v.motor.cplanes(), jp4, weights.cplanes(), out.planes(), kItems);
+      std::fill(out.v.begin(), out.v.end(), std::nanf(""));
+      mb::simd::skinnedVertexMotor(palP.cplanes(), 1.25f, v.motor.cplanes(), jp4, weights.cplanes(), out.planes(), kItems,
+                                   mode);
       Worst wm;
       for (size_t i = 0; i < kItems; ++i) {
         auto J = [&](size_t k) { return jp[joints[k * kItems + i]]; };
