@@ -18,13 +18,13 @@
 //                position + normal + uv, 32-byte vertices
 //   MB_INSTANCED model, normal matrix and mirror per instance (vertex attributes, divisor 1)
 //                instead of per draw: EXT_mesh_gpu_instancing / --instances
-//   MB_MORPH     morph targets (morph.glsl), float frame only: position, normal and tangent
-//                deltas added in object space before the skin and the model, as matrix.vs
+//   MB_MORPH     morph targets (morph.glsl): position, normal and tangent deltas added in
+//                object space before the skin and the model, as matrix.vs. MB_QTANGENT and
+//                MB_COMPACT decode their frame to a normal and a (unit) tangent first and
+//                then run the float frame's transform; MB_COMPACT's position is dequantised
+//                per vertex (u_Dequant, never folded into the model) before the float deltas
 #include "affine_transform.glsl"
 #ifdef MB_MORPH
-#if defined(MB_QTANGENT) || defined(MB_COMPACT)
-#error "MB_MORPH is built for the float frame only"
-#endif
 #include "morph.glsl"
 #endif
 
@@ -35,7 +35,7 @@ layout(location = 2) in vec2 a_uv0;
 #elif defined(MB_COMPACT)
 layout(location = 1) in vec4 a_compactFrame;  // integer fields as floats, not normalised
 layout(location = 2) in vec2 a_uv0;
-#if defined(MB_SKINNED) || defined(MB_INSTANCED)
+#if defined(MB_SKINNED) || defined(MB_INSTANCED) || defined(MB_MORPH)
 uniform vec4 u_Dequant;  // the mesh's cube: center xyz, half extent w
 #endif
 #else
@@ -79,17 +79,39 @@ out vec2 v_uv1;
 out vec4 v_color;
 
 void main() {
-#ifdef MB_MORPH  // the transform below reads the morphed attributes under the inputs' names
+#ifdef MB_MORPH  // the float frame's transform below reads the morphed attributes
+#ifdef MB_QTANGENT
+  mat2x4 f = qtangentFrame(a_qtangent);
   vec3 m_position = morphPosition(a_position);
-  vec3 m_normal = morphNormal(a_normal);
-#ifndef MB_NO_TANGENT
-  vec4 m_tangent = vec4(morphTangent(a_tangent.xyz), a_tangent.w);
+#elif defined(MB_COMPACT)
+  mat2x4 f = compactMatrixFrame(a_compactFrame);
+  f[1].xyz = normalize(f[1].xyz);  // a direction of any length: the deltas add to a unit tangent
+  vec3 m_position = morphPosition(compactPosition(a_position, u_Dequant));
+#elif defined(MB_NO_TANGENT)
+  mat2x4 f = mat2x4(vec4(a_normal, 0.0), vec4(0.0, 0.0, 0.0, 1.0));  // the tangent is unread
+  vec3 m_position = morphPosition(a_position);
+#else
+  mat2x4 f = mat2x4(vec4(a_normal, 0.0), a_tangent);
+  vec3 m_position = morphPosition(a_position);
 #endif
-#define a_position m_position
-#define a_normal m_normal
-#define a_tangent m_tangent
-#endif
+  vec3 m_normal = morphNormal(f[0].xyz);
+  vec4 m_tangent = vec4(morphTangent(f[1].xyz), f[1].w);
 #ifdef MB_SKINNED
+#ifdef MB_NO_TANGENT
+  mat3x4 v = affineSkinnedVertexNoTangent(u_joints[a_joints.x], u_joints[a_joints.y],
+                                          u_joints[a_joints.z], u_joints[a_joints.w], a_weights,
+                                          m_position, m_normal);
+#else
+  mat3x4 v = affineSkinnedVertex(u_joints[a_joints.x], u_joints[a_joints.y],
+                                 u_joints[a_joints.z], u_joints[a_joints.w], a_weights, u_Mirror,
+                                 m_position, m_normal, m_tangent);
+#endif
+#elif defined(MB_NO_TANGENT)
+  mat3x4 v = affineVertexNoTangent(u_ModelMatrix, u_NormalMatrix, m_position, m_normal);
+#else
+  mat3x4 v = matrixAffineVertex(u_ModelMatrix, u_NormalMatrix, u_Mirror, m_position, m_normal, m_tangent);
+#endif
+#elif defined(MB_SKINNED)
 #ifdef MB_COMPACT
   mat3x4 v = compactSkinnedVertex(u_joints[a_joints.x], u_joints[a_joints.y],
                                   u_joints[a_joints.z], u_joints[a_joints.w], a_weights,

@@ -31,15 +31,19 @@
 //                     palette only; compact positions dequantised per vertex (u_Dequant)
 //   MB_INSTANCED      motor and scale per instance (vertex attributes, divisor 1) instead of
 //                     per draw: EXT_mesh_gpu_instancing / --instances
-//   MB_MORPH          morph targets (morph.glsl), without MB_COMPACT: the position and the
-//                     tangent rotor morphed in object space before the skin and the motor. The
-//                     frame by method (a) of motor_transform.glsl (deltas: position, normal,
-//                     tangent); with MB_MORPH_ROTOR by method (b) (deltas: position, rotor)
+//   MB_MORPH          morph targets (morph.glsl): the position and the tangent rotor morphed
+//                     in object space before the skin and the motor. The frame by method (a) of
+//                     motor_transform.glsl (deltas: position, normal, tangent); with
+//                     MB_MORPH_ROTOR by method (b) (deltas: position, rotor). With MB_COMPACT
+//                     (motor_c, motor_cf) method (a) only: the position dequantised per vertex
+//                     (u_Dequant, never folded) before the float deltas are added, the 4-byte
+//                     rotor decoded, morphed as a frame and re-formed (morphRotorFrameHanded;
+//                     motor_cf: morphSignedRotorFrame keeps the stored sign's hemisphere)
 #include "pga.glsl"
 #include "motor_transform.glsl"
 #ifdef MB_MORPH
-#if defined(MB_COMPACT)
-#error "MB_MORPH is not built for the compact vertex"
+#if defined(MB_COMPACT) && defined(MB_MORPH_ROTOR)
+#error "MB_MORPH_ROTOR is not built for the compact vertex (method (a) only)"
 #endif
 #include "morph.glsl"
 #endif
@@ -58,7 +62,7 @@ layout(location = 0) in vec3 a_position;
 #endif
 #ifdef MB_COMPACT
 layout(location = 1) in vec4 a_compactFrame;  // integer fields as floats, not normalised
-#if defined(MB_SKINNED) || defined(MB_INSTANCED) || defined(MB_LINEAR_FALLBACK)
+#if defined(MB_SKINNED) || defined(MB_INSTANCED) || defined(MB_LINEAR_FALLBACK) || defined(MB_MORPH)
 uniform vec4 u_Dequant;  // the mesh's cube: center xyz, half extent w
 #endif
 #else
@@ -126,7 +130,22 @@ out vec2 v_uv1;
 out vec4 v_color;
 
 void main() {
-#ifdef MB_MORPH  // the transform below reads the morphed attributes under the inputs' names
+#if defined(MB_MORPH) && defined(MB_COMPACT)
+  // The morphed compact vertex as floats: object-space position, rotor, handedness.
+  vec3 m_position = morphPosition(compactPosition(a_position.xyz, u_Dequant));
+#ifdef MB_SIGNED_ROTOR
+  float m_handedness = a_position.w;
+  vec4 m_rotor = compactSignedRotor(a_compactFrame);
+  if (u_MorphNormal > 0 || u_MorphTangent > 0)
+    m_rotor = morphSignedRotorFrame(m_rotor, m_handedness, morphNormal(vec3(0.0)), morphTangent(vec3(0.0)));
+#else
+  mat2x4 decoded = compactRotor(a_compactFrame);
+  float m_handedness = decoded[1].x;
+  vec4 m_rotor = decoded[0];
+  if (u_MorphNormal > 0 || u_MorphTangent > 0)
+    m_rotor = morphRotorFrameHanded(m_rotor, m_handedness, morphNormal(vec3(0.0)), morphTangent(vec3(0.0)));
+#endif
+#elif defined(MB_MORPH)  // the transform below reads the morphed attributes under the inputs' names
   vec3 m_position = morphPosition(a_position);
   vec4 m_tangentRotor = a_tangentRotor;
 #ifdef MB_MORPH_ROTOR
@@ -163,7 +182,9 @@ void main() {
   mat3 linear = u_Linear;
   mat3 normalLinear = u_LinearNormal;
 #endif
-#ifdef MB_COMPACT
+#if defined(MB_COMPACT) && defined(MB_MORPH)
+  mat3x4 v = motorLinearRotorVertex(toWorld, linear, normalLinear, m_position, m_rotor, m_handedness);
+#elif defined(MB_COMPACT)
   vec3 position = compactPosition(a_position.xyz, u_Dequant);
 #ifdef MB_SIGNED_ROTOR
   mat3x4 v = motorLinearRotorVertex(toWorld, linear, normalLinear, position,
@@ -175,6 +196,16 @@ void main() {
 #else
   mat3x4 v = motorLinearRotorVertex(toWorld, linear, normalLinear, a_position, a_tangentRotor,
                                     motorHandedness(a_tangentRotor));
+#endif
+#elif defined(MB_COMPACT) && defined(MB_MORPH)
+#ifdef MB_FRAGMENT_ROTOR
+  mat2x4 v = motorRotorVertex(toWorld, u_Scale, m_position, m_rotor);
+  v_worldPositionHandedness = vec4(v[0].xyz, m_handedness);
+  v_worldRotor = v[1];
+#elif defined(MB_SCALE_FALLBACK)
+  mat3x4 v = motorScaledRotorVertex(toWorld, u_Scale, m_position, m_rotor, m_handedness);
+#else
+  mat3x4 v = motorRigidRotorVertex(toWorld, u_Scale, m_position, m_rotor, m_handedness);
 #endif
 #elif defined(MB_COMPACT)
 #if defined(MB_SKINNED) || defined(MB_INSTANCED)

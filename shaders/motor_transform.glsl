@@ -28,6 +28,14 @@ mat3x4 motorRigidVertex(motor toWorld, float scale, vec3 position, vec4 tangentR
   return mat3x4(worldPosition, 0.0, nt[0], 0.0, nt[1], motorHandedness(tangentRotor));
 }
 
+// motorRigidVertex with the handedness given apart from the rotor (whose sign then does not
+// matter): the compact rotors, whose handedness is a bit of their own.
+mat3x4 motorRigidRotorVertex(motor toWorld, float scale, vec3 position, vec4 rotor, float handedness) {
+  vec3 worldPosition = sw_mp(toWorld, position * scale);
+  mat2x3 nt = extractNormalTangent(gp_rr(toWorld, motor(rotor, vec4(0.0))));
+  return mat3x4(worldPosition, 0.0, nt[0], 0.0, nt[1], handedness);
+}
+
 // The documented fallback for draws whose scale is not a positive uniform scale: a
 // non-uniformly scaled leaf, or a mirrored (negative-scale) node. `scale` is applied to the
 // object-space position first; the frame is decoded in object space, the normal divided and
@@ -150,11 +158,25 @@ vec4 rotorFromFrame(vec3 normal, vec3 tangent, float handedness) {
   return renormaliseRotor(r, handedness);
 }
 
+// Method (a) with the handedness given apart from the rotor (of either sign): the frame of
+// `rotor` plus the deltas, re-formed into a rotor whose scalar's sign is `handedness`.
+vec4 morphRotorFrameHanded(vec4 rotor, float handedness, vec3 normalDelta, vec3 tangentDelta) {
+  mat2x3 f = rotorFrame(rotor);
+  return rotorFromFrame(f[0] + normalDelta, f[1] + tangentDelta, handedness);
+}
+
 // Method (a) per vertex: the rotor of its frame plus the summed weighted normal and tangent
 // deltas (morph.glsl's sums), handedness kept.
 vec4 morphRotorFrame(vec4 rotor, vec3 normalDelta, vec3 tangentDelta) {
-  mat2x3 f = rotorFrame(rotor);
-  return rotorFromFrame(f[0] + normalDelta, f[1] + tangentDelta, motorHandedness(rotor));
+  return morphRotorFrameHanded(rotor, motorHandedness(rotor), normalDelta, tangentDelta);
+}
+
+// Method (a) for motor_cf's signed rotor: the re-formed rotor put in the hemisphere of the
+// stored one (the sign the mesh pass chose so that a triangle's corners interpolate), the
+// handedness travelling apart (the position's w).
+vec4 morphSignedRotorFrame(vec4 signedRotor, float handedness, vec3 normalDelta, vec3 tangentDelta) {
+  vec4 r = morphRotorFrameHanded(signedRotor, handedness, normalDelta, tangentDelta);
+  return dot(r, signedRotor) < 0.0 ? -r : r;
 }
 
 // Method (b) per vertex: the rotor plus the summed weighted rotor deltas, renormalised,
@@ -197,9 +219,7 @@ vec4 motorWorldToClipConstants(motor camera, vec3 worldPosition, vec4 k) {
 // `toWorld` and `scale` on the CPU (scale * extent, and a translation by scale * center).
 mat3x4 motorCompactVertex(motor toWorld, float scale, vec3 position, vec4 frame) {
   mat2x4 r = compactRotor(frame);
-  vec3 worldPosition = sw_mp(toWorld, position * scale);
-  mat2x3 nt = extractNormalTangent(gp_rr(toWorld, motor(r[0], vec4(0.0))));
-  return mat3x4(worldPosition, 0.0, nt[0], 0.0, nt[1], r[1].x);
+  return motorRigidRotorVertex(toWorld, scale, position, r[0], r[1].x);
 }
 
 // motorScaledVertex's fallback (non-uniform or negative scale) with the compact frame.
@@ -227,13 +247,17 @@ mat3x4 motorCompactSkinnedVertexReference(motor toWorld, motor j0, motor j1, mot
 
 // ---- motor_cf: the rotor carried to the fragment shader (frame_shading.glsl) ----------------
 
+// [0].xyz world position, [1] the world tangent rotor toWorld * rotor (rotor's sign kept).
+mat2x4 motorRotorVertex(motor toWorld, float scale, vec3 position, vec4 rotor) {
+  return mat2x4(sw_mp(toWorld, position * scale), 0.0, gp_rr(toWorld, motor(rotor, vec4(0.0)))[0]);
+}
+
 // Rigid vertex of motor_cf: [0].xyz world position, [1] the world tangent rotor, the draw's
 // rotor times the vertex's, with the vertex rotor's sign (compactSignedRotor): no normal or
 // tangent is extracted per vertex. Left-multiplying by one unit rotor keeps every dot
 // product, so a triangle whose rotors share a hemisphere still does in world space.
 mat2x4 motorCompactRotorVertex(motor toWorld, float scale, vec3 position, vec4 frame) {
-  vec4 r = compactSignedRotor(frame);
-  return mat2x4(sw_mp(toWorld, position * scale), 0.0, gp_rr(toWorld, motor(r, vec4(0.0)))[0]);
+  return motorRotorVertex(toWorld, scale, position, compactSignedRotor(frame));
 }
 
 // Skinned vertex of motor_cf (world-space palette; the palette's motors are put in one

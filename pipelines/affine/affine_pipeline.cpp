@@ -9,9 +9,10 @@
 // 22 floats, 88 bytes per instance). matrix_c (FrameFormat::Compact, issue 29): rigid draws
 // get the mesh's quantisation cube folded into u_ModelMatrix (model * translate * scale);
 // skinned and instanced draws get it as u_Dequant (a vec4 per draw, in uniformBytesPerFrame).
-// Morph targets (issue 37): the float frame (affine, hybrid) draws a node with a non-zero weight
-// with the MB_MORPH variants, the glTF deltas as matrix does; qtangent and matrix_c and
-// instanced draws draw the base mesh (not built for their frame forms).
+// Morph targets (issue 37): a draw (instanced too) whose node has a non-zero weight uses the
+// MB_MORPH variant of its program, the glTF deltas as matrix does (morph_buffers.h); qtangent,
+// hybrid and matrix_c decode their frame and add the deltas to it (affine.vs), and matrix_c's
+// morphing rigid draws dequantise per vertex instead of folding the cube into the model.
 #include "pipelines/affine/affine_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -78,7 +79,7 @@ private:
   // [rigid, skinned, instanced (MB_INSTANCED)][no tangent] (qtangent: [.][0] only); the
   // instanced row only for scenes with instances.
   std::unique_ptr<gl::Program> programs_[3][2];
-  std::unique_ptr<gl::Program> morphing_[2][2];  // MB_MORPH [skinned][no tangent], float frame only
+  std::unique_ptr<gl::Program> morphing_[3][2];  // programs_ with MB_MORPH, scenes with targets
   gl::MorphBuffers morph_;
   std::vector<std::vector<glm::mat4>> instanceMatrices_;  // per node: trsMatrix(instance)
   gl::InstanceStream instances_;
@@ -111,7 +112,7 @@ Status AffinePipeline::prepare(const Scene& scene) {
       if (!program) return Status::fail(program.error());
       programs_[kind][noTangent] = program.take();
       if (kind == 1) programs_[kind][noTangent]->bindStorageBlock("AffineJoints", 0);
-      if (kind == 2 || qtangent || compact || !gl::maxMorphTargets(scene)) continue;
+      if (!gl::maxMorphTargets(scene)) continue;
       for (const auto& d : gl::morphDefines(scene)) defines.push_back(d);
       auto morphing = gl::Program::fromFiles("affine.vs", "forward.fs", defines);
       if (!morphing) return Status::fail(morphing.error());
@@ -145,8 +146,8 @@ Status AffinePipeline::prepare(const Scene& scene) {
     geometry_.uploadPacked(scene, interleaveCompact, compact::attributes(), stats_);
   } else {
     geometry_.upload(scene, gl::floatFrameFormat, stats_);  // as matrix: tangent only where needed
-    if (gl::maxMorphTargets(scene)) morph_.upload(scene, gl::packFrameDeltas, stats_);
   }
+  if (gl::maxMorphTargets(scene)) morph_.upload(scene, gl::packFrameDeltas, stats_);
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
   update(AnimState{});
@@ -240,10 +241,12 @@ void AffinePipeline::render(const View& view) {
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = palettes_[i];
     const int noTangent = g.variant == 1 ? 1 : 0;
+    const bool morph = !patch && morphing_[0][0] && morph_.active(d);
     const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
     if (!groups.empty()) {
-      const gl::Program& program = useProgram(2, noTangent);
+      const gl::Program& program = useProgram(2, noTangent, morph);
       if (format_ == FrameFormat::Compact) setDequant(program, d);
+      if (morph) morph_.bind(program, d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
       textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
       for (const gl::InstanceGroup& group : groups) {
         gl::setWinding(group.key == 1);
@@ -252,7 +255,6 @@ void AffinePipeline::render(const View& view) {
       }
       continue;
     }
-    const bool morph = !patch && morphing_[0][0] && morph_.active(d);  // float frame only
     const gl::Program& program = patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, noTangent, morph);
     if (morph) {
       morph_.bind(program, d, stats_.uniformBytesPerFrame);
@@ -260,13 +262,13 @@ void AffinePipeline::render(const View& view) {
     }
     glm::mat4x3 model = pose_.world[size_t(d.node)];
     const float sign = pose_.mirrors[size_t(d.node)];
-    if (format_ == FrameFormat::Compact && !patch && !palette) {  // the mesh's cube folded in
+    if (format_ == FrameFormat::Compact && !patch && !palette && !morph) {  // the mesh's cube folded in
       const compact::PositionCube& cube = cubes_[size_t(d.mesh)][size_t(d.primitive)];
       model = model * glm::scale(glm::translate(glm::mat4(1.0f), cube.center), glm::vec3(cube.extent));
     }
+    if (format_ == FrameFormat::Compact && (palette || morph)) setDequant(program, d);
     if (palette) {
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
-      if (format_ == FrameFormat::Compact) setDequant(program, d);
     } else {
       const glm::mat3& normal = pose_.normals[size_t(d.node)];
       gl::uniformMatrix4x3(program.uniform("u_ModelMatrix"), 1, glm::value_ptr(model), transformBytes);

@@ -10,7 +10,7 @@
 // matrices per instance, node world * instance composed per frame (MB_INSTANCED,
 // pipelines/gl/instance_stream.h: 128 bytes per instance). Morph targets: the MB_MORPH variants
 // (shaders/morph.glsl) for draws whose node has a non-zero weight, the glTF deltas as they are
-// (pipelines/gl/morph_buffers.h); instanced draws are drawn unmorphed.
+// (pipelines/gl/morph_buffers.h), instanced draws too (every instance with its node's weights).
 #include "pipelines/matrix/matrix_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -53,7 +53,7 @@ private:
 
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][no tangent]
-  std::unique_ptr<gl::Program> morphing_[2][2];  // the same with MB_MORPH (scenes with targets)
+  std::unique_ptr<gl::Program> morphing_[3][2];  // [skinned, 2: instanced][no tangent] with MB_MORPH
   gl::MorphBuffers morph_;
   std::unique_ptr<gl::Program> instanced_[2];    // MB_INSTANCED [no tangent]
   std::vector<std::vector<glm::mat4>> instanceMatrices_;  // per node: trsMatrix(instance)
@@ -103,6 +103,12 @@ Status MatrixPipeline::prepare(const Scene& scene) {
     auto program = gl::Program::fromFiles("matrix.vs", "forward.fs", defines);
     if (!program) return Status::fail(program.error());
     instanced_[noTangent] = program.take();
+    if (!gl::maxMorphTargets(scene)) continue;
+    for (const auto& d : gl::morphDefines(scene)) defines.push_back(d);
+    auto morphing = gl::Program::fromFiles("matrix.vs", "forward.fs", defines);
+    if (!morphing) return Status::fail(morphing.error());
+    morphing_[2][noTangent] = morphing.take();
+    morphing_[2][noTangent]->bindStorageBlock("MorphDeltas", gl::kMorphBinding);
   }
   if (Status fits = gl::checkPaletteSize(scene, 2 * sizeof(glm::mat4)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
@@ -183,8 +189,8 @@ void MatrixPipeline::render(const View& view) {
   bool frameSet[4][2][2] = {};
   auto useProgram = [&](int skinned, int noTangent, bool morph = false) -> const gl::Program& {
     gl::Program& p = skinned < 0    ? *patch_
-                     : skinned == 2 ? *instanced_[noTangent]
                      : morph        ? *morphing_[skinned][noTangent]
+                     : skinned == 2 ? *instanced_[noTangent]
                                     : *programs_[skinned][noTangent];
     p.use();
     if (!frameSet[skinned + 1][noTangent][morph]) {
@@ -205,9 +211,11 @@ void MatrixPipeline::render(const View& view) {
     GLuint palette = 0;
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = palettes_[i];
+    const bool morph = !patch && morph_.active(d);
     const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
     if (!groups.empty()) {
-      const gl::Program& program = useProgram(2, g.variant == 1 ? 1 : 0);
+      const gl::Program& program = useProgram(2, g.variant == 1 ? 1 : 0, morph);
+      if (morph) morph_.bind(program, d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
       textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
       for (const gl::InstanceGroup& group : groups) {
         gl::setWinding(group.key == 1);
@@ -216,7 +224,6 @@ void MatrixPipeline::render(const View& view) {
       }
       continue;
     }
-    const bool morph = !patch && morph_.active(d);
     const gl::Program& program =
         patch ? useProgram(-1, 0) : useProgram(palette ? 1 : 0, g.variant == 1 ? 1 : 0, morph);
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);

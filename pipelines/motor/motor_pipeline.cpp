@@ -29,27 +29,23 @@
 // factors, a motor and a mat3 (+ its normal matrix); a skin whose palette is not one common
 // positive scale gets a motor and 24 floats per joint (binding 1). Counted in PipelineStats
 // (linearFallbackDraws, skinFallbackDraws, skinFallbackJoints, fallbackVertices).
-// Morph targets (issue 37): motor and motor_q draw a node with a non-zero weight with the
-// MB_MORPH variants, the rotor morphed by PipelineOptions::morph (Frame by default: exact;
-// morph_rotors.h); motor_c and motor_cf draw the base mesh (not built for the compact vertex).
+// Morph targets (issue 37): a draw (instanced too) whose node has a non-zero weight uses the
+// MB_MORPH variant of its program; motor and motor_q morph the rotor by PipelineOptions::morph
+// (Frame by default: exact; morph_rotors.h), motor_c and motor_cf by the frame method on their
+// decoded rotor, their morphing draws dequantising per vertex (the cube is never folded).
+// Programs: motor_programs.h; vertices and morph deltas: motor_geometry.h.
 #include "pipelines/motor/motor_pipeline.h"
 
-#include <map>
-
-#include "pipelines/compact/compact_encoding.h"
-#include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/instance_stream.h"
 #include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
 #include "pipelines/gl/upload.h"
 #include "pipelines/motor/linear_fallback.h"
-#include "pipelines/motor/motor_c_vertices.h"
 #include "pipelines/motor/motor_camera.h"
+#include "pipelines/motor/motor_geometry.h"
+#include "pipelines/motor/motor_programs.h"
 #include "pipelines/motor/motor_rig.h"
-#include "pipelines/motor/motor_q_vertices.h"
-#include "pipelines/motor/motor_vertices.h"
-#include "pipelines/motor/morph_rotors.h"
 #include "pipelines/scene/transform.h"
 
 namespace mb {
@@ -95,29 +91,19 @@ private:
   void drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g, const Primitive& prim,
                   const motor::JointPalette* palette, GLuint paletteBuffer, const gl::Program& program,
                   uint64_t& transformBytes, uint64_t& linearBytes, const glm::mat4* world = nullptr);
-  void addVariantDefines(gl::Defines& defines, bool scaleFallback) const;
-  Status prepareMorph(const Scene& scene);
-  void uploadSignedCompact(const Scene& scene);
   void release();
 
   MotorVariant variant_;
   const Scene* scene_ = nullptr;
-  std::unique_ptr<gl::Program> programs_[2][2];  // [skinned][scale fallback]
-  std::unique_ptr<gl::Program> instanced_[2];    // MB_INSTANCED [scale fallback]
-  std::unique_ptr<gl::Program> linear_[2];       // MB_LINEAR_FALLBACK [skinned]
-  std::unique_ptr<gl::Program> morphing_[2][3];  // MB_MORPH [skinned][scale fallback, 2: linear]
-  gl::MorphBuffers morph_;
+  motor::MotorPrograms programs_;
   MorphMethod morphMethod_ = MorphMethod::PipelineDefault;
   gl::PaletteBuffers linearBuffers_;             // per palette: the fallback's 24 floats per joint
   std::vector<std::vector<motor::ScaledMotor>> instanceMotors_;  // per node: fromTRS(instance)
   gl::InstanceStream instances_;
   bool referenceSkin_ = false;
-  std::unique_ptr<gl::Program> patchPrograms_[2];  // motor_patch.vs [scale fallback], scenes with patches
   gl::PatchGeometry patches_;
   gl::SceneTextures textures_;
-  gl::SceneGeometry geometry_;
-  std::vector<std::vector<compact::PositionCube>> cubes_;  // motor_c: per mesh, per primitive
-  std::vector<std::vector<size_t>> interpolable_;  // motor_cf: per mesh, per primitive (rotor_signs.h)
+  motor::MotorGeometry geometry_;                 // vertices, morph deltas, motor_c's cubes
   gl::PaletteBuffers paletteBuffers_;             // one per pose_.palettes entry
   std::vector<gl::DrawItem> draws_;
   motor::Rig rig_;
@@ -131,50 +117,11 @@ Status MotorPipeline::prepare(const Scene& scene) {
   if (Status curved = refuseCurvedScene(scene, name()); !curved) return curved;
   scene_ = &scene;
   stats_ = PipelineStats{};
-  for (int skinned = 0; skinned < 2; ++skinned)
-    for (int fallback = 0; fallback < 2; ++fallback) {
-      gl::Defines defines;
-      if (skinned) defines.push_back({"MB_SKINNED", ""});
-      if (skinned && referenceSkin_) defines.push_back({"MB_SKIN_REFERENCE", ""});
-      if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
-      addVariantDefines(defines, fallback);
-      auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
-      if (!program) return Status::fail(program.error());
-      programs_[skinned][fallback] = program.take();
-      if (skinned) programs_[skinned][fallback]->bindStorageBlock("MotorJoints", 0);
-    }
-  for (int skinned = 0; skinned < 2; ++skinned) {
-    gl::Defines defines{{"MB_LINEAR_FALLBACK", ""}};
-    if (skinned) defines.push_back({"MB_SKINNED", ""});
-    addVariantDefines(defines, true);
-    auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
-    if (!program) return Status::fail(program.error());
-    linear_[skinned] = program.take();
-    if (skinned) {
-      linear_[skinned]->bindStorageBlock("MotorJoints", 0);
-      linear_[skinned]->bindStorageBlock("MotorJointLinear", 1);
-    }
-  }
-  for (int fallback = 0; fallback < 2 && gl::hasInstances(scene); ++fallback) {
-    gl::Defines defines{{"MB_INSTANCED", ""}};
-    if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
-    addVariantDefines(defines, fallback);
-    auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
-    if (!program) return Status::fail(program.error());
-    instanced_[fallback] = program.take();
-  }
+  if (Status built = programs_.build(scene, variant_, referenceSkin_, morphMethod_); !built) return built;
   if (Status fits = gl::checkPaletteSize(scene, 8 * sizeof(float)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
-  if (gl::hasPatches(scene)) {
-    for (int fallback = 0; fallback < 2; ++fallback) {
-      gl::Defines defines;
-      if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
-      auto program = gl::Program::fromFiles("motor_patch.vs", "forward.fs", defines);
-      if (!program) return Status::fail(program.error());
-      patchPrograms_[fallback] = program.take();
-    }
+  if (gl::hasPatches(scene))
     if (Status up = patches_.upload(scene, stats_); !up) return up;
-  }
 
   // Load-time conversion: transforms and inverse binds to motors, frames to rotors.
   auto t0 = gl::Clock::now();
@@ -182,34 +129,7 @@ Status MotorPipeline::prepare(const Scene& scene) {
   instanceMotors_.assign(scene.nodes.size(), {});
   for (size_t n = 0; n < scene.nodes.size(); ++n)  // an instance is a leaf: its residual is exact
     for (const TRS& t : scene.nodes[n].instances) instanceMotors_[n].push_back(motor::fromTRS(t, true));
-  auto interleave = [this](const Primitive& p) {
-    motor::VertexStream stream = motor::interleaveVertices(p);
-    stats_.zeroScalarFrames += stream.zeroScalarFrames;
-    stats_.biasedFrames += motor::countBiasedFrames(stream.data);
-    return std::move(stream.data);
-  };
-  if (variant_.compact) cubes_ = compact::primitiveCubes(scene);
-  if (variant_.fragmentRotor) {
-    uploadSignedCompact(scene);
-  } else if (variant_.compact) {
-    auto packed = [this](const Primitive& p) {
-      motor::CompactStream stream = motor::interleaveCompact(p);
-      stats_.zeroScalarFrames += stream.zeroScalarFrames;
-      return std::move(stream.bytes);
-    };
-    geometry_.uploadPacked(scene, packed, compact::attributes(), stats_);
-  } else if (variant_.quantizedFrame) {
-    auto packed = [this](const Primitive& p) {
-      motor::PackedStream stream = motor::interleaveQuantized(p);
-      stats_.zeroScalarFrames += stream.zeroScalarFrames;
-      stats_.biasedFrames += stream.biasedFrames;
-      return std::move(stream.bytes);
-    };
-    geometry_.uploadPacked(scene, packed, motor::quantizedAttributes(), stats_);
-  } else {
-    geometry_.upload(scene, interleave, {3, 4, 2}, stats_);  // position, tangent rotor, uv0
-  }
-  if (Status m = prepareMorph(scene); !m) return m;
+  geometry_.upload(scene, variant_, morphMethod_, stats_);
   stats_.conversionMs = gl::msSince(t0);
   draws_ = gl::buildDrawList(scene);
   update(AnimState{});
@@ -224,7 +144,7 @@ void MotorPipeline::update(const AnimState& state) {
   motor::RigCounts counts = rig_.bindCounts;
   PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
   motor::poseScene(*scene_, rig_, state, referenceSkin_, pose_, &counts, clock);
-  morph_.update(*scene_, state);
+  geometry_.morph.update(*scene_, state);
   stats_.updateMs = gl::msSince(t0);
   stats_.nonUniformScaleNodes = counts.nonUniformScaleNodes;
   stats_.negativeScaleNodes = counts.negativeScaleNodes;
@@ -288,36 +208,42 @@ void MotorPipeline::render(const View& view) {
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (unused variants
   // upload nothing, so uniformBytesPerFrame counts what a frame needs).
-  // skinned -1: the Bezier patch program (motor_patch.vs) of that scale form; 2: MB_INSTANCED.
-  // fallback 2: MB_LINEAR_FALLBACK.
-  bool frameSet[4][3][2] = {};
-  auto useProgram = [&](int skinned, int fallback, bool morph = false) -> const gl::Program& {
-    gl::Program& p = skinned < 0     ? *patchPrograms_[fallback]
-                     : skinned == 2  ? *instanced_[fallback]
-                     : morph         ? *morphing_[skinned][fallback]
-                     : fallback == 2 ? *linear_[skinned]
-                                     : *programs_[skinned][fallback];
+  using motor::DrawKind;
+  using motor::ScaleForm;
+  bool frameSet[3][3][2] = {}, patchSet[2] = {};
+  auto setFrame = [&](gl::Program& p, bool& set) -> gl::Program& {
     p.use();
-    if (!frameSet[skinned + 1][fallback][morph]) {
-      frameSet[skinned + 1][fallback][morph] = true;
+    if (!set) {
+      set = true;
       gl::uniform4fv(p.uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
       gl::uniform4f(p.uniform("u_ProjectionK"), &k[0], stats_.uniformBytesPerFrame);
       gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
     }
     return p;
   };
+  auto useProgram = [&](DrawKind kind, ScaleForm form, bool morph) -> const gl::Program& {
+    return setFrame(programs_.draw(kind, form, morph), frameSet[int(kind)][int(form)][morph]);
+  };
+  auto formOf = [](bool fallback) { return fallback ? ScaleForm::PerAxis : ScaleForm::Uniform; };
   uint64_t transformBytes = 0, transforms = 0, transformScaleBytes = 0;
   for (const gl::DrawItem& d : draws_) {
-    const gl::GpuPrimitive& g = geometry_.at(d);
+    const gl::GpuPrimitive& g = geometry_.vertices.at(d);
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
     const bool patch = patches_.has(d);  // Bezier patches: drawn rigidly by their node (never skinned)
     if (!patch && !g.indexCount) continue;
+    const bool morph = !patch && geometry_.morph.active(d);
+    // The program with d's morph deltas bound when it morphs (counted per draw call).
+    auto bindMorph = [&](const gl::Program& program) -> const gl::Program& {
+      if (morph) geometry_.morph.bind(program, d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
+      return program;
+    };
     const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
     if (!patch && rig_.general[size_t(d.node)] && !scene_->nodes[size_t(d.node)].instances.empty()) {
       // Instances of a general node: one exact draw each (node world x instance, linear_fallback.h).
       for (const TRS& instance : scene_->nodes[size_t(d.node)].instances) {
         const glm::mat4 world = pose_.exact.world[size_t(d.node)] * trsMatrix(instance);
-        drawLinear(d, g, prim, nullptr, 0, useProgram(0, 2), transformBytes, transformScaleBytes, &world);
+        drawLinear(d, g, prim, nullptr, 0, bindMorph(useProgram(DrawKind::Rigid, ScaleForm::Linear, morph)),
+                   transformBytes, transformScaleBytes, &world);
         ++transforms;
       }
       continue;
@@ -325,7 +251,7 @@ void MotorPipeline::render(const View& view) {
     if (!groups.empty()) {
       for (const gl::InstanceGroup& group : groups) {
         const bool fallback = group.key & 1;
-        const gl::Program& program = useProgram(2, fallback ? 1 : 0);
+        const gl::Program& program = bindMorph(useProgram(DrawKind::Instanced, formOf(fallback), morph));
         if (variant_.compact) setDequant(program, d);
         textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
         gl::setWinding(group.key & 2);
@@ -339,13 +265,8 @@ void MotorPipeline::render(const View& view) {
     GLuint paletteBuffer = 0;
     for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
       if (pose_.palettes[i].node == d.node) palette = &pose_.palettes[i], paletteBuffer = paletteBuffers_[i];
-    const bool morph = !patch && !variant_.compact && morph_.active(d);
-    auto bindMorph = [&](const gl::Program& program) -> const gl::Program& {
-      if (morph) morph_.bind(program, d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
-      return program;
-    };
     if (palette ? palette->fallback : (!patch && rig_.general[size_t(d.node)])) {
-      drawLinear(d, g, prim, palette, paletteBuffer, bindMorph(useProgram(palette ? 1 : 0, 2, morph)), transformBytes,
+      drawLinear(d, g, prim, palette, paletteBuffer, bindMorph(useProgram(palette ? DrawKind::Skinned : DrawKind::Rigid, ScaleForm::Linear, morph)), transformBytes,
                  transformScaleBytes);
       transforms += palette ? 0 : 1;
       continue;
@@ -354,17 +275,19 @@ void MotorPipeline::render(const View& view) {
     DrawScale scale = palette ? drawScale(palette->scale, glm::vec3(1.0f))
                               : drawScale(world->scale, world->residual);
     motor::ScaledMotor folded;  // motor_c's rigid draws: the mesh's cube in the transform
-    if (variant_.compact && !patch && !palette) {
-      const compact::PositionCube& cube = cubes_[size_t(d.mesh)][size_t(d.primitive)];
+    const bool dequantise = variant_.compact && (palette || morph);  // u_Dequant per vertex instead
+    if (variant_.compact && !patch && !dequantise) {
+      const compact::PositionCube& cube = geometry_.cubes[size_t(d.mesh)][size_t(d.primitive)];
       motor::composeInto({world->motor, 1.0f, glm::vec3(1.0f)},
                          motor::fromTRS(TRS{scale.value * cube.center}, true), folded);
       scale = drawScale(world->scale * cube.extent, world->residual);
       world = &folded;
     }
-    const gl::Program& program = patch ? useProgram(-1, scale.fallback ? 1 : 0)
-                                       : bindMorph(useProgram(palette ? 1 : 0, scale.fallback ? 1 : 0, morph));
+    const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
+    const gl::Program& program = patch ? setFrame(programs_.patch(formOf(scale.fallback)), patchSet[scale.fallback])
+                                       : bindMorph(useProgram(kind, formOf(scale.fallback), morph));
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
-    if (palette && variant_.compact) setDequant(program, d);
+    if (dequantise) setDequant(program, d);
     // glTF: a skinned mesh ignores its node's transform, so with a world-space palette only
     // rigid draws upload one; the reference form composes it per vertex.
     if (!palette || referenceSkin_) {
@@ -383,15 +306,15 @@ void MotorPipeline::render(const View& view) {
     // motor_cf: triangles whose corner rotors cannot share a hemisphere (rotor_signs.h) are drawn
     // after the others by the per-vertex extraction of its scale-fallback program (motor_c's way).
     const size_t interpolable = variant_.fragmentRotor && !patch && !scale.fallback
-                                    ? interpolable_[size_t(d.mesh)][size_t(d.primitive)] : size_t(g.indexCount);
+                                    ? geometry_.interpolable[size_t(d.mesh)][size_t(d.primitive)] : size_t(g.indexCount);
     if (interpolable >= size_t(g.indexCount)) {
       stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
       ++stats_.draws;
       continue;
     }
     stats_.drawnVertices += g.drawRange(0, GLsizei(interpolable));
-    const gl::Program& extract = useProgram(palette ? 1 : 0, 1);
-    if (palette && variant_.compact) setDequant(extract, d);
+    const gl::Program& extract = bindMorph(useProgram(kind, ScaleForm::PerAxis, morph));
+    if (dequantise) setDequant(extract, d);
     if (!palette || referenceSkin_) gl::uniform4fv(extract.uniform("u_World"), 2, &world->motor[0][0], transformBytes);
     uint64_t extractBytes = 0;
     const glm::vec3 uniformScale(scale.value.x);
@@ -443,87 +366,20 @@ void MotorPipeline::drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g,
   ++stats_.draws;
 }
 
-// motor_c's draws that cannot fold the mesh's cube (skinned, instanced) dequantise per vertex.
+// motor_c's draws that cannot fold the mesh's cube (skinned, instanced, morphing) dequantise per vertex.
 void MotorPipeline::setDequant(const gl::Program& program, const gl::DrawItem& d) {
-  const glm::vec4 q = cubes_[size_t(d.mesh)][size_t(d.primitive)].dequant();
+  const glm::vec4 q = geometry_.cubes[size_t(d.mesh)][size_t(d.primitive)].dequant();
   gl::uniform4f(program.uniform("u_Dequant"), &q[0], stats_.uniformBytesPerFrame);
-}
-
-void MotorPipeline::addVariantDefines(gl::Defines& defines, bool scaleFallback) const {
-  if (variant_.compact) defines.push_back({"MB_COMPACT", ""});
-  if (variant_.fragmentRotor) defines.push_back({"MB_SIGNED_ROTOR", ""});
-  if (variant_.fragmentRotor && !scaleFallback) defines.push_back({"MB_FRAGMENT_ROTOR", ""});
-}
-
-// The MB_MORPH programs and the deltas of the method chosen, for scenes with morph targets
-// (not for the compact vertex: its draws stay unmorphed).
-Status MotorPipeline::prepareMorph(const Scene& scene) {
-  if (variant_.compact || !gl::maxMorphTargets(scene)) return {};
-  for (int skinned = 0; skinned < 2; ++skinned)
-    for (int fallback = 0; fallback < 3; ++fallback) {
-      gl::Defines defines = gl::morphDefines(scene);
-      if (morphMethod_ == MorphMethod::Rotor) defines.push_back({"MB_MORPH_ROTOR", ""});
-      if (skinned) defines.push_back({"MB_SKINNED", ""});
-      if (skinned && referenceSkin_ && fallback < 2) defines.push_back({"MB_SKIN_REFERENCE", ""});
-      if (fallback == 1) defines.push_back({"MB_SCALE_FALLBACK", ""});
-      if (fallback == 2) defines.push_back({"MB_LINEAR_FALLBACK", ""});
-      auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
-      if (!program) return Status::fail(program.error());
-      morphing_[skinned][fallback] = program.take();
-      morphing_[skinned][fallback]->bindStorageBlock("MorphDeltas", gl::kMorphBinding);
-      if (skinned) morphing_[skinned][fallback]->bindStorageBlock("MotorJoints", 0);
-      if (skinned && fallback == 2) morphing_[skinned][fallback]->bindStorageBlock("MotorJointLinear", 1);
-    }
-  morph_.upload(scene, motor::morphPacker(morphMethod_), stats_);
-  return {};
-}
-
-// motor_cf's geometry: every primitive through the sign pass, which may add vertices; the
-// upload reads a scene of the split meshes (nodes and materials as `scene`'s).
-void MotorPipeline::uploadSignedCompact(const Scene& scene) {
-  Scene split;
-  split.nodes = scene.nodes;
-  split.materials = scene.materials;
-  // Keyed by the split primitive's address, taken once every primitive is in place (a vector
-  // that grows moves its elements: keys taken while pushing dangle on multi-primitive meshes).
-  std::vector<std::vector<uint8_t>> streams;
-  interpolable_.clear();
-  for (const Mesh& mesh : scene.meshes) {
-    split.meshes.push_back({mesh.name, {}});
-    interpolable_.emplace_back();
-    for (const Primitive& p : mesh.primitives) {
-      motor::SignedCompactStream s = motor::interleaveCompactSigned(p);
-      stats_.zeroScalarFrames += s.zeroScalarFrames;
-      stats_.rotorSplitVertices += s.splitVertices;
-      stats_.rotorUnresolvedTriangles += s.unresolvedTriangles;
-      interpolable_.back().push_back(s.interpolableIndices);
-      split.meshes.back().primitives.push_back(std::move(s.primitive));
-      streams.push_back(std::move(s.bytes));
-    }
-  }
-  std::map<const Primitive*, std::vector<uint8_t>> bytes;
-  size_t next = 0;
-  for (const Mesh& mesh : split.meshes)
-    for (const Primitive& p : mesh.primitives) bytes[&p] = std::move(streams[next++]);
-  geometry_.uploadPacked(split, [&bytes](const Primitive& p) { return std::move(bytes.at(&p)); },
-                         compact::attributes(), stats_);
 }
 
 void MotorPipeline::release() {
   geometry_.release();
-  morph_.release();
   patches_.release();
-  for (auto& p : patchPrograms_) p.reset();
   paletteBuffers_.release();
   linearBuffers_.release();
   textures_.release();
   instances_.release();
-  for (auto& p : instanced_) p.reset();
-  for (auto& p : linear_) p.reset();
-  for (auto& row : programs_)
-    for (auto& p : row) p.reset();
-  for (auto& row : morphing_)
-    for (auto& p : row) p.reset();
+  programs_.release();
   scene_ = nullptr;
 }
 

@@ -3,27 +3,9 @@
 #include <algorithm>
 #include <array>
 
+#include "pipelines/scene/flat_normals.h"
+
 namespace mb::motor {
-namespace {
-
-template <class T> void copyElement(std::vector<T>& stream, size_t from) {
-  if (from < stream.size()) stream.push_back(T(stream[from]));
-}
-
-// Appends a copy of vertex v to every non-empty stream; returns its index.
-uint32_t appendCopy(Primitive& p, uint32_t v) {
-  copyElement(p.positions, v);
-  copyElement(p.normals, v);
-  copyElement(p.tangents, v);
-  copyElement(p.uv0, v);
-  copyElement(p.uv1, v);
-  copyElement(p.colors, v);
-  copyElement(p.joints, v);
-  copyElement(p.weights, v);
-  return uint32_t(p.positions.size() - 1);
-}
-
-}  // namespace
 
 SignedRotors signRotorsForInterpolation(const Primitive& p, const std::vector<glm::vec4>& rotors) {
   SignedRotors out{p, rotors, {}, 0, 0};
@@ -40,7 +22,7 @@ SignedRotors signRotorsForInterpolation(const Primitive& p, const std::vector<gl
     }
     if (sign[v] == s) return v;
     if (twin[v] < 0) {
-      twin[v] = appendCopy(out.primitive, v);
+      twin[v] = duplicateVertex(out.primitive, v);  // morph deltas follow
       out.rotors.push_back(rotors[v] * float(s));
       out.source.push_back(v);
       ++out.splitVertices;

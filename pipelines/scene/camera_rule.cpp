@@ -41,8 +41,8 @@ void addMesh(const Scene& scene, const std::vector<glm::mat4>& world, const std:
              Bounds& b) {
   const Node& node = scene.nodes[size_t(n)];
   if (node.mesh < 0 || size_t(node.mesh) >= scene.meshes.size()) return;
-  if (!node.instances.empty()) {  // never skinned: the corners of the mesh bounds per instance
-    const MeshBounds m = meshBounds(scene.meshes[size_t(node.mesh)]);
+  if (!node.instances.empty()) {  // never skinned: the corners of the morphed mesh's bounds per instance
+    const MeshBounds m = meshBounds(scene.meshes[size_t(node.mesh)], weights);
     if (m.empty()) return;
     for (const TRS& instance : node.instances) {
       const glm::mat4 toWorld = world[size_t(n)] * trsMatrix(instance);

@@ -4,10 +4,11 @@
 #include <cmath>
 #include <string>
 
+#include "pipelines/scene/morph.h"
 
 namespace mb {
 
-MeshBounds meshBounds(const Mesh& mesh) {
+MeshBounds meshBounds(const Mesh& mesh, const std::vector<float>& weights) {
   MeshBounds b;
   auto add = [&](const glm::vec3& p) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return;
@@ -15,7 +16,7 @@ MeshBounds meshBounds(const Mesh& mesh) {
     b.hi = glm::max(b.hi, p);
   };
   for (const Primitive& p : mesh.primitives) {
-    for (const glm::vec3& v : p.positions) add(v);
+    for (size_t v = 0; v < p.positions.size(); ++v) add(morphedPosition(p, v, weights));
     for (const glm::vec3& v : p.patchPoints) add(v);
   }
   return b;

@@ -10,12 +10,13 @@
 
 namespace mb {
 
-// Object-space bounds of a mesh (positions and Bezier control points); lo > hi when empty.
+// Object-space bounds of a mesh (positions, morphed by `weights` when given, and Bezier control
+// points); lo > hi when empty.
 struct MeshBounds {
   glm::vec3 lo{1e30f}, hi{-1e30f};
   bool empty() const { return lo.x > hi.x; }
 };
-MeshBounds meshBounds(const Mesh& mesh);
+MeshBounds meshBounds(const Mesh& mesh, const std::vector<float>& weights = {});
 
 // Whether node `n` can be drawn instanced: it has a mesh, no skin (the extension allows one;
 // what its instances would mean differs between viewers, so it is drawn once) and no Bezier

@@ -78,9 +78,16 @@ std::vector<glm::vec4> paperRotors(const Primitive& p) {
 // Around the ring the rotor field returns as -R: the triangles closing the loop need a vertex
 // with both signs. After the pass every triangle's rotors share a hemisphere, each vertex is a
 // copy of an input vertex with its rotor up to sign, and exactly the vertices a seam needs are
-// added (one column: 2 vertices) -- the hand-derived count.
+// added (one column: 2 vertices) -- the hand-derived count. A copy carries its input vertex's
+// morph deltas (issue 37: motor_cf morphs its split vertices).
 TEST(RotorSigns, RingWhoseFramesTurnOnceSplitsOneSeamAndEveryTriangleAgrees) {
-  const Primitive p = ring(24);
+  Primitive p = ring(24);
+  MorphTarget target;  // deltas that name their vertex
+  for (size_t v = 0; v < p.positions.size(); ++v) {
+    target.positions.push_back(glm::vec3(float(v), 0.0f, 0.0f));
+    target.normals.push_back(glm::vec3(0.0f, float(v), 0.0f));
+  }
+  p.targets = {target};
   const std::vector<glm::vec4> rotors = paperRotors(p);
   const motor::SignedRotors s = motor::signRotorsForInterpolation(p, rotors);
   EXPECT_EQ(s.splitVertices, 2);
@@ -92,7 +99,10 @@ TEST(RotorSigns, RingWhoseFramesTurnOnceSplitsOneSeamAndEveryTriangleAgrees) {
   for (size_t v = 0; v < s.rotors.size(); ++v) {
     EXPECT_NEAR(std::abs(glm::dot(s.rotors[v], rotors[s.source[v]])), 1.0f, 1e-6f) << v;
     EXPECT_EQ(s.primitive.positions[v], p.positions[s.source[v]]);
+    EXPECT_EQ(s.primitive.targets[0].positions[v].x, float(s.source[v])) << v;
+    EXPECT_EQ(s.primitive.targets[0].normals[v].y, float(s.source[v])) << v;
   }
+  EXPECT_EQ(s.primitive.targets[0].positions.size(), s.primitive.positions.size());
   for (size_t t = 0; t < p.indices.size(); t += 3) {
     for (int k = 0; k < 3; ++k)  // the same corners, possibly through a copy
       EXPECT_EQ(s.primitive.positions[s.primitive.indices[t + k]], p.positions[p.indices[t + k]]);

@@ -1,0 +1,91 @@
+#include "pipelines/motor/motor_geometry.h"
+
+#include <map>
+
+#include "pipelines/motor/morph_rotors.h"
+#include "pipelines/motor/motor_c_vertices.h"
+#include "pipelines/motor/motor_q_vertices.h"
+#include "pipelines/motor/motor_vertices.h"
+
+namespace mb::motor {
+
+void MotorGeometry::upload(const Scene& scene, const MotorVariant& variant, MorphMethod method,
+                           PipelineStats& stats) {
+  release();
+  // The compact rotors morph by method (a) only: their rotor is decoded to a frame anyway.
+  const gl::MorphPacker packer = variant.compact ? gl::MorphPacker(gl::packFrameDeltas) : morphPacker(method);
+  if (variant.compact) cubes = compact::primitiveCubes(scene);
+  if (variant.fragmentRotor) {
+    uploadSignedCompact(scene, packer, stats);
+    return;
+  }
+  if (variant.compact) {
+    auto packed = [&stats](const Primitive& p) {
+      CompactStream stream = interleaveCompact(p);
+      stats.zeroScalarFrames += stream.zeroScalarFrames;
+      return std::move(stream.bytes);
+    };
+    vertices.uploadPacked(scene, packed, compact::attributes(), stats);
+  } else if (variant.quantizedFrame) {
+    auto packed = [&stats](const Primitive& p) {
+      PackedStream stream = interleaveQuantized(p);
+      stats.zeroScalarFrames += stream.zeroScalarFrames;
+      stats.biasedFrames += stream.biasedFrames;
+      return std::move(stream.bytes);
+    };
+    vertices.uploadPacked(scene, packed, quantizedAttributes(), stats);
+  } else {
+    auto interleave = [&stats](const Primitive& p) {
+      VertexStream stream = interleaveVertices(p);
+      stats.zeroScalarFrames += stream.zeroScalarFrames;
+      stats.biasedFrames += countBiasedFrames(stream.data);
+      return std::move(stream.data);
+    };
+    vertices.upload(scene, interleave, {3, 4, 2}, stats);  // position, tangent rotor, uv0
+  }
+  uploadMorph(scene, packer, stats);
+}
+
+void MotorGeometry::uploadMorph(const Scene& scene, const gl::MorphPacker& packer, PipelineStats& stats) {
+  if (gl::maxMorphTargets(scene)) morph.upload(scene, packer, stats);
+}
+
+// motor_cf: every primitive through the sign pass, which may add vertices; the upload reads a
+// scene of the split meshes (nodes and materials as `scene`'s), morph deltas split with them.
+void MotorGeometry::uploadSignedCompact(const Scene& scene, const gl::MorphPacker& packer, PipelineStats& stats) {
+  Scene split;
+  split.nodes = scene.nodes;
+  split.materials = scene.materials;
+  // Keyed by the split primitive's address, taken once every primitive is in place (a vector
+  // that grows moves its elements: keys taken while pushing dangle on multi-primitive meshes).
+  std::vector<std::vector<uint8_t>> streams;
+  for (const Mesh& mesh : scene.meshes) {
+    split.meshes.push_back({mesh.name, {}, mesh.weights});
+    interpolable.emplace_back();
+    for (const Primitive& p : mesh.primitives) {
+      SignedCompactStream s = interleaveCompactSigned(p);
+      stats.zeroScalarFrames += s.zeroScalarFrames;
+      stats.rotorSplitVertices += s.splitVertices;
+      stats.rotorUnresolvedTriangles += s.unresolvedTriangles;
+      interpolable.back().push_back(s.interpolableIndices);
+      split.meshes.back().primitives.push_back(std::move(s.primitive));
+      streams.push_back(std::move(s.bytes));
+    }
+  }
+  std::map<const Primitive*, std::vector<uint8_t>> bytes;
+  size_t next = 0;
+  for (const Mesh& mesh : split.meshes)
+    for (const Primitive& p : mesh.primitives) bytes[&p] = std::move(streams[next++]);
+  vertices.uploadPacked(split, [&bytes](const Primitive& p) { return std::move(bytes.at(&p)); },
+                        compact::attributes(), stats);
+  uploadMorph(split, packer, stats);
+}
+
+void MotorGeometry::release() {
+  vertices.release();
+  morph.release();
+  cubes.clear();
+  interpolable.clear();
+}
+
+}  // namespace mb::motor
