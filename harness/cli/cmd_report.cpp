@@ -81,7 +81,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
   const Args args(argv, {{"o", "output", "jobs", "size", "frames", "bench-json", "bench-min-time", "pipelines",
                           "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
                           "worker-index", "worker-total", "shard", "anim", "worker-anims", "instances", "gpu",
-                          "isa-json"},
+                          "isa-json", "morph-json"},
                          {"no-bench", "no-plots"},
                          {},
                          {"anim"}});
@@ -140,6 +140,14 @@ int runReportCommand(const std::vector<std::string>& argv) {
       return fail("--isa-json " + *isa + ": not a `motorbench isa --json` file (schema motorbench-isa/1)");
     o.isaJson = *isa;
   }
+  if (auto morph = args.get("morph-json")) {
+    std::ifstream in(*morph);
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (!in.is_open()) return fail("--morph-json " + *morph + ": no such file (write one with `motorbench morph --json FILE`)");
+    if (j.is_discarded() || !j.is_object() || j.value("schema", "") != "motorbench-morph/1")
+      return fail("--morph-json " + *morph + ": not a `motorbench morph --json` file (schema motorbench-morph/1)");
+    o.morphJson = *morph;
+  }
   if (Status ok = prepareOutputFolder("-o", o.outDir, "report.json, report.md, report.html, images/, plots/"); !ok)
     return fail(ok.error());
   for (const std::string& w : emptyInputWarnings(o.scenes)) std::fprintf(stderr, "motorbench report: warning: %s\n", w.c_str());
@@ -152,7 +160,8 @@ int runReportCommand(const std::vector<std::string>& argv) {
 MB_COMMAND(report, "report",
            "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--no-bench | "
            "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--anim [SCENE:]NAME|INDEX|all,...] "
-           "[--time-size WxH] [--instances N] [--no-plots] [--shard I/N] [--gpu auto|llvmpipe|N] [--isa-json FILE]",
+           "[--time-size WxH] [--instances N] [--no-plots] [--shard I/N] [--gpu auto|llvmpipe|N] [--isa-json FILE] "
+           "[--morph-json FILE]",
            "measure scenes with every pipeline of their space: images, diffs, memory, ops, timing, kernel "
            "ratios -> report.json/.md/.html",
            mb::runReportCommand);
@@ -167,5 +176,6 @@ MB_COMMAND_HELP(report, "report",
                "  --pipelines a,b    pipelines (default: every pipeline of each scene's space)\n"
                "  --anim ITEMS       animations shown: NAME, INDEX, all or SCENE:NAME, comma-separated\n"
                "  --no-plots         no plots;  --python P  the python with matplotlib;  --timeout S  per worker\n"
-               "  --shard I/N        only every N-th scene from the I-th (merge puts shards together)\n",
+               "  --shard I/N        only every N-th scene from the I-th (merge puts shards together)\n"
+               "  --morph-json FILE  `motorbench morph --json` file: the morph section (issue 37)\n",
                 "motorbench report textured_box --frames 0 --no-bench -o out/report", true);

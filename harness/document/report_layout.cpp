@@ -7,6 +7,7 @@
 #include "harness/document/report_format.h"
 #include "harness/document/report_answer.h"
 #include "harness/document/report_compact.h"
+#include "harness/document/report_morph.h"
 #include "harness/document/report_gpu_evidence.h"
 #include "harness/document/report_isa.h"
 #include "harness/document/report_layout_common.h"
@@ -157,6 +158,7 @@ Document reportDocument(const json& r) {
   for (const json& s : r["scenes"]) sceneSection(d, r, s);
   opsSection(d, r);
   compactSection(d, r);
+  morphSection(d, r);
   isaSection(d, r);
   kernelSection(d, r);
   method(d);

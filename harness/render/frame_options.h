@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "harness/options/args.h"
+#include "pipelines/pipeline.h"
 #include "pipelines/result.h"
 #include "pipelines/scene/animation.h"
 #include "pipelines/scene/scene.h"
@@ -18,6 +19,7 @@ struct FrameSettings {
   int camera = -1;      // glTF camera index, -1 = automatic framing (camera_rule.h)
   int width = 512, height = 512;
   int instances = 1;    // --instances N: every mesh node drawn N times (addGridInstances)
+  PipelineOptions options;  // given to the pipeline before prepare() (e.g. the motor morph method)
 };
 
 // --instances N (1..kMaxInstances, default 1): read from `args` and applied to `scene` with

@@ -40,6 +40,7 @@ Result<std::vector<RgbaImage>> renderFramesUnguarded(const Scene& scene, const s
   if (!ctx) return R::fail(where + ctx.error());
   auto fb = gl::Framebuffer::create(settings.width, settings.height);
   if (!fb) return R::fail(where + fb.error());
+  p->configure(settings.options);
   Status prepared = p->prepare(scene);
   if (!prepared) return R::fail(where + prepared.error());
   std::vector<RgbaImage> images;
@@ -83,6 +84,7 @@ Result<Frame> renderFrameUnguarded(const Scene& scene, const std::string& pipeli
   frame.glVersion = (*ctx)->info().version;
   frame.glBackend = (*ctx)->info().backend;
   frame.gl = (*ctx)->info();
+  p->configure(settings.options);
   Status prepared = p->prepare(scene);
   if (!prepared) return R::fail(where + prepared.error());
   p->update(settings.anim);

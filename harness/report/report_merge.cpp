@@ -105,7 +105,7 @@ int mergeReports(const std::vector<std::string>& dirs, const Options& o) {
   report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files
   // Alike in every shard that has them: the curved drift (measured by every shard with a curved
   // scene) and motorbench isa's file (--isa-json).
-  for (const char* key : {"curved", "isa"})
+  for (const char* key : {"curved", "isa", "morph"})
     for (const ShardRun& r : runs)
       if (r.report.contains(key)) {
         report[key] = r.report[key];

@@ -250,6 +250,10 @@ int runReport(const Options& o) {
     std::ifstream in(o.isaJson);
     report["isa"] = json::parse(in, nullptr, false);
   }
+  if (!o.morphJson.empty()) {  // checked by the command before the run (schema motorbench-morph/1)
+    std::ifstream in(o.morphJson);
+    report["morph"] = json::parse(in, nullptr, false);
+  }
   const std::vector<std::string> failures = failedSceneLines(report);  // as report.md lists them
   const int status = writeReportFolder(std::move(report), o);
   fs::remove_all(work, ec);

@@ -25,6 +25,7 @@ struct Options {
   int timeWidth = 512, timeHeight = 512;  // viewport of the normal timing configuration (as `time`)
   bool bench = true;                 // false: --no-bench
   std::string benchJson;             // read this instead of running `motorbench bench`
+  std::string morphJson;             // `motorbench morph --json` file embedded as report.json "morph"
   std::string isaJson;               // `motorbench isa --json` file embedded as report.json "isa"
   double benchMinTime = 0.05;        // --benchmark_min_time when the report runs the bench
   bool plots = true;
