@@ -80,10 +80,14 @@ rm -rf "$OUT/images" "$OUT/plots" "$OUT/corpus" "$OUT/corpus-graph.json"  # gene
 
 # Untimed: op counts (with the SPIR-V compiles), the AMD ISA statistics and the corpus scene
 # graphs, side by side; each writes its own files. A line every 30 s says which are still running.
-step untimed "ops -> $OUT/ops.json, isa -> $OUT/isa.json, inspect -> $OUT/corpus-graph.json (side by side: none is timed)"
+step untimed "ops -> $OUT/ops.json, isa -> $OUT/isa.json, morph -> $OUT/morph.json, inspect -> $OUT/corpus-graph.json (side by side: none is timed)"
 declare -A UNTIMED=()
 "$MB" ops --json "$OUT/ops.json" > "$OUT/ops.txt" & UNTIMED[ops]=$!
 "$MB" isa --json "$OUT/isa.json" > "$OUT/isa.txt" & UNTIMED[isa]=$!
+# Morph methods' image and byte cost (issue 37): morph_torus and corpus-wide's morph files.
+MORPH_SCENES=(morph_torus)
+[ -d ../shared/corpus-wide ] && MORPH_SCENES+=(../shared/corpus-wide)
+"$MB" morph "${MORPH_SCENES[@]}" --json "$OUT/morph.json" > "$OUT/morph.txt" & UNTIMED[morph]=$!
 # Scene graphs of ~960 real files (meshes stripped; provenance and kind in its MANIFEST.tsv):
 # the scale statistics the two corpus claims are judged on.
 if [ -d "$GRAPHS" ]; then
@@ -96,8 +100,8 @@ while [ ${#UNTIMED[@]} -gt 0 ]; do
   sleep 1
   for name in "${!UNTIMED[@]}"; do
     kill -0 "${UNTIMED[$name]}" 2>/dev/null && continue
-    # inspect exits 1 when some file failed to load (recorded in its JSON, as before).
-    wait "${UNTIMED[$name]}" || { [ "$name" = inspect ] || failed+=" $name"; }
+    # inspect and morph exit 1 when some file failed (recorded in their JSON with the reason).
+    wait "${UNTIMED[$name]}" || { [ "$name" = inspect ] || [ "$name" = morph ] || failed+=" $name"; }
     unset "UNTIMED[$name]"
   done
   [ $((($(date +%s) - step_start) % 30)) -eq 0 ] && [ ${#UNTIMED[@]} -gt 0 ] &&
@@ -112,7 +116,7 @@ step bench "bench: kernel pairs in and out of cache, 3 repetitions -> $OUT/bench
 step report "report: built-in scenes -> $OUT/report.html (frame timing: alone)"
 # skinned_tube also shows candy_wrapper: the half turn where linear blend skinning collapses the
 # ring and motor blending keeps it (issue 18); every other scene its first animation.
-"$MB" report -o "$OUT" --bench-json "$OUT/bench.json" --isa-json "$OUT/isa.json" --jobs "$JOBS" \
+"$MB" report -o "$OUT" --bench-json "$OUT/bench.json" --isa-json "$OUT/isa.json" --morph-json "$OUT/morph.json" --jobs "$JOBS" \
   --anim skinned_tube:bend,skinned_tube:candy_wrapper
 
 # Real content apart from the generated scenes (barrel.glb: the paper's normal-mapped case;

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <tuple>
 
 #include "harness/options/args.h"
 #include "harness/cli/command.h"
@@ -132,21 +133,17 @@ int runReportCommand(const std::vector<std::string>& argv) {
     if (nlohmann::json::parse(in, nullptr, false).is_discarded())
       return fail("--bench-json " + o.benchJson + ": not JSON (expected a `motorbench bench --out` file)");
   }
-  if (auto isa = args.get("isa-json")) {
-    std::ifstream in(*isa);
+  // --isa-json / --morph-json: another command's JSON file, checked by its schema before the run.
+  for (auto [option, command, into] : {std::tuple{"isa", "isa", &o.isaJson}, std::tuple{"morph", "morph", &o.morphJson}}) {
+    const auto path = args.get(std::string(option) + "-json");
+    if (!path) continue;
+    const std::string flag = "--" + std::string(option) + "-json " + *path, schema = "motorbench-" + std::string(command) + "/1";
+    std::ifstream in(*path);
     const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-    if (!in.is_open()) return fail("--isa-json " + *isa + ": no such file (write one with `motorbench isa --json FILE`)");
-    if (j.is_discarded() || !j.is_object() || j.value("schema", "") != "motorbench-isa/1")
-      return fail("--isa-json " + *isa + ": not a `motorbench isa --json` file (schema motorbench-isa/1)");
-    o.isaJson = *isa;
-  }
-  if (auto morph = args.get("morph-json")) {
-    std::ifstream in(*morph);
-    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-    if (!in.is_open()) return fail("--morph-json " + *morph + ": no such file (write one with `motorbench morph --json FILE`)");
-    if (j.is_discarded() || !j.is_object() || j.value("schema", "") != "motorbench-morph/1")
-      return fail("--morph-json " + *morph + ": not a `motorbench morph --json` file (schema motorbench-morph/1)");
-    o.morphJson = *morph;
+    if (!in.is_open()) return fail(flag + ": no such file (write one with `motorbench " + command + " --json FILE`)");
+    if (j.is_discarded() || !j.is_object() || j.value("schema", "") != schema)
+      return fail(flag + ": not a `motorbench " + command + " --json` file (schema " + schema + ")");
+    *into = *path;
   }
   if (Status ok = prepareOutputFolder("-o", o.outDir, "report.json, report.md, report.html, images/, plots/"); !ok)
     return fail(ok.error());
