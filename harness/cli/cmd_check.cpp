@@ -287,7 +287,8 @@ int runCheck(const std::vector<std::string>& argv) {
     // shaderDir() reads MB_SHADER_DIR on every load, so this redirects every pipeline.
     ::setenv("MB_SHADER_DIR", fs::absolute(*dir).string().c_str(), 1);
   }
-  std::vector<std::string> builtins = builtinSceneNames();  // glTF built-ins, then curved ones
+  std::vector<std::string> builtins = builtinSceneNames();  // glTF built-ins, golden-only ones, curved ones
+  for (const std::string& g : goldenOnlySceneNames()) builtins.push_back(g);
   for (const std::string& c : curvedSceneNames()) builtins.push_back(c);
   sel.scenes = args.has("scenes") ? splitList(args.get("scenes", "")) : builtins;
   for (const std::string& s : sel.scenes)

@@ -32,6 +32,11 @@ const std::vector<std::string>& builtinSceneNames() {
   return names;
 }
 
+const std::vector<std::string>& goldenOnlySceneNames() {
+  static const std::vector<std::string> names = {"morph_torus"};
+  return names;
+}
+
 bool isBuiltinScene(const std::string& name) {
   return builderFor(name) != nullptr || isCurvedScene(name);
 }
