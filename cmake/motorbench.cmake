@@ -19,6 +19,38 @@ if(MB_PCH AND NOT TARGET mb_pch)
     <vector>)
 endif()
 
+# Unity builds (-DMB_UNITY=ON, scripts/test.sh sets it for a new folder): a target's .cpp files
+# compiled MB_UNITY_BATCH at a time as one translation unit, so the headers they share (tinygltf,
+# nlohmann/json, GLM, gtest) are parsed once per batch instead of once per file. Inlining across
+# the files of a batch can change, so the code bench and time measure (MB_MEASURED_DIRS) is
+# built file by file in the measuring build and joins batches only in the quick -O1 test build
+# (MB_QUICK_BUILD=ON), which measures nothing. Files that define an implementation macro
+# (tinygltf's, stb's) or re-include themselves per SIMD target (Highway's HWY_TARGET_INCLUDE)
+# stay on their own.
+option(MB_UNITY "Unity builds (batches of MB_UNITY_BATCH files) where they do not touch measured code" OFF)
+set(MB_UNITY_BATCH 8 CACHE STRING "Files per unity batch (MB_UNITY=ON)")
+
+# mb_unity(TARGET MEASURED): TARGET's sources in unity batches when MB_UNITY allows it.
+function(mb_unity target measured)
+  if(NOT MB_UNITY OR (measured AND NOT MB_QUICK_BUILD))
+    return()
+  endif()
+  get_target_property(srcs ${target} SOURCES)
+  get_target_property(dir ${target} SOURCE_DIR)
+  foreach(src ${srcs})
+    if(NOT IS_ABSOLUTE "${src}")
+      set(src "${dir}/${src}")
+    endif()
+    if(src MATCHES "\\.cpp$" AND EXISTS "${src}")
+      file(STRINGS "${src}" alone REGEX "HWY_TARGET_INCLUDE|#define [A-Z_]+_IMPLEMENTATION")
+      if(alone)
+        set_source_files_properties("${src}" TARGET_DIRECTORY ${target} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+      endif()
+    endif()
+  endforeach()
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${MB_UNITY_BATCH})
+endfunction()
+
 function(mb_library name)
   file(GLOB srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   if(srcs)
@@ -35,6 +67,7 @@ function(mb_library name)
     if(MB_PCH AND NOT measured)
       target_precompile_headers(${name} REUSE_FROM mb_pch)
     endif()
+    mb_unity(${name} ${measured})
   else()
     add_library(${name} INTERFACE)
     target_include_directories(${name} INTERFACE ${PROJECT_SOURCE_DIR})

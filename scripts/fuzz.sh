@@ -18,6 +18,8 @@
 # process), MB_FUZZ_ARGS (extra libFuzzer flags).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# shellcheck source=scripts/build_fallback.sh
+. scripts/build_fallback.sh
 
 BUDGET=${1:-60}
 WHICH=${2:-both}
@@ -31,10 +33,10 @@ if [ ! -f "$BUILD/CMakeCache.txt" ]; then
   mkdir -p "$BUILD"
   GENERATOR=()
   command -v ninja > /dev/null && GENERATOR=(-G Ninja)
-  CC=clang CXX=clang++ cmake -S . -B "$BUILD" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_FUZZ=ON >"$BUILD/configure.log" 2>&1 \
+  CC=clang CXX=clang++ cmake -S . -B "$BUILD" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_FUZZ=ON -DMB_UNITY=ON >"$BUILD/configure.log" 2>&1 \
     || { cat "$BUILD/configure.log" >&2; exit 2; }
 fi
-cmake --build "$BUILD" --target fuzz_loader fuzz_images fuzz_seeds -j "$JOBS"
+build_unity_or_alone "$BUILD" --target fuzz_loader fuzz_images fuzz_seeds -j "$JOBS"
 
 SEEDS=$BUILD/fuzz-seeds
 ARTIFACTS=$BUILD/fuzz-artifacts

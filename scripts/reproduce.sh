@@ -13,6 +13,8 @@
 # report: frame timing) always runs alone, so nothing else competes for the cores it measures on.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# shellcheck source=scripts/build_fallback.sh
+. scripts/build_fallback.sh
 
 # Timed figures need quiet cores (issue 38): warn now when other work runs. The tools mark each
 # figure taken on shared cores (harness/timing/disturbance.h) and keep it out of the verdicts.
@@ -68,12 +70,14 @@ step setup "setup (Debian packages)"
 scripts/setup.sh >&2
 
 step build "configure and build motorbench (-O2, no debug information: the measuring build)"
+# Unity batches (MB_UNITY=ON) only for the rooms that time nothing: the code bench and time
+# measure is compiled file by file, as before (cmake/motorbench.cmake, MB_MEASURED_DIRS).
 # scripts/test.sh reuses this folder as it is; its own fresh build is -O1 (MB_QUICK_BUILD=ON),
 # which this step turns back to -O2 (everything is compiled again).
 GENERATOR=()
 [ ! -f "$BUILD/CMakeCache.txt" ] && command -v ninja > /dev/null && GENERATOR=(-G Ninja)
-cmake -S . -B "$BUILD" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_QUICK_BUILD=OFF >&2
-cmake --build "$BUILD" --target motorbench -j "$JOBS" >&2
+cmake -S . -B "$BUILD" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_QUICK_BUILD=OFF -DMB_UNITY=ON >&2
+build_unity_or_alone "$BUILD" --target motorbench -j "$JOBS" >&2
 
 mkdir -p "$OUT"
 rm -rf "$OUT/images" "$OUT/plots" "$OUT/corpus" "$OUT/corpus-graph.json"  # generated; other files are overwritten

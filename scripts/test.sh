@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 BUILD=build
 SANITIZE=0
 # A fresh build/ is quick (MB_QUICK_BUILD=ON: -O1, no debug information; CMakeLists.txt says why
-# the results are the same). A build/ already configured (scripts/reproduce.sh's -O2 measuring
+# the results are the same) and compiles in unity batches (MB_UNITY=ON, cmake/motorbench.cmake). A build/ already configured (scripts/reproduce.sh's -O2 measuring
 # build, or an earlier run) is reused as it is: the suite passes on either, and switching the
 # folder's flags would compile everything again.
 CMAKE_ARGS=()
@@ -24,11 +24,14 @@ done
 if [ "$SANITIZE" = 1 ]; then
   CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_SANITIZE=ON -DMB_QUICK_BUILD=OFF)
 elif [ ! -f "$BUILD/CMakeCache.txt" ]; then
-  CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_QUICK_BUILD=ON)
+  CMAKE_ARGS=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_QUICK_BUILD=ON -DMB_UNITY=ON)
 fi
 # A new folder is generated for Ninja when it is there (setup.sh installs it): it starts
 # compiling sooner and keeps both cores busy across targets.
 if [ ! -f "$BUILD/CMakeCache.txt" ] && command -v ninja > /dev/null; then CMAKE_ARGS+=(-G Ninja); fi
+
+# shellcheck source=scripts/build_fallback.sh
+. scripts/build_fallback.sh
 
 start=$(date +%s)
 last=$start
@@ -55,7 +58,7 @@ JOBS=$(nproc)
 step "configure $BUILD/"
 cmake -S . -B "$BUILD" "${CMAKE_ARGS[@]}"
 step "build"
-cmake --build "$BUILD" -j "$JOBS"
+build_unity_or_alone "$BUILD" -j "$JOBS"
 # ctest: one process per room shard (tests/CMakeLists.txt); the longest first (CTest's costs of
 # the last run), so the two cores finish together.
 step "ctest"

@@ -14,8 +14,7 @@ namespace {
 
 using json = nlohmann::json;
 using figures::Figure;
-
-double num(const json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
+using figures::numberOrNaN;
 
 const char* kFetchDevice = "meshoptimizer's analyzers on the mesh and the pipeline's vertex layout (not timed)";
 
@@ -36,10 +35,10 @@ void fetchFigures(json& out, const json& r, const std::vector<std::string>& pipe
     for (const json& s : r["scenes"]) {
       if (!isEuclidean(s)) continue;
       const json& f = at(s, {"pipelines", p.c_str(), "vertexFetch"});
-      const double b = num(at(s, {"pipelines", base.c_str(), "vertexFetch", "bytesFetchedPerFrame"}));
+      const double b = numberOrNaN(at(s, {"pipelines", base.c_str(), "vertexFetch", "bytesFetchedPerFrame"}));
       if (!f.is_object()) continue;
-      if (std::isfinite(num(f["bytesFetchedPerVertex"]))) perVertex.push_back(num(f["bytesFetchedPerVertex"]));
-      if (b > 0 && std::isfinite(num(f["bytesFetchedPerFrame"]))) perFrame.push_back(num(f["bytesFetchedPerFrame"]) / b);
+      if (std::isfinite(numberOrNaN(f["bytesFetchedPerVertex"]))) perVertex.push_back(numberOrNaN(f["bytesFetchedPerVertex"]));
+      if (b > 0 && std::isfinite(numberOrNaN(f["bytesFetchedPerFrame"]))) perFrame.push_back(numberOrNaN(f["bytesFetchedPerFrame"]) / b);
     }
     const std::string scope = "shading-attribute stream of every drawn primitive, one frame, Euclidean scenes";
     figures::put(out, overScenes("vertex_fetch.bytes_per_vertex." + p, "bytes", scope, kFetchDevice,
@@ -63,7 +62,7 @@ void isaFigures(json& out, const json& r, const std::vector<std::string>& pipes)
       f.scope = "rigid vertex shader, one vertex (one lane of a wave)";
       f.device = "RADV " + id + " (" + fam.value("generation", "") + "), compiler statistics on the null device, not timed";
       f.definition = "ISA instructions of the compiled vertex shader";
-      f.value = row ? num((*row)["instructions"]) : std::nan("");
+      f.value = row ? numberOrNaN((*row)["instructions"]) : std::nan("");
       f.n = std::isfinite(f.value) ? 1 : 0;
       if (!row) f.why = "no rigid vertex shader of " + p + " for " + id;
       figures::put(out, f);

@@ -10,11 +10,10 @@ namespace {
 
 using json = nlohmann::json;
 using figures::Figure;
+using figures::numberOrNaN;
 
 const char* kPairedStatistic = "median of per-frame paired ratios (both pipelines render each frame back to back)";
 const char* kOverScenes = "median over scenes of each scene's median of per-frame paired ratios";
-
-double num(const json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
 
 std::string sizeOf(const json& config) {
   if (!config.value("width", json()).is_number()) return "";
@@ -78,7 +77,7 @@ void memoryFigure(json& out, const std::vector<json>& scenes, const std::vector<
   for (const std::string& p : pipelines) {
     std::vector<double> v;
     for (const json& s : scenes) {
-      const double x = num(at(s, {"pipelines", p.c_str(), "memory", field}));
+      const double x = numberOrNaN(at(s, {"pipelines", p.c_str(), "memory", field}));
       if (x > 0) v.push_back(x);
     }
     Figure f;
@@ -95,7 +94,7 @@ void memoryFigure(json& out, const std::vector<json>& scenes, const std::vector<
 double opsTotal(const json& ops) {
   if (!ops.is_object()) return std::nan("");
   double t = 0;
-  for (const char* k : {"mul", "add", "div", "sqrt", "other"}) t += num(ops.value(k, json(0)));
+  for (const char* k : {"mul", "add", "div", "sqrt", "other"}) t += numberOrNaN(ops.value(k, json(0)));
   return t;
 }
 
@@ -140,7 +139,7 @@ void opsFigures(json& out, const json& ops) {
 void kernelFigures(json& out, const json& kernels, const std::string& cpu) {
   for (const json& p : kernels.value("pairs", json::array())) {
     const std::string pair = p.value("pair", "");
-    auto ips = [&](const std::string& side) { return num(at(p, {side.c_str(), "items_per_second"})); };
+    auto ips = [&](const std::string& side) { return numberOrNaN(at(p, {side.c_str(), "items_per_second"})); };
     auto add = [&](const std::string& name, const std::string& motor, const std::string& matrix, const std::string& what) {
       Figure f;
       f.name = name;
@@ -190,7 +189,7 @@ Figure sceneFrameTimeFigure(const std::string& name, const json& config, const s
   f.scope = "whole frame" + (sizeOf(config).empty() ? std::string() : " at " + sizeOf(config));
   f.device = device;
   f.definition = "frame time motor / matrix (< 1: motor faster)";
-  f.value = num(config.value("paired_ratio_motor_matrix", json()));
+  f.value = numberOrNaN(config.value("paired_ratio_motor_matrix", json()));
   f.disturbed = config.value("disturbance", json());  // harness/timing/disturbance.h (null before issue 38)
   const json& spread = config.value("paired_ratio_spread", json());
   if (spread.is_object() && spread.value("q1", json()).is_number()) {

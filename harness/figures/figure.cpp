@@ -47,6 +47,8 @@ json toJson(const Figure& f) {
   return j;
 }
 
+double numberOrNaN(const json& v) { return v.is_number() ? v.get<double>() : std::nan(""); }
+
 Figure figureFromJson(const std::string& name, const json& j) {
   Figure f;
   f.name = name;
@@ -55,7 +57,7 @@ Figure figureFromJson(const std::string& name, const json& j) {
     return f;
   }
   const json& v = j.value("value", json());
-  f.value = v.is_number() ? v.get<double>() : std::nan("");
+  f.value = numberOrNaN(v);
   f.unit = j.value("unit", "");
   f.statistic = j.value("statistic", "");
   f.scope = j.value("scope", "");

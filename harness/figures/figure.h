@@ -30,6 +30,9 @@ struct Figure {
 // The figure with `q`'s median as its value and its quartiles as its spread.
 Figure withQuartiles(Figure f, const Quartiles& q);
 
+// A JSON number as a double; NaN for anything else (null, missing, text).
+double numberOrNaN(const nlohmann::json& v);
+
 nlohmann::json toJson(const Figure& f);
 Figure figureFromJson(const std::string& name, const nlohmann::json& j);
 

@@ -61,7 +61,7 @@ double motorDistance(int kappa, const float (&m)[8]) {
 
 namespace {
 
-template <class S, int K> using P = PgaK<S, K>;
+template <class S, int K> using PgaOf = PgaK<S, K>;  // named apart from curved_motor.cpp's P (unity builds)
 
 template <int K> DriftResult run(int64_t steps) {
   DriftResult r;
@@ -73,8 +73,8 @@ template <int K> DriftResult run(int64_t steps) {
   const glm::dmat4 stepD = elementaryMatrix(K, 0, 2, 2e-3) * elementaryMatrix(K, 2, 3, -1e-3);
   const Motor8 stepM8 = compose(K, elementaryMotor(K, 0, 2, 2e-3), elementaryMotor(K, 2, 3, -1e-3));
   const Motor8 stepU = K > 0 ? pairOfMotor(stepM8) : stepM8;
-  using M = typename P<float, K>::mat2x4;
-  using V4 = typename P<float, K>::vec4;
+  using M = typename PgaOf<float, K>::mat2x4;
+  using V4 = typename PgaOf<float, K>::vec4;
   auto& pk = pgaK<float, K>;
   const M stepMotor{V4(float(stepU[0]), float(stepU[1]), float(stepU[2]), float(stepU[3])),
                     V4(float(stepU[4]), float(stepU[5]), float(stepU[6]), float(stepU[7]))};
@@ -117,12 +117,12 @@ template <int K> DriftResult run(int64_t steps) {
   {
     using C = Counted;
     auto& pc = pgaK<C, K>;
-    using MC = typename P<C, K>::mat2x4;
-    using VC = typename P<C, K>::vec4;
+    using MC = typename PgaOf<C, K>::mat2x4;
+    using VC = typename PgaOf<C, K>::vec4;
     const MC a(VC(C(0.9), C(0.1), C(0.2), C(0.3)), VC(C(0.1), C(0.2), C(0.3), C(0.4)));
     r.motor.stepOps = countOps([&] { if constexpr (K > 0) pc.gp_pair(a, a); else pc.gp_mm_k(a, a); });
     r.motor.renormOps = countOps([&] { if constexpr (K > 0) pc.normalize_pair(a); else pc.normalize_m_k(a); });
-    using M4 = typename P<C, K>::mat4;
+    using M4 = typename PgaOf<C, K>::mat4;
     const M4 m4(C(1.0));
     r.matrix.stepOps = countOps([&] { M4 p = m4 * m4; (void)p; });
     C g[4][4];

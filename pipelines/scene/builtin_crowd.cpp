@@ -12,7 +12,7 @@ namespace mb {
 
 void buildCrowd(GlbBuilder& b) {
   constexpr int kGrid = 16, kJoints = 4, kVariants = 8, kKeys = 9;
-  constexpr float kLength = 2.0f, kPi = 3.14159265359f, kPeriod = 2.0f;
+  constexpr float kLength = 2.0f, kPeriod = 2.0f;
   float spacing = kLength / float(kJoints - 1);
   MaterialDesc mat;
   mat.name = "crowd";

@@ -7,6 +7,9 @@
 
 namespace mb {
 
+// pi as the built-in scenes' float geometry uses it.
+inline constexpr float kPi = 3.14159265359f;
+
 void buildNormalTorus(GlbBuilder& b);
 void buildDenseTorus(GlbBuilder& b);
 void buildTexturedBox(GlbBuilder& b);

@@ -13,7 +13,6 @@
 namespace mb {
 namespace {
 
-constexpr float kPi = 3.14159265359f;
 constexpr int kMajor = 48, kMinor = 24;
 
 // The surface of target `k` (-1: the base torus) at ring angle phi, tube angle theta.

@@ -10,7 +10,6 @@
 namespace mb {
 namespace {
 
-constexpr float kPi = 3.14159265359f;
 constexpr float kR = 1.0f, kr = 0.35f;
 
 // One half of the torus: phi in [phi0, phi0 + pi]; u runs 0 -> 1 (mirrored: 1 -> 0).

@@ -38,7 +38,7 @@ MeshData makeSkinnedTube(int rings, int sides, float length, float radius, int j
 
 void buildSkinnedTube(GlbBuilder& b) {
   constexpr int kJoints = 5;
-  constexpr float kLength = 4.0f, kPi = 3.14159265359f;
+  constexpr float kLength = 4.0f;
   float spacing = kLength / float(kJoints - 1);
   MaterialDesc mat;
   mat.name = "tube";

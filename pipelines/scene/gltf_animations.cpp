@@ -11,10 +11,6 @@
 namespace mb {
 namespace {
 
-// The glTF validator's unit-length tolerance for quaternions (just above the error of signed
-// 8-bit quantization, which KHR_mesh_quantization allows for rotation outputs).
-constexpr float kUnitQuaternionTolerance = 0.00769f;
-
 // glTF requires strictly increasing input times. Equal times are drawable (a jump: the sampler
 // never interpolates across a zero interval); decreasing ones are sorted, each key moving with
 // its `floatsPerKey` values (stable, so equal times keep their order). Returns 1 when the times

@@ -35,6 +35,11 @@ void checkNodeWeights(Scene& scene);
 
 // The MB_bezier_patches primitive extension (gltf_patches.cpp): a POINTS primitive whose
 // POSITION holds 16 control points per bicubic patch -> a primitive with patchPoints.
+// The glTF validator's unit-length tolerance for quaternions (just above the error of signed
+// 8-bit quantization, which KHR_mesh_quantization allows for rotation outputs): keyframes and
+// instance rotations.
+inline constexpr float kUnitQuaternionTolerance = 0.00769f;
+
 constexpr const char* kBezierPatchesExtension = "MB_bezier_patches";
 Result<Primitive> convertPatchPrimitive(const tinygltf::Model& model,
                                         const tinygltf::Primitive& primitive, int materialCount);

@@ -14,8 +14,6 @@
 namespace mb {
 namespace {
 
-constexpr float kUnitQuaternionTolerance = 0.00769f;  // the glTF validator's, as for keyframes
-
 bool integerType(int c) {
   return c == TINYGLTF_COMPONENT_TYPE_BYTE || c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
          c == TINYGLTF_COMPONENT_TYPE_SHORT || c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
