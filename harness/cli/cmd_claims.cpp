@@ -20,6 +20,7 @@
 #include "harness/options/args.h"
 #include "harness/claims/claims_device.h"
 #include "harness/claims/claims_layout.h"
+#include "harness/claims/claims_morph.h"
 #include "harness/claims/claims_quotes.h"
 #include "harness/claims/corpus_stats.h"
 #include "harness/claims/claims_sources.h"
@@ -257,6 +258,7 @@ int runClaims(const std::vector<std::string>& argv) {
   say("measuring uploads");
   add(all, claims::memoryClaims(uploads));
   add(all, claims::compactClaims(speed.isa, speed.isaSource, report, args.get("report", "")), "compact");
+  add(all, claims::morphClaims(report, args.get("report", "")), "morph");
   add(all, claims::speedClaims(speed));
   add(all, claims::sceneGraphClaims(speed.kernelPairs, speed.timings, sources["frameTiming"].get<std::string>(), speed.sceneStats));
   say("scene statistics");

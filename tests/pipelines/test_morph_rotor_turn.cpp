@@ -47,3 +47,26 @@ TEST(MorphRotorTurn, FrameMethodFollowsTheMatrixAndRotorMethodDriftsWithTheTurn)
     EXPECT_NEAR(std::fabs(rotor - matrix) / kDeg, c.errorDeg, 0.01f) << c.theta << " " << c.w;
   }
 }
+
+// The compact rotors' method (a) (motor_c: morphRotorFrameHanded; motor_cf: morphSignedRotorFrame):
+// the decoded rotor comes with either sign and the handedness apart. A 90-degree tangent turn at
+// weight 1/2 turns the tangent by 45 degrees (atan2(1/2, 1/2), the rule above) whichever sign the
+// input has; the Handed form's scalar carries the handedness, the Signed form stays in the stored
+// rotor's hemisphere.
+TEST(MorphRotorTurn, CompactRotorsMorphTheFrameWhateverTheirSign) {
+  const glm::vec3 n(0, 0, 1), t(1, 0, 0);
+  const MK::vec3 none(0.0f), half(-0.5f, 0.5f, 0.0f);  // 0.5 x ((0, 1, 0) - (1, 0, 0))
+  for (float handedness : {1.0f, -1.0f}) {
+    const glm::vec4 base = companion::encodeTangentRotor(n, t, handedness).rotor;
+    for (float sign : {1.0f, -1.0f}) {
+      const MK::vec4 stored(sign * base.x, sign * base.y, sign * base.z, sign * base.w);
+      const glm::vec4 handed = toGlm(mk().morphRotorFrameHanded(stored, handedness, none, half));
+      EXPECT_NEAR(tangentAngle(handed), 45.0f * kDeg, 1e-5f) << handedness << " " << sign;
+      EXPECT_EQ(handed.x < 0.0f, handedness < 0.0f) << "the scalar's sign is the handedness";
+      const glm::vec4 signed_ = toGlm(mk().morphSignedRotorFrame(stored, handedness, none, half));
+      EXPECT_NEAR(tangentAngle(signed_), 45.0f * kDeg, 1e-5f);
+      EXPECT_GT(glm::dot(signed_, toGlm(stored)), 0.0f) << "kept in the stored rotor's hemisphere";
+      EXPECT_NEAR(glm::length(signed_), 1.0f, 1e-6f);
+    }
+  }
+}

@@ -9,10 +9,13 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <sstream>
 
 #include "harness/render/image_metrics.h"
+#include "harness/render/render_frame.h"
+#include "pipelines/pipeline.h"
 #include "pipelines/scene/loader.h"
 #include "tests/support/render_options.h"
 
@@ -82,4 +85,45 @@ TEST(MorphCorpus, MotorMethodsAgainstMatrixWithAnimatedWeights) {
                 methods[m].first, worst[m].psnr, worst[m].maxError, worst[m].frame.c_str(), worstRigid[m].psnr,
                 worstRigid[m].frame.c_str());
   EXPECT_GT(morphedFrames, 0);
+}
+
+// Every pipeline draws the morph files as matrix does (issue 37): on every frame it morphs the
+// draws matrix morphs (at least as many: motor_cf may split one) and counts no node drawn in its
+// base shape. Prints each pipeline's worst PSNR vs matrix over the frames where matrix morphs.
+TEST(MorphCorpus, EveryPipelineMorphsWhatMatrixMorphs) {
+  const fs::path dir = fs::path(MB_SOURCE_DIR) / ".." / "shared" / "corpus-wide";
+  if (!fs::is_regular_file(dir / "MANIFEST.tsv")) GTEST_SKIP() << "no corpus-wide at " << dir;
+  const std::vector<std::string> files = morphFiles(dir);
+  ASSERT_FALSE(files.empty());
+  std::map<std::string, Worst> worst;
+  for (const std::string& file : files) {
+    auto scene = loadScene((dir / file).string());
+    ASSERT_TRUE(scene) << scene.error();
+    std::vector<AnimState> states{AnimState{}};  // the rest pose (default weights), then the animations
+    for (size_t a = 0; a < scene->animations.size(); ++a)
+      for (float f : {0.25f, 0.5f, 0.75f}) states.push_back({int(a), f * scene->animations[a].duration});
+    for (const AnimState& st : states) {
+      FrameSettings fs;
+      fs.width = fs.height = kSize;
+      fs.anim = st;
+      auto matrix = renderFrame(*scene, "matrix", fs);
+      ASSERT_TRUE(matrix) << matrix.error();
+      if (matrix->stats.morphDraws == 0) continue;
+      const std::string where = fs::path(file).filename().string() + " anim " + std::to_string(st.anim) + " t " +
+                                std::to_string(fs.anim.time).substr(0, 5);
+      for (const std::string& p : pipelineNames()) {
+        auto frame = renderFrame(*scene, p, fs);
+        ASSERT_TRUE(frame) << frame.error();
+        EXPECT_GE(frame->stats.morphDraws, matrix->stats.morphDraws) << p << " " << where;
+        EXPECT_EQ(frame->stats.morphNotDrawnNodes, 0) << p << " " << where;
+        auto metrics = compareImages(matrix->image, frame->image);
+        ASSERT_TRUE(metrics) << metrics.error();
+        if (metrics->psnr < worst[p].psnr) worst[p] = {metrics->psnr, metrics->maxError, where};
+      }
+    }
+  }
+  for (const auto& [p, w] : worst)
+    std::printf("[ morph corpus ] %-9s worst PSNR vs matrix %.2f dB (max error %.4f) at %s\n", p.c_str(), w.psnr,
+                w.maxError, w.frame.c_str());
+  EXPECT_EQ(worst.size(), pipelineNames().size()) << "some frame morphed";
 }
