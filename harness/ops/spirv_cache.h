@@ -5,6 +5,8 @@
 // entry and compared on reading (no hash collision can return another shader's text).
 // Where: $MB_CACHE_DIR, else $XDG_CACHE_HOME/motorbench, else $HOME/.cache/motorbench (a
 // "spirv" folder inside). MB_CACHE_DIR=off turns it off; an unwritable folder just means no cache.
+// compileToBinary keeps its SPIR-V modules here too, under keys of their own (the entry is the
+// module's bytes instead of text).
 #pragma once
 #include <optional>
 #include <string>

@@ -338,11 +338,20 @@ Result<std::vector<uint32_t>> compileToBinary(const std::string& source, const s
                                               const std::string& flags, const std::string& name,
                                               const Tools& tools) {
   using R = Result<std::vector<uint32_t>>;
-  TempDir tmp;
-  if (tmp.path.empty()) return R::fail(name + ": cannot create a temporary folder");
-  if (std::string e = glslang(tmp.path, source, stage, flags, name, tools); !e.empty()) return R::fail(e);
-  const std::string bytes = readFile(tmp.path / "shader.spv");
-  if (bytes.empty() || bytes.size() % 4) return R::fail(name + ": glslangValidator wrote no SPIR-V");
+  // The module is a pure function of the text, the stage, the flags and glslang (spirv_cache.h):
+  // motorbench isa compiles ~140 stages, one glslangValidator process each (~0.3 s of CPU), and
+  // a run with the cache filled skips all of them.
+  const std::string key = cacheKey(source, stage, "glslang " + flags + " (binary module)", tools.glslang,
+                                   tools.spirvOpt, tools.spirvDis);
+  std::string bytes = cachedDisassembly(key).value_or("");
+  if (bytes.empty() || bytes.size() % 4) {
+    TempDir tmp;
+    if (tmp.path.empty()) return R::fail(name + ": cannot create a temporary folder");
+    if (std::string e = glslang(tmp.path, source, stage, flags, name, tools); !e.empty()) return R::fail(e);
+    bytes = readFile(tmp.path / "shader.spv");
+    if (bytes.empty() || bytes.size() % 4) return R::fail(name + ": glslangValidator wrote no SPIR-V");
+    storeDisassembly(key, bytes);
+  }
   std::vector<uint32_t> words(bytes.size() / 4);
   std::memcpy(words.data(), bytes.data(), bytes.size());
   return words;
