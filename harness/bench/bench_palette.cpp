@@ -1,8 +1,10 @@
 // palette: the skin palette out[j] = world[node[j]] * inverseBind[j] for every joint, each
 // joint's node world transform read through its index (the pipelines' per-frame skin update).
 // Matrix: matrixCompose (matrix_transform.glsl, mat4); motor: gp_mm (pga.glsl); glm: GLM's mat4
-// product; simd_matrix: kernels/simd's paletteAffine (mat4x3 operands: the same product for
-// affine transforms), simd_motor: paletteMotor, both on planar copies of the same transforms.
+// product; simd_matrix: kernels/simd's paletteAffine (an affine inverse bind: the same product),
+// simd_motor: paletteMotor, both on the operands as the pipelines hold them: the worlds AoS as
+// the SIMD hierarchy kernels write them (affine 16 floats per node, motor 12: its 8 and the
+// scale), the inverse binds AoS (mat4 16 floats as glTF stores them, motor 8), out AoS.
 #include <glm/glm.hpp>
 
 #include "harness/bench/bench_common.h"
@@ -21,27 +23,28 @@ struct PaletteData {
   std::vector<MS::mat4> world, inverseBind, out;
   std::vector<PS::motor> worldM, inverseBindM, outM;
   std::vector<glm::mat4> worldG, inverseBindG, outG;
-  // Planar copies: worlds kNodes per plane, inverse binds and outputs kJoints per plane.
-  std::vector<float> world12, inverseBind12, world8, inverseBind8, outPlanes;
-  PaletteData()
-      : out(kJoints), outM(kJoints), outG(kJoints), world12(12 * kNodes), inverseBind12(12 * kJoints),
-        world8(8 * kNodes), inverseBind8(8 * kJoints), outPlanes(12 * kJoints) {
+  // The SIMD sides' copies (AoS): affine worlds and inverse binds 16 floats, motor worlds
+  // kHierarchyMotorFloats (motor, scale 1, unused), motor inverse binds 8; outputs 16 / 8.
+  std::vector<float> world16, inverseBind16, worldMotor, inverseBind8, outFloats;
+  PaletteData() : out(kJoints), outM(kJoints), outG(kJoints), outFloats(16 * kJoints) {
     Rng r;
     auto add = [](const Transform& t, std::vector<MS::mat4>& m, std::vector<PS::motor>& p, std::vector<glm::mat4>& g,
-                  std::vector<float>& p12, std::vector<float>& p8, size_t count) {
-      const size_t i = m.size();
+                  std::vector<float>& f16, std::vector<float>& fm, size_t motorFloats) {
       m.push_back(toShim(t.matrix)), p.push_back(t.motor);
       glm::mat4 x;
       for (int c = 0; c < 4; ++c)
         for (int k = 0; k < 4; ++k) x[c][k] = t.matrix[c * 4 + k];
       g.push_back(x);
-      for (int c = 0; c < 4; ++c)
-        for (int k = 0; k < 3; ++k) p12[size_t(c * 3 + k) * count + i] = t.matrix[c * 4 + k];
-      for (int k = 0; k < 4; ++k) p8[size_t(k) * count + i] = t.motor[0][k], p8[size_t(4 + k) * count + i] = t.motor[1][k];
+      f16.insert(f16.end(), t.matrix, t.matrix + 16);
+      const size_t at = fm.size();
+      fm.resize(at + motorFloats, 0.0f);
+      for (int k = 0; k < 4; ++k) fm[at + size_t(k)] = t.motor[0][k], fm[at + 4 + size_t(k)] = t.motor[1][k];
+      if (motorFloats > 8) fm[at + 8] = 1.0f;  // the hierarchy's world scale
     };
-    for (size_t i = 0; i < kNodes; ++i) add(randomTransform(r), world, worldM, worldG, world12, world8, kNodes);
+    for (size_t i = 0; i < kNodes; ++i)
+      add(randomTransform(r), world, worldM, worldG, world16, worldMotor, simd::kHierarchyMotorFloats);
     for (size_t j = 0; j < kJoints; ++j) {
-      add(randomTransform(r), inverseBind, inverseBindM, inverseBindG, inverseBind12, inverseBind8, kJoints);
+      add(randomTransform(r), inverseBind, inverseBindM, inverseBindG, inverseBind16, inverseBind8, 8);
       node.push_back(int32_t(r.index(int(kNodes))));
     }
   }
@@ -82,28 +85,27 @@ void paletteGlm(benchmark::State& state) {
   });
 }
 
+// `floats`: per joint, world + inverse bind + out (the world's bytes read, the scale's included).
 template <class K> void paletteSimd(benchmark::State& state, size_t floats, K kernel) {
   PaletteData& d = paletteData();
   for (auto _ : state) {
     kernel(d);
-    benchmark::DoNotOptimize(d.outPlanes.data());
+    benchmark::DoNotOptimize(d.outFloats.data());
     benchmark::ClobberMemory();
   }
   setSimdLabel(state);
-  setThroughput(state, kJoints, kJoints * 3 * floats * sizeof(float), Size::InCache);
+  setThroughput(state, kJoints, kJoints * floats * sizeof(float), Size::InCache);
 }
 
 void paletteSimdAffine(benchmark::State& state) {
-  paletteSimd(state, 12, [](PaletteData& d) {
-    simd::paletteAffine({d.world12.data(), kNodes}, d.node.data(), {d.inverseBind12.data(), kJoints},
-                        {d.outPlanes.data(), kJoints}, kJoints);
+  paletteSimd(state, 3 * 16, [](PaletteData& d) {
+    simd::paletteAffine(d.world16.data(), d.node.data(), d.inverseBind16.data(), d.outFloats.data(), kJoints);
   });
 }
 
 void paletteSimdMotor(benchmark::State& state) {
-  paletteSimd(state, 8, [](PaletteData& d) {
-    simd::paletteMotor({d.world8.data(), kNodes}, d.node.data(), {d.inverseBind8.data(), kJoints},
-                       {d.outPlanes.data(), kJoints}, kJoints);
+  paletteSimd(state, simd::kHierarchyMotorFloats + 8 + 8, [](PaletteData& d) {
+    simd::paletteMotor(d.worldMotor.data(), d.node.data(), d.inverseBind8.data(), d.outFloats.data(), kJoints);
   });
 }
 

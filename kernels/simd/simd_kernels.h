@@ -93,12 +93,15 @@ void composeAffine(ConstPlanes a, ConstPlanes b, Planes out, size_t n);
 void composeMotor(ConstPlanes a, ConstPlanes b, Planes out, size_t n);
 
 // ---- skin palette: out[j] = world[node[j]] inverseBind[j] ---------------------------------
-// Affine (12 planes; `world` indexed by `node`, gathered) and motor (8 planes; gp_mm). `node`
-// holds `n` indices into `world`'s planes.
-void paletteAffine(ConstPlanes world, const int32_t* node, ConstPlanes inverseBind, Planes out,
-                   size_t n);
-void paletteMotor(ConstPlanes world, const int32_t* node, ConstPlanes inverseBind, Planes out,
-                  size_t n);
+// Both operands as the pipelines hold them: `world` as hierarchyAffine / hierarchyMotor write it
+// (kHierarchyAffineFloats / kHierarchyMotorFloats per node, AoS), indexed by `node` (n indices),
+// and the inverse binds AoS. One 4-lane product per joint on both sides (simd_hierarchy.cpp).
+// Affine: matrixCompose (matrix_transform.glsl) with `inverseBind` n column-major mat4s
+// (glTF's inverseBindMatrices, affine: their last row is not read); out n mat4s (16 floats).
+// Motor: gp_mm (pga.glsl) of the world's motor (its scale not applied) and `inverseBind` n
+// motors (8 floats); out n motors.
+void paletteAffine(const float* world, const int32_t* node, const float* inverseBind, float* out, size_t n);
+void paletteMotor(const float* world, const int32_t* node, const float* inverseBind, float* out, size_t n);
 
 // ---- hierarchy update: world = parent world * local, parents first -----------------------
 // Nodes in parents-first order (parent[k] < k; -1: a root), n of them. The nodes are walked in

@@ -1,4 +1,4 @@
-// Points, directions, batched products and the skin palette (simd_kernels.h), compiled once per
+// Points, directions and batched products (simd_kernels.h), compiled once per
 // Highway target and dispatched at run time to the best one the CPU supports.
 #include <cstring>
 
@@ -55,7 +55,7 @@ template <class V> HWY_INLINE void mat4Product(const V* x, const V* y, V* o) {
                      hn::MulAdd(x[8 + r], y[4 * j + 2], hn::Mul(x[12 + r], y[4 * j + 3]))));
 }
 
-// The products of the compose and palette pairs, as functors over C-plane operands.
+// The products of the compose pair, as functors over C-plane operands.
 struct Mat4Product {
   static constexpr size_t C = 16;
   template <class V> void operator()(const V* x, const V* y, V* o) const { mat4Product(x, y, o); }
@@ -71,23 +71,16 @@ struct MotorProduct {
 
 // Pair compose (mat4 / affine / motor): one loop for every product, both operands and the
 // result planar, every input plane prefetched, one product per lane: mat4 16 mul + 48 fused,
-// affine 36 fused, gp_mm 48 fused. `node` (the palette pair): a[node[i]] gathered per component
-// instead of a[i] loaded (affine 12, motor 8 GatherIndex).
-template <class Product>
-void composeBatch(ConstPlanes a, const int32_t* node, ConstPlanes b, Planes out, size_t n, Product product) {
+// affine 36 fused, gp_mm 48 fused.
+template <class Product> void composeBatch(ConstPlanes a, ConstPlanes b, Planes out, size_t n, Product product) {
   constexpr size_t C = Product::C;
   const bool nt = streamOutput(out, C, n);
   forEachBatch(n, nt, [&](auto d, size_t s, size_t e, bool main) {
     using V = hn::Vec<decltype(d)>;
-    const hn::RebindToSigned<decltype(d)> di;
     V x[C], y[C], o[C];
     for (size_t i = s; i < e; i += hn::Lanes(d)) {
-      if (main) {
-        if (!node) prefetchPlanes(a, C, i);
-        prefetchPlanes(b, C, i);
-      }
-      if (node) gatherPlanes(d, a, hn::LoadU(di, node + i), x);
-      else loadPlanes(d, a, i, x);
+      if (main) prefetchPlanes(a, C, i), prefetchPlanes(b, C, i);
+      loadPlanes(d, a, i, x);
       loadPlanes(d, b, i, y);
       product(x, y, o);
       storePlanes(d, out, i, o, main && nt);
@@ -95,18 +88,11 @@ void composeBatch(ConstPlanes a, const int32_t* node, ConstPlanes b, Planes out,
   });
 }
 
-void ComposeMat4(ConstPlanes a, ConstPlanes b, Planes out, size_t n) { composeBatch(a, nullptr, b, out, n, Mat4Product()); }
+void ComposeMat4(ConstPlanes a, ConstPlanes b, Planes out, size_t n) { composeBatch(a, b, out, n, Mat4Product()); }
 void ComposeAffine(ConstPlanes a, ConstPlanes b, Planes out, size_t n) {
-  composeBatch(a, nullptr, b, out, n, AffineProduct());
+  composeBatch(a, b, out, n, AffineProduct());
 }
-void ComposeMotor(ConstPlanes a, ConstPlanes b, Planes out, size_t n) { composeBatch(a, nullptr, b, out, n, MotorProduct()); }
-void PaletteAffine(ConstPlanes world, const int32_t* node, ConstPlanes inverseBind, Planes out, size_t n) {
-  composeBatch(world, node, inverseBind, out, n, AffineProduct());
-}
-void PaletteMotor(ConstPlanes world, const int32_t* node, ConstPlanes inverseBind, Planes out, size_t n) {
-  composeBatch(world, node, inverseBind, out, n, MotorProduct());
-}
-
+void ComposeMotor(ConstPlanes a, ConstPlanes b, Planes out, size_t n) { composeBatch(a, b, out, n, MotorProduct()); }
 }  // namespace mb::simd::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -120,8 +106,6 @@ HWY_EXPORT(DirectionsMotor);
 HWY_EXPORT(ComposeMat4);
 HWY_EXPORT(ComposeAffine);
 HWY_EXPORT(ComposeMotor);
-HWY_EXPORT(PaletteAffine);
-HWY_EXPORT(PaletteMotor);
 
 void pointsMatrix(const float model[16], ConstPlanes in, Planes out, size_t n) {
   HWY_DYNAMIC_DISPATCH(PointsMatrix)(model, in, out, n);
@@ -140,12 +124,6 @@ void composeAffine(ConstPlanes a, ConstPlanes b, Planes out, size_t n) {
   HWY_DYNAMIC_DISPATCH(ComposeAffine)(a, b, out, n);
 }
 void composeMotor(ConstPlanes a, ConstPlanes b, Planes out, size_t n) { HWY_DYNAMIC_DISPATCH(ComposeMotor)(a, b, out, n); }
-void paletteAffine(ConstPlanes world, const int32_t* node, ConstPlanes inverseBind, Planes out, size_t n) {
-  HWY_DYNAMIC_DISPATCH(PaletteAffine)(world, node, inverseBind, out, n);
-}
-void paletteMotor(ConstPlanes world, const int32_t* node, ConstPlanes inverseBind, Planes out, size_t n) {
-  HWY_DYNAMIC_DISPATCH(PaletteMotor)(world, node, inverseBind, out, n);
-}
 
 }  // namespace mb::simd
 #endif  // HWY_ONCE

@@ -46,7 +46,11 @@ struct Worst {
   std::string where;
   void vec(const float* got, const float* ref, int k, const std::string& what, size_t i) {
     double len = 0, d = 0;
-    for (int c = 0; c < k; ++c) len += double(ref[c]) * ref[c], d = std::max(d, std::fabs(double(got[c]) - ref[c]));
+    for (int c = 0; c < k; ++c) {
+      len += double(ref[c]) * ref[c];
+      const double g = std::fabs(double(got[c]) - ref[c]);
+      d = std::isnan(g) || std::isnan(d) ? g + d : std::max(d, g);  // a NaN (poisoned output) stays
+    }
     const double e = d / std::max(1.0, std::sqrt(len));
     if (!(e <= err)) err = std::isnan(e) ? 1e30 : e, where = what + " item " + std::to_string(i);
   }
@@ -364,25 +368,34 @@ TEST(SimdKernels, ComposeAndPaletteMatchTheShader) {
     EXPECT_LE(w3.err, kTol) << "matrixCompose (affine) " << w3.where;
     EXPECT_LE(wm.err, kTol) << "gp_mm " << wm.where;
 
-    // Palette: world[node[j]] * inverseBind[j], the world gathered.
-    mb::simd::paletteAffine(a12.cplanes(), node.data(), b12.cplanes(), o12.planes(), kItems);
-    mb::simd::paletteMotor(a8.cplanes(), node.data(), b8.cplanes(), o8.planes(), kItems);
+    // Palette: world[node[j]] * inverseBind[j], the operands AoS as the pipelines hold them
+    // (worlds as the hierarchy kernels write them: the affine a12 as mat4s, the motor a8 with a
+    // scale that gp_mm does not apply; the inverse binds b12 as mat4s, b8 as motors), the
+    // outputs poisoned with NaN first.
+    constexpr size_t WM = mb::simd::kHierarchyMotorFloats;
+    std::vector<float> world16(16 * kItems), worldM(WM * kItems, 0.0f), ib16(16 * kItems), ib8(8 * kItems);
+    for (size_t i = 0; i < kItems; ++i) {
+      const MS::mat4 wa = affineAt(a12, i), ba = affineAt(b12, i);
+      for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 4; ++k) world16[16 * i + size_t(4 * c + k)] = wa[c][k], ib16[16 * i + size_t(4 * c + k)] = ba[c][k];
+      for (size_t k = 0; k < 8; ++k) worldM[WM * i + k] = a8.at(k, i), ib8[8 * i + k] = b8.at(k, i);
+      worldM[WM * i + 8] = 3.0f;
+    }
+    std::vector<float> pout16(16 * kItems, std::nanf("")), pout8(8 * kItems, std::nanf(""));
+    mb::simd::paletteAffine(world16.data(), node.data(), ib16.data(), pout16.data(), kItems);
+    mb::simd::paletteMotor(worldM.data(), node.data(), ib8.data(), pout8.data(), kItems);
     Worst pa, pm;
     for (size_t i = 0; i < kItems; ++i) {
       const size_t k = size_t(node[i]);
-      const MS::mat4 e3 = S.matrixCompose(affineAt(a12, k), affineAt(b12, i));
+      const MS::mat4 e4 = S.matrixCompose(affineAt(a12, k), affineAt(b12, i));
       const PS::motor em = P.gp_mm(motorAt(a8, k), motorAt(b8, i));
       for (int c = 0; c < 4; ++c) {
-        const float r3[3] = {e3[c].x, e3[c].y, e3[c].z};
-        float g3[3];
-        for (int q = 0; q < 3; ++q) g3[q] = o12.at(size_t(c * 3 + q), i);
-        pa.vec(g3, r3, 3, "column " + std::to_string(c), i);
+        const float r4[4] = {e4[c].x, e4[c].y, e4[c].z, e4[c].w};
+        pa.vec(&pout16[16 * i + size_t(4 * c)], r4, 4, "column " + std::to_string(c), i);
       }
       for (int h = 0; h < 2; ++h) {
         const float ref[4] = {em[h].x, em[h].y, em[h].z, em[h].w};
-        float got[4];
-        for (int q = 0; q < 4; ++q) got[q] = o8.at(size_t(4 * h + q), i);
-        pm.vec(got, ref, 4, "half " + std::to_string(h), i);
+        pm.vec(&pout8[8 * i + size_t(4 * h)], ref, 4, "half " + std::to_string(h), i);
       }
     }
     EXPECT_LE(pa.err, kTol) << "palette affine " << pa.where;
