@@ -137,8 +137,10 @@ SCENE_GRAPHS=()
 [ -s "$OUT/corpus-graph.json" ] && SCENE_GRAPHS=(--scene-graphs "$OUT/corpus-graph.json")
 ISA=()
 [ -s "$OUT/isa.json" ] && ISA=(--isa "$OUT/isa.json")
+CORPUS_REPORT=()
+[ -s "$OUT/corpus/report.json" ] && CORPUS_REPORT=(--corpus-report "$OUT/corpus/report.json")
 "$MB" claims --report "$OUT/report.json" --bench-json "$OUT/bench.json" --corpus "$CORPUS" \
-  "${SCENE_GRAPHS[@]}" "${ISA[@]}" -o "$OUT/claims.md" --json "$OUT/claims.json"
+  "${SCENE_GRAPHS[@]}" "${ISA[@]}" "${CORPUS_REPORT[@]}" -o "$OUT/claims.md" --json "$OUT/claims.json"
 # The README's figure tables and results/curved/README.md from the figures just written
 # (tests/document/test_documents_agree.py: every document quotes one value per figure).
 python3 scripts/document_figures.py --results "$OUT"

@@ -5,10 +5,8 @@
 // mat4x3 product (36 mul, 27 add) and GLM's own operators.
 #include <algorithm>
 #include <cstdio>
-#include <limits>
 
 #include "harness/bench/affine_compose.h"
-#include "harness/bench/compose_timing.h"
 #include "harness/bench/fastest_sides.h"
 #include "harness/claims/claims_measures.h"
 #include "harness/claims/claims_sources.h"
@@ -43,7 +41,7 @@ OpCounts countAffineCompose() {
   return countOps([&] { (void)bench::affineCompose<Counted>(a, b); });
 }
 
-std::vector<Claim> compositionClaims(bool runTiming, const json& kernelPairs) {
+std::vector<Claim> compositionClaims(const json& kernelPairs) {
   Claim c{"composition", "Composition (table 1)",
           "composing two motors (gp_mm) is cheaper than composing two matrices"};
   c.paper = "gp_mm 48 mul, 40 add vs mat4 * mat4 64 mul, 48 add";
@@ -53,16 +51,20 @@ std::vector<Claim> compositionClaims(bool runTiming, const json& kernelPairs) {
   std::string text = "counted: gp_mm " + opsText(motor) + ", mat4*mat4 " + opsText(mat4) + ", affine mat4x3 " + opsText(affine);
   const bool countedVsMat4 = total(motor) < total(mat4), countedVsAffine = total(motor) < total(affine);
   // Timed, fastest against fastest: the bench's compose pair (every implementation, the Highway
-  // SIMD kernels included) when the run has one; else the in-process timing of the scalar
-  // sources and GLM (its motor side is scalar code only, so it favours the matrix side).
-  std::string timedText = "not timed (--no-run and no bench compose pair)";
+  // SIMD kernels included), read from the bench's JSON; claims times nothing itself (issue 35
+  // item 7: its in-process timing of the scalar sources, quoted beside the bench's figures,
+  // was a second, unexplained figure for the same quantity).
+  std::string timedText = "not timed: no bench compose pair";
   int timedVerdict = 0;  // +1 motor faster than the fastest matrix side, -1 slower or equal within noise, 0 not timed
   std::string fastest, fastestMotor = "motor", timedFrom;
   if (kernelPairs.is_array())
     for (const json& p : kernelPairs) {
       if (p.value("kernel", "") != "compose") continue;
       const bench::FastestSides f = bench::fastestSides(p);
-      if (f.costRatio() < 0) continue;
+      if (f.costRatio() < 0) {
+        timedText = "not timed: the bench compose pair was disturbed (other work shared the cores)";
+        continue;
+      }
       fastest = f.matrixSide, fastestMotor = f.motorSide, timedFrom = "bench compose pair";
       value["bench"] = {{"fastestMotor", f.motorSide}, {"fastestMatrix", f.matrixSide}, {"motorOverFastestMatrix", f.costRatio()},
                         {"itemsPerSecond", f.all}};
@@ -70,43 +72,13 @@ std::vector<Claim> compositionClaims(bool runTiming, const json& kernelPairs) {
                   f.matrixSide + " time " + fmt("%.2fx", f.costRatio());
       timedVerdict = f.costRatio() < kGain ? 1 : -1;
     }
-  // The in-process timing only stands in for a missing bench pair (issue 35 item 7): beside the
-  // bench's figures its scalar, in-cache numbers (affine slower than mat4 through the shim)
-  // were quoted without a definition that explains them.
-  if (runTiming && timedVerdict == 0) {
-    const bench::ComposeTiming t = bench::timeCompositions();
-    double best = std::numeric_limits<double>::max();
-    std::string bestSide;
-    json timed = json::object();
-    std::string list;
-    for (const std::string& s : t.sides) {
-      timed[s] = {{"nsPerCompose", t.nsPerCompose.at(s)}, {"ratioToMotor", t.ratioToMotor.at(s)}};
-      list += (list.empty() ? "" : ", ") + s + " " + fmt("%.2f ns", t.nsPerCompose.at(s));
-      if (s != "motor" && t.ratioToMotor.at(s) < best) best = t.ratioToMotor.at(s), bestSide = s;
-    }
-    value["timed"] = timed;
-    // motor time / fastest matrix time = 1 / (fastest / motor)
-    const double motorOverFastest = 1.0 / best;
-    const std::string inProcess =
-        "in-process timing of the scalar sources and GLM (float, in cache, median of " + std::to_string(t.rounds) +
-        " interleaved rounds of " + std::to_string(t.repeats) + " x " + std::to_string(t.pairs) + " compositions): " + list +
-        "; scalar motor / fastest matrix (" + bestSide + ", paired) " + fmt("%.2fx", motorOverFastest) +
-        "; motor / mat4, both the shim source: " + fmt("%.2fx", 1.0 / t.ratioToMotor.at("mat4"));
-    value["fastestMatrix"] = fastest = bestSide;
-    value["motorOverFastestMatrix"] = motorOverFastest;
-    timedFrom = "in-process timing (scalar motor only)";
-    timedText = inProcess;
-    timedVerdict = motorOverFastest < kGain ? 1 : -1;
-  }
   c.measured = text + "; " + timedText;
   c.measuredValue = value;
   c.method = "counted: gp_mm of shaders/pga.glsl, GLSL mat4 * mat4 and the affine product "
              "(harness/bench/affine_compose.h: mat3 * mat3 + mat3 * vec3 + vec3, the last row 0 0 0 1 implied) on "
              "mb::Counted through the shim, generic inputs; timed, fastest against fastest: the bench's compose pair "
              "(motorbench bench: the shader sources through the shim, GLM's mat4 product, the Highway SIMD kernels "
-             "simd_motor, simd_matrix, simd_affine; items/s), or, without one, harness/bench/compose_timing.h (the "
-             "shader sources compiled with float and GLM's products; its motor side is scalar only, so it favours the "
-             "matrix side). CPU times hold for the CPU measured (see the scope line). Verdict: reproduced when the "
+             "simd_motor, simd_matrix, simd_affine; items/s; an undisturbed pair only). CPU times hold for the CPU measured (see the scope line). Verdict: reproduced when the "
              "motor is cheaper than every matrix form both counted (mul + add) and timed (motor time < 0.95 x the "
              "fastest matrix side); differs when the strongest matrix form is at least as cheap both ways; "
              "inconclusive when the kinds disagree.";

@@ -11,10 +11,9 @@
 #include "harness/claims/claims_sources.h"
 #include "harness/ops/op_kernels.h"
 #include "harness/ops/ops_vertex.h"
-#include "harness/render/render_frame.h"
+#include "harness/claims/claims_uploads.h"
 #include "pipelines/motor/companion.h"
 #include "pipelines/motor/motor_kernels.h"
-#include "pipelines/scene/loader.h"
 
 namespace mb::claims {
 namespace {
@@ -58,7 +57,7 @@ OpCounts countRotorFromQuat() {
   return countOps([&] { (void)K::motor(K::vec4(w, -x, -y, -z), K::vec4(Counted(0.0))); });
 }
 
-std::vector<Claim> conversionClaims() {
+std::vector<Claim> conversionClaims(const Uploads& uploads) {
   std::vector<Claim> out;
   {
     Claim c{"quaternion_to_rotor", "Conversions", "a glTF quaternion becomes a rotor for free (no conversion)"};
@@ -120,17 +119,13 @@ std::vector<Claim> conversionClaims() {
     json value = {{"perVertex", opsJson(overhead)}, {"vertexWithScale", opsJson(with)}, {"vertexWithout", opsJson(without)}};
     std::string floats = "floats per transform not measured";
     double extraFloats = -1;
-    if (auto scene = loadScene("normal_torus")) {
-      FrameSettings settings;
-      settings.width = settings.height = 32;
-      if (auto f = renderFrame(*scene, "motor", settings)) {
-        extraFloats = f->stats.floatsPerTransformWithScale - f->stats.floatsPerTransform;
-        value["floatsPerTransform"] = f->stats.floatsPerTransform;
-        value["floatsPerTransformWithScale"] = f->stats.floatsPerTransformWithScale;
-        floats = fmt("%g", f->stats.floatsPerTransform) + " + " + fmt("%g", extraFloats) + " float(s) per draw";
-      } else {
-        floats = "floats per transform not measured: " + f.error();
-      }
+    if (auto f = uploads.of("normal_torus", "motor")) {
+      extraFloats = f->floatsPerTransformWithScale - f->floatsPerTransform;
+      value["floatsPerTransform"] = f->floatsPerTransform;
+      value["floatsPerTransformWithScale"] = f->floatsPerTransformWithScale;
+      floats = fmt("%g", f->floatsPerTransform) + " + " + fmt("%g", extraFloats) + " float(s) per draw";
+    } else {
+      floats = "floats per transform not measured: " + f.error();
     }
     const double share = total(with) > 0 ? total(overhead) / total(with) : 0;
     value["shareOfVertexOps"] = share;
@@ -140,7 +135,7 @@ std::vector<Claim> conversionClaims() {
     c.method = "counted: motor_transform.glsl's motorRigidVertex (position scaled by the per-draw scale, then sw_mp; "
                "frame by gp_rr, extractNormalTangent, handedness) minus the same pieces run without the scale, on "
                "mb::Counted; floats: PipelineStats floatsPerTransformWithScale - floatsPerTransform of the motor "
-               "pipeline rendering normal_torus. Verdict: reproduced when the per-vertex overhead is at most 5 % of "
+               "pipeline rendering normal_torus (uploads: " + uploads.source() + "). Verdict: reproduced when the per-vertex overhead is at most 5 % of "
                "the vertex's ops and one float per draw (our reading of \"minimal\"; the paper gives no figure). "
                "Not counted: the CPU side (one multiplication per node for the product of scales, four for the "
                "parent's scale on the translation).";

@@ -1,11 +1,12 @@
-// Memory claims, measured from what each pipeline actually uploads: the built-in normal-mapped
-// torus (position + normal + tangent + uv, the paper's 12-float case) and the skinned tube are
-// rendered once per pipeline and PipelineStats is read (bytes summed from the GL upload calls).
+// Memory claims, measured from what each pipeline actually uploads: PipelineStats (bytes summed
+// from the GL upload calls) of the built-in normal-mapped torus (position + normal + tangent +
+// uv, the paper's 12-float case) and the skinned tube, as the report recorded them (claims_uploads.h).
 #include <cmath>
 #include <cstdio>
 #include <map>
 
 #include "harness/claims/claims_sources.h"
+#include "harness/claims/claims_uploads.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/scene/loader.h"
 
@@ -21,22 +22,38 @@ std::string num(double v) {
   return b;
 }
 
-// PipelineStats of `pipeline` on built-in `scene`, or the error. `plain`: the scene without its
-// normal maps and tangents, as a file with neither (the Sample Viewer then has no tangent).
-Result<PipelineStats> uploads(const std::string& scene, const std::string& pipeline, bool plain = false) {
+// PipelineStats of `pipeline` on built-in `scene` without its normal maps and tangents, as a
+// file with neither (the Sample Viewer then has no tangent): rendered, only without a report.
+Result<PipelineStats> plainUploads(const std::string& scene, const std::string& pipeline) {
   auto s = loadScene(scene);
   if (!s) return Result<PipelineStats>::fail(s.error());
-  if (plain) {
-    for (Material& m : s->materials) m.normal = TextureRef{};
-    for (Mesh& mesh : s->meshes)
-      for (Primitive& p : mesh.primitives) p.tangents.clear(), p.hadTangents = false;
-  }
+  for (Material& m : s->materials) m.normal = TextureRef{};
+  for (Mesh& mesh : s->meshes)
+    for (Primitive& p : mesh.primitives) p.tangents.clear(), p.hadTangents = false;
   FrameSettings settings;
   settings.width = settings.height = 32;  // the uploads do not depend on the image size
-  if (!s->animations.empty()) settings.anim.anim = 0;
   auto f = renderFrame(*s, pipeline, settings);
   if (!f) return Result<PipelineStats>::fail(f.error());
   return f->stats;
+}
+
+// Floats per vertex without a normal map from a report: the first of its scenes where both
+// pipelines drew such vertices (report.json memory.bytesPerVertexNotNormalMapped / 4), with its id.
+Result<std::pair<std::string, PipelineStats>> plainFromReport(const Uploads& uploads, const std::string& pipeline,
+                                                              const std::string& other) {
+  for (const std::string& id : uploads.reportSceneIds()) {
+    const nlohmann::json a = uploads.memoryOf(id, pipeline), b = uploads.memoryOf(id, other);
+    auto bytes = [](const nlohmann::json& m) {
+      return m.is_object() && m.value("bytesPerVertexNotNormalMapped", nlohmann::json()).is_number();
+    };
+    if (!bytes(a) || !bytes(b)) continue;
+    PipelineStats s;
+    s.floatsPerVertex = a["bytesPerVertexNotNormalMapped"].get<double>() / 4.0;
+    return std::make_pair(id, s);
+  }
+  return Result<std::pair<std::string, PipelineStats>>::fail(
+      uploads.source() + ": no scene where matrix and motor draw vertices without a normal map "
+      "(memory.bytesPerVertexNotNormalMapped)");
 }
 
 Claim notMeasurable(Claim c, const std::string& why) {
@@ -65,23 +82,30 @@ Claim pairClaim(Claim c, double paperMatrix, double paperMotor, double matrix, d
 
 }  // namespace
 
-std::vector<Claim> memoryClaims() {
+std::vector<Claim> memoryClaims(const Uploads& uploads) {
   std::map<std::string, Result<PipelineStats>> rigid, skinned, plain;
+  std::string plainScene = std::string("the built-in ") + kRigidScene + " with its normal map and tangents removed";
   for (const char* p : {"matrix", "motor"}) {
-    rigid.emplace(p, uploads(kRigidScene, p));
-    plain.emplace(p, uploads(kRigidScene, p, true));
-    skinned.emplace(p, uploads(kSkinnedScene, p));
+    rigid.emplace(p, uploads.of(kRigidScene, p));
+    skinned.emplace(p, uploads.of(kSkinnedScene, p));
+    if (!uploads.fromReport()) {
+      plain.emplace(p, plainUploads(kRigidScene, p));
+      continue;
+    }
+    auto r = plainFromReport(uploads, p, std::string(p) == "matrix" ? "motor" : "matrix");
+    if (r) plainScene = "the report's scene " + r->first + " (its vertices without a normal map)";
+    plain.emplace(p, r ? Result<PipelineStats>(r->second) : Result<PipelineStats>::fail(r.error()));
   }
   const std::string section = "Memory";
   std::vector<Claim> out;
   Claim fpv{"floats_per_vertex", section, "vertex with tangent-space normal mapping: 12 floats (3 position, 3 normal, "
             "4 tangent, 2 uv) vs 9 (3 position, 4 tangent rotor, 2 uv)"};
   fpv.method = std::string("PipelineStats.floatsPerVertex (shading-attribute bytes uploaded / vertices / 4) of "
-                           "each pipeline on the built-in ") + kRigidScene + " (normal-mapped, tangents generated)";
+                           "each pipeline on the built-in ") + kRigidScene + " (normal-mapped, tangents generated); uploads: " + uploads.source();
   Claim fpvPlain{"floats_per_vertex_not_normal_mapped", section, "(not claimed by the paper) vertex without normal map "
                  "or TANGENT: the Sample Viewer uploads 8 floats (3 position, 3 normal, 2 uv), the motor pipeline still 9"};
-  fpvPlain.method = std::string("PipelineStats.floatsPerVertex of each pipeline on the built-in ") + kRigidScene +
-                    " with its normal map and tangents removed (as a file with neither), the matrix pipeline "
+  fpvPlain.method = "PipelineStats.floatsPerVertex of each pipeline on " + plainScene +
+                    " (as a file with neither), the matrix pipeline "
                     "uploading a tangent only where the Sample Viewer would (issue 18)";
   Claim fpt{"floats_per_transform", section, "floats per transform: 4x4 model matrix (+ normal matrix) vs 8-float motor"};
   fpt.method = std::string("PipelineStats.floatsPerTransform (per-draw transform uniforms uploaded, in floats) on ") +
@@ -100,7 +124,7 @@ std::vector<Claim> memoryClaims() {
   vps.method = "matrix bytes per vertex / motor bytes per vertex - 1, from the same uploads as floats_per_vertex";
   Claim fpj{"floats_per_joint", section, "(not claimed by the paper) floats per skin joint uploaded per frame"};
   fpj.method = std::string("PipelineStats.floatsPerJoint on the built-in ") + kSkinnedScene +
-               " (joint palette bytes of one frame / joints / 4)";
+               " (joint palette bytes of one frame / joints / 4); uploads: " + uploads.source();
   if (!rigid.at("matrix") || !rigid.at("motor")) {
     const std::string why = !rigid.at("matrix") ? rigid.at("matrix").error() : rigid.at("motor").error();
     out = {notMeasurable(fpv, why), notMeasurable(fpt, why), notMeasurable(fpts, why), notMeasurable(vps, why)};

@@ -22,14 +22,15 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/claims/claims_model.h"
+#include "harness/claims/claims_uploads.h"
 
 namespace mb::claims {
 
 std::vector<Claim> opClaims();
 
-// Renders built-in scenes with each pipeline (needs GL); a failure makes the claims
-// "not measurable here" with the reason.
-std::vector<Claim> memoryClaims();
+// Uploads of the built-in scenes per pipeline (claims_uploads.h: the report's, else rendered);
+// a missing one makes the claims "not measurable here" with the reason.
+std::vector<Claim> memoryClaims(const Uploads& uploads);
 
 struct SpeedInputs {
   nlohmann::json kernelPairs;  // report_bench.h kernelPairs()["pairs"], or null
@@ -72,22 +73,22 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in);
 std::vector<Claim> skinningClaims();
 
 // motor_c vs matrix_c (issue 29): bytes from uploads, worst PSNR against matrix (from `report`'s
-// summary when it has both, the same figure the report shows; else renders at rest), counted
+// summary, the same figure the report shows; renders at rest only without a report), counted
 // ops, ISA from `isa` (a `motorbench isa` JSON, or null: that row not measurable); and motor_cf
-// against motor_c (the paper's fragment-rotor suggestion). Needs GL.
+// against motor_c (the paper's fragment-rotor suggestion). Needs GL only without a report.
 std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& isaSource,
                                  const nlohmann::json& report = nullptr, const std::string& reportSource = "");
 
 // Reviewer baselines (Verdict::Baseline): counted and SPIR-V.
 std::vector<Claim> baselineClaims();
 
-// Curved space (section "Curved space"): floats per instance, ops per vertex, frame time
-// (when `runTiming`, `frames` per pipeline), drift over 10^6 steps. Needs GL.
-// `reportScenes` (report.json's "scenes", or null): their curved scenes' timing is the frame-time
-// figure when present; else timed here when `runTiming`.
-std::vector<Claim> curvedClaims(bool runTiming, int frames, const nlohmann::json& reportScenes = nullptr);
+// Curved space (section "Curved space"): floats per instance (`uploads`), ops per vertex, frame
+// time, drift over 10^6 steps. `reportScenes` (report.json's "scenes", or null): their curved
+// scenes' timing is the frame-time figure when present; else timed here when `runTiming`
+// (`frames` per pipeline; needs GL).
+std::vector<Claim> curvedClaims(bool runTiming, int frames, const nlohmann::json& reportScenes, const Uploads& uploads);
 
-// Every pipeline's bytes per vertex, floats per transform and joint (renders of built-in
+// Every pipeline's bytes per vertex, floats per transform and joint (`uploads` of built-in
 // scenes), ops per vertex (counted and SPIR-V) and time ratios (`timings`: {scene: timing JSON},
 // or null), the motor pipeline judged against the best matrix-side pipeline (issue 16); and the
 // CPU kernels vertex_frame / skinned_vertex, the fastest motor implementation against the
@@ -98,12 +99,12 @@ std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const 
                                            const nlohmann::json& kernelPairs = nullptr,
                                            const std::string& kernelSource = "",
                                            const nlohmann::json& sceneStats = nullptr,
-                                           const nlohmann::json& timingMachine = nullptr);
+                                           const nlohmann::json& timingMachine = nullptr,
+                                           const Uploads& uploads = Uploads());
 
-// Composition, counted (gp_mm, mat4 * mat4, affine mat4x3), the bench's compose pair when
-// `kernelPairs` has one (every side, SIMD included) and, when `runTiming`, timed side by side
-// (harness/bench/compose_timing.h).
-std::vector<Claim> compositionClaims(bool runTiming, const nlohmann::json& kernelPairs = nullptr);
+// Composition, counted (gp_mm, mat4 * mat4, affine mat4x3), and timed by the bench's compose
+// pair when `kernelPairs` has an undisturbed one (every side, SIMD included); nothing timed here.
+std::vector<Claim> compositionClaims(const nlohmann::json& kernelPairs = nullptr);
 
 // Scene-graph update: the hierarchy bench pair (`kernelPairs`, report_bench.h's pairs, or null)
 // and Pipeline::update per scene (`timings`: {scene: timing JSON}, or null), motor against the
@@ -111,9 +112,9 @@ std::vector<Claim> compositionClaims(bool runTiming, const nlohmann::json& kerne
 std::vector<Claim> sceneGraphClaims(const nlohmann::json& kernelPairs, const nlohmann::json& timings,
                                     const std::string& timingSource, const nlohmann::json& sceneStats = nullptr);
 
-// Quaternion -> rotor conversion cost and the uniform-scale overhead per vertex (renders
-// normal_torus for the floats per transform; needs GL).
-std::vector<Claim> conversionClaims();
+// Quaternion -> rotor conversion cost and the uniform-scale overhead per vertex (normal_torus's
+// motor uploads for the floats per transform).
+std::vector<Claim> conversionClaims(const Uploads& uploads = Uploads());
 
 // The paper's handedness load rule on every frame of the built-in scenes.
 std::vector<Claim> handednessClaims();

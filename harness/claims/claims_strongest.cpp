@@ -13,11 +13,10 @@
 
 #include "harness/claims/claims_device.h"
 #include "harness/claims/claims_sources.h"
+#include "harness/claims/claims_uploads.h"
 #include "harness/claims/claims_vertex_ops.h"
 #include "harness/claims/claims_work.h"
 #include "harness/ops/ops_vertex.h"
-#include "harness/render/render_frame.h"
-#include "pipelines/scene/loader.h"
 
 namespace mb::claims {
 namespace {
@@ -98,20 +97,12 @@ Claim judge(const Figure& f) {
   return c;
 }
 
-// PipelineStats of every pipeline on a built-in scene.
-std::map<std::string, PipelineStats> statsOn(const std::string& sceneName, std::string& missing) {
+// PipelineStats of every pipeline on a built-in scene (claims_uploads.h).
+std::map<std::string, PipelineStats> statsOn(const Uploads& uploads, const std::string& sceneName, std::string& missing) {
   std::map<std::string, PipelineStats> out;
-  auto scene = loadScene(sceneName);
-  if (!scene) {
-    missing += scene.error() + "; ";
-    return out;
-  }
-  FrameSettings settings;
-  settings.width = settings.height = 32;  // the uploads do not depend on the image size
-  if (!scene->animations.empty()) settings.anim.anim = 0;
   for (const std::string& p : pipelineNames()) {
-    auto f = renderFrame(*scene, p, settings);
-    if (f) out[p] = f->stats;
+    auto f = uploads.of(sceneName, p);
+    if (f) out[p] = *f;
     else missing += p + ": " + f.error() + "; ";
   }
   return out;
@@ -219,18 +210,19 @@ Claim kernelClaim(const std::string& kernel, const json& pairs, const std::strin
 
 std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource,
                                            const nlohmann::json& kernelPairs, const std::string& kernelSource,
-                                           const nlohmann::json& sceneStats, const nlohmann::json& timingMachine) {
+                                           const nlohmann::json& sceneStats, const nlohmann::json& timingMachine,
+                                           const Uploads& uploads) {
   std::vector<Claim> out;
   for (const char* k : {"vertex_frame", "skinned_vertex"}) out.push_back(kernelClaim(k, kernelPairs, kernelSource));
   // ---- memory, from the uploads -----------------------------------------------------------
   std::string rigidMissing, skinMissing;
-  const auto rigid = statsOn("normal_torus", rigidMissing);
-  const auto skinned = statsOn("skinned_tube", skinMissing);
+  const auto rigid = statsOn(uploads, "normal_torus", rigidMissing);
+  const auto skinned = statsOn(uploads, "skinned_tube", skinMissing);
   auto trim = [](std::string s) { return s.size() >= 2 ? s.substr(0, s.size() - 2) : s; };
   Figure bpv{"bytes_per_vertex_vs_strongest", "bytes per vertex (normal-mapped: position, frame, uv)",
              "bytes/vertex",
              "PipelineStats.vertexBytes / vertices (the shading attributes uploaded) of every pipeline on the "
-             "built-in normal_torus (normal-mapped, so every pipeline uploads a full frame)",
+             "built-in normal_torus (normal-mapped, so every pipeline uploads a full frame); uploads: " + uploads.source(),
              "motor 36 vs matrix 48 bytes (-25 %)"};
   Figure fpt{"floats_per_transform_vs_strongest", "floats per transform (per-draw uniforms)", "floats",
              "PipelineStats.floatsPerTransform of every pipeline on normal_torus (model + normal matrix, or motor)",

@@ -208,7 +208,7 @@ void add(std::vector<claims::Claim>& all, std::vector<claims::Claim> rows, const
 }
 
 int runClaims(const std::vector<std::string>& argv) {
-  const Args args(argv, {{"o", "output", "json", "report", "bench-json", "isa", "corpus", "scene-graphs", "frames", "gpu"}, {"no-run"}, {}});
+  const Args args(argv, {{"o", "output", "json", "report", "corpus-report", "bench-json", "isa", "corpus", "scene-graphs", "frames", "gpu"}, {"no-run"}, {}});
   if (!args.error().empty()) return fail(args.error());
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
   if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());  // the report it runs inherits MB_GPU
@@ -236,8 +236,14 @@ int runClaims(const std::vector<std::string>& argv) {
     corpus.sceneGraphSource = std::to_string(files->size()) + " scene graphs of " + *g;
   }
   // Given a report, every upload figure is the report's (claims_uploads.h): no GL context here.
-  const claims::Uploads uploads =
+  claims::Uploads uploads =
       report.is_object() ? claims::Uploads(report.value("scenes", json()), *args.get("report")) : claims::Uploads();
+  if (auto c = args.get("corpus-report"); c && report.is_object()) {  // real files: vertices without a normal map
+    std::ifstream f(*c);
+    const json corpusReport = json::parse(f, nullptr, false);
+    if (corpusReport.is_discarded() || !corpusReport.is_object()) return fail(*c + ": not a report.json");
+    uploads.addReport(corpusReport.value("scenes", json()), *c);
+  }
   json sources = {{"opCounts", "shaders/pga.glsl, shaders/matrix_transform.glsl, shaders/motor_transform.glsl "
                                 "executed on mb::Counted; SPIR-V via glslangValidator + spirv-opt"},
                   {"memory", "PipelineStats of the built-in normal_torus and skinned_tube: " + uploads.source()},
@@ -318,7 +324,7 @@ int runClaims(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(claims, "claims",
-           "[-o FILE] [--json FILE] [--report report.json] [--bench-json FILE] [--isa FILE] [--corpus DIR] "
+           "[-o FILE] [--json FILE] [--report report.json] [--corpus-report FILE] [--bench-json FILE] [--isa FILE] [--corpus DIR] "
            "[--scene-graphs FILE|DIR] [--frames N] [--no-run] [--gpu auto|llvmpipe|N]",
            "every quantitative claim of the paper: paper value, measured value, method, verdict (Markdown/JSON)",
            mb::runClaims);
@@ -327,6 +333,8 @@ MB_COMMAND_HELP(claims, "claims",
                "                     (missing folders are created; both checked before the work)\n"
                "  --report FILE      kernel ratios, frame timings, uploads and image figures from a report.json;\n"
                "                     with it claims opens no GL context, renders and times nothing\n"
+               "  --corpus-report F  a report.json of real files: the uploads of vertices without a normal map\n"
+               "                     (with --report)\n"
                "  --bench-json FILE  kernel ratios from a `motorbench bench --out` file\n"
                "  --isa FILE         ISA statistics (a `motorbench isa --json` file; else the report's \"isa\")\n"
                "  --scene-graphs F   scale statistics of a corpus: an inspect --json file or a folder, e.g.\n"

@@ -58,7 +58,7 @@ TEST(ClaimsComposition, AffineProductCountsAndEqualsGlm) {
 // The row, counted only: gp_mm 48/40 and mat4 64/48 (the paper's table, hand-checkable), affine
 // 36/27; the motor beats mat4 but not the affine product, so the verdict is "differs".
 TEST(ClaimsComposition, RowCountsEveryFormAndJudgesAgainstTheAffineProduct) {
-  const claims::Claim c = only(claims::compositionClaims(false), "composition");
+  const claims::Claim c = only(claims::compositionClaims(), "composition");
   const json& counted = c.measuredValue["counted"];
   expectOps(counted["gp_mm"], 48, 40, "gp_mm");
   expectOps(counted["mat4"], 64, 48, "mat4");
