@@ -28,7 +28,7 @@ MIN_TIME=${MIN_TIME:-0.1}
 [ -x "$MB" ] || { echo "bench_targets: no $MB (build the motorbench target first)" >&2; exit 2; }
 mkdir -p "$OUT"
 
-FILTER='^(stream/copy|(point|direction|vertex_frame|skinned_vertex|skinned_vertex_gather)/(in_cache|out_of_cache)/(glm|simd_matrix|simd_motor)|(compose|palette|hierarchy|hierarchy_wide|hierarchy_skeleton)/(glm|simd_matrix|simd_affine|simd_motor))$'
+FILTER='^(stream/copy|(point|direction|vertex_frame|skinned_vertex|skinned_vertex_gather)/(in_cache|out_of_cache)/(glm|simd_matrix|simd_motor)|(compose|palette|palette/out_of_cache|hierarchy|hierarchy_wide|hierarchy_skeleton)/(glm|simd_matrix|simd_affine|simd_motor))$'
 
 run() {  # run NAME [--simd-target T]
   local name=$1

@@ -14,9 +14,14 @@
 namespace mb::bench {
 namespace {
 
-// A skeleton of kJoints joints whose nodes are spread over kNodes world transforms (in cache:
-// about 16 KiB of mat4 worlds).
-constexpr size_t kNodes = 256, kJoints = 128;
+// In cache: a skeleton of 128 joints whose nodes are spread over 256 world transforms (about
+// 16 KiB of mat4 worlds). Out of cache: 2^19 joints over 2^20 nodes (GLM's worlds 64 MiB, its
+// inverse binds and outputs 32 MiB each; the motor side's smallest stream 16 MiB), far beyond
+// the last-level cache, the worlds read in random order as the joints' nodes fall.
+struct PaletteSize {
+  size_t nodes, joints;
+};
+PaletteSize paletteSize(Size s) { return s == Size::InCache ? PaletteSize{256, 128} : PaletteSize{1u << 20, 1u << 19}; }
 
 struct PaletteData {
   std::vector<int32_t> node;
@@ -26,7 +31,9 @@ struct PaletteData {
   // The SIMD sides' copies (AoS): affine worlds and inverse binds 16 floats, motor worlds
   // kHierarchyMotorFloats (motor, scale 1, unused), motor inverse binds 8; outputs 16 / 8.
   std::vector<float> world16, inverseBind16, worldMotor, inverseBind8, outFloats;
-  PaletteData() : out(kJoints), outM(kJoints), outG(kJoints), outFloats(16 * kJoints) {
+  size_t joints;
+  explicit PaletteData(PaletteSize z)
+      : out(z.joints), outM(z.joints), outG(z.joints), outFloats(16 * z.joints), joints(z.joints) {
     Rng r;
     auto add = [](const Transform& t, std::vector<MS::mat4>& m, std::vector<PS::motor>& p, std::vector<glm::mat4>& g,
                   std::vector<float>& f16, std::vector<float>& fm, size_t motorFloats) {
@@ -41,82 +48,89 @@ struct PaletteData {
       for (int k = 0; k < 4; ++k) fm[at + size_t(k)] = t.motor[0][k], fm[at + 4 + size_t(k)] = t.motor[1][k];
       if (motorFloats > 8) fm[at + 8] = 1.0f;  // the hierarchy's world scale
     };
-    for (size_t i = 0; i < kNodes; ++i)
+    for (size_t i = 0; i < z.nodes; ++i)
       add(randomTransform(r), world, worldM, worldG, world16, worldMotor, simd::kHierarchyMotorFloats);
-    for (size_t j = 0; j < kJoints; ++j) {
+    for (size_t j = 0; j < z.joints; ++j) {
       add(randomTransform(r), inverseBind, inverseBindM, inverseBindG, inverseBind16, inverseBind8, 8);
-      node.push_back(int32_t(r.index(int(kNodes))));
+      node.push_back(int32_t(r.index(int(z.nodes))));
     }
   }
 };
 
-PaletteData& paletteData() {
-  static PaletteData d;
-  return d;
+PaletteData& paletteData(Size s) {
+  if (s == Size::InCache) {
+    static PaletteData small(paletteSize(s));
+    return small;
+  }
+  static PaletteData big(paletteSize(s));
+  return big;
 }
 
 // One pass over every joint with `joint(d, j)`; `bytes` per joint read and written.
-template <class F> [[gnu::flatten]] void palettePass(benchmark::State& state, size_t bytes, F joint) {
-  PaletteData& d = paletteData();
+template <class F> [[gnu::flatten]] void palettePass(benchmark::State& state, Size s, size_t bytes, F joint) {
+  PaletteData& d = paletteData(s);
   for (auto _ : state) {
-    for (size_t j = 0; j < kJoints; ++j) joint(d, j);
+    for (size_t j = 0; j < d.joints; ++j) joint(d, j);
     benchmark::ClobberMemory();
   }
-  setThroughput(state, kJoints, kJoints * bytes, Size::InCache);
+  setThroughput(state, d.joints, d.joints * bytes, s);
 }
 
-void paletteMatrix(benchmark::State& state) {
+void paletteMatrix(benchmark::State& state, Size s) {
   MS S;
-  palettePass(state, 3 * sizeof(MS::mat4), [&S](PaletteData& d, size_t j) {
+  palettePass(state, s, 3 * sizeof(MS::mat4), [&S](PaletteData& d, size_t j) {
     d.out[j] = S.matrixCompose(d.world[size_t(d.node[j])], d.inverseBind[j]);
   });
 }
 
-void paletteMotor(benchmark::State& state) {
+void paletteMotor(benchmark::State& state, Size s) {
   PS P;
-  palettePass(state, 3 * sizeof(PS::motor), [&P](PaletteData& d, size_t j) {
+  palettePass(state, s, 3 * sizeof(PS::motor), [&P](PaletteData& d, size_t j) {
     d.outM[j] = P.gp_mm(d.worldM[size_t(d.node[j])], d.inverseBindM[j]);
   });
 }
 
-void paletteGlm(benchmark::State& state) {
-  palettePass(state, 3 * sizeof(glm::mat4), [](PaletteData& d, size_t j) {
+void paletteGlm(benchmark::State& state, Size s) {
+  palettePass(state, s, 3 * sizeof(glm::mat4), [](PaletteData& d, size_t j) {
     d.outG[j] = d.worldG[size_t(d.node[j])] * d.inverseBindG[j];
   });
 }
 
 // `floats`: per joint, world + inverse bind + out (the world's bytes read, the scale's included).
-template <class K> void paletteSimd(benchmark::State& state, size_t floats, K kernel) {
-  PaletteData& d = paletteData();
+template <class K> void paletteSimd(benchmark::State& state, Size s, size_t floats, K kernel) {
+  PaletteData& d = paletteData(s);
   for (auto _ : state) {
     kernel(d);
     benchmark::DoNotOptimize(d.outFloats.data());
     benchmark::ClobberMemory();
   }
   setSimdLabel(state);
-  setThroughput(state, kJoints, kJoints * floats * sizeof(float), Size::InCache);
+  setThroughput(state, d.joints, d.joints * floats * sizeof(float), s);
 }
 
-void paletteSimdAffine(benchmark::State& state) {
-  paletteSimd(state, 3 * 16, [](PaletteData& d) {
-    simd::paletteAffine(d.world16.data(), d.node.data(), d.inverseBind16.data(), d.outFloats.data(), kJoints);
+void paletteSimdAffine(benchmark::State& state, Size s) {
+  paletteSimd(state, s, 3 * 16, [](PaletteData& d) {
+    simd::paletteAffine(d.world16.data(), d.node.data(), d.inverseBind16.data(), d.outFloats.data(), d.joints);
   });
 }
 
-void paletteSimdMotor(benchmark::State& state) {
-  paletteSimd(state, simd::kHierarchyMotorFloats + 8 + 8, [](PaletteData& d) {
-    simd::paletteMotor(d.worldMotor.data(), d.node.data(), d.inverseBind8.data(), d.outFloats.data(), kJoints);
+void paletteSimdMotor(benchmark::State& state, Size s) {
+  paletteSimd(state, s, simd::kHierarchyMotorFloats + 8 + 8, [](PaletteData& d) {
+    simd::paletteMotor(d.worldMotor.data(), d.node.data(), d.inverseBind8.data(), d.outFloats.data(), d.joints);
   });
 }
 
 }  // namespace
 
+// In cache as "palette/<side>", out of cache as "palette/out_of_cache/<side>".
 void registerPaletteBenchmarks() {
-  registerKernel(std::string("palette/") + kMatrix, paletteMatrix);
-  registerKernel(std::string("palette/") + kMotor, paletteMotor);
-  registerKernel(std::string("palette/") + kGlm, paletteGlm);
-  registerKernel(std::string("palette/") + kSimdMatrix, paletteSimdAffine);
-  registerKernel(std::string("palette/") + kSimdMotor, paletteSimdMotor);
+  using Fn = void (*)(benchmark::State&, Size);
+  const std::pair<const char*, Fn> sides[] = {
+      {kMatrix, paletteMatrix}, {kMotor, paletteMotor}, {kGlm, paletteGlm}, {kSimdMatrix, paletteSimdAffine}, {kSimdMotor, paletteSimdMotor}};
+  for (Size s : {Size::InCache, Size::OutOfCache})
+    for (const auto& [side, fn] : sides)
+      registerKernel(std::string(s == Size::InCache ? "palette/" : "palette/out_of_cache/") + side,
+                     [s, fn = fn](benchmark::State& st) { fn(st, s); });
 }
 
 }  // namespace mb::bench
