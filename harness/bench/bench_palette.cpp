@@ -18,10 +18,7 @@ namespace {
 // 16 KiB of mat4 worlds). Out of cache: 2^19 joints over 2^20 nodes (GLM's worlds 64 MiB, its
 // inverse binds and outputs 32 MiB each; the motor side's smallest stream 16 MiB), far beyond
 // the last-level cache, the worlds read in random order as the joints' nodes fall.
-struct PaletteSize {
-  size_t nodes, joints;
-};
-PaletteSize paletteSize(Size s) { return s == Size::InCache ? PaletteSize{256, 128} : PaletteSize{1u << 20, 1u << 19}; }
+size_t paletteJoints(Size s) { return s == Size::InCache ? 128 : size_t(1) << 19; }
 
 struct PaletteData {
   std::vector<int32_t> node;
@@ -32,8 +29,10 @@ struct PaletteData {
   // kHierarchyMotorFloats (motor, scale 1, unused), motor inverse binds 8; outputs 16 / 8.
   std::vector<float> world16, inverseBind16, worldMotor, inverseBind8, outFloats;
   size_t joints;
-  explicit PaletteData(PaletteSize z)
-      : out(z.joints), outM(z.joints), outG(z.joints), outFloats(16 * z.joints), joints(z.joints) {
+  // `jointCount` joints over twice as many nodes.
+  explicit PaletteData(size_t jointCount)
+      : out(jointCount), outM(jointCount), outG(jointCount), outFloats(16 * jointCount), joints(jointCount) {
+    const size_t nodes = 2 * joints;
     Rng r;
     auto add = [](const Transform& t, std::vector<MS::mat4>& m, std::vector<PS::motor>& p, std::vector<glm::mat4>& g,
                   std::vector<float>& f16, std::vector<float>& fm, size_t motorFloats) {
@@ -48,23 +47,16 @@ struct PaletteData {
       for (int k = 0; k < 4; ++k) fm[at + size_t(k)] = t.motor[0][k], fm[at + 4 + size_t(k)] = t.motor[1][k];
       if (motorFloats > 8) fm[at + 8] = 1.0f;  // the hierarchy's world scale
     };
-    for (size_t i = 0; i < z.nodes; ++i)
+    for (size_t i = 0; i < nodes; ++i)
       add(randomTransform(r), world, worldM, worldG, world16, worldMotor, simd::kHierarchyMotorFloats);
-    for (size_t j = 0; j < z.joints; ++j) {
+    for (size_t j = 0; j < joints; ++j) {
       add(randomTransform(r), inverseBind, inverseBindM, inverseBindG, inverseBind16, inverseBind8, 8);
-      node.push_back(int32_t(r.index(int(z.nodes))));
+      node.push_back(int32_t(r.index(int(nodes))));
     }
   }
 };
 
-PaletteData& paletteData(Size s) {
-  if (s == Size::InCache) {
-    static PaletteData small(paletteSize(s));
-    return small;
-  }
-  static PaletteData big(paletteSize(s));
-  return big;
-}
+PaletteData& paletteData(Size s) { return perSize<PaletteData>(s, paletteJoints(s)); }
 
 // One pass over every joint with `joint(d, j)`; `bytes` per joint read and written.
 template <class F> [[gnu::flatten]] void palettePass(benchmark::State& state, Size s, size_t bytes, F joint) {
