@@ -50,7 +50,7 @@ struct PipelineStats {
   uint64_t normalMappedVertexBytes = 0, normalMappedVertices = 0;
   // Floats per vertex / transform / joint, derived from the upload sizes and strides.
   double floatsPerVertex = 0, floatsPerTransform = 0, floatsPerJoint = 0;
-  // Per transform with the per-draw scale uniform the transform needs (motor: 8 + u_Scale;
+  // Per transform with the per-draw float the transform needs (motor: 8 + u_Scale; affine: + u_Mirror;
   // a pipeline without one: floatsPerTransform), from the bytes uploaded for the same draws.
   double floatsPerTransformWithScale = 0;
   int draws = 0;                      // draw calls of the last render()

@@ -80,7 +80,7 @@ void summary(Document& d, const json& r) {
     return spreadText(spread, 3) + scenesText(spread) +
            noneText(spread, "whose every draw is skinned or instanced (a joint palette or the per-instance stream moves the mesh)");
   });
-  row("floats per transform incl. the per-draw scale", fromSpread("floatsPerTransformWithScale", 3));
+  row("floats per transform incl. the per-draw float (motor scale, affine mirror)", fromSpread("floatsPerTransformWithScale", 3));
   row("floats per joint (skinned scenes)", fromSpread("floatsPerJoint", 3));
   row("load-time conversion [ms]", fromSpread("conversionMs", 3));
   const json& ops = r["opsPerVertex"];

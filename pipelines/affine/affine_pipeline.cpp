@@ -231,6 +231,7 @@ void AffinePipeline::render(const View& view) {
     return p;
   };
   uint64_t transformBytes = 0, transforms = 0;
+  uint64_t mirrorBytes = 0;  // u_Mirror of the per-draw transforms: their per-draw float, as the motor's u_Scale
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.at(d);
     const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
@@ -275,15 +276,17 @@ void AffinePipeline::render(const View& view) {
       gl::uniformMatrix3(program.uniform("u_NormalMatrix"), 1, glm::value_ptr(normal), transformBytes);
       ++transforms;
     }
-    gl::uniform1f(program.uniform("u_Mirror"), sign, stats_.uniformBytesPerFrame);
+    gl::uniform1f(program.uniform("u_Mirror"), sign, palette ? stats_.uniformBytesPerFrame : mirrorBytes);
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
     gl::setWinding(sign < 0.0f);
     stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
     ++stats_.draws;
   }
   gl::endDraws();
-  stats_.uniformBytesPerFrame += transformBytes;
+  stats_.uniformBytesPerFrame += transformBytes + mirrorBytes;
   stats_.floatsPerTransform = gl::floatsPer(transformBytes, transforms);
+  // Beside the motor's 8 + u_Scale (issue 35 item 7): mat4x3 + mat3 + the mirror float.
+  stats_.floatsPerTransformWithScale = gl::floatsPer(transformBytes + mirrorBytes, transforms);
 }
 
 // matrix_c's draws that cannot fold the mesh's cube (skinned, instanced) dequantise per vertex.

@@ -82,6 +82,24 @@ TEST(ClaimsOps, VertexFrameMotorIsWhatTheShaderExecutes) {
   EXPECT_NE(c.method.find("Rule: "), std::string::npos) << c.method;
 }
 
+// Uploads rendered here (no report): per-draw floats with each side's per-draw extra, hand-derived
+// from the uniforms: matrix 16 + 16; affine mat4x3 12 + mat3 9 + its mirror sign 1 = 22 (issue 35
+// item 7: counted like the motor's scale); motor 8 + u_Scale 1 = 9.
+TEST(ClaimsUploads, PerDrawFloatsCountEverySidesExtraFloat) {
+  const claims::Uploads here;
+  auto fptws = [&](const char* p) {
+    auto s = here.of("normal_torus", p);
+    EXPECT_TRUE(s) << s.error();
+    return s ? s->floatsPerTransformWithScale : -1.0;
+  };
+  EXPECT_EQ(fptws("matrix"), 32.0);
+  EXPECT_EQ(fptws("affine"), 22.0);
+  EXPECT_EQ(fptws("motor"), 9.0);
+  auto affine = here.of("normal_torus", "affine");
+  ASSERT_TRUE(affine) << affine.error();
+  EXPECT_EQ(affine->floatsPerTransform, 21.0);
+}
+
 // Scene-graph update from synthetic inputs: the fastest non-motor side is the baseline (glm
 // here, not matrix), hybrid is never the baseline, and a gain in one measurement with a loss in
 // the other is inconclusive.
