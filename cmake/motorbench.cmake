@@ -26,7 +26,8 @@ endif()
 # built file by file in the measuring build and joins batches only in the quick -O1 test build
 # (MB_QUICK_BUILD=ON), which measures nothing. Files that define an implementation macro
 # (tinygltf's, stb's) or re-include themselves per SIMD target (Highway's HWY_TARGET_INCLUDE)
-# stay on their own.
+# stay on their own, and so does a file whose first line is "// MB_UNITY_ALONE" (a test whose
+# file-local helpers, load/render/kCases, are named as in other tests of its room).
 option(MB_UNITY "Unity builds (batches of MB_UNITY_BATCH files) where they do not touch measured code" OFF)
 set(MB_UNITY_BATCH 8 CACHE STRING "Files per unity batch (MB_UNITY=ON)")
 
@@ -42,7 +43,7 @@ function(mb_unity target measured)
       set(src "${dir}/${src}")
     endif()
     if(src MATCHES "\\.cpp$" AND EXISTS "${src}")
-      file(STRINGS "${src}" alone REGEX "HWY_TARGET_INCLUDE|#define [A-Z_]+_IMPLEMENTATION")
+      file(STRINGS "${src}" alone REGEX "HWY_TARGET_INCLUDE|#define [A-Z_]+_IMPLEMENTATION|^// MB_UNITY_ALONE")
       if(alone)
         set_source_files_properties("${src}" TARGET_DIRECTORY ${target} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
       endif()
