@@ -135,6 +135,7 @@ json kernelPairs(const json& bench) {
       if (p.contains(side) && p[side].contains("label")) target = p[side]["label"];
     p["machine"] = {{"cpu", context.value("cpu_model", json(nullptr))},
                     {"logicalCores", context.value("num_cpus", json(nullptr))}, {"simdTarget", target}};
+    p["machine_text"] = pairMachineText(p);
   }
   return {{"context", context}, {"pairs", pairs}, {"probe", probe}};
 }

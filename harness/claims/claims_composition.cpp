@@ -8,6 +8,7 @@
 
 #include "harness/bench/affine_compose.h"
 #include "harness/bench/fastest_sides.h"
+#include "harness/bench/report_bench.h"
 #include "harness/claims/claims_measures.h"
 #include "harness/claims/claims_sources.h"
 #include "harness/claims/claims_work.h"
@@ -69,7 +70,7 @@ std::vector<Claim> compositionClaims(const json& kernelPairs) {
       value["bench"] = {{"fastestMotor", f.motorSide}, {"fastestMatrix", f.matrixSide}, {"motorOverFastestMatrix", f.costRatio()},
                         {"itemsPerSecond", f.all}};
       timedText = "bench compose pair (items/s: " + f.all + "): fastest motor " + f.motorSide + " / fastest matrix " +
-                  f.matrixSide + " time " + fmt("%.2fx", f.costRatio());
+                  f.matrixSide + " time " + fmt("%.2fx", f.costRatio()) + " on " + report::pairMachineText(p);
       timedVerdict = f.costRatio() < kGain ? 1 : -1;
     }
   c.measured = text + "; " + timedText;
@@ -126,7 +127,8 @@ std::vector<Claim> sceneGraphClaims(const json& kernelPairs, const json& timings
         const bench::FastestSides f = bench::fastestSides(p);
         if (f.costRatio() > 0) {
           e.cost = f.costRatio();
-          e.detail = "fastest motor side " + f.motorSide + ", fastest matrix side " + f.matrixSide + " (nodes/s: " + f.all + ")";
+          e.detail = "fastest motor side " + f.motorSide + ", fastest matrix side " + f.matrixSide + " (nodes/s: " + f.all +
+                     ") on " + report::pairMachineText(p);
           // The same implementation class on both sides: the shader sources through the shim.
           const double m = p.contains("matrix") ? p["matrix"].value("items_per_second", 0.0) : 0.0;
           const double q = p.contains("motor") ? p["motor"].value("items_per_second", 0.0) : 0.0;

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <map>
 
+#include "harness/bench/report_bench.h"
 #include "harness/claims/claims_device.h"
 #include "harness/claims/claims_sources.h"
 #include "harness/claims/claims_uploads.h"
@@ -171,9 +172,11 @@ Claim kernelClaim(const std::string& kernel, const json& pairs, const std::strin
   bool holds = true;
   int sizes = 0;
   std::string disturbed;  // sizes whose pair was disturbed
+  std::string machine;    // the CPU and SIMD target the pairs ran on (issue 38)
   if (pairs.is_array())
     for (const json& p : pairs) {
       if (p.value("kernel", "") != kernel || !p["ratio_motor_fastest_matrix"].is_number()) continue;
+      machine = report::pairMachineText(p);
       const std::string size = p["size"].is_string() ? p["size"].get<std::string>() : "-";
       if (p.value("disturbed", false)) {  // taken on shared cores: not a verdict input (issue 38)
         disturbed += (disturbed.empty() ? "" : ", ") + size;
@@ -188,6 +191,7 @@ Claim kernelClaim(const std::string& kernel, const json& pairs, const std::strin
       holds = holds && ratio >= 1.0;
       ++sizes;
     }
+  if (!text.empty()) text += "; on " + machine;
   if (!sizes || !disturbed.empty()) {  // a verdict needs both working sets, undisturbed
     c.measured = text.empty() ? "-" : text;
     c.measuredValue = nullptr;

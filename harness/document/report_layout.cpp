@@ -123,11 +123,16 @@ void summary(Document& d, const json& r) {
   lines.push_back("Frame time motor / matrix (median frame, per Euclidean scene): " +
                   (ft.value("n", 0) ? ratio(ft["median"]) + " (" + ratio(ft["min"]) + ".." + ratio(ft["max"]) + ")" : "-") +
                   scenesText(ft) + " (< 1: motor faster).");
-  std::string kr;
+  std::string kr, machine;
   for (const auto& [k, v] : members(sum, "kernelRatios").items())
-    if (k.rfind("vertex_frame", 0) == 0 || k.rfind("skinned_vertex", 0) == 0) kr += (kr.empty() ? "" : ", ") + k + " " + ratio(v);
-  lines.push_back("CPU kernel throughput motor / matrix (items/s, > 1: motor faster; skinned pairs in matched "
-                  "configurations: skinned_vertex world palette, skinned_vertex_reference the references' form): " +
+    if ((k.rfind("vertex_frame", 0) == 0 || k.rfind("skinned_vertex", 0) == 0) && v.is_object()) {
+      kr += (kr.empty() ? "" : ", ") + k + " " + ratio(v["motorOverMatrixTime"]) + " (" + str(v["fastestMotor"]) + " / " +
+            str(v["fastestMatrix"]) + (v.value("disturbed", false) ? ", disturbed: not a verdict input" : "") + ")";
+      machine = v.value("machine", "");
+    }
+  lines.push_back("CPU kernel time, fastest motor implementation / fastest matrix implementation (< 1: motor faster; "
+                  "skinned pairs in matched configurations: skinned_vertex world palette, skinned_vertex_reference the "
+                  "references' form" + (machine.empty() ? std::string() : "; on " + machine) + "): " +
                   (kr.empty() ? str(at(r, {"kernels", "error"}), "not measured") : kr) + ".");
   d.bullets(lines);
 }
