@@ -110,6 +110,19 @@ void setThroughput(benchmark::State& state, size_t items, size_t bytes, Size siz
 // Labels the run with the Highway target the simd kernels dispatch to ("AVX3", "AVX2", ...).
 void setSimdLabel(benchmark::State& state);
 
+// Times one call of `pass` (a SIMD kernel over the whole batch, writing `out`) per iteration,
+// then labels the run with the SIMD target and sets its throughput (setThroughput).
+template <class F>
+void timeSimdPass(benchmark::State& state, const void* out, size_t items, size_t bytes, Size size, F pass) {
+  for (auto _ : state) {
+    pass();
+    benchmark::DoNotOptimize(out);
+    benchmark::ClobberMemory();
+  }
+  setSimdLabel(state);
+  setThroughput(state, items, bytes, size);
+}
+
 // Deterministic data.
 struct Rng {
   std::mt19937 gen{12345};

@@ -91,13 +91,7 @@ void paletteGlm(benchmark::State& state, Size s) {
 // `floats`: per joint, world + inverse bind + out (the world's bytes read, the scale's included).
 template <class K> void paletteSimd(benchmark::State& state, Size s, size_t floats, K kernel) {
   PaletteData& d = paletteData(s);
-  for (auto _ : state) {
-    kernel(d);
-    benchmark::DoNotOptimize(d.outFloats.data());
-    benchmark::ClobberMemory();
-  }
-  setSimdLabel(state);
-  setThroughput(state, d.joints, d.joints * floats * sizeof(float), s);
+  timeSimdPass(state, d.outFloats.data(), d.joints, d.joints * floats * sizeof(float), s, [&] { kernel(d); });
 }
 
 void paletteSimdAffine(benchmark::State& state, Size s) {

@@ -179,13 +179,8 @@ struct ComposePlanes {
 
 template <class K> void composeSimd(benchmark::State& state, size_t floats, K kernel) {
   static ComposePlanes p;
-  for (auto _ : state) {
-    kernel(p);
-    benchmark::DoNotOptimize(p.out.data());
-    benchmark::ClobberMemory();
-  }
-  setSimdLabel(state);
-  setThroughput(state, kComposePairs, kComposePairs * 3 * floats * sizeof(float), Size::InCache);
+  timeSimdPass(state, p.out.data(), kComposePairs, kComposePairs * 3 * floats * sizeof(float), Size::InCache,
+               [&] { kernel(p); });
 }
 
 void composeSimdMat4(benchmark::State& state) {
@@ -231,14 +226,10 @@ template <Kind K> void vec3Simd(benchmark::State& state, Size s, bool motor) {
   Vec3Planes& p = vec3Planes(s);
   const simd::ConstPlanes in{p.in.data(), p.stride};
   const simd::Planes out{p.out.data(), p.stride};
-  for (auto _ : state) {
+  timeSimdPass(state, p.out.data(), p.n, p.n * kVec3Bytes, s, [&] {
     if (K == Kind::Point) motor ? simd::pointsMotor(m8, in, out, p.n) : simd::pointsMatrix(m16, in, out, p.n);
     else motor ? simd::directionsMotor(m8, in, out, p.n) : simd::directionsMatrix(m16, in, out, p.n);
-    benchmark::DoNotOptimize(p.out.data());
-    benchmark::ClobberMemory();
-  }
-  setSimdLabel(state);
-  setThroughput(state, p.n, p.n * kVec3Bytes, s);
+  });
 }
 
 }  // namespace

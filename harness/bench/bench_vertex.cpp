@@ -279,13 +279,7 @@ SoaArrays& soaArrays(Size s) {
 // One call of `kernel` per iteration over the whole batch.
 template <class F> void runSimd(benchmark::State& state, Size s, size_t bytesPerItem, F kernel) {
   SoaArrays& a = soaArrays(s);
-  for (auto _ : state) {
-    kernel(a);
-    benchmark::DoNotOptimize(a.out.data());
-    benchmark::ClobberMemory();
-  }
-  setSimdLabel(state);
-  setThroughput(state, a.n, a.n * bytesPerItem, s);
+  timeSimdPass(state, a.out.data(), a.n, a.n * bytesPerItem, s, [&] { kernel(a); });
 }
 
 void frameSimdMatrix(benchmark::State& state, Size s) {
