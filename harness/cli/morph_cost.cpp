@@ -12,6 +12,7 @@
 #include "harness/render/render_frame.h"
 #include "harness/render/skin_reference.h"
 #include "pipelines/scene/loader.h"
+#include "pipelines/scene/scene_stats.h"
 
 namespace mb::morph {
 namespace {
@@ -44,19 +45,6 @@ json metricsJson(const ImageMetrics& m) {
   return {{"psnr", std::isfinite(m.psnr) ? json(m.psnr) : json(nullptr)}, {"maxError", m.maxError}};
 }
 
-int countTargets(const Scene& scene) {
-  int n = 0;
-  for (const Mesh& m : scene.meshes) n += int(morphTargetCount(m));
-  return n;
-}
-
-int countWeightChannels(const Scene& scene) {
-  int n = 0;
-  for (const Animation& a : scene.animations)
-    for (const Channel& c : a.channels) n += c.path == AnimPath::Weights;
-  return n;
-}
-
 // One scene: every frame by every method, against matrix (unskinned) or the skin reference.
 json measureScene(const std::string& spec, int size, json& glInfo) {
   json doc = {{"scene", spec}};
@@ -67,8 +55,9 @@ json measureScene(const std::string& spec, int size, json& glInfo) {
   Scene& scene = *loaded;
   const bool skinned = skinnedScene(scene);
   doc["skinned"] = skinned;
-  doc["targets"] = countTargets(scene);
-  doc["weightChannels"] = countWeightChannels(scene);
+  const FileStats stats = computeFileStats(scene);  // inspect's counts of the same scene
+  doc["targets"] = stats.morphTargets;
+  doc["weightChannels"] = stats.weightsChannels;
   const std::vector<FrameSettings> frames = frameList(scene, size);
   const std::vector<View> views = framings(scene, frames);
   doc["reference"] = skinned ? json{{"available", true}, {"why", nullptr}} : json(nullptr);
