@@ -20,7 +20,9 @@ from pathlib import Path
 # date) is left out whole. Keys are split into words (camelCase, snake_case); these words mark
 # a timing: ...Ms, ..._time, seconds, per_second, fps, ratios of times, disturbance, load.
 TIMING_WORDS = {"ms", "time", "seconds", "second", "timing", "fps", "iterations", "ratio", "ratios",
-                "spread", "disturbance", "disturbed", "runnable", "load", "mhz", "gbps", "bw"}
+                "spread", "disturbance", "disturbed", "runnable", "load", "mhz", "gbps", "bps", "bw"}
+# Keys derived from a timing whose words do not say so: a bandwidth's share of the copy bandwidth.
+TIMING_DERIVED = {"copy_fraction", "bw_fraction"}
 # Keys left out by name: the run's circumstances, and a count calibrated on the clock.
 TIMING_NAMES = {"machine", "context", "date", "host_name", "cpu", "cpuOverReal", "bestOf", "best_of",
                 "warmup", "update_calls_per_block"}
@@ -39,7 +41,8 @@ def words(key):
 
 
 def is_timing_key(key):
-    return key not in NOT_TIMING and (key in TIMING_NAMES or bool(words(key) & TIMING_WORDS))
+    return key not in NOT_TIMING and (key in TIMING_NAMES or key in TIMING_DERIVED or
+                                      bool(words(key) & TIMING_WORDS))
 
 
 def strip(value, key=""):
@@ -67,6 +70,36 @@ def strip(value, key=""):
     return out
 
 
+# Keys that name a list entry (a claim's id, a scene, a pipeline, a benchmark, a shader variant):
+# entries are matched by the values of those of these keys every entry has, so one entry added
+# in the middle of a list is one difference, not a shift of every entry after it.
+IDENTITY_KEYS = ("id", "name", "scene", "file", "pipeline", "variant", "shader", "stage", "kernel",
+                 "gpu", "label", "anim", "method", "space", "kind", "run_type", "aggregate_name",
+                 "repetition_index")
+
+
+def identities(entries):
+    """[identity of each entry], or None when the entries are not dicts named uniquely."""
+    if not entries or not all(isinstance(e, dict) for e in entries):
+        return None
+    def named_by(k):  # every entry that has k has a name or number there (a missing one reads "-")
+        present = [e[k] for e in entries if k in e]
+        return present and all(isinstance(v, (str, int)) and not isinstance(v, bool) for v in present)
+
+    keys = [k for k in IDENTITY_KEYS if named_by(k)]
+    # Not unique yet (a shader per pipeline, variant and GPU family): the other text fields every
+    # entry has join the name, in sorted order, until it is.
+    extra = sorted(k for k in entries[0] if k not in keys and all(isinstance(e.get(k), str) for e in entries))
+    while keys:
+        ids = ["/".join(str(e.get(k, "-")) for k in keys) for e in entries]
+        if len(set(ids)) == len(ids):
+            return ids
+        if not extra:
+            return None
+        keys.append(extra.pop(0))
+    return None
+
+
 def differences(a, b, path, out):
     if isinstance(a, dict) and isinstance(b, dict):
         for k in sorted(set(a) | set(b)):
@@ -78,6 +111,20 @@ def differences(a, b, path, out):
             else:
                 differences(a[k], b[k], where, out)
     elif isinstance(a, list) and isinstance(b, list):
+        ids_a, ids_b = identities(a), identities(b)
+        if ids_a is not None and ids_b is not None:
+            by_a, by_b = dict(zip(ids_a, a)), dict(zip(ids_b, b))
+            for i in ids_a + [i for i in ids_b if i not in by_a]:
+                where = f"{path}[{i}]"
+                if i not in by_b:
+                    out.append(f"{where}: only in the old results")
+                elif i not in by_a:
+                    out.append(f"{where}: only in the new results")
+                else:
+                    differences(by_a[i], by_b[i], where, out)
+            if [i for i in ids_a if i in ids_b] != [i for i in ids_b if i in ids_a]:
+                out.append(f"{path}: the entries present in both are in another order")
+            return
         if len(a) != len(b):
             out.append(f"{path}: {len(a)} entries before, {len(b)} now")
         for i, (x, y) in enumerate(zip(a, b)):

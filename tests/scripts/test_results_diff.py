@@ -57,15 +57,15 @@ class ResultsDiff(unittest.TestCase):
     def test_a_changed_image_metric_is_found(self):
         rc, out = diff(report(10.0, 50.0, "reproduced"), report(10.0, 49.5, "reproduced"))
         self.assertEqual(rc, 1)
-        self.assertIn("report.json.scenes[0].frames[0].metrics.psnr: 50.0 -> 49.5", out)
+        self.assertIn("report.json.scenes[teapot].frames[0].metrics.psnr: 50.0 -> 49.5", out)
 
     def test_bytes_in_stats_figure_and_claim_are_found(self):
         rc, out = diff(report(10.0, 50.0, "reproduced"), report(10.0, 50.0, "reproduced", bytes_per_vertex=48))
         self.assertEqual(rc, 1)
         for path in ("stats.bytesPerVertex", "figures.bytes_per_vertex.motor.value",
-                     "claims[1].measured", "claims[1].measuredValue.motor"):
+                     "claims[floats_per_vertex].measured", "claims[floats_per_vertex].measuredValue.motor"):
             self.assertIn(path, out)
-        self.assertNotIn("claims[0]", out)
+        self.assertNotIn("claims[as_fast_as_matrices]", out)
 
     def test_animation_time_is_not_a_timing(self):
         rc, out = diff(report(10.0, 50.0, "reproduced"), report(10.0, 50.0, "reproduced", time=0.75))
@@ -80,7 +80,36 @@ class ResultsDiff(unittest.TestCase):
         rc, out = diff(old, new)
         self.assertEqual(rc, 1)
         self.assertIn("claims.json: only in the old results", out)
-        self.assertIn("bench.json.benchmarks: 1 entries before, 2 now", out)
+        self.assertIn("bench.json.benchmarks[compose/matrix]: only in the new results", out)
+
+    def test_an_entry_inserted_in_the_middle_is_one_difference(self):
+        # Entries are matched by their names, not their places: the claims after the new one
+        # are not reported as changed.
+        old = report(10.0, 50.0, "reproduced")
+        new = report(10.0, 50.0, "reproduced")
+        new["claims.json"]["claims"].insert(1, {"id": "isa_vgprs", "section": "Memory",
+                                                "measured": "24 VGPRs", "verdict": "reproduced"})
+        rc, out = diff(old, new)
+        self.assertEqual(rc, 1)
+        self.assertEqual(out.splitlines(), ["claims.json.claims[isa_vgprs]: only in the new results"])
+
+    def test_entries_without_unique_names_are_compared_by_place(self):
+        old = report(10.0, 50.0, "reproduced")
+        new = report(10.0, 50.0, "reproduced")
+        for doc in (old, new):
+            doc["report.json"]["scenes"].append(dict(doc["report.json"]["scenes"][0]))
+        new["report.json"]["scenes"][1] = dict(new["report.json"]["scenes"][1], frames=[])
+        rc, out = diff(old, new)
+        self.assertEqual(rc, 1)
+        self.assertIn("report.json.scenes[1].frames: 1 entries before, 0 now", out)
+
+    def test_reordered_entries_are_reported(self):
+        old = report(10.0, 50.0, "reproduced")
+        new = report(10.0, 50.0, "reproduced")
+        new["claims.json"]["claims"].reverse()
+        rc, out = diff(old, new)
+        self.assertEqual(rc, 1)
+        self.assertEqual(out.splitlines(), ["claims.json.claims: the entries present in both are in another order"])
 
 
 if __name__ == "__main__":
