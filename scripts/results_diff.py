@@ -100,28 +100,26 @@ def identities(entries):
     return None
 
 
+def matched(a, b, names, path, out):
+    """Compares two {name: value} maps entry by entry; `names` is the order of the lines."""
+    for k in names:
+        where = path(k)
+        if k not in a:
+            out.append(f"{where}: only in the new results")
+        elif k not in b:
+            out.append(f"{where}: only in the old results")
+        else:
+            differences(a[k], b[k], where, out)
+
+
 def differences(a, b, path, out):
     if isinstance(a, dict) and isinstance(b, dict):
-        for k in sorted(set(a) | set(b)):
-            where = f"{path}.{k}" if path else k
-            if k not in a:
-                out.append(f"{where}: only in the new results")
-            elif k not in b:
-                out.append(f"{where}: only in the old results")
-            else:
-                differences(a[k], b[k], where, out)
+        matched(a, b, sorted(set(a) | set(b)), lambda k: f"{path}.{k}" if path else k, out)
     elif isinstance(a, list) and isinstance(b, list):
         ids_a, ids_b = identities(a), identities(b)
         if ids_a is not None and ids_b is not None:
             by_a, by_b = dict(zip(ids_a, a)), dict(zip(ids_b, b))
-            for i in ids_a + [i for i in ids_b if i not in by_a]:
-                where = f"{path}[{i}]"
-                if i not in by_b:
-                    out.append(f"{where}: only in the old results")
-                elif i not in by_a:
-                    out.append(f"{where}: only in the new results")
-                else:
-                    differences(by_a[i], by_b[i], where, out)
+            matched(by_a, by_b, ids_a + [i for i in ids_b if i not in by_a], lambda i: f"{path}[{i}]", out)
             if [i for i in ids_a if i in ids_b] != [i for i in ids_b if i in ids_a]:
                 out.append(f"{path}: the entries present in both are in another order")
             return
