@@ -256,10 +256,21 @@ class SurveyTiePixels(unittest.TestCase):
     """The tie probe on real frames: few on a scene without coplanar surfaces, and on court.glb the
     z-fighting line pixels that fail motor's 50 dB are all ties."""
 
+    COURT = os.path.join(CORPUS, "pmndrs+examples/demos/sport-hall/src/court.glb")
+    court = None
+
     def survey(self, scene, *extra):
         run = subprocess.run([EXE, "survey", scene, "--size", "128x128", *extra], capture_output=True, text=True, timeout=300)
         self.assertEqual(run.returncode, 0, run.stderr)
         return json.loads(run.stdout)
+
+    def court_survey(self):
+        # One survey of court.glb for both court tests: each pipeline's document and the frames'
+        # tie sets are the same as in a survey of motor alone or of matrix_c,motor_cf alone
+        # (compared once), and it loads the file, renders matrix and probes the ties once.
+        if SurveyTiePixels.court is None:
+            SurveyTiePixels.court = self.survey(self.COURT, "--pipelines", "motor,matrix_c,motor_cf")
+        return SurveyTiePixels.court
 
     def test_normal_torus_has_at_most_a_handful(self):
         doc = self.survey("normal_torus", "--pipelines", "motor")
@@ -272,7 +283,7 @@ class SurveyTiePixels(unittest.TestCase):
 
     @unittest.skipUnless(os.path.isdir(CORPUS), "../shared/corpus-wide absent (a clone without ../shared)")
     def test_court_z_fighting_is_ties(self):
-        doc = self.survey(os.path.join(CORPUS, "pmndrs+examples/demos/sport-hall/src/court.glb"), "--pipelines", "motor")
+        doc = self.court_survey()
         motor = doc["pipelines"]["motor"]["frames"][0]
         self.assertLess(motor["psnr"], 50)
         self.assertGreaterEqual(motor["psnrNotTies"] or math.inf, 50)
@@ -282,8 +293,7 @@ class SurveyTiePixels(unittest.TestCase):
         # court.glb: motor_cf's interpolated rotor shades the normal-mapped roof differently (lit
         # PSNR about 32 dB against matrix) while its int16 positions draw what matrix_c's do: in the
         # geometry view every pixel outside the int16-cell ties lies inside the envelope.
-        doc = self.survey(os.path.join(CORPUS, "pmndrs+examples/demos/sport-hall/src/court.glb"),
-                          "--pipelines", "matrix_c,motor_cf")
+        doc = self.court_survey()
         frame = doc["frames"][0]
         self.assertEqual(frame["int16Ties"]["renders"], 5)  # two antithetic pairs of cell corners, the int16 grid
         self.assertEqual(len(frame["int16Ties"]["set"]), frame["int16Ties"]["pixels"])
