@@ -69,6 +69,26 @@ void isaFigures(json& out, const json& r, const std::vector<std::string>& pipes)
     }
 }
 
+// The vertex format's own image cost (issue 35 item 5): the worst PSNR over the frames of
+// scenes where `p` uploads its mesh vertices (summary.vertexFormatImages: a scene of patches,
+// the teapot, draws none of them), so a compact format is not credited with another path's frame.
+void ownFormatFigure(json& out, const json& r, const std::string& p, const std::string& base,
+                     const std::string& device) {
+  const json& im = at(r, {"summary", "vertexFormatImages", p.c_str()});
+  if (!im.is_object()) return;
+  Figure f;
+  f.name = "image.worst_psnr_own_format." + p, f.unit = "dB", f.device = device;
+  f.scope = "frames where " + p + " and " + base + " should agree and " + p +
+            " draws its own vertex format (its uploaded mesh vertices), Euclidean scenes";
+  f.statistic = "minimum over the frames that differ";
+  f.definition = "PSNR of " + p + " against " + base + "; identical frames (infinite PSNR) are counted apart";
+  f.value = numberOrNaN(at(im, {"psnr", "min"}));
+  f.n = at(im, {"psnr", "n"}).is_number() ? im["psnr"]["n"].get<int>() : 0;
+  if (!std::isfinite(f.value))
+    f.why = im.value("comparedFrames", 0) > 0 ? "every compared frame identical" : "no frame compared";
+  figures::put(out, f);
+}
+
 // Frames where both pipelines should agree (the skinning methods' difference left out).
 void imageFigures(json& out, const json& r, const std::vector<std::string>& pipes) {
   const std::string base = pipes.empty() ? "" : pipes[0];
@@ -101,6 +121,7 @@ void imageFigures(json& out, const json& r, const std::vector<std::string>& pipe
     id.statistic = "count", id.value = identical, id.n = compared;
     id.definition = "frames whose every pixel equals " + base + "'s, of n compared";
     figures::put(out, id);
+    ownFormatFigure(out, r, p, base, w.device);
     if (flip.empty()) continue;
     Figure fl;
     fl.name = "image.flip_mean_worst." + p, fl.unit = "", fl.scope = scope, fl.device = w.device;

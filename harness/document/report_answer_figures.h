@@ -17,8 +17,9 @@ std::string pipelineFamily(const std::string& pipeline);
 
 // Adds to report["figures"]: vertex_fetch.bytes_per_vertex.<p>,
 // vertex_fetch.bytes_per_frame_over_baseline.<p>, isa.instructions.rigid.<family id>.<p>,
-// image.worst_psnr.<p>, image.identical_frames.<p>, image.flip_mean_worst.<p> (when FLIP was
-// measured); and report["pipelineFamilies"] {p: family}.
+// image.worst_psnr.<p>, image.worst_psnr_own_format.<p> (the frames drawing p's own vertex
+// format, from report["summary"]), image.identical_frames.<p>, image.flip_mean_worst.<p> (when
+// FLIP was measured); and report["pipelineFamilies"] {p: family}.
 void addAnswerFigures(nlohmann::json& report);
 
 }  // namespace mb::report

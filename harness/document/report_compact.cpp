@@ -41,6 +41,12 @@ const json* rigidVariant(const json& r, const std::string& pipeline) {
   return nullptr;
 }
 
+// The worst PSNR over the frames drawing p's own vertex format: report.json's figure, marked.
+std::string ownFormatPsnr(const json& r, const std::string& p) {
+  const auto f = figures::figureNamed(r, "image.worst_psnr_own_format." + p);
+  return f ? figureMark(f->name, figures::valueText(*f)) : "-";
+}
+
 // Frame time / the matrix pipeline: report.json's figure (the median over scenes of each scene's
 // median of per-frame paired ratios), with its scene count in brackets.
 std::string frameRatio(const json& r, const std::string& p, bool vertexBound) {
@@ -121,7 +127,7 @@ void compactSection(Document& d, const json& r) {
                  ? at(sum["pipelines"][p], {"bytesPerVertexNormalMapped", "median"})
                  : json(),
              3)},
-        {base ? "baseline" : allIdentical ? "identical" : fixed(at(im, {"psnr", "min"}), 1) + " dB"},
+        {base ? "baseline" : allIdentical ? "identical" : ownFormatPsnr(r, p)},
         {base ? "-" : percent(at(im, {"fractionOver1", "max"}), 3)},
         {base ? "-" : percent(at(im, {"fractionOver4", "max"}), 3)},
         {base || !at(im, {"maxError", "max"}).is_number() ? "-"

@@ -77,6 +77,10 @@ class ReportFiguresRecomputed(unittest.TestCase):
             got = self.report["summary"]["vertexFormatImages"][p]
             if psnr:
                 self.assertAlmostEqual(got["psnr"]["min"], min(psnr), places=9, msg=p)
+                # The figure the README's and report's compact tables quote (issue 35 item 5).
+                figure = self.figure("image.worst_psnr_own_format.%s" % p)
+                self.assertAlmostEqual(figure["value"], min(psnr), places=9, msg=p)
+                self.assertEqual(figure["n"], len(psnr), p)
             if over1:
                 self.assertAlmostEqual(got["fractionOver1"]["max"], max(over1), places=12, msg=p)
 
