@@ -1,35 +1,10 @@
 #include "harness/claims/claims_ranking.h"
 
-#include <cmath>
-#include <vector>
-
-#include "harness/claims/claims_vertex_ops.h"
-#include "harness/figures/figure_statistics.h"
-#include "pipelines/pipeline.h"
+#include "harness/document/ops_ranking.h"
 
 namespace mb::claims {
-namespace {
 
 using json = nlohmann::json;
-
-struct Column {
-  const char* name;
-  std::map<std::string, double> values;
-};
-
-std::vector<Column> columns(const json& isa, const std::string& label) {
-  std::string zero;
-  Column counted{"counted", opsPerPipeline(label, false, zero)};
-  Column spirv{"SPIR-V (probe)", opsPerPipeline(label, true, zero)};
-  Column instr{"ISA instructions (median over families)", {}};
-  std::map<std::string, std::vector<double>> perPipeline;
-  for (const auto& [family, byPipeline] : isaVertexTable(isa, label))
-    for (const auto& [p, s] : byPipeline) perPipeline[p].push_back(s.instructions);
-  for (const auto& [p, v] : perPipeline) instr.values[p] = figures::quartilesOf(v).median;
-  return {counted, spirv, instr};
-}
-
-}  // namespace
 
 IsaTable isaVertexTable(const json& isa, const std::string& program) {
   IsaTable plain, normalMapped;
@@ -47,52 +22,30 @@ IsaTable isaVertexTable(const json& isa, const std::string& program) {
   return plain;
 }
 
-std::string rankingLine(const json& isa, const std::string& label) {
-  const std::vector<Column> cols = columns(isa, label);
-  std::string out;
-  const std::vector<std::string> names = pipelineNames();
-  for (size_t i = 0; i < names.size(); ++i)
-    for (size_t j = i + 1; j < names.size(); ++j) {
-      const std::string &a = names[i], &b = names[j];
-      std::string orders;
-      int signs = 0;  // bit 0: some column puts a first, bit 1: some column puts b first
-      for (const Column& c : cols) {
-        if (!c.values.count(a) || !c.values.count(b)) continue;
-        const double d = c.values.at(a) - c.values.at(b);
-        if (d == 0) continue;
-        signs |= d < 0 ? 1 : 2;
-        orders += std::string(orders.empty() ? "" : ", ") + (d < 0 ? a + " < " + b : b + " < " + a) + " " + c.name;
-      }
-      if (signs == 3) out += (out.empty() ? "" : "; ") + orders;
-    }
-  return out.empty() ? "" : "counted ops, SPIR-V and ISA rank the " + label + " pipelines differently: " + out;
+std::string disagreementLine(const json& scope) {
+  return scope.is_object() && !scope.value("reversed", json::array()).empty() ? scope.value("line", "") : "";
 }
 
-Claim rankingClaim(const json& isa, const std::string& label) {
+Claim rankingClaim(const json& scope, const std::string& label, const std::string& source) {
   Claim c{"ops_ranking_" + label, "Speed",
-          "the kinds of op evidence order the " + label + " vertex shaders alike (counted, SPIR-V, ISA)"};
+          "counted ops, SPIR-V (probe) ops and AMD ISA instructions order the " + label + " vertex shaders alike"};
   c.paper = "(not claimed)";
   c.origin = "ops evidence";
-  c.method = "per pipeline: ops per vertex of the " + label + " shader to clip counted on mb::Counted and in the SPIR-V "
-             "probes of its functions, and AMD ISA instructions of the whole vertex shader, the median over families "
-             "(motorbench isa); every two pipelines whose order one kind reverses are named";
-  const std::vector<Column> cols = columns(isa, label);
-  json table = json::object();
-  std::string text;
-  for (const std::string& p : pipelineNames()) {
-    std::string cell;
-    for (const Column& col : cols) {
-      const bool has = col.values.count(p);
-      table[p][col.name] = has ? json(col.values.at(p)) : json();
-      cell += (cell.empty() ? "" : " / ") + (has ? fmt("%.0f", col.values.at(p)) : std::string("-"));
-    }
-    text += (text.empty() ? "" : ", ") + p + " " + cell;
+  if (!scope.is_object() || !scope.value("line", json()).is_string()) {
+    c.verdict = Verdict::NotMeasurable;
+    c.verdictText = "not measurable here: no opsRanking." + label + " in " + source;
+    return c;
   }
-  c.measured = text + " (counted / SPIR-V / ISA)";
-  c.measuredValue = {{"table", table}};
-  const std::string line = rankingLine(isa, label);
+  std::string defs;
+  for (const json& m : scope.value("measures", json::array()))
+    defs += "; " + m.value("name", "") + ": " + m.value("definition", "") + " (" + m.value("device", "") + ")";
+  c.method = "the ranking of " + source + ", scope " + scope.value("scope", label) + defs +
+             "; a pair is named where one measure orders it one way and another the other way (ties order nothing)";
+  c.measured = report::opsRankingTableText(scope);
+  c.measuredValue = {{"table", scope.value("table", json())}, {"ranks", scope.value("ranks", json())},
+                     {"reversed", scope.value("reversed", json())}, {"pairs", scope.value("pairs", json())}};
   c.verdict = Verdict::Baseline;
-  c.verdictText = line.empty() ? "the three kinds order every two pipelines alike" : line;
+  c.verdictText = scope["line"].get<std::string>();
   return c;
 }
 

@@ -1,5 +1,6 @@
-// AMD ISA statistics per family and pipeline, and where the three kinds of op evidence (counted,
-// SPIR-V probe, ISA instructions) put the pipelines in different orders (issue 35 item 8).
+// AMD ISA statistics per family and pipeline, and the rows that say where the three kinds of op
+// evidence (counted, SPIR-V probe, ISA instructions) put the pipelines in different orders
+// (issue 35 item 8; the ranking itself is computed once, by harness/document/ops_ranking.h).
 #pragma once
 #include <map>
 #include <string>
@@ -18,11 +19,11 @@ struct IsaStats {
 using IsaTable = std::map<std::string, std::map<std::string, IsaStats>>;
 IsaTable isaVertexTable(const nlohmann::json& isa, const std::string& program);
 
-// "" when counted ops, SPIR-V (probe) and ISA instructions (the median over families) order every
-// two pipelines of `label` ("rigid": the rigid vertex to clip, "skinned") alike; else one line
-// naming each pair they order differently.
-std::string rankingLine(const nlohmann::json& isa, const std::string& label);
-// The row with the table of the three (own: ops evidence).
-Claim rankingClaim(const nlohmann::json& isa, const std::string& label);
+// The ops_ranking_<label> row ("rigid", "skinned"): one scope of report.json's "opsRanking"
+// (harness/document/ops_ranking.h), printed as it is -- its line as the verdict, the table of the
+// three measures as the measured value; `source` names where the ranking was read.
+Claim rankingClaim(const nlohmann::json& scope, const std::string& label, const std::string& source);
+// The scope's line when its measures disagree on some pair, else "".
+std::string disagreementLine(const nlohmann::json& scope);
 
 }  // namespace mb::claims

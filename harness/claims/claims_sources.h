@@ -49,6 +49,10 @@ struct SpeedInputs {
   nlohmann::json sceneStats;
   nlohmann::json isa;          // `motorbench isa` JSON (schema motorbench-isa/1), or null
   std::string isaSource;
+  // report.json's "opsRanking" (harness/document/ops_ranking.h), or null: then ranked by the same
+  // function from this process's op counts and `isa` (no report, or one written before it).
+  nlohmann::json opsRanking;
+  std::string opsRankingSource;
   bool spirv = true;           // SPIR-V ops as evidence (compiles every shader variant: seconds)
 };
 std::vector<Claim> speedClaims(const SpeedInputs& in);

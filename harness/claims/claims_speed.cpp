@@ -18,6 +18,7 @@
 #include "harness/claims/claims_sources.h"
 #include "harness/claims/claims_vertex_ops.h"
 #include "harness/claims/claims_work.h"
+#include "harness/document/ops_ranking.h"
 #include "harness/ops/pipeline_ops.h"
 #include "harness/timing/frame_timing.h"
 
@@ -226,13 +227,19 @@ Claim scopeClaim(const SpeedInputs& in, const Scope& s, Claim c) {
              "kernel " + s.kernel + " of motorbench bench (source " + (in.kernelSource.empty() ? std::string("none") : in.kernelSource) +
              "; the fastest implementation of each side, the worse of in and out of cache); frame time of " + s.scene +
              " in its vertex-bound viewport on " + device.label() + " (" + minimumRule() + ").";
-  const std::string ranking = rankingLine(in.isa, s.label);
+  const std::string ranking = disagreementLine(in.opsRanking.value(s.label, json()));
   return judgeKinds(c, ev, ranking.empty() ? "" : ranking + " (ops_ranking_" + s.label + ")");
 }
 
 }  // namespace
 
-std::vector<Claim> speedClaims(const SpeedInputs& in) {
+std::vector<Claim> speedClaims(const SpeedInputs& given) {
+  SpeedInputs in = given;
+  if (!in.opsRanking.is_object()) {  // the report's ranking function on this process's op counts
+    in.opsRanking = report::opsRanking(opsv::toJson(vertexOps())["variants"], in.isa);
+    in.opsRankingSource = "claims' own op counts and " + (in.isaSource.empty() ? std::string("no ISA statistics") : in.isaSource) +
+                          " (no report.json \"opsRanking\")";
+  }
   Claim rigid{"as_fast_as_matrices", "Speed",
               "motors transform a vertex with full tangent frame to world space as fast as 4x4 matrices"};
   rigid.paper = std::string("as fast (47/38 vs 48/36 mul/add per vertex): ") + kSentence;
@@ -245,7 +252,8 @@ std::vector<Claim> speedClaims(const SpeedInputs& in) {
                             scopeClaim(in, {"skinned", "skinned vertex (4 joints)", "skinned_vertex", "crowd"}, skinned)};
   if (!in.missing.empty())
     for (Claim& c : out) c.verdictText += "; partly not measured: " + in.missing;
-  for (const char* label : {"rigid", "skinned"}) out.push_back(rankingClaim(in.isa, label));
+  for (const char* label : {"rigid", "skinned"})
+    out.push_back(rankingClaim(in.opsRanking.value(label, json()), label, in.opsRankingSource));
   return out;
 }
 

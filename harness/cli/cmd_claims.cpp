@@ -128,6 +128,8 @@ claims::SpeedInputs speedInputs(const Args& args, const json& report, json& sour
     in.frameSource = reportPath + " (" + std::to_string(in.frameTimes.size()) + " scenes" +
                      (sizes.empty() ? "" : ", timed at " + sizes) + ")";
     if (report.value("isa", json()).is_object()) in.isa = report["isa"], in.isaSource = reportPath + " (its \"isa\")";
+    if (report.value("opsRanking", json()).is_object())
+      in.opsRanking = report["opsRanking"], in.opsRankingSource = reportPath + " (its \"opsRanking\")";
   }
   if (auto i = args.get("isa"); i && in.isa.is_null()) {
     std::ifstream f(*i);
@@ -196,6 +198,7 @@ claims::SpeedInputs speedInputs(const Args& args, const json& report, json& sour
   sources["kernels"] = in.kernelSource.empty() ? "none" : in.kernelSource;
   sources["frameTiming"] = in.frameSource.empty() ? "none" : in.frameSource;
   sources["isa"] = in.isaSource.empty() ? "none" : in.isaSource;
+  sources["opsRanking"] = in.opsRankingSource.empty() ? "claims' own op counts and the isa above" : in.opsRankingSource;
   return in;
 }
 

@@ -91,13 +91,6 @@ void memoryFigure(json& out, const std::vector<json>& scenes, const std::vector<
   }
 }
 
-double opsTotal(const json& ops) {
-  if (!ops.is_object()) return std::nan("");
-  double t = 0;
-  for (const char* k : {"mul", "add", "div", "sqrt", "other"}) t += numberOrNaN(ops.value(k, json(0)));
-  return t;
-}
-
 Figure opsFigure(const std::string& name, double total, const std::string& scope, const std::string& source) {
   Figure f;
   f.name = name;
@@ -172,6 +165,13 @@ void kernelFigures(json& out, const json& kernels, const std::string& cpu) {
 }
 
 }  // namespace
+
+double opsTotal(const json& ops) {
+  if (!ops.is_object()) return std::nan("");
+  double t = 0;
+  for (const char* k : {"mul", "add", "div", "sqrt", "other"}) t += numberOrNaN(ops.value(k, json(0)));
+  return t;
+}
 
 std::string frameTimeDevice(const json& machine) {
   const json& gl = at(machine, {"gl"});

@@ -12,6 +12,10 @@
 
 namespace mb::report {
 
+// The total ops of an ops object: mul + add + div + sqrt + other (subtraction counts as addition,
+// negation is free); NaN when `ops` is not an object.
+double opsTotal(const nlohmann::json& ops);
+
 // The device a frame time was measured on, from report.json's "machine" ("CPU rasterizer
 // (llvmpipe ...)" or the GPU's GL_RENDERER).
 std::string frameTimeDevice(const nlohmann::json& machine);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "harness/document/ops_ranking.h"
 #include "harness/document/report_document.h"
 #include "harness/document/report_format.h"
 #include "harness/document/report_layout_common.h"
@@ -135,6 +136,7 @@ void opsSection(Document& d, const json& r) {
     d.table({"pipeline", "rigid (transform)", "skinned (transform, 4 joints)", "rigid to clip", "to clip (SPIR-V probes)",
              "bezier patch to clip", "problem"},
             rows);
+  opsRankingSection(d, r);  // the three measures' ranking, as report.json "opsRanking" has it
   rows.clear();
   for (const json& v : ops.value("variants", json::array()))
     rows.push_back({{str(v["pipeline"])}, {str(v["label"])}, {str(v["shader"])}, {opsText(v["counted"])},

@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "harness/bench/report_bench.h"
+#include "harness/document/ops_ranking.h"
 #include "harness/document/report_answer_figures.h"
 #include "harness/document/report_document.h"
 #include "harness/report/report_sources.h"
@@ -266,6 +267,7 @@ int runReport(const Options& o) {
 
 int writeReportFolder(json report, const Options& o) {
   addAnswerFigures(report);  // the answer block's figures: fetch, ISA, images (after isa is attached)
+  addOpsRanking(report);     // where counted ops, SPIR-V and ISA order the pipelines differently (ops and isa)
   report["glossary"] = glossaryJson();    // what every counter means (shown in the documents)
   report["diffLegend"] = heatLegendJson();  // the heat maps' colour scale
   const fs::path jsonPath = fs::path(o.outDir) / "report.json";

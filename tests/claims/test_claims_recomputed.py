@@ -1,7 +1,8 @@
-"""claims.json against its JSON inputs (issue 35): each figure of items 1-3, 7 and 8 recomputed
-here from results/report.json, isa.json and ops.json with the rule the row prints, never by
-calling motorbench's own formula. results/ is what `motorbench claims` wrote from those inputs
-(scripts/reproduce.sh); a claims.json older than issue 35 (no "quote" field) fails the test.
+"""claims.json against its JSON inputs (issue 35): each figure of items 1-3 and 7 (item 8:
+test_ops_ranking_recomputed.py) recomputed here from results/report.json, isa.json and ops.json
+with the rule the row prints, never by calling motorbench's own formula. results/ is what
+`motorbench claims` wrote from those inputs (scripts/reproduce.sh); a claims.json older than
+issue 35 (no "quote" field) fails the test.
 """
 import json
 import os
@@ -15,12 +16,6 @@ TOLERANCE = 0.10  # the rule's "as fast": at most 10 % costlier
 def load(name):
     with open(os.path.join(RESULTS, name), encoding="utf-8") as f:
         return json.load(f)
-
-
-def median(values):
-    v = sorted(values)
-    n = len(v)
-    return v[n // 2] if n % 2 else 0.5 * (v[n // 2 - 1] + v[n // 2])
 
 
 def motor_side(p):
@@ -178,34 +173,7 @@ class ClaimsRecomputed(unittest.TestCase):
         comp = self.row("composition")
         if "bench" in comp["measuredValue"]:
             self.assertNotIn("in-process timing", comp["measured"])
-
-    # Item 8: the pairs that counted ops, SPIR-V and ISA order differently, from ops.json and isa.json.
-    def test_ranking_line_names_every_reversed_pair(self):
-        per = {r["pipeline"]: r for r in self.ops["per_pipeline"]}
-        inst = {}
-        fams = {}
-        for s in self.isa["shaders"]:
-            if s["stage"] == "vertex" and s["program"] in ("rigid", "rigid_normalmap"):
-                fam = s["family"] + (" (NGG)" if s.get("ngg") else "")
-                slot = fams.setdefault((fam, s["pipeline"]), {})
-                slot[s["program"]] = s["instructions"]
-        for (fam, p), v in fams.items():
-            inst.setdefault(p, []).append(v.get("rigid_normalmap", v.get("rigid")))
-        cols = [{p: per[p]["toClip"]["counted"]["total"] for p in per if per[p]["toClip"]["counted"]["total"] > 0},
-                {p: per[p]["toClip"]["spirv"]["total"] for p in per if per[p]["toClip"]["spirv"]["total"] > 0},
-                {p: median(v) for p, v in inst.items()}]
-        order = [r["pipeline"] for r in self.ops["per_pipeline"] if r["pipeline"] in cols[0]]
-        reversed_pairs = []
-        for i, a in enumerate(order):
-            for b in order[i + 1:]:
-                signs = {(c[a] > c[b]) - (c[a] < c[b]) for c in cols if a in c and b in c} - {0}
-                if signs == {1, -1}:
-                    reversed_pairs.append((a, b))
-        text = self.row("ops_ranking_rigid")["verdictText"]
-        for a, b in reversed_pairs:
-            self.assertTrue(a + " < " + b in text or b + " < " + a in text, (a, b, text))
-        if reversed_pairs:
-            self.assertIn("rank the rigid pipelines differently", self.row("as_fast_as_matrices")["verdictText"])
+    # Item 8 (the ops ranking line): tests/claims/test_ops_ranking_recomputed.py.
 
 
 if __name__ == "__main__":

@@ -68,7 +68,8 @@ def canonical(name, value, figures):
 def disagreements(root):
     """Every name read differently, each with where; [] when the documents agree."""
     with open(os.path.join(root, "results", "report.json"), encoding="utf-8") as f:
-        figures = json.load(f).get("figures", {})
+        report = json.load(f)
+    figures = report.get("figures", {})
     seen = {}  # name -> {canonical value: [document, ...]}
     texts = {}
     for doc in DOCS:
@@ -90,6 +91,16 @@ def disagreements(root):
                     problems.append(f"{name}: {sorted(set(docs))} quote '{v}', report.json '{fig['text']}'")
         elif len(values) > 1:
             problems.append(f"{name}: " + "; ".join(f"'{v}' in {sorted(set(d))}" for v, d in values.items()))
+    # The ops ranking line (issue 35 item 8): report.md and claims.md print report.json's line as it
+    # is, wherever they print the scope's ranking ("op ranking of the <scope>: ...").
+    for label, ranking in sorted((report.get("opsRanking") or {}).items()):
+        line, start = ranking["line"], "op ranking of the " + ranking["scope"] + ": "
+        for doc in ("results/report.md", "results/claims.md"):
+            if doc not in texts:
+                continue
+            at = [m.start() for m in re.finditer(re.escape(start), texts[doc])]
+            if not at or any(not texts[doc].startswith(line, i) for i in at):
+                problems.append(f"opsRanking.{label}: {doc} does not print report.json's line '{line}'")
     if "results/report.md" in texts and "results/claims.md" in texts:
         if answer_rows(texts["results/claims.md"]) != answer_rows(texts["results/report.md"]):
             problems.append("claims.md's answer lines differ from report.md's")
@@ -149,6 +160,16 @@ class DocumentsAgree(unittest.TestCase):
         measured = split_row(row)[4]
         self.edit(claims, row, row.replace(measured, measured.replace("16", "15"), 1))
         self.assertTrue(any(p.startswith("claims.curved_floats_per_instance:") for p in disagreements(tmp)))
+
+    def test_an_edited_ranking_line_fails(self):
+        tmp = self.copy()
+        with open(os.path.join(tmp, "results", "report.json"), encoding="utf-8") as f:
+            ranking = json.load(f).get("opsRanking")
+        self.assertIsNotNone(ranking, "results/report.json predates the ops ranking (issue 35 item 8): regenerate results/")
+        line = ranking["rigid"]["line"]
+        self.edit(os.path.join(tmp, "results", "claims.md"), line, line.replace(" of ", " of 1", 1))
+        self.assertTrue(any(p.startswith("opsRanking.rigid: results/claims.md") for p in disagreements(tmp)),
+                        disagreements(tmp))
 
     def test_an_edited_answer_line_fails(self):
         tmp = self.copy()
