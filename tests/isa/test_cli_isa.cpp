@@ -8,6 +8,7 @@
 #include <set>
 
 #include "pipelines/pipeline.h"
+#include "tests/isa/isa_cache_runs.h"
 #include "tests/support/cli_test_support.h"
 
 namespace {
@@ -24,10 +25,27 @@ int radvUnits(const json& s) {
   return gen.rfind("RDNA", 0) == 0 ? waves * s.at("waveSize").get<int>() / 32 : waves;
 }
 
+// Run a compiles every shader with glslang (its SPIR-V cache starts empty and it stores every
+// module there); run b takes every module from that cache: identical files say the reruns agree
+// and the cache returns what glslang makes (isa_cache_runs.h: the room's later runs reuse it).
+TEST(CliIsa, TwoRunsGiveIdenticalFiles) {
+  const auto& runs = mb::isa_test::coldThenCachedRuns();
+  const auto& dir = runs.dir;
+  for (int i = 0; i < 2; ++i) ASSERT_EQ(runs.rc[i], 0) << runs.output[i];
+  // Run a stored the modules run b read.
+  EXPECT_FALSE(std::filesystem::is_empty(dir / "cache" / "spirv"));
+  const std::string a = readText(dir / "a.json");
+  EXPECT_FALSE(a.empty());
+  EXPECT_EQ(a, readText(dir / "b.json"));
+  const std::string isa = readText(dir / "a_isa" / "motor.rigid.vertex.polaris10.txt");
+  EXPECT_NE(isa.find("v_"), std::string::npos) << isa.substr(0, 400);  // vector instructions
+  EXPECT_EQ(isa, readText(dir / "b_isa" / "motor.rigid.vertex.polaris10.txt"));
+}
+
 TEST(CliIsa, EveryPipelineEveryFamilyAndOurRuleAgreesWithRadv) {
   const auto dir = scratchDir("isa_full");
   std::string out;
-  const int rc = runCommand(motorbench() + "isa --json " + quoted(dir / "a.json"), &out);
+  const int rc = runCommand(mb::isa_test::filledIsaCacheIfAny() + motorbench() + "isa --json " + quoted(dir / "a.json"), &out);
   ASSERT_EQ(rc, 0) << out;
   const json j = readJson(dir / "a.json");
   ASSERT_FALSE(j.is_discarded());
@@ -59,26 +77,6 @@ TEST(CliIsa, EveryPipelineEveryFamilyAndOurRuleAgreesWithRadv) {
   // NGG culling really changes the vertex shader (it adds the culling code).
   EXPECT_GT(nggInstructions["navi21-ngg"], nggInstructions["navi21-nonggc"] + 50);
   EXPECT_NE(out.find("vertex shaders"), std::string::npos) << out;
-}
-
-// Run a compiles every shader with glslang (the SPIR-V cache off); run b takes the modules from
-// the cache where a run before it (this one's or another test's) left them: identical files say
-// the reruns agree and the cache returns what glslang makes.
-TEST(CliIsa, TwoRunsGiveIdenticalFiles) {
-  const auto dir = scratchDir("isa_twice");
-  std::string out;
-  for (const char* name : {"a", "b"}) {
-    const std::string cache = std::string(name) == "a" ? "MB_CACHE_DIR=off " : "";
-    ASSERT_EQ(runCommand(cache + motorbench() + "isa --family polaris10,navi21-ngg --json " +
-                             quoted(dir / (std::string(name) + ".json")) + " --isa-text " +
-                             quoted(dir / (std::string(name) + "_isa")), &out), 0) << out;
-  }
-  const std::string a = readText(dir / "a.json");
-  EXPECT_FALSE(a.empty());
-  EXPECT_EQ(a, readText(dir / "b.json"));
-  const std::string isa = readText(dir / "a_isa" / "motor.rigid.vertex.polaris10.txt");
-  EXPECT_NE(isa.find("v_"), std::string::npos) << isa.substr(0, 400);  // vector instructions
-  EXPECT_EQ(isa, readText(dir / "b_isa" / "motor.rigid.vertex.polaris10.txt"));
 }
 
 TEST(CliIsa, MissingRadvIsAnErrorNamingIt) {

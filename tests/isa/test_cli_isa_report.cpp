@@ -2,6 +2,7 @@
 // report.md gets the per-pipeline ISA tables; a missing or foreign file is refused before the run.
 #include <gtest/gtest.h>
 
+#include "tests/isa/isa_cache_runs.h"
 #include "tests/support/cli_test_support.h"
 
 namespace {
@@ -12,7 +13,7 @@ using nlohmann::json;
 TEST(CliIsaReport, EmbedsTheIsaFileAndShowsItsTables) {
   const auto dir = scratchDir("isa_report");
   std::string out;
-  ASSERT_EQ(runCommand(motorbench() + "isa --family vega10 --json " + quoted(dir / "isa.json"), &out), 0) << out;
+  ASSERT_EQ(runCommand(mb::isa_test::filledIsaCacheIfAny() + motorbench() + "isa --family vega10 --json " + quoted(dir / "isa.json"), &out), 0) << out;
   ASSERT_EQ(runCommand(motorbench() + "report textured_box -o " + quoted(dir / "r") +
                            " --pipelines matrix,motor --no-bench --no-plots --frames 0 --size 32x24 --isa-json " + quoted(dir / "isa.json"),
                        &out),
