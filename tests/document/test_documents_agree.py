@@ -92,14 +92,15 @@ def disagreements(root):
         elif len(values) > 1:
             problems.append(f"{name}: " + "; ".join(f"'{v}' in {sorted(set(d))}" for v, d in values.items()))
     # The ops ranking line (issue 35 item 8): report.md and claims.md print report.json's line as it
-    # is, wherever they print the scope's ranking ("op ranking of the <scope>: ...").
+    # is, wherever they print it: no start or end of it is left once its exact copies are taken out.
     for label, ranking in sorted((report.get("opsRanking") or {}).items()):
-        line, start = ranking["line"], "op ranking of the " + ranking["scope"] + ": "
+        line = ranking["line"]
+        start, end = "op ranking of the " + ranking["scope"] + ": ", line[-40:]
         for doc in ("results/report.md", "results/claims.md"):
             if doc not in texts:
                 continue
-            at = [m.start() for m in re.finditer(re.escape(start), texts[doc])]
-            if not at or any(not texts[doc].startswith(line, i) for i in at):
+            rest = texts[doc].replace(line, "")
+            if line not in texts[doc] or start in rest or end in rest:
                 problems.append(f"opsRanking.{label}: {doc} does not print report.json's line '{line}'")
     if "results/report.md" in texts and "results/claims.md" in texts:
         if answer_rows(texts["results/claims.md"]) != answer_rows(texts["results/report.md"]):
@@ -167,7 +168,7 @@ class DocumentsAgree(unittest.TestCase):
             ranking = json.load(f).get("opsRanking")
         self.assertIsNotNone(ranking, "results/report.json predates the ops ranking (issue 35 item 8): regenerate results/")
         line = ranking["rigid"]["line"]
-        self.edit(os.path.join(tmp, "results", "claims.md"), line, line.replace(" of ", " of 1", 1))
+        self.edit(os.path.join(tmp, "results", "claims.md"), line, line.replace(" pipeline pairs", " pairs", 1))
         self.assertTrue(any(p.startswith("opsRanking.rigid: results/claims.md") for p in disagreements(tmp)),
                         disagreements(tmp))
 
