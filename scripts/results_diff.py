@@ -21,8 +21,9 @@ from pathlib import Path
 # a timing: ...Ms, ..._time, seconds, per_second, fps, ratios of times, disturbance, load.
 TIMING_WORDS = {"ms", "time", "seconds", "second", "timing", "fps", "iterations", "ratio", "ratios",
                 "spread", "disturbance", "disturbed", "runnable", "load", "mhz", "gbps", "bps", "bw"}
-# Keys derived from a timing whose words do not say so: a bandwidth's share of the copy bandwidth.
-TIMING_DERIVED = {"copy_fraction", "bw_fraction"}
+# Keys derived from a timing whose words do not say so: a bandwidth's share of the copy bandwidth;
+# claims' tallies of verdicts, some of which are judged on timings.
+TIMING_DERIVED = {"copy_fraction", "bw_fraction", "counts", "paperCounts", "ownCounts"}
 # Keys left out by name: the run's circumstances, and a count calibrated on the clock.
 TIMING_NAMES = {"machine", "context", "date", "host_name", "cpu", "cpuOverReal", "bestOf", "best_of",
                 "warmup", "update_calls_per_block"}
@@ -31,9 +32,11 @@ TIMING_NAMES = {"machine", "context", "date", "host_name", "cpu", "cpuOverReal",
 NOT_TIMING = {"time", "times", "lbsTime", "motorTime", "timeWidth", "timeHeight"}
 # Figures (report.json "figures", keyed by name) that are timings.
 TIMING_FIGURE = re.compile(r"^(frame_time|kernel_time)")
-# A claim or answer line judged on a timing: its sentence and verdict move with the machine's
-# load (their structure and non-timing values are still compared).
-JUDGED_TEXT = ("measured", "verdict", "verdictText", "text")
+# A claim or answer line judged on a timing: its sentence, verdict and measured values move with
+# the machine's load (a timing marked disturbed leaves the verdict and drops its kind); its id,
+# origin, quote and method are still compared, and its non-timing inputs are compared where they
+# are measured (ops.json, isa.json, report.json).
+JUDGED_TEXT = ("measured", "measuredValue", "verdict", "verdictText", "text")
 
 
 def words(key):
@@ -45,26 +48,46 @@ def is_timing_key(key):
                                       bool(words(key) & TIMING_WORDS))
 
 
-def strip(value, key=""):
-    """value without its timing parts."""
+def judged_on_time(value):
+    """Whether a claim or an answer line is judged on a timing."""
+    return (
+        # a claim whose measured value held a timing, or that names time or speed
+        ("measuredValue" in value and (strip(value["measuredValue"]) != value["measuredValue"] or
+                                       value.get("section") == "Speed" or
+                                       bool(words(str(value.get("id", ""))) & {"time", "update"})))
+        # an answer line quoting a timing figure
+        or any(isinstance(f, str) and TIMING_FIGURE.search(f) for f in value.get("figures", []) or []
+               if isinstance(value.get("figures"), list)))
+
+
+def timed_claims(value, found):
+    """Adds to `found` the id of every claim in `value` judged on a timing."""
     if isinstance(value, list):
-        return [strip(v, key) for v in value]
+        for v in value:
+            timed_claims(v, found)
+    elif isinstance(value, dict):
+        if "id" in value and judged_on_time(value):
+            found.add(value["id"])
+        for v in value.values():
+            timed_claims(v, found)
+    return found
+
+
+def strip(value, key="", timed=frozenset()):
+    """value without its timing parts; `timed`: ids of claims judged on a timing in either run
+    (a timing marked disturbed in one run can leave a claim with no timed kind there)."""
+    if isinstance(value, list):
+        # plots/index.json: a plot of timings (frame_time_ratio, kernel_ratios) is left out whole.
+        return [strip(v, key, timed) for v in value
+                if not (key == "files" and isinstance(v, dict) and is_timing_key(str(v.get("name", ""))))]
     if not isinstance(value, dict) or key == "glossary":  # the glossary's meanings are text
         return value
     out = {}
     for k, v in value.items():
         if is_timing_key(k) or (key == "figures" and TIMING_FIGURE.search(k)):
             continue
-        out[k] = strip(v, k)
-    judged_on_time = (
-        # a claim whose measured value held a timing, or that names time or speed
-        ("measuredValue" in value and (strip(value["measuredValue"]) != value["measuredValue"] or
-                                       value.get("section") == "Speed" or
-                                       words(str(value.get("id", ""))) & {"time", "update"}))
-        # an answer line quoting a timing figure
-        or any(isinstance(f, str) and TIMING_FIGURE.search(f) for f in value.get("figures", []) or []
-               if isinstance(value.get("figures"), list)))
-    if judged_on_time:
+        out[k] = strip(v, k, timed)
+    if judged_on_time(value) or value.get("id") in timed:
         for k in JUDGED_TEXT:
             out.pop(k, None)
     return out
@@ -86,17 +109,15 @@ def identities(entries):
         present = [e[k] for e in entries if k in e]
         return present and all(isinstance(v, (str, int)) and not isinstance(v, bool) for v in present)
 
-    keys = [k for k in IDENTITY_KEYS if named_by(k)]
-    # Not unique yet (a shader per pipeline, variant and GPU family): the other text fields every
-    # entry has join the name, in sorted order, until it is.
-    extra = sorted(k for k in entries[0] if k not in keys and all(isinstance(e.get(k), str) for e in entries))
-    while keys:
-        ids = ["/".join(str(e.get(k, "-")) for k in keys) for e in entries]
+    # The naming keys in order, then (a shader per pipeline, variant and GPU family) the other
+    # text fields every entry has, in sorted order: the shortest run of them that names every
+    # entry once.
+    candidates = [k for k in IDENTITY_KEYS if named_by(k)]
+    candidates += sorted(k for k in entries[0] if k not in candidates and all(isinstance(e.get(k), str) for e in entries))
+    for n in range(1, len(candidates) + 1):
+        ids = ["/".join(str(e.get(k, "-")) for k in candidates[:n]) for e in entries]
         if len(set(ids)) == len(ids):
             return ids
-        if not extra:
-            return None
-        keys.append(extra.pop(0))
     return None
 
 
@@ -155,7 +176,9 @@ def load_tree(spec):
 def compare(old, new):
     """Lines naming each non-timing difference between two {path: JSON} trees."""
     out = []
-    differences({k: strip(v) for k, v in old.items()}, {k: strip(v) for k, v in new.items()}, "", out)
+    timed = frozenset(timed_claims(list(old.values()) + list(new.values()), set()))
+    differences({k: strip(v, "", timed) for k, v in old.items()}, {k: strip(v, "", timed) for k, v in new.items()},
+                "", out)
     return out
 
 

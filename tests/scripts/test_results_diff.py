@@ -103,6 +103,18 @@ class ResultsDiff(unittest.TestCase):
         self.assertEqual(rc, 1)
         self.assertIn("report.json.scenes[1].frames: 1 entries before, 0 now", out)
 
+    def test_a_timed_claim_left_unmeasured_by_a_disturbed_run_is_a_timing(self):
+        # A disturbed bench leaves the CPU claim "not measurable here" with no measured value:
+        # the claim is judged on a timing in the other run, so its verdict is not compared.
+        old = report(10.0, 50.0, "reproduced")
+        new = report(10.0, 50.0, "reproduced")
+        old["claims.json"]["claims"].append({"id": "cpu_vertex_frame_vs_strongest", "section": "Against",
+                                             "measuredValue": {"in_cache": {"real_time": 2.0}},
+                                             "verdict": "reproduced"})
+        new["claims.json"]["claims"].append({"id": "cpu_vertex_frame_vs_strongest", "section": "Against",
+                                             "measuredValue": None, "verdict": "not measurable here"})
+        self.assertEqual(diff(old, new), (0, ""))
+
     def test_reordered_entries_are_reported(self):
         old = report(10.0, 50.0, "reproduced")
         new = report(10.0, 50.0, "reproduced")
