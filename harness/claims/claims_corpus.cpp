@@ -6,12 +6,14 @@
 // by more than it; constant channels apart) (pipelines/scene/scale_analysis.h). The sample: the scene-graph corpus when given (issue 26:
 // ../shared/corpus-graph, ~960 real files), else the report's scenes (or the built-in scenes)
 // plus the --corpus folder. Test fixtures (manifest kind "test") are listed but left out of the
-// verdict: they are synthetic scenes, not the random files the paper sampled.
+// verdict: they are synthetic scenes, not the random files the paper sampled. Duplicate models
+// (the same content in two files: corpus_models.h) are counted once, beside the file count.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "harness/claims/claims_sources.h"
+#include "harness/claims/corpus_models.h"
 #include "harness/claims/corpus_stats.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
@@ -23,9 +25,10 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
+// Counts of distinct models (corpus_models.h), not of files.
 std::string pct(int n, int of) {
   char b[64];
-  std::snprintf(b, sizeof b, "%d of %d files (%.1f %%)", n, of, of ? 100.0 * n / of : 0.0);
+  std::snprintf(b, sizeof b, "%d of %d models (%.1f %%)", n, of, of ? 100.0 * n / of : 0.0);
   return b;
 }
 
@@ -34,7 +37,9 @@ json measure(const std::string& spec) {
   auto scene = loadScene(spec);
   FileStats s = scene ? computeFileStats(*scene) : failedFileStats(spec, scene.error());
   s.file = spec;
-  return toJson(s);
+  json j = toJson(s);
+  if (scene) j["contentHash"] = contentHash(*scene);
+  return j;
 }
 
 // The sample the two rows are judged on, and where it came from.
@@ -96,20 +101,31 @@ struct Counts {
 
 std::vector<Claim> corpusClaims(const CorpusInputs& in) {
   const Sample sample = sampleOf(in);
-  const json kinds = aggregateByKind(sample.files);
-  // The verdict's files: every loaded file but the test fixtures and the built-in scenes.
-  json judged = json::array();
-  const std::vector<std::string> fileKind = fileKinds(sample.files);
-  for (size_t i = 0; i < fileKind.size(); ++i)
-    if (fileKind[i] != "test" && !isBuiltin(sample.files[i].value("file", ""))) judged.push_back(sample.files[i]);
-  const json all = aggregateFileJson(sample.files), real = aggregateFileJson(judged);
+  // Every statistic below counts distinct models: the first file of each duplicate group.
+  const DistinctModels models = distinctModels(sample.files);
+  const json distinct = representativeFiles(sample.files, models);
+  const json kinds = aggregateByKind(distinct);
+  // The verdict's models: every one but the test fixtures and the built-in scenes.
+  const auto judgedOf = [](const json& files) {
+    json out = json::array();
+    const std::vector<std::string> fileKind = fileKinds(files);
+    for (size_t i = 0; i < fileKind.size(); ++i)
+      if (fileKind[i] != "test" && !isBuiltin(files[i].value("file", ""))) out.push_back(files[i]);
+    return out;
+  };
+  const json judged = judgedOf(distinct);
+  const size_t judgedFiles = judgedOf(sample.files).size();  // before duplicates are counted once
+  const json all = aggregateFileJson(distinct), real = aggregateFileJson(judged);
   const Counts a(all), r(real);
   const int failed = all.value("failed", 0);
+  const std::string allWhat = "all " + filesAndModels(models), judgedCount =
+      std::to_string(judgedFiles) + " files, " + std::to_string(judged.size()) + " distinct models";
+  const json modelsValue = toJson(models);
   std::string byKind;
   if (kinds.is_object())
     for (const auto& [kind, agg] : kinds.items()) {
       const Counts k(agg);
-      byKind += (byKind.empty() ? "" : "; ") + kind + ": " + std::to_string(k.files) + " files, scale channel " +
+      byKind += (byKind.empty() ? "" : "; ") + kind + ": " + std::to_string(k.files) + " models, scale channel " +
                 std::to_string(k.channel) + ", changing " + std::to_string(k.changing) + " (non-uniformly " +
                 std::to_string(k.changingNonUniform) + "), inner non-uniform " + std::to_string(k.inner);
     }
@@ -119,20 +135,24 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
   // paper's loader uses 1e-4 for a matrix's column scales; for animation keys it states none.
   const std::string rule = "1e-4 relative";
   const std::string sampleText = sample.what + (failed ? "; " + std::to_string(failed) + " failed to load" : "") +
-                                 (byKind.empty() ? "" : "; by kind: " + byKind);
+                                 (byKind.empty() ? "" : "; by kind: " + byKind) +
+                                 ". Counted over distinct models (" + allWhat + "): " + kSameModelDefinition;
   json kindsValue = kinds.is_object() ? kinds : json(nullptr);
 
   Claim c{"animated_scale_corpus", "Scene statistics", "less than 0.5 % of ~400 glTF files animate scale"};
   c.paper = "< 0.5 % of ~400 files";
   c.paperValue = {{"fraction", 0.005}, {"files", 400}};
-  c.measured = "all " + std::to_string(a.files) + " files: a scale channel in " + pct(a.channel, a.files) +
+  c.measured = allWhat + ": a scale channel in " + pct(a.channel, a.files) +
                ", keys changing the scale (beyond " + rule + ") in " + pct(a.changing, a.files) +
                ", changing it non-uniformly in " + std::to_string(a.changingNonUniform) + ", only constant scale channels "
-               "(keys that never change, reported apart) in " + std::to_string(a.constantOnly) + "; " + judgedWhat + ": " +
-               pct(r.changing, r.files) + " change the scale (" + pct(r.channel, r.files) + " have a channel, " +
+               "(keys that never change, reported apart) in " + std::to_string(a.constantOnly) + "; " + judgedWhat + " (" +
+               judgedCount + "): " + pct(r.changing, r.files) + " change the scale (" + pct(r.channel, r.files) + " have a channel, " +
                std::to_string(r.constantOnly) + " only constant ones)";
-  c.measuredValue = {{"files", a.files}, {"withScaleChannel", a.channel}, {"withChangingScale", a.changing},
-                     {"withNonUniformChangingScale", a.changingNonUniform}, {"judgedFiles", r.files},
+  c.measuredValue = {{"files", models.files}, {"distinctModels", models.representatives.size()},
+                     {"countedOver", "distinct models (first file of each duplicate group; failed loads apart)"},
+                     {"models", modelsValue}, {"judgedFiles", judgedFiles}, {"judgedModels", r.files},
+                     {"withScaleChannel", a.channel}, {"withChangingScale", a.changing},
+                     {"withNonUniformChangingScale", a.changingNonUniform},
                      {"judgedWithChangingScale", r.changing}, {"judgedWithScaleChannel", r.channel},
                      {"judgedFraction", r.files ? double(r.changing) / r.files : 0.0}, {"tolerance", kPaperScaleTolerance},
                      {"withOnlyConstantScaleChannels", a.constantOnly}, {"judgedWithOnlyConstantScaleChannels", r.constantOnly},
@@ -141,12 +161,12 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
              ". A file animates its scale when a scale channel's keys change over time: a key differs from the "
              "channel's first key by more than 1e-4 relative in some component (our tolerance: the paper states none "
              "for keys). A channel of constant keys (all 1, or a fixed scale other than the rest scale) sets a scale "
-             "and animates nothing: such files are counted apart; the verdict counts the files " + judgedWhat;
+             "and animates nothing: such models are counted apart; the verdict counts the distinct models " + judgedWhat;
   if (r.files < 200) {
     char smallest[32];
     std::snprintf(smallest, sizeof smallest, "%.1f %%", r.files ? 100.0 / r.files : 100.0);
     c.verdict = Verdict::NotMeasurable;
-    c.verdictText = "not measurable here: " + std::to_string(r.files) + " real files cannot resolve 0.5 % (the smallest "
+    c.verdictText = "not measurable here: " + std::to_string(r.files) + " real models cannot resolve 0.5 % (the smallest "
                     "non-zero fraction is " + smallest + "); give --scene-graphs (e.g. ../shared/corpus-graph)";
   } else {
     const double f = double(r.changing) / r.files;
@@ -173,8 +193,8 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
                 ex.value("name", std::string("?")) + b;
   }
   if (listed > 3) examples += ", ...";
-  l.measured = "all " + std::to_string(a.files) + " files: non-uniform scale (beyond " + rule + ") on an inner node in " +
-               pct(a.inner, a.files) + "; " + judgedWhat + ": " + pct(r.inner, r.files) + ", " +
+  l.measured = allWhat + ": non-uniform scale (beyond " + rule + ") on an inner node in " + pct(a.inner, a.files) +
+               "; " + judgedWhat + " (" + judgedCount + "): " + pct(r.inner, r.files) + ", " +
                std::to_string(r.innerBeyondPercent) + " of them beyond 1 %" + (examples.empty() ? "" : " (" + examples + ")");
   // What the motor family's exact fallback (issue 34) takes on the same files, at rest, as inspect
   // counted it (motorFallbacks in its JSON; absent from an inspect run older than the fallback).
@@ -193,7 +213,10 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
                   pct(generalFiles, censused) + " for nodes whose world is not a similarity (" +
                   std::to_string(linearDraws) + " rigid draws at rest) and " + pct(skinFiles, censused) +
                   " for skins whose joints are not one uniform scale (" + std::to_string(skinDraws) + " skinned draws)";
-  l.measuredValue = {{"files", a.files}, {"withInnerNonUniform", a.inner}, {"judgedFiles", r.files},
+  l.measuredValue = {{"files", models.files}, {"distinctModels", models.representatives.size()},
+                     {"countedOver", "distinct models (first file of each duplicate group; failed loads apart)"},
+                     {"models", modelsValue}, {"judgedFiles", judgedFiles}, {"judgedModels", r.files},
+                     {"withInnerNonUniform", a.inner},
                      {"judgedWithInnerNonUniform", r.inner}, {"judgedBeyond1Percent", r.innerBeyondPercent},
                      {"tolerance", kPaperScaleTolerance}, {"byKind", kindsValue},
                      {"motorFallback", censused ? json{{"files", censused}, {"withGeneralNodes", generalFiles},
@@ -204,13 +227,13 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
              ". A node is inner when it has children; its scale is non-uniform when |s0/s1 - 1| or |s1/s2 - 1| exceeds "
              "1e-4 (the tolerance the paper's loader applies to a matrix's column scales; every scale statistic uses it) at rest or "
              "in any scale key (an authored matrix with shear counts); the "
-             "verdict counts the files " + judgedWhat;
+             "verdict counts the distinct models " + judgedWhat;
   if (r.files == 0) {
     l.verdict = Verdict::NotMeasurable;
-    l.verdictText = "not measurable here: no real file in the sample";
+    l.verdictText = "not measurable here: no real model in the sample";
   } else if (r.inner == 0) {
     l.verdict = Verdict::Reproduced;
-    l.verdictText = "reproduced: none of " + std::to_string(r.files) + " files " + judgedWhat +
+    l.verdictText = "reproduced: none of " + std::to_string(r.files) + " distinct models " + judgedWhat +
                     " has non-uniform scale beyond 1e-4 on an inner node";
   } else {
     l.verdict = Verdict::Differs;

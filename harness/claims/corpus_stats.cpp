@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "harness/claims/corpus_models.h"
 #include "harness/report/report_inputs.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scene_stats.h"
@@ -84,6 +85,7 @@ Result<json> corpusFiles(const std::string& path) {
       FileStats stats = scene ? computeFileStats(*scene) : failedFileStats(in.spec, scene.error());
       stats.file = in.spec;  // the path, so that the folder's MANIFEST.tsv is found
       files.push_back(toJson(stats));
+      if (scene) files.back()["contentHash"] = contentHash(*scene);  // duplicates: corpus_models.h
     }
     if (files.empty()) return Result<json>::fail(path + ": no .gltf/.glb files in this folder");
     return files;

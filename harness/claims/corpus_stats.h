@@ -26,7 +26,7 @@ std::vector<std::string> fileKinds(const nlohmann::json& files);
 nlohmann::json aggregateByKind(const nlohmann::json& files);
 
 // The per-file JSON of a corpus: `path` is an inspect JSON (its "files") or a folder whose
-// .gltf/.glb files are loaded and analysed now. An error names the path and the reason.
+// .gltf/.glb files are loaded and analysed now (each with its "contentHash", corpus_models.h). An error names the path and the reason.
 Result<nlohmann::json> corpusFiles(const std::string& path);
 
 }  // namespace mb::claims

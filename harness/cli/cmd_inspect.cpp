@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "harness/claims/corpus_models.h"
 #include "harness/claims/corpus_stats.h"
 #include "harness/options/args.h"
 #include "harness/options/shard.h"
@@ -174,6 +175,7 @@ int runInspect(const std::vector<std::string>& argv) {
     printFile(stats.back());
     files.push_back(mb::toJson(stats.back()));
     files.back()["input"] = file;  // the argument (a built-in's "file" is its generated name)
+    if (scene) files.back()["contentHash"] = mb::claims::contentHash(*scene);  // duplicate models
     if (scene) describeMotorFallbacks(*scene, files.back());
     if (scene) describeViews(*scene, files.back());
     failed += !scene;
@@ -181,7 +183,13 @@ int runInspect(const std::vector<std::string>& argv) {
   nlohmann::json aggregate = mb::aggregateJson(stats);
   // By source kind when the files' folder has a MANIFEST.tsv (../shared/corpus-graph).
   if (const nlohmann::json kinds = mb::claims::aggregateByKind(files); !kinds.is_null()) aggregate["byKind"] = kinds;
+  // Files of the same content (harness/claims/corpus_models.h): claims counts each model once.
+  const mb::claims::DistinctModels models = mb::claims::distinctModels(files);
+  aggregate["models"] = mb::claims::toJson(models);
   if (stats.size() > 1) printAggregate(aggregate);
+  if (stats.size() > 1)
+    std::printf("  models      %s (%zu duplicate groups; the same content hash: see \"models\" in --json)\n",
+                mb::claims::filesAndModels(models).c_str(), models.duplicateGroups.size());
   if (auto path = args.get("json")) {
     // replace: error messages may quote file bytes or paths that are not UTF-8.
     const nlohmann::json shardJson = {{"index", shard.index}, {"count", shard.count}, {"inputs", all}};

@@ -11,7 +11,9 @@
 
 #include "harness/claims/claims_sources.h"
 #include "tests/claims/claims_test_support.h"
+#include "harness/claims/corpus_models.h"
 #include "harness/claims/corpus_stats.h"
+#include "pipelines/scene/gltf_writer.h"
 #include "pipelines/scene/scale_analysis.h"
 #include "pipelines/scene/scene_stats.h"
 
@@ -154,10 +156,13 @@ TEST(ClaimsCorpus, VerdictsCountTheGivenFilesByKind) {
   const claims::Claim a = only(rows, "animated_scale_corpus"), l = only(rows, "nonuniform_scale_leaves");
   EXPECT_EQ(a.verdict, claims::Verdict::Differs) << a.verdictText;
   EXPECT_EQ(a.measuredValue["files"], 250);
+  // No content hash in these hand-made stats: each file is its own model, and says so.
+  EXPECT_EQ(a.measuredValue["distinctModels"], 250);
+  EXPECT_EQ(a.measuredValue["models"]["filesWithoutContentHash"], 250);
   EXPECT_EQ(a.measuredValue["withChangingScale"], 12);
   EXPECT_EQ(a.measuredValue["judgedFiles"], 200);
   EXPECT_EQ(a.measuredValue["judgedWithChangingScale"], 2);
-  EXPECT_NE(a.verdictText.find("2 of 200 files (1.0 %)"), std::string::npos) << a.verdictText;
+  EXPECT_NE(a.verdictText.find("2 of 200 models (1.0 %)"), std::string::npos) << a.verdictText;
   EXPECT_EQ(l.verdict, claims::Verdict::Differs) << l.verdictText;
   EXPECT_EQ(l.measuredValue["judgedWithInnerNonUniform"], 1);
   EXPECT_EQ(l.measuredValue["judgedBeyond1Percent"], 0);
@@ -223,4 +228,127 @@ TEST(ScaleDefinitions, OneNonUniformToleranceForLeavesAndInnerNodes) {
   EXPECT_EQ(r.innerNonUniformNodes, 0);
   EXPECT_TRUE(r.nonUniformOnlyOnLeaves);
   EXPECT_TRUE(r.nonUniformScale);
+}
+
+namespace {
+
+const std::vector<glm::vec3> kTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+
+// One triangle on a node whose scale grows from 1 to 2 (when `grows`), written by GlbBuilder:
+// one tightly packed buffer view per accessor, uint32 indices.
+void writeBuilderGlb(const fs::path& path, const std::vector<glm::vec3>& positions, bool grows) {
+  GlbBuilder b;
+  MeshData m;
+  m.positions = positions;
+  m.normals.assign(3, glm::vec3(0, 0, 1));
+  m.indices = {0, 1, 2};
+  const int node = b.addNode("triangle");
+  b.setMesh(node, b.addMesh("triangle", m, -1));
+  b.addRoot(node);
+  if (grows) b.addChannel(b.addAnimation("grow"), node, "scale", {0, 1}, {1, 1, 1, 2, 2, 2});
+  auto bytes = b.writeGlb();
+  ASSERT_TRUE(bytes) << bytes.error();
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes->data()), std::streamsize(bytes->size()));
+}
+
+// The same triangle and animation as writeBuilderGlb(kTriangle, true) in another layout, by
+// hand: a .gltf with an external .bin, the animation's data first, position and normal
+// interleaved in one strided view, uint16 indices, another node name and generator.
+void writeInterleavedGltf(const fs::path& path) {
+  std::vector<float> bin = {0, 1, /*scale keys*/ 1, 1, 1, 2, 2, 2};
+  for (const glm::vec3& p : kTriangle) bin.insert(bin.end(), {p.x, p.y, p.z, 0, 0, 1});
+  const uint16_t indices[4] = {0, 1, 2, 0};  // the last one is padding
+  std::ofstream b(path.parent_path() / "data.bin", std::ios::binary);
+  b.write(reinterpret_cast<const char*>(bin.data()), std::streamsize(bin.size() * 4));
+  b.write(reinterpret_cast<const char*>(indices), sizeof indices);
+  b.close();
+  const json gltf = {
+      {"asset", {{"version", "2.0"}, {"generator", "written by hand"}}},
+      {"buffers", {{{"uri", "data.bin"}, {"byteLength", 8 * 4 + 18 * 4 + 8}}}},
+      {"bufferViews", {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 32}},
+                       {{"buffer", 0}, {"byteOffset", 32}, {"byteLength", 72}, {"byteStride", 24}},
+                       {{"buffer", 0}, {"byteOffset", 104}, {"byteLength", 6}}}},
+      {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 2}, {"type", "SCALAR"}, {"min", {0}}, {"max", {1}}},
+                     {{"bufferView", 0}, {"byteOffset", 8}, {"componentType", 5126}, {"count", 2}, {"type", "VEC3"}},
+                     {{"bufferView", 1}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
+                      {"min", {0, 0, 0}}, {"max", {1, 1, 0}}},
+                     {{"bufferView", 1}, {"byteOffset", 12}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
+                     {{"bufferView", 2}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}}},
+      {"meshes", {{{"primitives", {{{"attributes", {{"NORMAL", 3}, {"POSITION", 2}}}, {"indices", 4}}}}}}},
+      {"nodes", {{{"name", "Body"}, {"mesh", 0}}}},
+      {"scenes", {{{"nodes", {0}}}}},
+      {"scene", 0},
+      {"animations", {{{"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "scale"}}}}}},
+                       {"samplers", {{{"input", 0}, {"output", 1}}}}}}}};
+  std::ofstream(path) << gltf.dump(1);
+}
+
+}  // namespace
+
+// Issue 35 item 6: files of the same mesh content are one model. A corpus of three files written
+// here: a.glb and b.gltf hold the same triangle (and the same growing scale) in different
+// layouts, names and generators; c.glb a different triangle that does not animate. Expected by
+// construction: 3 files, 2 distinct models, and the growing scale counted once, 1 of 2 models
+// (per file it would be 2 of 3).
+TEST(ClaimsCorpus, DuplicateModelsAreCountedOnce) {
+  const fs::path dir = fs::temp_directory_path() / ("mb_claims_models_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  writeBuilderGlb(dir / "a.glb", kTriangle, true);
+  writeInterleavedGltf(dir / "b.gltf");
+  writeBuilderGlb(dir / "c.glb", {{0, 0, 0}, {2, 0, 0}, {0, 1, 0}}, false);
+  auto files = claims::corpusFiles(dir.string());
+  ASSERT_TRUE(files) << files.error();
+  ASSERT_EQ(files->size(), 3u);
+  for (const json& f : *files) ASSERT_TRUE(f.value("loaded", false)) << f.dump();
+  EXPECT_EQ((*files)[0]["contentHash"], (*files)[1]["contentHash"]);
+  EXPECT_NE((*files)[0]["contentHash"], (*files)[2]["contentHash"]);
+
+  claims::CorpusInputs in;
+  in.sceneGraphs = *files;
+  in.sceneGraphSource = "3 files written by the test";
+  const claims::Claim a = only(claims::corpusClaims(in), "animated_scale_corpus");
+  EXPECT_EQ(a.measuredValue["files"], 3);
+  EXPECT_EQ(a.measuredValue["distinctModels"], 2);
+  EXPECT_EQ(a.measuredValue["withChangingScale"], 1);
+  EXPECT_EQ(a.measuredValue["withScaleChannel"], 1);
+  EXPECT_NE(a.measured.find("all 3 files, 2 distinct models: a scale channel in 1 of 2 models (50.0 %)"), std::string::npos)
+      << a.measured;
+  const json& groups = a.measuredValue["models"]["largestDuplicateGroups"];
+  ASSERT_EQ(groups.size(), 1u) << groups;
+  EXPECT_EQ(groups[0], json({(dir / "a.glb").string(), (dir / "b.gltf").string()}));
+  EXPECT_NE(a.method.find(claims::kSameModelDefinition), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// Without meshes (../shared/corpus-graph) an animated or skinned graph is the content: the same
+// nodes and keys are one model whatever the node names, other keys or another rest scale another;
+// a static graph identifies nothing (no hash: a model of its own); with meshes the graph does not
+// count.
+TEST(ClaimsCorpus, GraphOnlyFilesHashTheirGraph) {
+  const Scene s = twoNodes({1, 1, 1}, {1, 1, 1});
+  EXPECT_EQ(claims::contentHash(s), "");
+  const auto animated = [](glm::vec3 rootScale, glm::vec3 key) {
+    Scene a = twoNodes(rootScale, {1, 1, 1});
+    a.animations.push_back(Animation{});
+    a.animations[0].channels.push_back(scaleChannel(1, {{1, 1, 1}, key}));
+    return a;
+  };
+  const std::string hash = claims::contentHash(animated({1, 1, 1}, {2, 2, 2}));
+  EXPECT_EQ(hash.size(), 16u);
+  Scene renamed = animated({1, 1, 1}, {2, 2, 2});
+  renamed.nodes[1].name = "leaf";
+  EXPECT_EQ(claims::contentHash(renamed), hash);
+  EXPECT_NE(claims::contentHash(animated({1, 1, 1}, {2, 2, 3})), hash);
+  EXPECT_NE(claims::contentHash(animated({1, 2, 1}, {2, 2, 2})), hash);
+
+  const auto meshed = [](Scene scene, glm::vec3 corner) {
+    scene.meshes.push_back(Mesh{});
+    scene.meshes[0].primitives.push_back(Primitive{});
+    scene.meshes[0].primitives[0].positions = {kTriangle[0], kTriangle[1], corner};
+    return scene;
+  };
+  const std::string meshHash = claims::contentHash(meshed(s, kTriangle[2]));
+  EXPECT_EQ(meshHash.size(), 16u);
+  EXPECT_EQ(claims::contentHash(meshed(animated({1, 2, 1}, {2, 2, 3}), kTriangle[2])), meshHash);
+  EXPECT_NE(claims::contentHash(meshed(s, {0, 2, 0})), meshHash);
 }
