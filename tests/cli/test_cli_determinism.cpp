@@ -1,7 +1,8 @@
 // Determinism (issue 7, item 3; DESIGN idea 6): the same frame rendered twice in one process,
 // and by two separate `motorbench render` processes (one of them on a single llvmpipe thread),
 // is bit-identical, for every built-in scene and registered pipeline, at rest and at an
-// animation time. Goldens rely on this.
+// animation time. Goldens rely on this. The process pair renders every pipeline of a scene's
+// space in one `render --pipelines all` each (a process start costs more than these frames).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,9 +10,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
+#include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/scene/curved_space.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/pipeline_scene_cases.h"
 
@@ -40,29 +44,33 @@ std::string firstDifference(const RgbaImage& a, const RgbaImage& b) {
   return "";
 }
 
+// Rest pose, and animation 0 at a time exactly representable in the decimal form passed to the
+// command line (a multiple of 1/64), so both paths pose the same state.
+std::vector<AnimState> determinismStates(const Scene& scene) {
+  std::vector<AnimState> out = {AnimState{}};
+  if (!scene.animations.empty()) {
+    AnimState a;
+    a.anim = 0;
+    a.time = a.time2 = std::floor(0.4f * scene.animations[0].duration * 64.0f) / 64.0f;
+    out.push_back(a);
+  }
+  return out;
+}
+
+RgbaImage renderSmallFrame(const Scene& scene, const std::string& pipeline, const AnimState& anim) {
+  FrameSettings s;
+  s.anim = anim;
+  s.width = kW;
+  s.height = kH;
+  auto f = renderFrame(scene, pipeline, s);
+  EXPECT_TRUE(f) << pipeline << ": " << f.error();
+  return f ? f->image : RgbaImage{};
+}
+
 class Determinism : public PipelineSceneTest {
 protected:
-  // Rest pose, and animation 0 at a time exactly representable in the decimal form passed
-  // to the command line (a multiple of 1/64), so both paths pose the same state.
-  std::vector<AnimState> states() const {
-    std::vector<AnimState> out = {AnimState{}};
-    if (!scene_.animations.empty()) {
-      AnimState a;
-      a.anim = 0;
-      a.time = a.time2 = std::floor(0.4f * scene_.animations[0].duration * 64.0f) / 64.0f;
-      out.push_back(a);
-    }
-    return out;
-  }
-  RgbaImage render(const AnimState& anim) {
-    FrameSettings s;
-    s.anim = anim;
-    s.width = kW;
-    s.height = kH;
-    auto f = renderFrame(scene_, GetParam().pipeline, s);
-    EXPECT_TRUE(f) << f.error();
-    return f ? f->image : RgbaImage{};
-  }
+  std::vector<AnimState> states() const { return determinismStates(scene_); }
+  RgbaImage render(const AnimState& anim) { return renderSmallFrame(scene_, GetParam().pipeline, anim); }
 };
 
 TEST_P(Determinism, SameFrameTwiceInOneProcess) {
@@ -83,33 +91,64 @@ TEST_P(Determinism, SameFrameTwiceInOneProcess) {
   }
 }
 
-TEST_P(Determinism, SeparateProcessesMatchEachOtherAndThisProcess) {
+// Every scene pipelineSceneCases() covers: the glTF built-ins and the curved-space scenes.
+std::vector<std::string> determinismScenes() {
+  std::vector<std::string> out = builtinSceneNames();
+  for (const std::string& c : curvedSceneNames()) out.push_back(c);
+  return out;
+}
+
+class SceneDeterminism : public ::testing::TestWithParam<std::string> {
+protected:
+  void SetUp() override {
+    auto s = loadScene(GetParam());
+    ASSERT_TRUE(s) << s.error();
+    scene_ = s.take();
+  }
+  Scene scene_;
+};
+
+TEST_P(SceneDeterminism, SeparateProcessesMatchEachOtherAndThisProcess) {
   const fs::path dir = mb::cli_test::scratchDir("determinism");
-  for (const AnimState& anim : states()) {
+  const std::vector<std::string> pipelines = pipelineNames(scene_.curved.space);
+  ASSERT_FALSE(pipelines.empty());
+  for (const AnimState& anim : determinismStates(scene_)) {
     char animArgs[96] = "";
     if (anim.anim >= 0) std::snprintf(animArgs, sizeof animArgs, " --anim %d --time %.6f", anim.anim, double(anim.time));
-    fs::path files[2] = {dir / "first.png", dir / "second.png"};
     // The second process rasterizes on one llvmpipe thread: goldens must not depend on the
     // number of cores of the machine that runs the check.
+    const fs::path dirs[2] = {dir / "default", dir / "one_thread"};
     const char* env[2] = {"", "LP_NUM_THREADS=1 "};
     for (int k = 0; k < 2; ++k) {
-      const fs::path& f = files[k];
       std::string out;
-      int rc = mb::cli_test::runCommand(env[k] + mb::cli_test::motorbench() + "render " + GetParam().scene + " --pipeline " +
-                   GetParam().pipeline + " --size " + std::to_string(kW) + "x" + std::to_string(kH) +
-                   animArgs + " -o " + mb::cli_test::quoted(f), &out);
+      int rc = mb::cli_test::runCommand(env[k] + mb::cli_test::motorbench() + "render " + GetParam() +
+                                            " --pipelines all --size " + std::to_string(kW) + "x" + std::to_string(kH) +
+                                            animArgs + " -o " + mb::cli_test::quoted(dirs[k]),
+                                        &out);
       ASSERT_EQ(rc, 0) << out;
+      // "all": one image per registered pipeline of the scene's space, nothing else.
+      std::set<std::string> written, expected;
+      for (const auto& e : fs::directory_iterator(dirs[k])) written.insert(e.path().filename().string());
+      for (const std::string& p : pipelines) expected.insert(p + ".png");
+      EXPECT_EQ(written, expected) << env[k] << animArgs;
     }
-    EXPECT_EQ(bytesOf(files[0]), bytesOf(files[1])) << "PNG files differ (default vs LP_NUM_THREADS=1)" << animArgs;
-    auto a = readImage(files[0].string());
-    auto b = readImage(files[1].string());
-    ASSERT_TRUE(a && b);
-    EXPECT_EQ(firstDifference(*a, *b), "") << "process vs process (default vs LP_NUM_THREADS=1)" << animArgs;
-    EXPECT_EQ(firstDifference(*a, render(anim)), "") << "process vs in-process" << animArgs;
+    for (const std::string& p : pipelines) {
+      const fs::path files[2] = {dirs[0] / (p + ".png"), dirs[1] / (p + ".png")};
+      EXPECT_EQ(bytesOf(files[0]), bytesOf(files[1])) << p << ": PNG files differ (default vs LP_NUM_THREADS=1)" << animArgs;
+      auto a = readImage(files[0].string());
+      auto b = readImage(files[1].string());
+      EXPECT_TRUE(a && b) << p << ": an image did not decode" << animArgs;
+      if (!a || !b) continue;
+      EXPECT_EQ(firstDifference(*a, *b), "") << p << ": process vs process (default vs LP_NUM_THREADS=1)" << animArgs;
+      EXPECT_EQ(firstDifference(*a, renderSmallFrame(scene_, p, anim)), "") << p << ": process vs in-process" << animArgs;
+    }
+    for (const fs::path& d : dirs) fs::remove_all(d);
   }
   fs::remove_all(dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(BuiltinScenes, Determinism, ::testing::ValuesIn(pipelineSceneCases()), caseName);
+INSTANTIATE_TEST_SUITE_P(BuiltinScenes, SceneDeterminism, ::testing::ValuesIn(determinismScenes()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 }  // namespace
