@@ -9,8 +9,8 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "harness/render/image_metrics.h"
@@ -61,16 +61,21 @@ TEST(MorphCorpus, MotorMethodsAgainstMatrixWithAnimatedWeights) {
     std::vector<AnimState> states{AnimState{}};
     for (size_t a = 0; a < scene->animations.size(); ++a)
       for (float f : {0.25f, 0.5f, 0.75f}) states.push_back({int(a), f * scene->animations[a].duration});
-    for (const AnimState& st : states) {
-      const Frame matrix = mbtest::renderWithOptions(*scene, "matrix", {}, st, kSize);
+    // Each pipeline and method prepared once per file, every state drawn through it.
+    const std::vector<Frame> matrix = mbtest::renderStatesWithOptions(*scene, "matrix", {}, states, kSize);
+    std::vector<Frame> motor[2];
+    for (int m = 0; m < 2; ++m)
+      motor[m] = mbtest::renderStatesWithOptions(*scene, "motor", {SkinSpace::PipelineDefault, methods[m].second}, states, kSize);
+    for (size_t i = 0; i < states.size(); ++i) {
+      const AnimState& st = states[i];
       ++frames;
-      morphedFrames += matrix.stats.morphDraws > 0;
+      morphedFrames += matrix[i].stats.morphDraws > 0;
       const std::string where = fs::path(file).filename().string() + " anim " + std::to_string(st.anim) + " t " +
                                 std::to_string(st.time).substr(0, 5);
       for (int m = 0; m < 2; ++m) {
-        const Frame f = mbtest::renderWithOptions(*scene, "motor", {SkinSpace::PipelineDefault, methods[m].second}, st, kSize);
-        EXPECT_EQ(f.stats.morphDraws, matrix.stats.morphDraws) << where;
-        auto metrics = compareImages(matrix.image, f.image);
+        const Frame& f = motor[m][i];
+        EXPECT_EQ(f.stats.morphDraws, matrix[i].stats.morphDraws) << where;
+        auto metrics = compareImages(matrix[i].image, f.image);
         ASSERT_TRUE(metrics) << metrics.error();
         for (Worst* w : {&worst[m], skinned ? nullptr : &worstRigid[m]})
           if (w && metrics->psnr < w->psnr) *w = {metrics->psnr, metrics->maxError, where};
@@ -102,21 +107,21 @@ TEST(MorphCorpus, EveryPipelineMorphsWhatMatrixMorphs) {
     std::vector<AnimState> states{AnimState{}};  // the rest pose (default weights), then the animations
     for (size_t a = 0; a < scene->animations.size(); ++a)
       for (float f : {0.25f, 0.5f, 0.75f}) states.push_back({int(a), f * scene->animations[a].duration});
-    for (const AnimState& st : states) {
-      FrameSettings fs;
-      fs.width = fs.height = kSize;
-      fs.anim = st;
-      auto matrix = renderFrame(*scene, "matrix", fs);
-      ASSERT_TRUE(matrix) << matrix.error();
-      if (matrix->stats.morphDraws == 0) continue;
-      const std::string where = fs::path(file).filename().string() + " anim " + std::to_string(st.anim) + " t " +
-                                std::to_string(fs.anim.time).substr(0, 5);
-      for (const std::string& p : pipelineNames()) {
-        auto frame = renderFrame(*scene, p, fs);
-        ASSERT_TRUE(frame) << frame.error();
-        EXPECT_GE(frame->stats.morphDraws, matrix->stats.morphDraws) << p << " " << where;
-        EXPECT_EQ(frame->stats.morphNotDrawnNodes, 0) << p << " " << where;
-        auto metrics = compareImages(matrix->image, frame->image);
+    // The states where matrix morphs; each pipeline prepared once per file and drawn at each.
+    const std::vector<Frame> all = mbtest::renderStatesWithOptions(*scene, "matrix", {}, states, kSize);
+    std::vector<AnimState> morphing;
+    std::vector<Frame> matrix;
+    for (size_t i = 0; i < states.size(); ++i)
+      if (all[i].stats.morphDraws > 0) morphing.push_back(states[i]), matrix.push_back(all[i]);
+    if (morphing.empty()) continue;
+    for (const std::string& p : pipelineNames()) {
+      const std::vector<Frame> frames = mbtest::renderStatesWithOptions(*scene, p, {}, morphing, kSize);
+      for (size_t i = 0; i < morphing.size(); ++i) {
+        const std::string where = fs::path(file).filename().string() + " anim " + std::to_string(morphing[i].anim) +
+                                  " t " + std::to_string(morphing[i].time).substr(0, 5);
+        EXPECT_GE(frames[i].stats.morphDraws, matrix[i].stats.morphDraws) << p << " " << where;
+        EXPECT_EQ(frames[i].stats.morphNotDrawnNodes, 0) << p << " " << where;
+        auto metrics = compareImages(matrix[i].image, frames[i].image);
         ASSERT_TRUE(metrics) << metrics.error();
         if (metrics->psnr < worst[p].psnr) worst[p] = {metrics->psnr, metrics->maxError, where};
       }
