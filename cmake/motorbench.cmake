@@ -20,36 +20,60 @@ if(MB_PCH AND NOT TARGET mb_pch)
 endif()
 
 # Unity builds (-DMB_UNITY=ON, scripts/test.sh sets it for a new folder): a target's .cpp files
-# compiled MB_UNITY_BATCH at a time as one translation unit, so the headers they share (tinygltf,
-# nlohmann/json, GLM, gtest) are parsed once per batch instead of once per file. Inlining across
-# the files of a batch can change, so the code bench and time measure (MB_MEASURED_DIRS) is
-# built file by file in the measuring build and joins batches only in the quick -O1 test build
-# (MB_QUICK_BUILD=ON), which measures nothing. Files that define an implementation macro
-# (tinygltf's, stb's) or re-include themselves per SIMD target (Highway's HWY_TARGET_INCLUDE)
-# stay on their own, and so does a file whose first line is "// MB_UNITY_ALONE" (a test whose
-# file-local helpers, load/render/kCases, are named as in other tests of its room).
+# compiled up to MB_UNITY_BATCH at a time as one translation unit, so the headers they share
+# (tinygltf, nlohmann/json, GLM, gtest) are parsed once per batch instead of once per file.
+# Inlining across the files of a batch can change, so the code bench and time measure
+# (MB_MEASURED_DIRS) is built file by file in the measuring build and joins batches only in the
+# quick -O1 test build (MB_QUICK_BUILD=ON), which measures nothing. cmake/unity_groups.py fills
+# the batches: never two files that define the same file-local name (a load/render/kCases helper
+# in an anonymous namespace) in one batch, and alone the files that define an implementation
+# macro (tinygltf's, stb's), re-include themselves per SIMD target (Highway's
+# HWY_TARGET_INCLUDE) or start with the line "// MB_UNITY_ALONE".
 option(MB_UNITY "Unity builds (batches of MB_UNITY_BATCH files) where they do not touch measured code" OFF)
 set(MB_UNITY_BATCH 8 CACHE STRING "Files per unity batch (MB_UNITY=ON)")
+find_package(Python3 COMPONENTS Interpreter)
 
 # mb_unity(TARGET MEASURED): TARGET's sources in unity batches when MB_UNITY allows it.
 function(mb_unity target measured)
   if(NOT MB_UNITY OR (measured AND NOT MB_QUICK_BUILD))
     return()
   endif()
+  if(NOT Python3_Interpreter_FOUND)
+    message(WARNING "MB_UNITY=ON needs python3 (cmake/unity_groups.py): ${target} is built file by file")
+    return()
+  endif()
   get_target_property(srcs ${target} SOURCES)
   get_target_property(dir ${target} SOURCE_DIR)
+  set(cpps "")
   foreach(src ${srcs})
     if(NOT IS_ABSOLUTE "${src}")
       set(src "${dir}/${src}")
     endif()
     if(src MATCHES "\\.cpp$" AND EXISTS "${src}")
-      file(STRINGS "${src}" alone REGEX "HWY_TARGET_INCLUDE|#define [A-Z_]+_IMPLEMENTATION|^// MB_UNITY_ALONE")
-      if(alone)
-        set_source_files_properties("${src}" TARGET_DIRECTORY ${target} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
-      endif()
+      list(APPEND cpps "${src}")
     endif()
   endforeach()
-  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${MB_UNITY_BATCH})
+  if(NOT cpps)
+    return()
+  endif()
+  # Grouped at configure time: an edit that adds a clash to a configured unity folder fails its
+  # batch (scripts/build_fallback.sh says so); `cmake .` in the folder groups the files again.
+  execute_process(COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/cmake/unity_groups.py ${PROJECT_SOURCE_DIR}
+    ${MB_UNITY_BATCH} ${cpps}
+    OUTPUT_VARIABLE groups RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "cmake/unity_groups.py failed for ${target}")
+  endif()
+  string(STRIP "${groups}" groups)
+  string(REPLACE "\n" ";" groups "${groups}")
+  foreach(src group IN ZIP_LISTS cpps groups)
+    if(group STREQUAL "-")
+      set_source_files_properties("${src}" TARGET_DIRECTORY ${target} PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+    else()
+      set_source_files_properties("${src}" TARGET_DIRECTORY ${target} PROPERTIES UNITY_GROUP "${target}_${group}")
+    endif()
+  endforeach()
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_MODE GROUP)
 endfunction()
 
 function(mb_library name)

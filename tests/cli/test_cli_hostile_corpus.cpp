@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Mixed corpus run (issue 7, item 4): a directory holding good files (the built-in scenes, the
 // shared real-world corpus) and bad ones (the hostile catalogue and a truncation series) is
 // given to `motorbench inspect DIR --json`. The run must finish with exit 0 and report every

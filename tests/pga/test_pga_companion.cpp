@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Tests of the CPU companion (pipelines/motor/companion.h): matrix <-> motor with the scale
 // check, bivector inverse, Euclidean and invariant factorisations, and tangent rotors with the
 // handedness rule, exhaustively on frames whose rotor scalar part is exactly 0.

@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // shaders/pga_kappa.glsl against independent 4x4 matrices (issue 15): for S3 (kappa = +1)
 // O(4) rotations, for H3 (kappa = -1) O(3,1) rotations and boosts, each built directly with
 // GLM in double precision from (coordinate plane, angle). Motors of the same elementary

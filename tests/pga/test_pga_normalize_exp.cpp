@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Property tests of normalize_m, sqrt_m, exp_b / log_m (shaders/pga.glsl as C++), 100,000
 // seeded cases each, in float and double, plus an independent check of exp_b against the power
 // series sum B^k / k! evaluated with gp_mm in double.

@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Property tests of shaders/pga.glsl (compiled as C++) against GLM in double precision:
 // sandwiches equal the node's 4x4 matrix, gp_mm equals the matrix product, every specialised
 // product equals gp_mm on its domain, and the glTF conventions, exp_r/exp_t and project().

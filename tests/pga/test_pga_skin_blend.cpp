@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Issue 18: motorBlendJoints uses the reference's hemisphere rule (the paper's skinning
 // listing): each joint after the first is compared with the running sum of the weighted joints
 // before it, and negated when the rotor halves' dot product is <= 0. Checked against a plain

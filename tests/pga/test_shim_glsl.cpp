@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // The GLSL shim (shaders/shim/glsl.h) against GLM: GLSL semantics of the matrix and vector
 // operators (column-major, m[i] = column i, mat*vec, vec*mat), constructors, swizzles and
 // built-ins, on 100,000 seeded random cases where random data is involved.

@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Morph targets in every glTF pipeline (issue 37), instanced draws included. The reference for a
 // pipeline P is P itself drawing the same shape with the morph baked into the mesh on the CPU
 // (each attribute plus its weighted deltas, in target order, as glTF 2.0 3.7.2.2 defines it):

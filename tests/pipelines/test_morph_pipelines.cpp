@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Morph targets in the pipelines (issue 37). The matrix pipeline against the Sample Viewer's
 // morph done by hand on the CPU (base + sum of weighted deltas, in target order, then drawn
 // as an unmorphed mesh): the same pixels exactly. Every other pipeline against the matrix one

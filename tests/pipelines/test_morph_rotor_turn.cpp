@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Where the motor family's rotor method (b) breaks (issue 37): one target turning the tangent
 // about the normal by theta, at weight w. The matrix pipeline's frame (and method (a), which
 // re-forms the rotor from the morphed frame) turns by atan2(w sin theta, 1 - w + w cos theta);

@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Issue 34: transforms real exporters write that are not one similarity per draw, drawn exactly
 // by every pipeline (the motor family through its exact fallback, pipelines/motor/linear_fallback.h)
 // and counted. Each case is built from a built-in scene the way the files that broke were made:

@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Motor pipeline, CPU side: node hierarchies converted to motors + one signed uniform scale
 // per node (pipelines/motor/motor_rig.h) place points exactly where the GLM matrices of the
 // same hierarchy (the matrix pipeline's worldMatrices) place them. Seeded random trees with

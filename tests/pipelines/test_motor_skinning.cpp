@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Motor skinning (shaders/motor_transform.glsl run through the C++ shim) against GLM linear
 // blend skinning on the cases where both must agree: a single joint, several joints carrying
 // the same motion (with either sign of the double cover), and pure translations. Also the

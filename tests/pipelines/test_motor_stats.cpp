@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Motor vs matrix pipeline stats, read from what each pipeline actually uploaded (issue 4
 // acceptance): on the same primitive 36 against 48 bytes per vertex, 8 against 32 floats per
 // transform and per joint; the motor pipeline's fallbacks are counted; it renders

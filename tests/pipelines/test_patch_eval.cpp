@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Bezier patch evaluation and frames (shaders/bezier_patch.glsl, shaders/patch_transform.glsl)
 // on the CPU through the GLSL shim: against an independent de Casteljau reference and finite
 // differences, bit-identical positions along shared teapot edges (no cracks), finite frames on

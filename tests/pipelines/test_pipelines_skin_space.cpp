@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Issue 18, symmetric skinning: each pipeline draws a skinned mesh in two configurations,
 // "as the references do" (SkinSpace::Reference: palette relative to the mesh node, the node's
 // transform applied per vertex after the blend) and "world-space palette" (no per-vertex node

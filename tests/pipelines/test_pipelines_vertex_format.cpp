@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Issue 18, vertex formats as the baseline does them: the matrix pipeline uploads a tangent
 // only where the glTF-Sample-Viewer has one (authored TANGENT, or generated for a normal map),
 // so a primitive without both is position + normal + uv = 32 bytes; dropping the tangent

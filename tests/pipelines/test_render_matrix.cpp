@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // The matrix pipeline under CTest: built-in scenes render (non-empty, bit-identical twice,
 // measured stats), and synthetic scenes check texturing, the normal-map TBN convention and
 // mirrored nodes.

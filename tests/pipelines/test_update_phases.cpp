@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Issue 13 item 4: the CPU update of every glTF pipeline poses into buffers reused from frame
 // to frame (a pose after another one equals the same pose computed fresh, bit for bit), its
 // phases are measured only on request, and the motor defaults are the identity motor.

@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Quantized vertex frames (issue 16): the paper's signed-zero handedness rule does not survive
 // int16 SNORM storage, the bias rule (|scalar| >= 1/32767) does; QTangent and motor_q frames
 // decode, after quantisation, to the frame they encode. References: the input frames

@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // The issue-16 pipelines' measured uploads against the matrix and motor pipelines: bytes per
 // vertex on a normal-mapped primitive (48/48/28/36/28/28), floats per transform and per joint,
 // the bias rule's frame count, and hybrid's matrices equal to GLM's TRS.

@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Accessor decoding: every component type, normalized integers, interleaved strides,
 // byteOffsets, matrix column padding, sparse accessors and range errors, on hand-built
 // buffers with known values.

@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // The committed fuzz seed corpus, tests/fuzz/seeds (issue 20, item 3): it is what the generator
 // (tests/fuzz/seed_corpus_scenes.h) writes, every seed loads (images decoded) and passes what the
 // fuzzer checks, it covers the variety it claims -- read from the files themselves, not from the

@@ -1,4 +1,3 @@
-// MB_UNITY_ALONE: file-local helpers named as in other tests of this room (unity batches, cmake/motorbench.cmake)
 // Morph targets in the loader: POSITION / NORMAL / TANGENT deltas (dense and sparse), the
 // mesh's default weights, node weights, and animated weights with LINEAR, STEP and CUBICSPLINE
 // sampled at hand-derived values; deltas follow vertices through the loader's splits; bad
