@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <meshoptimizer.h>
 #include <webp/decode.h>
 
 #include "pipelines/scene/builtin_scenes.h"
