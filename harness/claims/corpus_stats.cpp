@@ -76,6 +76,11 @@ json aggregateByKind(const json& files) {
   return out;
 }
 
+void addCorpusAggregates(const json& files, json& aggregate) {
+  if (const json kinds = aggregateByKind(files); !kinds.is_null()) aggregate["byKind"] = kinds;
+  aggregate["models"] = toJson(distinctModels(files));
+}
+
 Result<json> corpusFiles(const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) {

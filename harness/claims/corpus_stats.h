@@ -25,6 +25,11 @@ std::vector<std::string> fileKinds(const nlohmann::json& files);
 // are "unlisted". Null when no file's folder has a manifest.
 nlohmann::json aggregateByKind(const nlohmann::json& files);
 
+// Adds to inspect's `aggregate` of `files` what the corpus claims read beside it: "byKind"
+// (aggregateByKind, when a manifest lists the files) and "models" (corpus_models.h). inspect and
+// merge both call it, so that merged shards equal one run.
+void addCorpusAggregates(const nlohmann::json& files, nlohmann::json& aggregate);
+
 // The per-file JSON of a corpus: `path` is an inspect JSON (its "files") or a folder whose
 // .gltf/.glb files are loaded and analysed now (each with its "contentHash", corpus_models.h). An error names the path and the reason.
 Result<nlohmann::json> corpusFiles(const std::string& path);

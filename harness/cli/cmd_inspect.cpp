@@ -181,15 +181,14 @@ int runInspect(const std::vector<std::string>& argv) {
     failed += !scene;
   }
   nlohmann::json aggregate = mb::aggregateJson(stats);
-  // By source kind when the files' folder has a MANIFEST.tsv (../shared/corpus-graph).
-  if (const nlohmann::json kinds = mb::claims::aggregateByKind(files); !kinds.is_null()) aggregate["byKind"] = kinds;
-  // Files of the same content (harness/claims/corpus_models.h): claims counts each model once.
-  const mb::claims::DistinctModels models = mb::claims::distinctModels(files);
-  aggregate["models"] = mb::claims::toJson(models);
+  // By source kind when the files' folder has a MANIFEST.tsv (../shared/corpus-graph), and files
+  // of the same content (harness/claims/corpus_models.h): claims counts each model once.
+  mb::claims::addCorpusAggregates(files, aggregate);
   if (stats.size() > 1) printAggregate(aggregate);
   if (stats.size() > 1)
     std::printf("  models      %s (%zu duplicate groups; the same content hash: see \"models\" in --json)\n",
-                mb::claims::filesAndModels(models).c_str(), models.duplicateGroups.size());
+                mb::claims::filesAndModels(mb::claims::distinctModels(files)).c_str(),
+                aggregate["models"]["duplicateGroups"].get<size_t>());
   if (auto path = args.get("json")) {
     // replace: error messages may quote file bytes or paths that are not UTF-8.
     const nlohmann::json shardJson = {{"index", shard.index}, {"count", shard.count}, {"inputs", all}};

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/check/check_merge.h"
+#include "harness/claims/corpus_stats.h"
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
 #include "harness/options/args.h"
@@ -50,7 +51,9 @@ int mergeInspectRuns(const std::vector<std::string>& inputs, const std::string& 
     failed += !it->second.value("loaded", false);
     files.push_back(it->second);
   }
-  json merged = {{"files", files}, {"aggregate", aggregateFileJson(files)},
+  json aggregate = aggregateFileJson(files);
+  claims::addCorpusAggregates(files, aggregate);  // as inspect adds them
+  json merged = {{"files", files}, {"aggregate", aggregate},
                  {"shard", {{"count", parts[0].count}, {"inputs", parts[0].inputs}, {"merged", inputs}}}};
   if (!writeTextFile(out, merged.dump(2, ' ', false, json::error_handler_t::replace) + "\n"))
     return fail(out + ": cannot write the merged JSON file");
