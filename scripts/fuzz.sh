@@ -2,8 +2,9 @@
 # Fuzzes the glTF loader and scene conversion (tests/fuzz/fuzz_loader.cpp) and image decoding
 # alone (tests/fuzz/fuzz_images.cpp) with libFuzzer, ASan and UBSan.
 #   scripts/fuzz.sh [SECONDS] [both|loader|images]
-# SECONDS: default 60 (scripts/test.sh, on CI, runs 30); with `both` (the default) the loader gets
-# three quarters of it and the image decoder the rest (60 -> 45 + 15); e.g. `600 loader` locally.
+# SECONDS: default 60 (scripts/test.sh, on CI, runs 30); with `both` (the default) the loader and
+# the image decoder fuzz side by side, each for the whole SECONDS (one core each: the run ends
+# SECONDS after the build, not twice that); e.g. `600 loader` locally.
 # 0 only builds the targets and writes the seeds (to reproduce a finding).
 # Configures a separate clang build in build-fuzz/ (-DMB_FUZZ=ON) and builds only the fuzz
 # targets and the seed writer. The loader starts from the committed seed corpus
@@ -14,8 +15,8 @@
 # reproduce it with
 #   build-fuzz/tests/fuzz/fuzz_loader build-fuzz/fuzz-artifacts/crash-...   (or fuzz_images)
 # then copy it to tests/fuzz/regressions/ (replayed by test_scene_fuzz_regressions) and fix it.
-# Environment: MB_FUZZ_BUILD (build dir), MB_FUZZ_JOBS (build jobs, default nproc; one fuzzing
-# process), MB_FUZZ_ARGS (extra libFuzzer flags).
+# Environment: MB_FUZZ_BUILD (build dir), MB_FUZZ_JOBS (build jobs, default nproc; one process
+# per fuzzer), MB_FUZZ_ARGS (extra libFuzzer flags).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=scripts/build_fallback.sh
@@ -45,11 +46,11 @@ mkdir -p "$BUILD/fuzz-corpus" "$BUILD/fuzz-corpus-images" "$ARTIFACTS"
 ASAN_OPTIONS=detect_leaks=0 "$BUILD/tests/fuzz/fuzz_seeds" "$SEEDS"
 [ "$BUDGET" -eq 0 ] && { echo "fuzz.sh: built; seeds in $SEEDS"; exit 0; }
 
-LOADER_S=$BUDGET IMAGES_S=0
-if [ "$WHICH" = both ]; then LOADER_S=$((BUDGET * 3 / 4)) IMAGES_S=$((BUDGET - BUDGET * 3 / 4)); fi
-if [ "$WHICH" = images ]; then LOADER_S=0 IMAGES_S=$BUDGET; fi
+LOADER_S=0 IMAGES_S=0
+[ "$WHICH" != images ] && LOADER_S=$BUDGET
+[ "$WHICH" != loader ] && IMAGES_S=$BUDGET
 
-# fuzz NAME SECONDS LOG CORPUS...: one libFuzzer run; its exit status.
+# fuzz NAME SECONDS LOG CORPUS...: one libFuzzer run, its output in LOG; its exit status.
 # -rss_limit_mb / -malloc_limit_mb: a single allocation above 512 MiB, or 2 GiB resident, is a
 # finding (hostile counts must not allocate). -timeout: one input may take at most 10 s.
 # Inputs are capped at 1 MiB (the largest built-in scene is below that).
@@ -57,25 +58,36 @@ fuzz() {
   local name=$1 seconds=$2 log=$3 dict=()
   shift 3
   [ "$name" = fuzz_loader ] && dict=(-dict=tests/fuzz/gltf.dict)
-  echo "fuzz.sh: $name for ${seconds}s (corpus $1, findings in $ARTIFACTS/)"
-  set +e
   "$BUILD/tests/fuzz/$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=512 \
     -max_len=1048576 "${dict[@]}" -artifact_prefix="$ARTIFACTS/" -print_final_stats=1 ${MB_FUZZ_ARGS:-} \
-    "$@" 2>&1 | tee "$log" | grep -v "^#[0-9]*.*\(NEW\|REDUCE\|pulse\)"
-  local rc=${PIPESTATUS[0]}
-  set -e
-  grep -E "INITED|stat::number_of_executed_units|stat::peak_rss_mb|Done [0-9]+ runs" "$log" || true
-  return "$rc"
+    "$@" > "$log" 2>&1
 }
 
-rc=0
+# report NAME LOG STATUS: the run's output without the per-input lines, its summary lines, and
+# the finding's message when STATUS is not 0. Printed after both runs, one run at a time.
+report() {
+  local name=$1 log=$2 status=$3
+  grep -v "^#[0-9]*.*\(NEW\|REDUCE\|pulse\)" "$log" || true
+  grep -E "INITED|stat::number_of_executed_units|stat::peak_rss_mb|Done [0-9]+ runs" "$log" || true
+  [ "$status" -eq 0 ] || echo "fuzz.sh: FINDING in $name (exit $status); input saved in $ARTIFACTS/ -- see $log" >&2
+}
+
+LOADER_LOG=$BUILD/fuzz.log IMAGES_LOG=$BUILD/fuzz-images.log
+loader_pid="" images_pid="" loader_rc=0 images_rc=0
 if [ "$LOADER_S" -gt 0 ]; then
-  fuzz fuzz_loader "$LOADER_S" "$BUILD/fuzz.log" "$BUILD/fuzz-corpus" tests/fuzz/seeds/loader "$SEEDS" tests/fuzz/regressions \
-    || { rc=$?; echo "fuzz.sh: FINDING in fuzz_loader (exit $rc); input saved in $ARTIFACTS/ -- see $BUILD/fuzz.log" >&2; }
+  echo "fuzz.sh: fuzz_loader for ${LOADER_S}s (corpus $BUILD/fuzz-corpus, findings in $ARTIFACTS/)"
+  fuzz fuzz_loader "$LOADER_S" "$LOADER_LOG" "$BUILD/fuzz-corpus" tests/fuzz/seeds/loader "$SEEDS" tests/fuzz/regressions &
+  loader_pid=$!
 fi
-if [ "$rc" -eq 0 ] && [ "$IMAGES_S" -gt 0 ]; then
-  fuzz fuzz_images "$IMAGES_S" "$BUILD/fuzz-images.log" "$BUILD/fuzz-corpus-images" tests/fuzz/seeds/images tests/fuzz/regressions/images \
-    || { rc=$?; echo "fuzz.sh: FINDING in fuzz_images (exit $rc); input saved in $ARTIFACTS/ -- see $BUILD/fuzz-images.log" >&2; }
+if [ "$IMAGES_S" -gt 0 ]; then
+  echo "fuzz.sh: fuzz_images for ${IMAGES_S}s (corpus $BUILD/fuzz-corpus-images, findings in $ARTIFACTS/)"
+  fuzz fuzz_images "$IMAGES_S" "$IMAGES_LOG" "$BUILD/fuzz-corpus-images" tests/fuzz/seeds/images tests/fuzz/regressions/images &
+  images_pid=$!
 fi
-[ "$rc" -ne 0 ] && exit 1
+# A finding in one fuzzer does not stop the other: both logs are reported.
+if [ -n "$loader_pid" ]; then wait "$loader_pid" || loader_rc=$?; fi
+if [ -n "$images_pid" ]; then wait "$images_pid" || images_rc=$?; fi
+[ -n "$loader_pid" ] && report fuzz_loader "$LOADER_LOG" "$loader_rc"
+[ -n "$images_pid" ] && report fuzz_images "$IMAGES_LOG" "$images_rc"
+[ "$loader_rc" -ne 0 ] || [ "$images_rc" -ne 0 ] && exit 1
 echo "fuzz.sh: no finding in ${BUDGET}s ($WHICH)"
