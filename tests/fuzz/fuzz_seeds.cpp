@@ -2,7 +2,7 @@
 // (through builtinSceneGlb, the bytes `motorbench scenes -o` writes), the hostile catalogue
 // (tests/hostile/hostile_cases.h, both good and bad files) and the rich test document in its
 // three forms (.glb, .gltf with data: URI). Deterministic: same files every run.
-// fuzz_seeds --repo DIR: writes the committed seed corpus (tests/fuzz/seed_corpus_scenes.h) to
+// fuzz_seeds --repo DIR: writes the committed seed corpus (tests/fuzz/seed_corpus_scenes.cpp) to
 // DIR/loader and DIR/images; run as `fuzz_seeds --repo tests/fuzz/seeds` after changing it.
 #include <cstdio>
 #include <filesystem>
@@ -10,7 +10,7 @@
 
 #include "pipelines/scene/builtin_scenes.h"
 #include "tests/support/compressed_gltf.h"
-#include "tests/fuzz/seed_corpus_scenes.h"
+#include "tests/fuzz/seed_files.h"
 #include "tests/hostile/hostile_cases.h"
 
 namespace {

@@ -1,5 +1,5 @@
 // The committed fuzz seed corpus (issue 20, item 3): helpers and the image seeds; the glTF seeds
-// are in seed_corpus_scenes.h.
+// are in seed_corpus_scenes.cpp, the only file that includes this one (others: seed_files.h).
 //
 // The corpus: small, valid glTF/GLB files with real variety, built with the hostile builder (tests/hostile/gltf_builder.h, raw JSON + one buffer)
 // and the project's own writer (GlbBuilder), plus PNG/JPEG files for the image fuzzer. The
@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "pipelines/scene/gltf_writer.h"
+#include "tests/fuzz/seed_files.h"
 #include "tests/hostile/hostile_cases.h"
 
 namespace mb::fuzz {
@@ -30,10 +31,6 @@ using hostile::Doc;
 using hostile::Json;
 using hostile::kByte, hostile::kUByte, hostile::kShort, hostile::kUShort, hostile::kUInt, hostile::kFloat;
 
-struct SeedFile {
-  std::string name;
-  Bytes bytes;
-};
 
 inline int componentSize(int ct) { return ct == kByte || ct == kUByte ? 1 : ct == kShort || ct == kUShort ? 2 : 4; }
 
@@ -153,7 +150,7 @@ inline std::vector<uint16_t> pattern(int w, int h, int channels, bool wide) {
 }
 
 // Every PNG colour type and bit depth, interlaced, with tRNS, and JPEGs. Names say what.
-inline std::vector<SeedFile> imageSeeds() {
+std::vector<SeedFile> imageSeeds() {
   using hostile::pngRaw;
   std::vector<SeedFile> s;
   auto png = [&](const std::string& n, int ch, bool wide) { s.push_back({n, oiioImage("png", 12, 8, ch, wide, pattern(12, 8, ch, wide))}); };

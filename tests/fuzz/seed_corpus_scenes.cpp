@@ -1,6 +1,5 @@
-// The glTF/GLB seeds of the committed fuzz corpus (see seed_corpus.h): one small valid file per
+// The glTF/GLB seeds of the committed fuzz corpus (see seed_corpus.h; declared in seed_files.h): one small valid file per
 // feature family, named after what it holds.
-#pragma once
 #include "tests/fuzz/seed_corpus.h"
 
 namespace mb::fuzz {
@@ -250,7 +249,7 @@ inline Bytes writerGlb() {
 
 // Every loader seed, name -> bytes; .gltf files with external files come with them
 // (same stem).
-inline std::vector<SeedFile> loaderSeeds() {
+std::vector<SeedFile> loaderSeeds() {
   using hostile::toGlb, hostile::toGltfEmbedded, hostile::toGltfExternal;
   std::vector<SeedFile> s;
   // Every component type, normalized and not (KHR_mesh_quantization; normalized uint is not

@@ -1,5 +1,5 @@
 // The committed fuzz seed corpus, tests/fuzz/seeds (issue 20, item 3): it is what the generator
-// (tests/fuzz/seed_corpus_scenes.h) writes, every seed loads (images decoded) and passes what the
+// (tests/fuzz/seed_corpus_scenes.cpp) writes, every seed loads (images decoded) and passes what the
 // fuzzer checks, it covers the variety it claims -- read from the files themselves, not from the
 // generator -- and it stays small.
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@
 #include "pipelines/scene/image_decode.h"
 #include "pipelines/scene/loader.h"
 #include "tests/fuzz/fuzz_exercise.h"
-#include "tests/fuzz/seed_corpus_scenes.h"
+#include "tests/fuzz/seed_files.h"
 
 namespace {
 
