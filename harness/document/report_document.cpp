@@ -175,9 +175,12 @@ json assembleReport(json machine, json settings, std::vector<json> scenes, json 
   summary["frameTimeRatio"] = {{"figure", "frame_time.motor_over_matrix"}, {"n", ft ? ft->n : 0}};
   if (ft && ft->n > 0) {
     summary["frameTimeRatio"]["median"] = ft->value;
+    // The range over the scenes the median is taken over: frame_time.<scene>.motor_over_matrix
+    // (not the other pipelines' frame_time.<p>_over_matrix, which share the prefix).
     std::vector<double> perScene;
     for (const auto& [name, f] : figures.items())
-      if (name.rfind("frame_time.", 0) == 0 && name != "frame_time.motor_over_matrix" && f["value"].is_number())
+      if (name.rfind("frame_time.", 0) == 0 && std::count(name.begin(), name.end(), '.') == 2 &&
+          name.size() > 18 && name.compare(name.size() - 18, 18, ".motor_over_matrix") == 0 && f["value"].is_number())
         perScene.push_back(f["value"].get<double>());
     const figures::Quartiles q = figures::quartilesOf(perScene);
     summary["frameTimeRatio"]["min"] = q.min, summary["frameTimeRatio"]["max"] = q.max;

@@ -120,7 +120,8 @@ void summary(Document& d, const json& r) {
                       "error of either): " + imageLine(sm) + ".");
   }
   const json& ft = sum["frameTimeRatio"];
-  lines.push_back("Frame time motor / matrix (median frame, per Euclidean scene): " +
+  lines.push_back("Frame time motor / matrix (median over Euclidean scenes of each scene's median of per-frame "
+                  "paired ratios; in brackets the range over those scenes): " +
                   (ft.value("n", 0) ? ratio(ft["median"]) + " (" + ratio(ft["min"]) + ".." + ratio(ft["max"]) + ")" : "-") +
                   scenesText(ft) + " (< 1: motor faster).");
   std::string kr, machine;
