@@ -7,16 +7,19 @@
 # SECONDS after the build, not twice that); e.g. `600 loader` locally.
 # 0 only builds the targets and writes the seeds (to reproduce a finding).
 # Configures a separate clang build in build-fuzz/ (-DMB_FUZZ=ON) and builds only the fuzz
-# targets and the seed writer. The loader starts from the committed seed corpus
-# (tests/fuzz/seeds/loader: varied files from tests/fuzz/seed_corpus_scenes.h), the regressions,
-# and the run-time seeds fuzz_seeds writes (built-in scenes, hostile catalogue); the image
-# decoder from tests/fuzz/seeds/images. New inputs grow build-fuzz/fuzz-corpus{,-images}/ across
-# runs. Exit 0 when nothing was found. A finding is saved under build-fuzz/fuzz-artifacts/:
+# targets and, unless MB_FUZZ_SEEDS_EXE names one, the seed writer. The loader starts from the
+# committed seed corpus (tests/fuzz/seeds/loader: varied files from seed_corpus_scenes.cpp), the
+# regressions, and the run-time seeds fuzz_seeds writes (built-in scenes, hostile catalogue); the
+# image decoder from tests/fuzz/seeds/images. New inputs grow build-fuzz/fuzz-corpus{,-images}/
+# across runs. Exit 0 when nothing was found. A finding is saved under build-fuzz/fuzz-artifacts/:
 # reproduce it with
 #   build-fuzz/tests/fuzz/fuzz_loader build-fuzz/fuzz-artifacts/crash-...   (or fuzz_images)
 # then copy it to tests/fuzz/regressions/ (replayed by test_scene_fuzz_regressions) and fix it.
 # Environment: MB_FUZZ_BUILD (build dir), MB_FUZZ_JOBS (build jobs, default nproc; one process
-# per fuzzer), MB_FUZZ_ARGS (extra libFuzzer flags).
+# per fuzzer), MB_FUZZ_ARGS (extra libFuzzer flags), MB_FUZZ_SEEDS_EXE (a fuzz_seeds already
+# built: scripts/test.sh hands over build/tests/fuzz/fuzz_seeds, which its gcc build links from
+# objects it compiles anyway; the seeds are the same bytes, the seed writer is not fuzzed, and
+# the clang build then compiles only the two fuzzers).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=scripts/build_fallback.sh
@@ -37,13 +40,21 @@ if [ ! -f "$BUILD/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S . -B "$BUILD" "${GENERATOR[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMB_FUZZ=ON -DMB_UNITY=ON >"$BUILD/configure.log" 2>&1 \
     || { cat "$BUILD/configure.log" >&2; exit 2; }
 fi
-build_unity_or_alone "$BUILD" --target fuzz_loader fuzz_images fuzz_seeds -j "$JOBS"
+TARGETS=(fuzz_loader fuzz_images)
+SEED_WRITER=${MB_FUZZ_SEEDS_EXE:-}
+if [ -n "$SEED_WRITER" ]; then
+  [ -x "$SEED_WRITER" ] || { echo "fuzz.sh: MB_FUZZ_SEEDS_EXE=$SEED_WRITER is not an executable" >&2; exit 2; }
+else
+  TARGETS+=(fuzz_seeds)
+  SEED_WRITER=$BUILD/tests/fuzz/fuzz_seeds
+fi
+build_unity_or_alone "$BUILD" --target "${TARGETS[@]}" -j "$JOBS"
 
 SEEDS=$BUILD/fuzz-seeds
 ARTIFACTS=$BUILD/fuzz-artifacts
 rm -rf "$SEEDS"
 mkdir -p "$BUILD/fuzz-corpus" "$BUILD/fuzz-corpus-images" "$ARTIFACTS"
-ASAN_OPTIONS=detect_leaks=0 "$BUILD/tests/fuzz/fuzz_seeds" "$SEEDS"
+ASAN_OPTIONS=detect_leaks=0 "$SEED_WRITER" "$SEEDS"
 [ "$BUDGET" -eq 0 ] && { echo "fuzz.sh: built; seeds in $SEEDS"; exit 0; }
 
 LOADER_S=0 IMAGES_S=0
