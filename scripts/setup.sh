@@ -12,7 +12,8 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools
   libbenchmark-dev libgtest-dev libgmock-dev
   libhwy-dev                        # Google Highway: SIMD kernels with runtime dispatch (kernels/simd)
-  glslang-tools spirv-tools
+  glslang-dev spirv-tools           # SPIR-V compiled in-process (harness/ops/spirv_compile.h)
+  glslang-tools                     # glslangValidator: the reference tests/ops/test_spirv_compile.cpp compares with
   libvulkan-dev mesa-vulkan-drivers  # motorbench isa: AMD's compiler (ACO) through RADV's null device
   libdraco-dev libmeshoptimizer-dev  # KHR_draco_mesh_compression, EXT_meshopt_compression decode
   libwebp-dev                        # tests/scene: libwebp's own decoder as the WebP reference

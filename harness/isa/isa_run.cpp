@@ -250,8 +250,6 @@ Result<IsaRun> runIsa(const IsaOptions& options) {
   using R = Result<IsaRun>;
   IsaRun run;
   run.programs = allPrograms();
-  const std::string tools = spirv::toolsProblem(spirv::findTools());
-  if (!tools.empty()) return R::fail(tools);
   auto manifest = radvManifest();
   if (!manifest) return R::fail(manifest.error());
 

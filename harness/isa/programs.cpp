@@ -46,14 +46,13 @@ std::vector<Program> allPrograms() {
 Result<CompiledProgram> compileProgram(const Program& p) {
   using R = Result<CompiledProgram>;
   CompiledProgram c;
-  const spirv::Tools tools = spirv::findTools();
   struct Stage { const std::string& file; const char* stage; const char* flags; StageModule& out; };
   for (Stage s : {Stage{p.vertexFile, "vert", "-V -R --aml --amb", c.vertex},
                   Stage{p.fragmentFile, "frag", "-V -R --aml --amb --rsb 1", c.fragment}}) {
     auto expanded = gl::expandShaderFile(s.file, p.defines);
     if (!expanded) return R::fail(expanded.error());
     const std::string name = s.file + " (" + p.pipeline + " " + p.program + ")";
-    auto words = spirv::compileToBinary(expanded->text, s.stage, s.flags, name, tools);
+    auto words = spirv::compileToBinary(expanded->text, s.stage, s.flags, name);
     if (!words) return R::fail(words.error());
     auto iface = readInterface(*words, name);
     if (!iface) return R::fail(iface.error());

@@ -1,5 +1,7 @@
 #include "harness/ops/spirv_cache.h"
 
+#include "harness/ops/spirv_compile.h"
+
 #include <unistd.h>
 
 #include <cstdint>
@@ -13,26 +15,6 @@ namespace mb::spirv {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The tool as found on PATH (or as given, when it names a path), with its size and mtime.
-std::string toolIdentity(const std::string& tool) {
-  fs::path p = tool;
-  if (!p.has_parent_path())
-    if (const char* path = std::getenv("PATH")) {
-      std::istringstream dirs(path);
-      for (std::string d; std::getline(dirs, d, ':');)
-        if (!d.empty() && fs::exists(fs::path(d) / tool)) {
-          p = fs::path(d) / tool;
-          break;
-        }
-    }
-  std::error_code ec;
-  const fs::path real = fs::canonical(p, ec);
-  if (ec) return tool + " (not found)";
-  const auto size = fs::file_size(real, ec);
-  const auto time = fs::last_write_time(real, ec).time_since_epoch().count();
-  return real.string() + " " + std::to_string(size) + " " + std::to_string(time);
-}
 
 uint64_t fnv1a(const std::string& s) {
   uint64_t h = 1469598103934665603ull;
@@ -66,12 +48,8 @@ fs::path entryPath(const std::string& key) {
 
 }  // namespace
 
-std::string cacheKey(const std::string& source, const std::string& stage, const std::string& passes,
-                     const std::string& glslang, const std::string& spirvOpt, const std::string& spirvDis) {
-  static const std::string tools = [&] {
-    return toolIdentity(glslang) + "\n" + toolIdentity(spirvOpt) + "\n" + toolIdentity(spirvDis);
-  }();
-  return "motorbench spirv cache 1\n" + tools + "\nstage " + stage + "\npasses " + passes + "\n" + source;
+std::string cacheKey(const std::string& source, const std::string& stage, const std::string& passes) {
+  return "motorbench spirv cache 2\n" + toolchainVersion() + "\nstage " + stage + "\npasses " + passes + "\n" + source;
 }
 
 std::optional<std::string> cachedDisassembly(const std::string& key) {

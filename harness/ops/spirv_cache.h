@@ -1,7 +1,7 @@
 // On-disk memo of compileToDisassembly (spirv_count.h): the disassembly of an optimised module is
-// a pure function of the GLSL text, the stage, the spirv-opt passes and the three tools, so it is
-// kept under a key made of exactly those (each tool by its path, size and modification time) and
-// read back instead of running glslang/spirv-opt/spirv-dis again. The whole key is stored in the
+// a pure function of the GLSL text, the stage, the spirv-opt passes and the versions of glslang
+// and SPIRV-Tools (spirv_compile.h), so it is kept under a key made of exactly those and read
+// back instead of compiling again. The whole key is stored in the
 // entry and compared on reading (no hash collision can return another shader's text).
 // Where: $MB_CACHE_DIR, else $XDG_CACHE_HOME/motorbench, else $HOME/.cache/motorbench (a
 // "spirv" folder inside). MB_CACHE_DIR=off turns it off; an unwritable folder just means no cache.
@@ -14,8 +14,7 @@
 namespace mb::spirv {
 
 // The key of one compilation: every input that decides its output.
-std::string cacheKey(const std::string& source, const std::string& stage, const std::string& passes,
-                     const std::string& glslang, const std::string& spirvOpt, const std::string& spirvDis);
+std::string cacheKey(const std::string& source, const std::string& stage, const std::string& passes);
 
 // The stored disassembly for `key`, if any.
 std::optional<std::string> cachedDisassembly(const std::string& key);

@@ -1,14 +1,11 @@
 #include "harness/ops/spirv_count.h"
 
 #include "harness/ops/spirv_cache.h"
-
-#include <sys/wait.h>
-#include <unistd.h>
+#include "harness/ops/spirv_compile.h"
 
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -155,46 +152,6 @@ std::vector<std::string> tokens(const std::string& line) {
   return t;
 }
 
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char ch : s) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return q + "'";
-}
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Runs `cmd` with stdout+stderr into `log`; returns the exit status (-1: did not run).
-int run(const std::string& cmd, const fs::path& log) {
-  int st = std::system((cmd + " > " + quote(log.string()) + " 2>&1").c_str());
-  if (st == -1 || !WIFEXITED(st)) return -1;
-  return WEXITSTATUS(st);
-}
-
-bool runs(const std::string& tool, const std::string& versionFlag) {
-  return std::system((quote(tool) + " " + versionFlag + " > /dev/null 2>&1").c_str()) == 0;
-}
-
-// Writes `source` into `dir` and compiles it with glslangValidator `flags` into dir/shader.spv;
-// "" or the error with the compiler's log.
-std::string glslang(const fs::path& dir, const std::string& source, const std::string& stage,
-                    const std::string& flags, const std::string& name, const Tools& tools) {
-  const fs::path src = dir / ("shader." + stage), spv = dir / "shader.spv", log = dir / "log.txt";
-  {
-    std::ofstream out(src, std::ios::binary);
-    out << source;
-    if (!out) return name + ": cannot write " + src.string();
-  }
-  if (run(quote(tools.glslang) + " " + flags + " -S " + stage + " -o " + quote(spv.string()) + " " +
-              quote(src.string()), log) != 0)
-    return name + ": glslangValidator failed:\n" + readFile(log);
-  return "";
-}
-
 // spirv-opt -O (SPIRV-Tools 2023) as listed by --print-all, without simplify-instructions.
 const char* kNoFoldPasses =
     "--wrap-opkill --eliminate-dead-branches --merge-return --inline-entry-points-exhaustive "
@@ -284,72 +241,34 @@ Result<Counts> countDisassembly(const std::string& text) {
   return p.counts;
 }
 
-Tools findTools() {
-  Tools t;
-#ifdef MB_GLSLANG_VALIDATOR
-  t.glslang = MB_GLSLANG_VALIDATOR;
-#endif
-#ifdef MB_SPIRV_OPT
-  t.spirvOpt = MB_SPIRV_OPT;
-#endif
-  // CMake's find_program leaves "<VAR>-NOTFOUND" when a tool is missing.
-  if (t.glslang.empty() || t.glslang.find("NOTFOUND") != std::string::npos) t.glslang = "glslangValidator";
-  if (t.spirvOpt.empty() || t.spirvOpt.find("NOTFOUND") != std::string::npos) t.spirvOpt = "spirv-opt";
-  fs::path dis = fs::path(t.spirvOpt).parent_path() / "spirv-dis";
-  t.spirvDis = fs::path(t.spirvOpt).has_parent_path() && fs::exists(dis) ? dis.string() : "spirv-dis";
-  return t;
-}
-
-std::string toolsProblem(const Tools& tools) {
-  if (!runs(tools.glslang, "--version"))
-    return tools.glslang + " does not run (install glslang-tools)";
-  if (!runs(tools.spirvOpt, "--version")) return tools.spirvOpt + " does not run (install spirv-tools)";
-  if (!runs(tools.spirvDis, "--version")) return tools.spirvDis + " does not run (install spirv-tools)";
-  return "";
-}
-
 Result<std::string> compileToDisassembly(const std::string& source, const std::string& stage,
-                                         Optimise opt, const std::string& name,
-                                         const Tools& tools) {
+                                         Optimise opt, const std::string& name) {
   using R = Result<std::string>;
-  // Same text, stage, passes and tools: the same disassembly (spirv_cache.h).
-  const std::string key = cacheKey(source, stage, "glslang -G --aml; spirv-opt " + passesFor(opt),
-                                   tools.glslang, tools.spirvOpt, tools.spirvDis);
+  // Same text, stage, passes and libraries: the same disassembly (spirv_cache.h).
+  const std::string key = cacheKey(source, stage, "glslang -G --aml; spirv-opt " + passesFor(opt));
   if (auto cached = cachedDisassembly(key)) return *cached;
-  TempDir tmp;
-  if (tmp.path.empty()) return R::fail(name + ": cannot create a temporary folder");
-  const fs::path spv = tmp.path / "shader.spv", opt_spv = tmp.path / "opt.spv",
-                 dis = tmp.path / "opt.spvasm", log = tmp.path / "log.txt";
   // -G: SPIR-V for OpenGL (plain uniforms allowed); --aml: locations for those uniforms.
-  if (std::string e = glslang(tmp.path, source, stage, "-G --aml", name, tools); !e.empty())
-    return R::fail(e);
-  if (run(quote(tools.spirvOpt) + " " + passesFor(opt) + " " + quote(spv.string()) + " -o " +
-              quote(opt_spv.string()), log) != 0)
-    return R::fail(name + ": spirv-opt failed:\n" + readFile(log));
-  if (run(quote(tools.spirvDis) + " --no-color -o " + quote(dis.string()) + " " +
-              quote(opt_spv.string()), log) != 0)
-    return R::fail(name + ": spirv-dis failed:\n" + readFile(log));
-  std::string text = readFile(dis);
-  storeDisassembly(key, text);
+  auto module = compileGlsl(source, stage, "-G --aml", name);
+  if (!module) return R::fail(module.error());
+  auto optimised = optimiseSpirv(*module, passesFor(opt), name);
+  if (!optimised) return R::fail(optimised.error());
+  auto text = disassembleSpirv(*optimised, name);
+  if (!text) return R::fail(text.error());
+  storeDisassembly(key, *text);
   return text;
 }
 
 Result<std::vector<uint32_t>> compileToBinary(const std::string& source, const std::string& stage,
-                                              const std::string& flags, const std::string& name,
-                                              const Tools& tools) {
+                                              const std::string& flags, const std::string& name) {
   using R = Result<std::vector<uint32_t>>;
   // The module is a pure function of the text, the stage, the flags and glslang (spirv_cache.h):
-  // motorbench isa compiles ~140 stages, one glslangValidator process each (~0.3 s of CPU), and
-  // a run with the cache filled skips all of them.
-  const std::string key = cacheKey(source, stage, "glslang " + flags + " (binary module)", tools.glslang,
-                                   tools.spirvOpt, tools.spirvDis);
+  // a run with the cache filled skips glslang for all of motorbench isa's ~140 stages.
+  const std::string key = cacheKey(source, stage, "glslang " + flags + " (binary module)");
   std::string bytes = cachedDisassembly(key).value_or("");
   if (bytes.empty() || bytes.size() % 4) {
-    TempDir tmp;
-    if (tmp.path.empty()) return R::fail(name + ": cannot create a temporary folder");
-    if (std::string e = glslang(tmp.path, source, stage, flags, name, tools); !e.empty()) return R::fail(e);
-    bytes = readFile(tmp.path / "shader.spv");
-    if (bytes.empty() || bytes.size() % 4) return R::fail(name + ": glslangValidator wrote no SPIR-V");
+    auto module = compileGlsl(source, stage, flags, name);
+    if (!module) return R::fail(module.error());
+    bytes.assign(reinterpret_cast<const char*>(module->data()), module->size() * 4);
     storeDisassembly(key, bytes);
   }
   std::vector<uint32_t> words(bytes.size() / 4);
@@ -358,8 +277,8 @@ Result<std::vector<uint32_t>> compileToBinary(const std::string& source, const s
 }
 
 Result<Counts> countSource(const std::string& source, const std::string& stage, Optimise opt,
-                           const std::string& name, const Tools& tools) {
-  auto dis = compileToDisassembly(source, stage, opt, name, tools);
+                           const std::string& name) {
+  auto dis = compileToDisassembly(source, stage, opt, name);
   if (!dis) return Result<Counts>::fail(dis.error());
   auto c = countDisassembly(*dis);
   if (!c) return Result<Counts>::fail(name + ": " + c.error());

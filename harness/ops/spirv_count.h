@@ -1,7 +1,8 @@
 // SPIR-V op counting: the cross-check of the counted (shim) ops per vertex (DESIGN.md, idea 4).
-// A GLSL stage is compiled with glslangValidator (-G: OpenGL SPIR-V, --aml: automatic uniform
-// locations, so plain `uniform mat4` compiles), optimised with spirv-opt (-O, which inlines
-// every helper into main; or inlining alone), disassembled with spirv-dis, and the arithmetic
+// A GLSL stage is compiled as glslangValidator compiles it (-G: OpenGL SPIR-V, --aml: automatic
+// uniform locations, so plain `uniform mat4` compiles), optimised as spirv-opt optimises it (-O,
+// which inlines every helper into main; or inlining alone), disassembled as spirv-dis does
+// (all three through their libraries in this process, spirv_compile.h), and the arithmetic
 // instructions of every function body are counted with vector and matrix instructions expanded
 // to the scalar operations they stand for, by the same rules as mb::Counted:
 //   OpFAdd/OpFSub vecN           N add           OpFMul vecN, OpVectorTimesScalar   N mul
@@ -66,30 +67,19 @@ struct TempDir {
   std::filesystem::path path;
 };
 
-struct Tools {
-  std::string glslang, spirvOpt, spirvDis;
-};
-// The tools CMake found (MB_GLSLANG_VALIDATOR, MB_SPIRV_OPT; spirv-dis next to spirv-opt),
-// else the names on PATH.
-Tools findTools();
-// "" when all three run, else a message naming the missing one.
-std::string toolsProblem(const Tools& tools);
-
 // Compiles one GLSL stage (complete source text, #includes already expanded; `stage` is the
 // glslang stage name: "vert", "frag") and returns the disassembly of the optimised module.
 // Errors carry the compiler's log; `name` labels them.
 Result<std::string> compileToDisassembly(const std::string& source, const std::string& stage,
-                                         Optimise opt, const std::string& name,
-                                         const Tools& tools = findTools());
+                                         Optimise opt, const std::string& name);
 
-// Compiles one GLSL stage with glslangValidator and `flags` (e.g. "-V -R --aml --amb": Vulkan
+// Compiles one GLSL stage with glslangValidator's `flags` (e.g. "-V -R --aml --amb": Vulkan
 // SPIR-V with relaxed rules, for harness/isa) and returns the SPIR-V words, unoptimised.
 Result<std::vector<uint32_t>> compileToBinary(const std::string& source, const std::string& stage,
-                                              const std::string& flags, const std::string& name,
-                                              const Tools& tools = findTools());
+                                              const std::string& flags, const std::string& name);
 
 // compileToDisassembly + countDisassembly.
 Result<Counts> countSource(const std::string& source, const std::string& stage, Optimise opt,
-                           const std::string& name, const Tools& tools = findTools());
+                           const std::string& name);
 
 }  // namespace mb::spirv

@@ -144,19 +144,13 @@ TEST(PipelineOps, ReadmeTableQuotesTheTable) {
     }
   }
   ASSERT_GE(opsColumn, 0) << "README.md has no pipeline table with an ops column";
-  const bool tools = spirv::toolsProblem(spirv::findTools()).empty();
-  const opsv::VertexOps ops = opsv::measureVertexOps(tools ? opsv::SpirvDepth::Probes : opsv::SpirvDepth::None);
+  const opsv::VertexOps ops = opsv::measureVertexOps(opsv::SpirvDepth::Probes);
   for (const std::string& p : pipelineNames(Space::Euclidean)) {
     ASSERT_TRUE(readme.count(p)) << "README table has no row " << p;
     std::string want;
     for (const opsv::PipelineOps& r : opsv::pipelineOps(ops))
       if (r.pipeline == p) want = opsv::readmeOpsCell(r);
-    if (tools) {
-      EXPECT_EQ(readme[p], want) << p;
-    } else {
-      const std::string counted = want.substr(0, want.find(" ("));
-      EXPECT_EQ(readme[p].substr(0, readme[p].find(" (")), counted) << p;
-    }
+    EXPECT_EQ(readme[p], want) << p;
   }
 }
 
