@@ -1,19 +1,17 @@
-// loadGltfFile / loadGltfMemory / loadScene: preflight, tinygltf parse, conversion to Scene.
+// loadGltfFile / loadGltfMemory: preflight, tinygltf parse, conversion to Scene (loadScene, which
+// also builds the built-in, curved and .bpt scenes, is load_scene.cpp: the fuzzers link this file
+// without the scene generators).
 #include "pipelines/scene/loader.h"
-#include "pipelines/scene/curved_space.h"
 
 #include <tiny_gltf.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
 
-#include "pipelines/scene/bpt_reader.h"
-#include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/compressed_geometry.h"
 #include "pipelines/scene/gltf_convert.h"
 #include "pipelines/scene/image_decode.h"
@@ -175,13 +173,6 @@ Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadCon
   return scene;
 }
 
-// ".bpt" in any case: the Bezier patch text format (bpt_reader.h).
-bool hasBptExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".bpt";
-}
-
 }  // namespace
 
 Result<Scene> loadGltfMemory(const std::vector<uint8_t>& original, const std::string& name,
@@ -234,15 +225,6 @@ Result<Scene> loadGltfFile(const std::string& path) {
     return Result<Scene>::fail(path + ": read error");
   std::string dir = fs::path(path).parent_path().string();
   return loadGltfMemory(bytes, path, dir.empty() ? "." : dir);
-}
-
-Result<Scene> loadScene(const std::string& fileOrBuiltinName) {
-  if (isCurvedScene(fileOrBuiltinName)) return buildCurvedScene(fileOrBuiltinName);
-  if (hasBptExtension(fileOrBuiltinName)) return loadBptFile(fileOrBuiltinName);
-  if (!isBuiltinScene(fileOrBuiltinName)) return loadGltfFile(fileOrBuiltinName);
-  auto glb = builtinSceneGlb(fileOrBuiltinName);
-  if (!glb) return Result<Scene>::fail(glb.error());
-  return loadGltfMemory(*glb, fileOrBuiltinName);
 }
 
 }  // namespace mb
