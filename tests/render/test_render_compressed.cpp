@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <map>
 
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
@@ -53,19 +54,39 @@ Result<RgbaImage> render(const std::vector<uint8_t>& glb, const std::string& nam
   return frame->image;
 }
 
+// A built-in scene's file packed by `codec`, and the uncompressed file its images are compared
+// with, made once per test process for the nine pipelines' cases (the encoders cost more than
+// the frames; the bytes depend on the scene and codec alone).
+struct PackedScene {
+  std::vector<uint8_t> packed, reference;
+};
+const PackedScene& packedScene(const std::string& scene, const std::string& codec) {
+  static std::map<std::string, PackedScene> made;
+  const std::string key = scene + "/" + codec;
+  if (auto it = made.find(key); it != made.end()) return it->second;
+  PackedScene p;
+  auto glb = builtinSceneGlb(scene);
+  EXPECT_TRUE(glb) << glb.error();
+  if (glb) {
+    p.packed = codec == "draco"     ? compressed::dracoCompressed(*glb)
+               : codec == "meshopt" ? compressed::meshoptCompressed(*glb)
+                                    : compressed::webpTextured(*glb);
+    // WebP: OpenImageIO's writer is not bit-exact, so the reference holds the decoded pixels as PNG.
+    p.reference = codec == "webp" ? compressed::pngOfWebpTextured(p.packed) : *glb;
+  }
+  return made.emplace(key, std::move(p)).first->second;
+}
+
 TEST_P(CompressedRender, MatchesTheUncompressedScene) {
   const Case& c = GetParam();
   if (!createPipeline(c.pipeline)) GTEST_SKIP() << "placeholder pipeline";
-  auto glb = builtinSceneGlb(c.scene);
-  ASSERT_TRUE(glb) << glb.error();
-  const std::vector<uint8_t> packed = c.codec == "draco"     ? compressed::dracoCompressed(*glb)
-                                      : c.codec == "meshopt" ? compressed::meshoptCompressed(*glb)
-                                                             : compressed::webpTextured(*glb);
+  const PackedScene& files = packedScene(c.scene, c.codec);
+  ASSERT_FALSE(files.packed.empty() || files.reference.empty()) << c.scene << " " << c.codec;
+  const std::vector<uint8_t>& packed = files.packed;
+  const std::vector<uint8_t>& reference = files.reference;
   FrameSettings s;
   s.width = s.height = 128;
   if (c.scene == "skinned_tube") s.anim = AnimState{0, 0.5f};  // a bent pose: skinning data in use
-  // WebP: OpenImageIO's writer is not bit-exact, so the reference holds the decoded pixels as PNG.
-  const std::vector<uint8_t> reference = c.codec == "webp" ? compressed::pngOfWebpTextured(packed) : *glb;
   auto a = render(reference, c.scene + ".glb", c.pipeline, s);
   auto b = render(packed, c.scene + "-" + c.codec + ".glb", c.pipeline, s);
   ASSERT_TRUE(a) << a.error();

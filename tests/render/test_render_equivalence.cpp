@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
@@ -23,24 +24,35 @@ namespace {
 
 class Equivalence : public PipelineSceneTest {
 protected:
+  // The baseline's frame of this scene at `label`'s state, rendered once per test process for
+  // every pipeline compared with it (a failed render is not kept: each case then fails).
+  const RgbaImage* baselineFrame(const std::string& baseline, const std::string& label, const FrameSettings& s) {
+    static std::map<std::string, RgbaImage> frames;
+    const std::string key = GetParam().scene + "/" + label;
+    if (auto it = frames.find(key); it != frames.end()) return &it->second;
+    auto a = renderFrame(scene_, baseline, s);
+    EXPECT_TRUE(a) << baseline << ": " << a.error();
+    if (!a) return nullptr;
+    return &frames.emplace(key, std::move(a->image)).first->second;
+  }
+
   // Renders matrix and the pipeline under test; metrics, and the images kept for a report.
   ImageMetrics compareAt(const AnimState& anim, const std::string& label) {
     FrameSettings s;
     s.anim = anim;
     s.width = s.height = 128;
     const std::string baseline = pipelineNames(scene_.curved.space).front();
-    auto a = renderFrame(scene_, baseline, s);
+    const RgbaImage* a = baselineFrame(baseline, label, s);
     auto b = renderFrame(scene_, GetParam().pipeline, s);
-    EXPECT_TRUE(a) << a.error();
     EXPECT_TRUE(b) << b.error();
     if (!a || !b) return {};
-    auto m = compareImages(a->image, b->image);
+    auto m = compareImages(*a, b->image);
     EXPECT_TRUE(m) << m.error();
     if (!m) return {};
     std::printf("[ equiv    ] %s vs matrix, %s %s: PSNR %.2f dB, >2/255 %.4f%%, max %.0f/255 at (%d,%d)\n",
                 GetParam().pipeline.c_str(), GetParam().scene.c_str(), label.c_str(), m->psnr,
                 100 * m->fractionOver2, std::round(m->maxError * 255), m->maxX, m->maxY);
-    a_ = a->image;
+    a_ = *a;
     b_ = b->image;
     return *m;
   }
