@@ -31,6 +31,9 @@ SKIP = re.compile(r"(?:namespace\b|using\s+namespace\b|extern\b|template\b|retur
 
 
 HEADER = "(declared by an included header)"
+NAMESPACE_OPEN = re.compile(r"namespace(\s+[\w:]+)?\s*\{")
+NAMED_NAMESPACE = re.compile(r"namespace\s+\w")
+DECLARATORS = re.compile(r",\s*(\w+)\s*=(?!=)")
 
 
 def names_in(text, header=None):
@@ -43,8 +46,8 @@ def names_in(text, header=None):
     names, local, scopes = {}, set(), []
     for line in text.splitlines():
         line = line.rstrip()
-        if re.match(r"namespace(\s+[\w:]+)?\s*\{", line):
-            scopes.append(not re.match(r"namespace\s+\w", line))
+        if NAMESPACE_OPEN.match(line):
+            scopes.append(not NAMED_NAMESPACE.match(line))
             continue
         if line.startswith("}") and "namespace" in line and scopes:
             scopes.pop()
@@ -61,7 +64,7 @@ def names_in(text, header=None):
             if m and m.group(1) != "main":
                 found = [m.group(1)]
                 if pattern is DEFINES[3]:  # every declarator: constexpr int kA = 1, kB = 2;
-                    found += re.findall(r",\s*(\w+)\s*=(?!=)", line)
+                    found += DECLARATORS.findall(line)
                 for name in found:
                     names[name] = None if header is None else HEADER if pattern in DEFINES[1:3] else header
                     if scopes and scopes[-1] or line.startswith("static "):
@@ -71,6 +74,15 @@ def names_in(text, header=None):
 
 
 INCLUDE = re.compile(r'^#include\s+"([^"]+)"', re.M)
+PARSED = {}  # header path -> (text, its own names): a header is read and parsed once per run
+
+
+def parsed(path):
+    if path not in PARSED:
+        with open(path, encoding="utf-8", errors="replace") as f:
+            text = f.read()
+        PARSED[path] = (text, names_in(text, header=path)[0])
+    return PARSED[path]
 
 
 def header_names(root, path, text, seen):
@@ -82,10 +94,9 @@ def header_names(root, path, text, seen):
             if os.path.isfile(cand):
                 if cand not in seen:
                     seen.add(cand)
-                    with open(cand, encoding="utf-8", errors="replace") as f:
-                        htext = f.read()
+                    htext, own = parsed(cand)
                     names.update(header_names(root, cand, htext, seen))
-                    names.update(names_in(htext, header=cand)[0])
+                    names.update(own)
                 break
     return names
 
