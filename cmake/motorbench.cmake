@@ -17,6 +17,9 @@ if(MB_PCH AND NOT TARGET mb_pch)
   target_precompile_headers(mb_pch PRIVATE <nlohmann/json.hpp> <algorithm> <cmath> <cstdint>
     <filesystem> <fstream> <functional> <map> <memory> <optional> <set> <sstream> <string>
     <vector>)
+  if(MB_QUICK_BUILD)
+    target_compile_options(mb_pch PRIVATE -O0)  # the level of the rooms that reuse it (below)
+  endif()
 endif()
 
 # Unity builds (-DMB_UNITY=ON, scripts/test.sh sets it for a new folder): a target's .cpp files
@@ -89,6 +92,12 @@ function(mb_library name)
         set(measured TRUE)
       endif()
     endforeach()
+    # The quick build (MB_QUICK_BUILD, scripts/test.sh) measures nothing and the rooms that time
+    # nothing spend their run time in processes, GL and files, not in their own code: -O0 there
+    # (code generation is most of their compile); the measured rooms keep -O1.
+    if(MB_QUICK_BUILD AND NOT measured)
+      target_compile_options(${name} PRIVATE -O0)
+    endif()
     if(MB_PCH AND NOT measured)
       target_precompile_headers(${name} REUSE_FROM mb_pch)
     endif()
