@@ -22,11 +22,14 @@ from pathlib import Path
 TIMING_WORDS = {"ms", "time", "seconds", "second", "timing", "fps", "iterations", "ratio", "ratios",
                 "spread", "disturbance", "disturbed", "runnable", "load", "mhz", "gbps", "bps", "bw"}
 # Keys derived from a timing whose words do not say so: a bandwidth's share of the copy bandwidth;
-# claims' tallies of verdicts, some of which are judged on timings.
-TIMING_DERIVED = {"copy_fraction", "bw_fraction", "counts", "paperCounts", "ownCounts"}
-# Keys left out by name: the run's circumstances, and a count calibrated on the clock.
+# claims' tallies of verdicts, some of which are judged on timings; which implementation of a
+# kernel pair ran fastest.
+TIMING_DERIVED = {"copy_fraction", "bw_fraction", "counts", "paperCounts", "ownCounts", "fastest_matrix",
+                  "fastest_motor"}
+# Keys left out by name: the run's circumstances (a report made whole or merged from shards), and
+# a count calibrated on the clock.
 TIMING_NAMES = {"machine", "context", "date", "host_name", "cpu", "cpuOverReal", "bestOf", "best_of",
-                "warmup", "update_calls_per_block"}
+                "warmup", "update_calls_per_block", "shard"}
 # Keys with a timing word that are not timings: animation times (of a frame, of a scene's
 # frames, where a skin is thinnest) and counts of keyframe times.
 NOT_TIMING = {"time", "times", "lbsTime", "motorTime", "timeWidth", "timeHeight"}
