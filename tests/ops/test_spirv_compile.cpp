@@ -5,32 +5,28 @@
 // bytes and the same text. Skipped where the commands are not installed (setup.sh installs them).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
-#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "harness/ops/shader_variants.h"
 #include "harness/ops/spirv_compile.h"
 #include "pipelines/gl/shader_source.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using mb::cli_test::quoted;
+using mb::cli_test::readText;
 
-bool commandRuns(const std::string& cmd) { return std::system((cmd + " > /dev/null 2>&1").c_str()) == 0; }
-
-std::string readBytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+bool commandRuns(const std::string& cmd) {
+  std::string output;
+  return mb::cli_test::runCommand(cmd, &output) == 0;
 }
 
 std::vector<uint32_t> readWords(const fs::path& p) {
-  const std::string bytes = readBytes(p);
+  const std::string bytes = readText(p);
   std::vector<uint32_t> w(bytes.size() / 4);
   std::memcpy(w.data(), bytes.data(), w.size() * 4);
   return w;
@@ -42,8 +38,7 @@ protected:
     if (!commandRuns("glslangValidator --version") || !commandRuns("spirv-opt --version") ||
         !commandRuns("spirv-dis --version"))
       GTEST_SKIP() << "glslangValidator, spirv-opt or spirv-dis not installed (the reference commands)";
-    dir_ = fs::temp_directory_path() / ("mb_spirv_compile_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
+    dir_ = mb::cli_test::scratchDir("spirv_compile");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -52,7 +47,7 @@ protected:
                                          const std::string& flags) {
     const fs::path src = dir_ / ("shader." + stage), spv = dir_ / "cli.spv";
     std::ofstream(src, std::ios::binary) << source;
-    EXPECT_TRUE(commandRuns("glslangValidator " + flags + " -S " + stage + " -o " + spv.string() + " " + src.string()));
+    EXPECT_TRUE(commandRuns("glslangValidator " + flags + " -S " + stage + " -o " + quoted(spv) + " " + quoted(src)));
     return readWords(spv);
   }
   std::vector<std::pair<std::string, std::string>> sources() const {  // (label, vertex text)
@@ -97,10 +92,10 @@ TEST_F(SpirvCompile, OptimisedTextIsSpirvOptAndSpirvDisOutput) {
 
     const fs::path in = dir_ / "in.spv", opt = dir_ / "opt.spv", dis = dir_ / "opt.spvasm";
     std::ofstream(in, std::ios::binary).write(reinterpret_cast<const char*>(module->data()), module->size() * 4);
-    ASSERT_TRUE(commandRuns("spirv-opt -O " + in.string() + " -o " + opt.string()));
+    ASSERT_TRUE(commandRuns("spirv-opt -O " + quoted(in) + " -o " + quoted(opt)));
     EXPECT_EQ(*optimised, readWords(opt)) << label;
-    ASSERT_TRUE(commandRuns("spirv-dis --no-color -o " + dis.string() + " " + opt.string()));
-    EXPECT_EQ(*ours, readBytes(dis)) << label;
+    ASSERT_TRUE(commandRuns("spirv-dis --no-color -o " + quoted(dis) + " " + quoted(opt)));
+    EXPECT_EQ(*ours, readText(dis)) << label;
     EXPECT_NE(ours->find("OpEntryPoint Vertex"), std::string::npos);
   }
 }
