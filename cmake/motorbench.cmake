@@ -11,15 +11,24 @@
 # turns it off everywhere.
 option(MB_PCH "Precompile nlohmann/json and the common standard headers" ON)
 set(MB_MEASURED_DIRS pipelines kernels shaders harness/bench harness/timing harness/render)
+
+# mb_unmeasured(TARGET): TARGET's code is neither measured nor heavy at run time (the harness
+# rooms that time nothing spend it in processes, GL and files; most test code starts processes
+# and compares what they wrote), so the quick build (MB_QUICK_BUILD, scripts/test.sh), which
+# measures nothing, compiles it at -O0: GCC's code generation is most of such a file's compile.
+# A PCH a target reuses must be made at the same level (GCC ignores one made at another).
+function(mb_unmeasured target)
+  if(MB_QUICK_BUILD)
+    target_compile_options(${target} PRIVATE -O0)
+  endif()
+endfunction()
 if(MB_PCH AND NOT TARGET mb_pch)
   add_library(mb_pch STATIC ${PROJECT_SOURCE_DIR}/cmake/pch.cpp)
   target_link_libraries(mb_pch PUBLIC nlohmann_json::nlohmann_json)
   target_precompile_headers(mb_pch PRIVATE <nlohmann/json.hpp> <algorithm> <cmath> <cstdint>
     <filesystem> <fstream> <functional> <map> <memory> <optional> <set> <sstream> <string>
     <vector>)
-  if(MB_QUICK_BUILD)
-    target_compile_options(mb_pch PRIVATE -O0)  # the level of the rooms that reuse it (below)
-  endif()
+  mb_unmeasured(mb_pch)  # only the rooms that time nothing reuse it (below)
 endif()
 
 # Unity builds (-DMB_UNITY=ON, scripts/test.sh sets it for a new folder): a target's .cpp files
@@ -92,14 +101,11 @@ function(mb_library name)
         set(measured TRUE)
       endif()
     endforeach()
-    # The quick build (MB_QUICK_BUILD, scripts/test.sh) measures nothing and the rooms that time
-    # nothing spend their run time in processes, GL and files, not in their own code: -O0 there
-    # (code generation is most of their compile); the measured rooms keep -O1.
-    if(MB_QUICK_BUILD AND NOT measured)
-      target_compile_options(${name} PRIVATE -O0)
-    endif()
-    if(MB_PCH AND NOT measured)
-      target_precompile_headers(${name} REUSE_FROM mb_pch)
+    if(NOT measured)
+      mb_unmeasured(${name})
+      if(MB_PCH)
+        target_precompile_headers(${name} REUSE_FROM mb_pch)
+      endif()
     endif()
     mb_unity(${name} ${measured})
   else()
