@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Installs every Debian package motorbench needs. Idempotent: only missing packages are
-# installed. Run as root (or with sudo available) on Debian 12.
+# Installs every Debian package motorbench needs, then the Khronos glTF-Validator (npm) for
+# scripts/gltf_validate.mjs. Idempotent: only what is missing is installed. Run as root (or with
+# sudo available) on Debian 12.
 set -euo pipefail
+ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 
 PACKAGES=(
   build-essential cmake ninja-build pkg-config git   # ninja: the scripts' generator (faster than make)
@@ -29,14 +31,28 @@ for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 
+# node and npm run the glTF-Validator (scripts/gltf_validate.mjs). Looked for as commands: a
+# nodejs build that bundles npm (not Debian's) is kept, since Debian's npm would conflict with it.
+command -v node >/dev/null && command -v npm >/dev/null || missing+=(nodejs npm)
+
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#PACKAGES[@]} packages present"
-  exit 0
+else
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  echo "setup: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-SUDO=""
-[ "$(id -u)" -ne 0 ] && SUDO="sudo"
-echo "setup: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# The validator at the version scripts/package-lock.json pins, into scripts/node_modules (ignored).
+cd "$ROOT/scripts"
+pinned=$(node -p "require('./package-lock.json').packages['node_modules/gltf-validator'].version")
+installed=$(node -p "require('./node_modules/gltf-validator/package.json').version" 2>/dev/null || true)
+if [ "$installed" = "$pinned" ]; then
+  echo "setup: gltf-validator $pinned present"
+else
+  echo "setup: npm ci (gltf-validator $pinned)"
+  npm ci --no-audit --no-fund --loglevel=error
+fi
