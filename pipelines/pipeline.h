@@ -70,7 +70,7 @@ struct PipelineStats {
   int rotorSplitVertices = 0;         // motor_cf: vertices split so each triangle's rotors
                                       // share a hemisphere (pipelines/motor/rotor_signs.h)
   int rotorUnresolvedTriangles = 0;   // motor_cf: triangles whose frames turn > 180 degrees
-  // Exact fallbacks of the motor family (issue 34), of the last render(): rigid draws whose
+  // Exact fallbacks of the motor family, of the last render(): rigid draws whose
   // world transform is not a similarity (non-uniform or sheared, inherited from an inner node),
   // drawn with a general linear part before the motor; skinned draws whose joint palette is not
   // one common uniform scale (per-joint scales, scaled or sheared joints), and the joints of
@@ -79,6 +79,7 @@ struct PipelineStats {
   int skinFallbackDraws = 0;
   int skinFallbackJoints = 0;
   uint64_t fallbackVertices = 0;
+  uint64_t skinFallbackVertices = 0;  // of fallbackVertices, those of the skinned draws
 };
 
 // Where a skinned vertex reaches world space (issue 18: compare both pipelines in the same

@@ -154,7 +154,7 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
                      {"withScaleChannel", a.channel}, {"withChangingScale", a.changing},
                      {"withNonUniformChangingScale", a.changingNonUniform},
                      {"judgedWithChangingScale", r.changing}, {"judgedWithScaleChannel", r.channel},
-                     {"judgedFraction", r.files ? double(r.changing) / r.files : 0.0}, {"tolerance", kPaperScaleTolerance},
+                     {"judgedFraction", r.files ? double(r.changing) / r.files : 0.0}, {"tolerance", kSimilarityTolerance},
                      {"withOnlyConstantScaleChannels", a.constantOnly}, {"judgedWithOnlyConstantScaleChannels", r.constantOnly},
                      {"byKind", kindsValue}};
   c.method = "motorbench inspect's scale statistics (pipelines/scene/scale_analysis.h) over " + sampleText +
@@ -218,7 +218,7 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
                      {"models", modelsValue}, {"judgedFiles", judgedFiles}, {"judgedModels", r.files},
                      {"withInnerNonUniform", a.inner},
                      {"judgedWithInnerNonUniform", r.inner}, {"judgedBeyond1Percent", r.innerBeyondPercent},
-                     {"tolerance", kPaperScaleTolerance}, {"byKind", kindsValue},
+                     {"tolerance", kSimilarityTolerance}, {"byKind", kindsValue},
                      {"motorFallback", censused ? json{{"files", censused}, {"withGeneralNodes", generalFiles},
                                                        {"withSkinFallback", skinFiles}, {"linearFallbackDrawsAtRest", linearDraws},
                                                        {"skinFallbackDrawsAtRest", skinDraws}}

@@ -21,6 +21,7 @@
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scene_stats.h"
+#include "pipelines/scene/similarity_tolerance.h"
 
 namespace {
 
@@ -63,9 +64,9 @@ void printFile(const mb::FileStats& f) {
               f.weightsChannels, f.linearChannels, f.stepChannels, f.cubicChannels);
   std::printf("  morph       %d targets on %d meshes (max %d per mesh, %d primitives); %d animated weights channels\n",
               f.morphTargets, f.morphMeshes, f.maxMorphTargets, f.morphPrimitives, f.weightsChannels);
-  std::printf("  scale       nodes: %d uniform, %d non-uniform, %d negative, %d sheared; animated on %d nodes "
-              "(%d non-uniform keys); non-uniform only on leaves: %s\n",
-              r.uniformNodes, r.nonUniformNodes, r.negativeNodes, r.shearNodes, r.animatedScaleNodes,
+  std::printf("  scale       nodes: %d uniform, %d non-uniform, %d negative, %d sheared (tolerance %g relative); "
+              "animated on %d nodes (%d non-uniform keys); non-uniform only on leaves: %s\n",
+              r.uniformNodes, r.nonUniformNodes, r.negativeNodes, r.shearNodes, mb::kSimilarityTolerance, r.animatedScaleNodes,
               r.animatedNonUniformNodes, r.nonUniformScale ? (r.nonUniformOnlyOnLeaves ? "yes" : "no") : "n/a");
   std::printf("  compression %s\n", mb::describeCompression(f.compression).c_str());
   if (!f.notDrawn.empty()) std::printf("  NOT DRAWN   %s (render, compare and time refuse it)\n", f.notDrawn.c_str());
@@ -123,12 +124,13 @@ void printAggregate(const nlohmann::json& a) {
   std::printf("  totals      %ld vertices, %ld triangles, %ld primitives, %ld joints, %ld channels\n",
               long(a["vertices"]), long(a["triangles"]), long(a["primitives"]), long(a["joints"]), long(a["channels"]));
   std::printf("  scale channel             %s\n", pct("filesWithAnimatedScale").c_str());
-  std::printf("  keys changing the scale   %s   (beyond 1e-4 relative; paper: < 0.5 %% of ~400 files)\n",
-              pct("filesWithChangingScale").c_str());
-  std::printf("  inner non-uniform scale   %s   (beyond 1e-4 relative, the paper's rule; paper: none)\n",
-              pct("filesWithInnerNonUniformScale").c_str());
+  std::printf("  keys changing the scale   %s   (beyond %g relative; paper: < 0.5 %% of ~400 files)\n",
+              pct("filesWithChangingScale").c_str(), mb::kSimilarityTolerance);
+  std::printf("  inner non-uniform scale   %s   (beyond %g relative, the paper's rule; paper: none)\n",
+              pct("filesWithInnerNonUniformScale").c_str(), mb::kSimilarityTolerance);
   std::printf("  animated non-uniform      %s\n", pct("filesWithAnimatedNonUniformScale").c_str());
-  std::printf("  non-uniform scale         %s, of which only on leaves: %d\n", pct("filesWithNonUniformScale").c_str(),
+  std::printf("  non-uniform scale         %s (beyond %g relative), of which only on leaves: %d\n",
+              pct("filesWithNonUniformScale").c_str(), mb::kSimilarityTolerance,
               int(a["filesWithNonUniformOnlyOnLeaves"]));
   std::printf("  negative scale (det < 0)  %s\n", pct("filesWithNegativeScale").c_str());
   std::printf("  skinned %d, normal-mapped %d, with unsupported features %d, with fallbacks %d\n",

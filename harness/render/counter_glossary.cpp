@@ -45,8 +45,9 @@ const std::vector<CounterEntry>& counterGlossary() {
       {"PipelineStats", "linearFallbackDraws", "draws", "motor pipelines, exact fallback: rigid draws of the last render whose world transform is not a similarity (non-uniform or sheared, inherited from an inner node), drawn with a general linear part before the motor"},
       {"PipelineStats", "skinFallbackDraws", "draws", "motor pipelines, exact fallback: skinned draws of the last render whose joint palette is not one common uniform scale (per-joint scales, scaled or sheared joints)"},
       {"PipelineStats", "skinFallbackJoints", "joints", "motor pipelines, exact fallback: the joints of the palettes of those skinned draws"},
-      {"PipelineStats", "morphNotDrawnNodes", "nodes", "drawn nodes with a non-zero morph weight that this pipeline drew in their base shape (it morphed no draw; every glTF pipeline morphs since issue 37, so 0 unless one regresses)"},
+      {"PipelineStats", "morphNotDrawnNodes", "nodes", "drawn nodes with a non-zero morph weight that this pipeline drew in their base shape (it morphed no draw; every glTF pipeline morphs, so 0 unless one regresses)"},
       {"PipelineStats", "fallbackVertices", "vertices", "motor pipelines, exact fallback: the vertices the linear and skin fallback draws of the last render drew (0 for pipelines that need no fallback)"},
+      {"PipelineStats", "skinFallbackVertices", "vertices", "motor pipelines, exact fallback: of fallbackVertices, those the skin fallback draws drew (their vertex shader blends linear parts too)"},
       // LoadStats (pipelines/scene/scene.h): what the loader had to fix; `inspect` lists them.
       {"LoadStats", "flatNormalsGenerated", "primitives", "primitives without NORMAL: flat normals generated"},
       {"LoadStats", "tangentsGenerated", "primitives", "normal-mapped primitives without TANGENT: tangents generated from the uvs"},

@@ -11,7 +11,7 @@ const std::vector<std::string>& pipelineFallbackKeys() {
       "nonUniformScaleNodes", "negativeScaleNodes", "shearMatrixNodes",    "zeroScalarFrames",
       "biasedFrames",         "scaleFallbackInstances", "rotorSplitVertices", "rotorUnresolvedTriangles",
       "linearFallbackDraws",  "skinFallbackDraws",  "skinFallbackJoints",  "fallbackVertices",
-      "morphNotDrawnNodes"};
+      "skinFallbackVertices", "morphNotDrawnNodes"};
   return keys;
 }
 

@@ -151,7 +151,7 @@ nlohmann::json toJson(const PipelineStats& s) {
           {"rotorSplitVertices", s.rotorSplitVertices}, {"rotorUnresolvedTriangles", s.rotorUnresolvedTriangles},
           {"linearFallbackDraws", s.linearFallbackDraws}, {"skinFallbackDraws", s.skinFallbackDraws},
           {"skinFallbackJoints", s.skinFallbackJoints}, {"fallbackVertices", s.fallbackVertices},
-          {"morphNotDrawnNodes", s.morphNotDrawnNodes}};
+          {"skinFallbackVertices", s.skinFallbackVertices}, {"morphNotDrawnNodes", s.morphNotDrawnNodes}};
 }
 
 nlohmann::json toJson(const gl::ContextInfo& gl) {

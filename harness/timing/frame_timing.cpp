@@ -218,6 +218,7 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
           t.updateRepeats = std::clamp(int(std::ceil(kMinUpdateBlockMs / updateMs)), 1, 1000);
         continue;
       }
+      t.fallbacks.add(p.stats());
       t.updateMs.push_back(updateMs);
       for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) t.phaseMs[k2].push_back(phases[k2] / t.updateRepeats);
       t.frameMs.push_back(query ? gpuMs : wallMs);
@@ -282,6 +283,15 @@ nlohmann::json toJson(const MachineInfo& m) {
           {"gl", mb::toJson(m.gl)}};
 }
 
+void FallbackTally::add(const PipelineStats& s) {
+  if (s.linearFallbackDraws + s.skinFallbackDraws == 0) return;
+  ++frames;
+  linearDraws = std::max(linearDraws, s.linearFallbackDraws);
+  skinDraws = std::max(skinDraws, s.skinFallbackDraws);
+  skinJoints = std::max(skinJoints, s.skinFallbackJoints);
+  vertices = std::max(vertices, s.fallbackVertices);
+}
+
 double verticesPerUs(const PipelineTiming& t, bool gpu) {
   const double ms = gpu ? (t.gpuMs.empty() ? 0.0 : t.gpu.median) : t.frame.median;
   return ms > 0 ? double(t.stats.drawnVertices) / (ms * 1000.0) : 0.0;
@@ -319,6 +329,10 @@ nlohmann::json toJson(const ConfigTiming& c) {
       j["drawn_vertices"] = t.stats.drawnVertices;
       j["instances"] = t.stats.instances;
       j["vertices_per_us"] = verticesPerUs(t);
+      j["fallbacks"] = {{"frames", t.fallbacks.frames}, {"of_frames", t.frameMs.size()},
+                        {"linearFallbackDraws", t.fallbacks.linearDraws}, {"skinFallbackDraws", t.fallbacks.skinDraws},
+                        {"skinFallbackJoints", t.fallbacks.skinJoints}, {"fallbackVertices", t.fallbacks.vertices}};
+      j["ratios_with_fallback"] = t.fallbacks.any();
       j["gpu_vertices_per_us"] = t.gpuMs.empty() ? nlohmann::json() : nlohmann::json(verticesPerUs(t, true));
       if (matrix) {
         j["frame_ratio_to_matrix"] = ratioJson(matrix->frameMs, t.frameMs);

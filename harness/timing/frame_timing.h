@@ -93,6 +93,16 @@ inline constexpr UpdatePhaseName kUpdatePhases[] = {
     {"palette", &UpdatePhases::paletteMs}};
 inline constexpr int kUpdatePhaseCount = int(sizeof kUpdatePhases / sizeof kUpdatePhases[0]);
 
+// The motor family's exact fallbacks over the measured frames (PipelineStats after each frame's
+// render): how many frames took one, and the most draws, joints and vertices in one frame.
+struct FallbackTally {
+  int frames = 0;  // measured frames whose render drew an exact fallback
+  int linearDraws = 0, skinDraws = 0, skinJoints = 0;
+  uint64_t vertices = 0;
+  bool any() const { return frames > 0; }
+  void add(const PipelineStats& s);
+};
+
 struct PipelineTiming {
   std::string pipeline;
   // Per measured frame: the frame-time figure (ConfigTiming::source: GPU timer or wall clock),
@@ -105,6 +115,7 @@ struct PipelineTiming {
   Spread phases[kUpdatePhaseCount];
   int updateRepeats = 1;  // R: update calls per timed block
   PipelineStats stats;
+  FallbackTally fallbacks;  // a ratio to matrix taken with a fallback says so
   std::string error;  // non-empty: this pipeline could not run (no samples)
 };
 

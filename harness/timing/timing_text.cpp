@@ -26,6 +26,23 @@ const char* const kRow = "  %-10s %-24s %-22s %-28s %s\n";
 bool isMatrix(const std::string& p) { return p == "matrix" || p.ends_with("_matrix"); }
 bool isMotor(const std::string& p) { return p == "motor" || p.ends_with("_motor"); }
 
+// "exact fallback: motor 1 skinned draws (51 joints), 2940 vertices on 30 of 30 frames; ..." for
+// every pipeline that took one (the most in one frame), or nothing.
+std::string fallbackLines(const ConfigTiming& c) {
+  std::string list;
+  for (const PipelineTiming& t : c.pipelines) {
+    if (!t.error.empty() || !t.fallbacks.any()) continue;
+    const FallbackTally& f = t.fallbacks;
+    char b[256];
+    std::snprintf(b, sizeof b, "%s%s %d rigid + %d skinned draws (%d joints), %llu vertices on %d of %zu frames",
+                  list.empty() ? "" : "; ", t.pipeline.c_str(), f.linearDraws, f.skinDraws, f.skinJoints,
+                  (unsigned long long)f.vertices, f.frames, t.frameMs.size());
+    list += b;
+  }
+  if (list.empty()) return "";
+  return "  exact fallback (most in one frame; ratios marked \"fallback\" include it): " + list + "\n";
+}
+
 }  // namespace
 
 std::string RatioText::text() const {
@@ -66,9 +83,11 @@ std::string timingBlock(const ConfigTiming& c) {
       continue;
     }
     const bool base = &t == matrix;
-    const std::string frameRatio = base ? "1 (baseline)" : matrix ? pairedRatio(matrix->frameMs, t.frameMs).text() : "-";
+    const std::string mark = t.fallbacks.any() ? " fallback" : "";
+    const std::string frameRatio =
+        base ? "1 (baseline)" : matrix ? pairedRatio(matrix->frameMs, t.frameMs).text() + mark : "-";
     const std::string updateRatio =
-        base ? "1 (baseline)" : matrix ? pairedRatio(matrix->updateMs, t.updateMs).text() : "-";
+        base ? "1 (baseline)" : matrix ? pairedRatio(matrix->updateMs, t.updateMs).text() + mark : "-";
     out += format(kRow, t.pipeline, cell(t.frame), cell(t.update, 1000.0), frameRatio, updateRatio);
   }
   if (matrix && motor) {
@@ -78,6 +97,7 @@ std::string timingBlock(const ConfigTiming& c) {
            pairedRatio(matrix->frameMs, motor->frameMs).text() + ", of the medians " + ofMedians +
            "; process CPU time per frame: paired " + pairedRatio(matrix->cpuMs, motor->cpuMs).text() + "\n";
   }
+  out += fallbackLines(c);
   // The update phase by phase (medians, us per call), every pipeline.
   std::string phases;
   for (const PipelineTiming& t : c.pipelines) {

@@ -30,6 +30,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "pipelines/motor/motor_kernels.h"
+#include "pipelines/scene/similarity_tolerance.h"
 #include "shaders/shim/pga.h"
 
 namespace mb::companion {
@@ -40,8 +41,9 @@ using Line = P::line;
 using Vec3 = P::vec3;
 using Vec4 = P::vec4;
 
-inline constexpr float kScaleTolerance = 1e-4f;     // relative, as the reference's scale check
-inline constexpr float kShearTolerance = 1e-4f;     // |cos| between normalised columns
+// pipelines/scene/similarity_tolerance.h: relative scale spread, and |cos| between columns.
+inline constexpr float kScaleTolerance = float(kSimilarityTolerance);
+inline constexpr float kShearTolerance = float(kSimilarityTolerance);
 inline constexpr float kMinTangentScalar = 1.0f / 32767.0f;
 
 inline Vec3 toVec3(const glm::vec3& v) { return Vec3(v.x, v.y, v.z); }

@@ -199,7 +199,7 @@ void MotorPipeline::render(const View& view) {
   stats_.morphDraws = 0;
   stats_.drawnVertices = 0;
   stats_.linearFallbackDraws = stats_.skinFallbackDraws = stats_.skinFallbackJoints = 0;
-  stats_.fallbackVertices = 0;
+  stats_.fallbackVertices = stats_.skinFallbackVertices = 0;
   uploadPalettes();
   streamInstances();
   const motor::CameraMotor camera = motor::cameraFromView(view);
@@ -373,6 +373,7 @@ void MotorPipeline::setDequant(const gl::Program& program, const gl::DrawItem& d
 }
 
 void MotorPipeline::release() {
+  if (palette) stats_.skinFallbackVertices += drawn;
   geometry_.release();
   patches_.release();
   paletteBuffers_.release();

@@ -189,7 +189,7 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
       ScaledMotor m = compose(joint, rig.inverseBind[size_t(p.skin)][j]);
       if (relativeToNode) m.motor = gpMotors(toNode, m.motor);
       if (j == 0) p.scale = m.scale;
-      else if (std::fabs(m.scale - p.scale) > 1e-4f * std::fabs(p.scale)) p.uniform = false;
+      else if (std::fabs(m.scale - p.scale) > float(kSimilarityTolerance) * std::fabs(p.scale)) p.uniform = false;
       float* out = &p.motors[8 * j];
       for (int c = 0; c < 2; ++c)
         for (int r = 0; r < 4; ++r) out[4 * c + r] = m.motor[c][r];

@@ -6,11 +6,7 @@
 
 namespace mb {
 
-bool isNonUniform(const glm::vec3& s) {
-  glm::vec3 a = glm::abs(s);
-  float hi = std::max({a.x, a.y, a.z}), lo = std::min({a.x, a.y, a.z});
-  return hi - lo > kScaleTolerance * hi;
-}
+bool isNonUniform(const glm::vec3& s) { return scaleNonUniformity(s) > kSimilarityTolerance; }
 
 ScaleClass classifyScale(const glm::vec3& s) {
   if (s.x * s.y * s.z < 0.0f) return ScaleClass::Negative;
@@ -81,12 +77,12 @@ ScaleReport analyzeScale(const Scene& scene) {
         ns.animatedNegative |= s.x * s.y * s.z < 0.0f;
         const double nu = scaleNonUniformity(s);
         if (nu > ns.nonUniformity) ns.nonUniformity = nu, ns.leastUniform = s;
-        keyNonUniform |= nu > kPaperScaleTolerance;
+        keyNonUniform |= nu > kSimilarityTolerance;
         // Animating scale = the keys change over time (issue 35 item 6): a key differs from the
         // first. Constant keys (all 1, or a fixed scale other than the rest scale) are counted
         // apart: they set a scale, they do not animate it.
-        changes |= scaleChange(keys.front(), s) > kPaperScaleTolerance;
-        offRest |= scaleChange(rest, s) > kPaperScaleTolerance;
+        changes |= scaleChange(keys.front(), s) > kSimilarityTolerance;
+        offRest |= scaleChange(rest, s) > kSimilarityTolerance;
       }
       r.changingScaleChannels += changes;
       r.nonUniformChangingChannels += changes && keyNonUniform;
@@ -96,9 +92,8 @@ ScaleReport analyzeScale(const Scene& scene) {
     }
   for (size_t i = 0; i < r.nodes.size(); ++i) {
     const NodeScale& ns = r.nodes[i];
-    // The statistics take one tolerance (kPaperScaleTolerance, relative): the per-node flags above
-    // (kScaleTolerance) are the motor fallback's, not a statistic.
-    const bool nonUniform = ns.shear || ns.nonUniformity > kPaperScaleTolerance;
+    // The statistics and the motor fallback's per-node flags above take the same tolerance.
+    const bool nonUniform = ns.shear || ns.nonUniformity > kSimilarityTolerance;
     r.uniformNodes += ns.restClass == ScaleClass::Uniform;
     r.nonUniformNodes += ns.restNonUniform;
     r.negativeNodes += ns.restClass == ScaleClass::Negative || ns.animatedNegative;
@@ -110,7 +105,7 @@ ScaleReport analyzeScale(const Scene& scene) {
     r.animatedScale |= ns.animated;
     r.animatedNonUniformScale = r.animatedNonUniformKeys;
     if (nonUniform && !ns.leaf) r.nonUniformOnlyOnLeaves = false;
-    if (!ns.leaf && ns.nonUniformity > kPaperScaleTolerance) {
+    if (!ns.leaf && ns.nonUniformity > kSimilarityTolerance) {
       ++r.innerNonUniformNodes;
       if (ns.nonUniformity > r.innerNonUniformityMax) {
         r.innerNonUniformityMax = ns.nonUniformity, r.innerNonUniformNode = int(i);

@@ -1,6 +1,6 @@
 // Scale analysis per node and per file: what the motor pipeline must handle (uniform scale is
 // one float per node; non-uniform scale needs a matrix fallback; det < 0 is a reflection), and
-// the corpus statistics the paper's two scale claims are judged on (issue 26 item 7).
+// the corpus statistics the paper's two scale claims are judged on.
 #pragma once
 #include <string>
 #include <vector>
@@ -8,23 +8,18 @@
 #include <glm/glm.hpp>
 
 #include "pipelines/scene/scene.h"
+#include "pipelines/scene/similarity_tolerance.h"
 
 namespace mb {
 
 enum class ScaleClass { Uniform, NonUniform, Negative };  // Negative: det < 0 (may also be non-uniform)
 
-// Components whose magnitudes differ by more than this (relative to the largest) are non-uniform
-// for the motor pipeline's fallback (pipelines/motor).
-constexpr float kScaleTolerance = 1e-5f;
-
-// The one tolerance of the corpus statistics (issue 35 item 6): the paper's reference loader
-// calls a matrix's column scales (s0, s1, s2) non-uniform when |s0/s1 - 1| > 1e-4 or
-// |s1/s2 - 1| > 1e-4; the statistics take the same relative 1e-4 for a node's scale (rest or
-// key) and, our choice (the paper states none), for "a key changes the scale".
-constexpr double kPaperScaleTolerance = 1e-4;
+// Every scale decision here -- the motor pipelines' fast path and the corpus statistics alike --
+// uses kSimilarityTolerance (similarity_tolerance.h: its definition and why it is invisible);
+// for "a key changes the scale" too (our choice: the paper states none).
 
 // max(|s0/s1 - 1|, |s1/s2 - 1|) on magnitudes (0: uniform; a zero divisor beside a non-zero
-// dividend: infinity). Non-uniform by the paper's rule when > kPaperScaleTolerance.
+// dividend: infinity). Non-uniform when > kSimilarityTolerance.
 double scaleNonUniformity(const glm::vec3& s);
 // Largest per-component change from `from` to `to`, relative to the larger magnitude of the two
 // (0 when both are 0).
@@ -38,7 +33,7 @@ struct NodeScale {
   bool animatedNonUniform = false;  // some scale key (or CUBICSPLINE value) is non-uniform
   bool animatedNegative = false;    // some scale key has det < 0
   bool leaf = true;                 // no children
-  // By the paper's 1e-4 rule: the largest non-uniformity of the rest scale and of every scale
+  // By kSimilarityTolerance's rule: the largest non-uniformity of the rest scale and of every scale
   // key of the node (shear counts as infinite).
   double nonUniformity = 0;
   glm::vec3 leastUniform{1.0f};  // the scale (rest or key) that gave nonUniformity
@@ -48,12 +43,12 @@ struct ScaleReport {
   std::vector<NodeScale> nodes;  // one per scene node
   int uniformNodes = 0, nonUniformNodes = 0, negativeNodes = 0, shearNodes = 0;
   int animatedScaleNodes = 0, animatedNonUniformNodes = 0, scaleChannels = 0;
-  bool nonUniformScale = false;          // any node non-uniform beyond kPaperScaleTolerance, at rest or in a key
+  bool nonUniformScale = false;          // any node non-uniform beyond kSimilarityTolerance, at rest or in a key
   bool negativeScale = false;            // any node with det < 0 at rest or animated
   bool animatedScale = false;            // any scale channel
-  bool animatedNonUniformScale = false;  // any scale key non-uniform beyond kPaperScaleTolerance
-  bool nonUniformOnlyOnLeaves = true;    // every node non-uniform beyond kPaperScaleTolerance (or sheared) is a leaf
-  // Corpus statistics, 1e-4 relative (kPaperScaleTolerance):
+  bool animatedNonUniformScale = false;  // any scale key non-uniform beyond kSimilarityTolerance
+  bool nonUniformOnlyOnLeaves = true;    // every node non-uniform beyond kSimilarityTolerance (or sheared) is a leaf
+  // Corpus statistics, 1e-4 relative (kSimilarityTolerance):
   // channels whose keys change the scale (some key differs from another key, or from the node's
   // rest scale, by more than 1e-4 relative), of those the ones with a key that is non-uniform,
   // and inner nodes (with children) non-uniform at rest or in any key.
@@ -61,7 +56,7 @@ struct ScaleReport {
   // Scale channels whose keys do not change over time (constant), and of those the ones whose
   // constant differs from the node's rest scale: reported apart, not "animating scale".
   int constantScaleChannels = 0, constantScaleChannelsOffRest = 0;
-  bool animatedNonUniformKeys = false;  // a scale key non-uniform beyond kPaperScaleTolerance
+  bool animatedNonUniformKeys = false;  // a scale key non-uniform beyond kSimilarityTolerance
   double innerNonUniformityMax = 0;  // the largest non-uniformity on an inner node (0: none)
   int innerNonUniformNode = -1;      // that node's index (-1: none)
   std::string innerNonUniformName;   // its name
@@ -70,6 +65,7 @@ struct ScaleReport {
 
 // Classifies one scale vector.
 ScaleClass classifyScale(const glm::vec3& s);
+// scaleNonUniformity(s) > kSimilarityTolerance: the motor fast path cannot carry s as one float.
 bool isNonUniform(const glm::vec3& s);
 
 // Analyses rest TRS (decomposed matrices included) and every scale channel of every animation.

@@ -157,7 +157,7 @@ nlohmann::json toJson(const FileStats& f) {
                 {"animated", r.animatedScale}, {"animatedNonUniform", r.animatedNonUniformScale},
                 {"nonUniformOnlyOnLeaves", r.nonUniformOnlyOnLeaves},
                 // The statistics' one relative tolerance (scale_analysis.h): 1e-4.
-                {"paperTolerance", kPaperScaleTolerance}, {"scaleChannels", r.scaleChannels},
+                {"paperTolerance", kSimilarityTolerance}, {"scaleChannels", r.scaleChannels},
                 {"changingScaleChannels", r.changingScaleChannels},
                 {"constantScaleChannels", r.constantScaleChannels},
                 {"constantScaleChannelsOffRest", r.constantScaleChannelsOffRest},
@@ -228,7 +228,7 @@ nlohmann::json aggregateFileJson(const nlohmann::json& files) {
           {"fractionAnimatedNonUniformScale", frac(animatedNonUniform)},
           {"filesWithNonUniformScale", nonUniform}, {"fractionNonUniformScale", frac(nonUniform)},
           {"filesWithNonUniformOnlyOnLeaves", leavesOnly},
-          {"paperTolerance", kPaperScaleTolerance},
+          {"paperTolerance", kSimilarityTolerance},
           {"filesWithChangingScale", changing}, {"fractionChangingScale", frac(changing)},
           {"filesWithOnlyConstantScaleChannels", constantOnly},
           {"filesWithNonUniformChangingScale", changingNonUniform},

@@ -4,6 +4,8 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "pipelines/scene/similarity_tolerance.h"
+
 namespace mb {
 
 glm::mat4 trsMatrix(const TRS& trs) {
@@ -29,7 +31,7 @@ bool decomposeMatrix(const glm::mat4& m, TRS* out) {
   // Shear: columns not mutually orthogonal.
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j)
-      if (std::fabs(glm::dot(col[i], col[j])) > kTol * scale[i] * scale[j]) exact = false;
+      if (std::fabs(glm::dot(col[i], col[j])) > float(kSimilarityTolerance) * scale[i] * scale[j]) exact = false;
   if (glm::determinant(glm::mat3(col[0], col[1], col[2])) < 0.0f) scale.x = -scale.x;
   // Gram-Schmidt so the rotation is proper even when the input is slightly sheared.
   glm::vec3 x = col[0] / scale.x;

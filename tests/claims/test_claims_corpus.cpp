@@ -56,9 +56,9 @@ Scene twoNodes(glm::vec3 rootScale, glm::vec3 leafScale) {
 // rule, and below 1 %); (1, 1.00005, 1) by 5e-5 (within); a zero divisor is infinite.
 TEST(ClaimsCorpus, PaperRuleOnHandWorkedScales) {
   EXPECT_NEAR(scaleNonUniformity({0.997854f, 0.9999999f, 1.0f}), 2.1459e-3, 2e-7);
-  EXPECT_GT(scaleNonUniformity({0.997854f, 0.9999999f, 1.0f}), kPaperScaleTolerance);
+  EXPECT_GT(scaleNonUniformity({0.997854f, 0.9999999f, 1.0f}), kSimilarityTolerance);
   EXPECT_NEAR(scaleNonUniformity({1.0f, 1.00005f, 1.0f}), 5e-5, 1e-7);
-  EXPECT_LT(scaleNonUniformity({1.0f, 1.00005f, 1.0f}), kPaperScaleTolerance);
+  EXPECT_LT(scaleNonUniformity({1.0f, 1.00005f, 1.0f}), kSimilarityTolerance);
   EXPECT_EQ(scaleNonUniformity({-2.0f, 2.0f, 2.0f}), 0.0);  // a mirror is uniform in magnitude
   EXPECT_EQ(scaleNonUniformity({0.0f, 1.0f, 1.0f}), 1.0);  // |0/1 - 1|
   EXPECT_TRUE(std::isinf(scaleNonUniformity({1.0f, 0.0f, 1.0f})));  // 1/0

@@ -12,6 +12,7 @@
 #include "pipelines/scene/animation.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
+#include "pipelines/scene/scale_analysis.h"
 #include "pipelines/scene/scene_stats.h"
 #include "pipelines/scene/transform.h"
 
@@ -179,4 +180,16 @@ TEST(SceneBuiltin, CrowdInstancesOneSkinnedMesh) {
   EXPECT_EQ(s.meshes.size(), 1u);
   EXPECT_FALSE(s.meshes[0].primitives[0].joints.empty());
   EXPECT_EQ(s.animations.size(), 1u);
+}
+
+// The one similarity tolerance decides "non-uniform" for the motor fast path and the statistics
+// alike: neighbouring scale ratios within 1e-4 are uniform (exporter noise), beyond are not.
+TEST(SimilarityTolerance, NoiseIsUniformAPercentIsNot) {
+  EXPECT_EQ(mb::kSimilarityTolerance, 1e-4);
+  EXPECT_FALSE(mb::isNonUniform({1.0f + 1.2e-5f, 1.0f - 0.6e-5f, 1.0f}));  // cow.glb's noise
+  EXPECT_FALSE(mb::isNonUniform({2.0f, 2.0f * (1.0f + 9e-5f), 2.0f}));
+  EXPECT_TRUE(mb::isNonUniform({2.0f, 2.0f * (1.0f + 1.2e-4f), 2.0f}));
+  EXPECT_TRUE(mb::isNonUniform({1.01f, 1.0f, 1.0f}));
+  EXPECT_FALSE(mb::isNonUniform({-3.0f, 3.0f, 3.0f}));  // a mirror is uniform in magnitude
+  EXPECT_EQ(mb::classifyScale({1.0f, 1.0f + 5e-5f, 1.0f}), mb::ScaleClass::Uniform);
 }
