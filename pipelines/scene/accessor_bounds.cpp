@@ -1,6 +1,7 @@
 // Accessor min/max against the data (LoadStats::accessorBoundsMismatch). glTF 2.0 3.6.2.5: the
 // bounds are of the raw values (normalized has no effect), after sparse substitution; float
 // bounds are compared rounded to single precision, as the spec asks readers to round them.
+// Also accessors read past their bufferView (LoadStats::accessorsPastBufferView).
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -37,6 +38,10 @@ void countAccessorBoundsMismatches(const tinygltf::Model& m, Scene& scene) {
     };
     scene.stats.accessorBoundsMismatch += !(same(acc.minValues, lo) && same(acc.maxValues, hi));
   }
+}
+
+void countAccessorsPastBufferView(const tinygltf::Model& m, Scene& scene) {
+  for (size_t i = 0; i < m.accessors.size(); ++i) scene.stats.accessorsPastBufferView += readsPastBufferView(m, int(i));
 }
 
 }  // namespace mb

@@ -50,22 +50,26 @@ std::string label(int index, const std::string& what) {
   return "accessor " + std::to_string(index) + (what.empty() ? "" : " (" + what + ")");
 }
 
-// Checks that bufferView `bv` exists and lies inside its buffer; returns its first byte.
-Result<const uint8_t*> viewBytes(const tinygltf::Model& m, int bv, const std::string& who,
-                                 size_t* viewLength, size_t* stride) {
+// A bufferView's bytes: its first byte, its byteLength and byteStride, and `room`, the bytes
+// from its first byte to the end of its buffer (>= length).
+struct ViewSpan {
+  const uint8_t* base = nullptr;
+  size_t length = 0, room = 0, stride = 0;
+};
+
+// Checks that bufferView `bv` exists and lies inside its buffer.
+Result<ViewSpan> viewBytes(const tinygltf::Model& m, int bv, const std::string& who) {
   if (bv < 0 || size_t(bv) >= m.bufferViews.size())
-    return Result<const uint8_t*>::fail(who + " refers to missing bufferView " + std::to_string(bv));
+    return Result<ViewSpan>::fail(who + " refers to missing bufferView " + std::to_string(bv));
   const auto& view = m.bufferViews[size_t(bv)];
   if (view.buffer < 0 || size_t(view.buffer) >= m.buffers.size())
-    return Result<const uint8_t*>::fail("bufferView " + std::to_string(bv) +
-                                        " refers to missing buffer " + std::to_string(view.buffer));
+    return Result<ViewSpan>::fail("bufferView " + std::to_string(bv) + " refers to missing buffer " +
+                                  std::to_string(view.buffer));
   const auto& data = m.buffers[size_t(view.buffer)].data;
   if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
-    return Result<const uint8_t*>::fail("bufferView " + std::to_string(bv) + " lies outside buffer " +
-                                        std::to_string(view.buffer));
-  *viewLength = view.byteLength;
-  *stride = view.byteStride;
-  return data.data() + view.byteOffset;
+    return Result<ViewSpan>::fail("bufferView " + std::to_string(bv) + " lies outside buffer " +
+                                  std::to_string(view.buffer));
+  return ViewSpan{data.data() + view.byteOffset, view.byteLength, data.size() - view.byteOffset, view.byteStride};
 }
 
 // True when `count` elements of `elemSize` bytes at `stride` starting at `offset` fit in `length`.
@@ -95,17 +99,20 @@ Result<AccessorData<T>> decode(const tinygltf::Model& m, int index, const std::s
   const uint8_t* data = nullptr;
   size_t stride = 0;
   if (acc.bufferView >= 0) {  // range checks before anything is allocated
-    size_t len = 0;
-    auto base = viewBytes(m, acc.bufferView, who, &len, &stride);
-    if (!base) return R::fail(base.error());
-    if (stride == 0) stride = elem;
+    auto view = viewBytes(m, acc.bufferView, who);
+    if (!view) return R::fail(view.error());
+    stride = view->stride ? view->stride : elem;
     if (stride < elem)
       return R::fail(who + ": byteStride " + std::to_string(stride) + " of bufferView " +
                      std::to_string(acc.bufferView) + " is smaller than an element (" +
                      std::to_string(elem) + " bytes)");
-    if (!fits(acc.byteOffset, acc.count, stride, elem, len))
-      return R::fail(who + " reads past bufferView " + std::to_string(acc.bufferView));
-    data = *base + acc.byteOffset;
+    // Past the view but inside its buffer (invalid glTF, seen in exported files): the buffer's
+    // bytes are read, counted as LoadStats::accessorsPastBufferView (accessor_bounds.cpp).
+    if (!fits(acc.byteOffset, acc.count, stride, elem, view->room))
+      return R::fail(who + " reads past bufferView " + std::to_string(acc.bufferView) + " and past the end of buffer " +
+                     std::to_string(m.bufferViews[size_t(acc.bufferView)].buffer) + " (" +
+                     std::to_string(view->room - view->length) + " bytes follow the view)");
+    data = view->base + acc.byteOffset;
   }
 
   AccessorData<T> out;
@@ -133,11 +140,13 @@ Result<AccessorData<T>> decode(const tinygltf::Model& m, int index, const std::s
       return R::fail(swho + " indices: invalid componentType");
     if (sp.indices.byteOffset < 0 || sp.values.byteOffset < 0)
       return R::fail(swho + ": negative byteOffset");
-    size_t ilen = 0, vlen = 0, unused = 0;
-    auto ibase = viewBytes(m, sp.indices.bufferView, swho + " indices", &ilen, &unused);
-    if (!ibase) return R::fail(ibase.error());
-    auto vbase = viewBytes(m, sp.values.bufferView, swho + " values", &vlen, &unused);
-    if (!vbase) return R::fail(vbase.error());
+    auto iview = viewBytes(m, sp.indices.bufferView, swho + " indices");
+    if (!iview) return R::fail(iview.error());
+    auto vview = viewBytes(m, sp.values.bufferView, swho + " values");
+    if (!vview) return R::fail(vview.error());
+    const size_t ilen = iview->length, vlen = vview->length;
+    const uint8_t* ibase = iview->base;
+    const uint8_t* vbase = vview->base;
     size_t n = size_t(sp.count);
     // Sparse data is tightly packed (byteStride does not apply).
     if (!fits(size_t(sp.indices.byteOffset), n, size_t(ics), size_t(ics), ilen))
@@ -146,14 +155,14 @@ Result<AccessorData<T>> decode(const tinygltf::Model& m, int index, const std::s
       return R::fail(swho + " values read past bufferView " + std::to_string(sp.values.bufferView));
     std::vector<size_t> targets(n);
     for (size_t i = 0; i < n; ++i) {
-      double t = readComponent(*ibase + size_t(sp.indices.byteOffset) + i * size_t(ics),
+      double t = readComponent(ibase + size_t(sp.indices.byteOffset) + i * size_t(ics),
                                sp.indices.componentType, false);
       if (t >= double(acc.count))
         return R::fail(swho + " index " + std::to_string(size_t(t)) + " out of range (count " +
                        std::to_string(acc.count) + ")");
       targets[i] = size_t(t);
     }
-    fill(*vbase + size_t(sp.values.byteOffset), elem, n, [&](size_t i) { return targets[i]; });
+    fill(vbase + size_t(sp.values.byteOffset), elem, n, [&](size_t i) { return targets[i]; });
   }
   return out;
 }
@@ -191,6 +200,18 @@ int typeComponents(int t) {
     case TINYGLTF_TYPE_MAT4: return 16;
     default: return 0;
   }
+}
+
+bool readsPastBufferView(const tinygltf::Model& m, int index) {
+  if (index < 0 || size_t(index) >= m.accessors.size()) return false;
+  const auto& acc = m.accessors[size_t(index)];
+  const int cs = componentSize(acc.componentType), comps = typeComponents(acc.type);
+  if (acc.bufferView < 0 || !cs || !comps || acc.count > kMaxAccessorCount) return false;
+  auto view = viewBytes(m, acc.bufferView, "");
+  if (!view) return false;
+  const size_t elem = elementSize(acc.type, cs, comps), stride = view->stride ? view->stride : elem;
+  return stride >= elem && !fits(acc.byteOffset, acc.count, stride, elem, view->length) &&
+         fits(acc.byteOffset, acc.count, stride, elem, view->room);
 }
 
 Result<AccessorData<float>> readAccessorFloat(const tinygltf::Model& model, int index,

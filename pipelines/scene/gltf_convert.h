@@ -58,6 +58,8 @@ Status convertMaterials(const tinygltf::Model& model, Scene& scene);
 
 // Counts accessors whose declared min/max disagree with their data (accessor_bounds.cpp).
 void countAccessorBoundsMismatches(const tinygltf::Model& model, Scene& scene);
+// Counts accessors read past the end of their bufferView, inside its buffer (accessor_bounds.cpp).
+void countAccessorsPastBufferView(const tinygltf::Model& model, Scene& scene);
 
 // Nodes (hierarchy validated: indices in range, one parent each, no cycles), skins, cameras,
 // default scene roots.

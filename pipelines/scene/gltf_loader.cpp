@@ -170,6 +170,7 @@ Result<Scene> convert(const tinygltf::Model& m, const std::string& name, LoadCon
   checkNodeWeights(scene);
   if (s = convertAnimations(m, scene); !s) return Result<Scene>::fail(name + ": " + s.error());
   countAccessorBoundsMismatches(m, scene);
+  countAccessorsPastBufferView(m, scene);
   return scene;
 }
 

@@ -127,11 +127,20 @@ Status convertMaterials(const tinygltf::Model& m, Scene& scene) {
     const std::string who = "texture " + std::to_string(i);
     int source = t.source;
     for (const auto& [ext, v] : t.extensions) {
-      const int extSource = v.Get("source").IsInt() ? v.Get("source").GetNumberAsInt() : -2;
+      const int extSource = v.Has("source") && v.Get("source").IsInt() ? v.Get("source").GetNumberAsInt() : -2;
       if (ext == "EXT_texture_webp") {  // decoded like PNG/JPEG (image_decode.h); preferred to the fallback
-        if (extSource < 0 || extSource >= int(m.images.size()))
-          return Status::fail(who + ": EXT_texture_webp source " + std::to_string(extSource) + " does not exist");
-        source = extSource;
+        if (extSource >= 0 && extSource < int(m.images.size())) {
+          source = extSource;
+          continue;
+        }
+        // No image named (the Khronos validator passes such a texture when no material uses it):
+        // the texture's own source stands, as it does for a viewer without the extension.
+        ++scene.stats.webpTexturesWithoutSource;
+        if (used[i] && source == -1)
+          scene.unsupported.push_back(who + ": EXT_texture_webp names no image (" +
+                                      (v.Has("source") ? "source " + std::to_string(extSource) + " does not exist"
+                                                       : std::string("no source")) +
+                                      ") and the texture has no source: drawn untextured");
       } else if (ext == "KHR_texture_basisu") {  // KTX2: no decoder in Debian
         scene.unsupported.push_back(who + ": KHR_texture_basisu (KTX2) not decoded, no BasisU decoder: " +
                                     (source >= 0 ? "its fallback image " + std::to_string(source) + " is used" : "drawn untextured"));

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "pipelines/scene/accessors.h"
+#include "pipelines/scene/drawable.h"
 #include "pipelines/scene/flat_normals.h"
 #include "pipelines/scene/gltf_convert.h"
 #include "pipelines/scene/hygiene.h"
@@ -201,6 +202,11 @@ Result<Mesh> convertMesh(const tinygltf::Model& m, int index, uint32_t jointCoun
 
     // Hygiene, in dependency order: positions -> normals -> tangents.
     scene.stats.nonFinitePositions += fixPositions(p.positions);
+    if (!p.indices.empty() && !hasAreaAtRest(p)) {  // kept (a skin or morph may give it area), named
+      ++scene.stats.zeroAreaPrimitives;
+      scene.unsupported.push_back(where + ": all " + std::to_string(p.indices.size() / 3) +
+                                  " triangles have zero area (nothing drawn at rest)");
+    }
     if (p.normals.empty()) {
       generateFlatNormals(p);
       ++scene.stats.flatNormalsGenerated;

@@ -1,6 +1,7 @@
 // Nodes (validated hierarchy), skins, cameras and the default scene's roots.
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -66,6 +67,49 @@ int repairCamera(Camera& c) {
   const bool farGiven = !c.perspective || c.zfar != 0.0f;  // perspective zfar 0: absent (infinite)
   if (farGiven && !(c.zfar > c.znear)) c.zfar = 0.0f, repaired = true;
   return repaired ? 1 : 0;
+}
+
+// glTF 2.0 wants a scene's nodes to be roots; exporters list children too (Blender and Kenney
+// files list the child of an unlisted "tmpParent"). Drawn as three.js draws them: a listed node
+// whose parent chain holds no listed node becomes a root of its own, detached from its parent,
+// so its subtree is drawn at the node's local transform (the parent's chain is not applied;
+// three.js adds it to the scene, which re-parents it). One under a listed ancestor is already
+// drawn in that ancestor's subtree and stays there, drawn once. Both are counted.
+void addSceneRoots(const std::vector<int>& listed, Scene& scene) {
+  const size_t n = scene.nodes.size();
+  std::vector<uint8_t> isListed(n, 0);
+  for (int r : listed) isListed[size_t(r)] = 1;
+  // underListed[i]: node i or one of its ancestors is listed (0 unknown, 1 no, 2 yes); filled
+  // walking up once per node, so deep chains cost linear time (the hierarchy has no cycle).
+  std::vector<uint8_t> underListed(n, 0);
+  std::vector<int> walk;
+  auto coveredAbove = [&](int r) {
+    walk.clear();
+    int p = scene.nodes[size_t(r)].parent;
+    while (p != -1 && underListed[size_t(p)] == 0 && !isListed[size_t(p)]) {
+      walk.push_back(p);
+      p = scene.nodes[size_t(p)].parent;
+    }
+    const uint8_t answer = p != -1 && (isListed[size_t(p)] || underListed[size_t(p)] == 2) ? 2 : 1;
+    for (int w : walk) underListed[size_t(w)] = answer;
+    return answer == 2;
+  };
+  std::vector<int> detach;  // decided on the file's hierarchy, before any node is detached
+  std::vector<uint8_t> counted(n, 0);
+  for (int r : listed) {
+    if (scene.nodes[size_t(r)].parent == -1 || counted[size_t(r)]) continue;
+    counted[size_t(r)] = 1;
+    ++scene.stats.rootsWithParent;
+    if (!coveredAbove(r)) detach.push_back(r);
+  }
+  for (int r : detach) {
+    Node& node = scene.nodes[size_t(r)];
+    std::vector<int>& siblings = scene.nodes[size_t(node.parent)].children;
+    siblings.erase(std::find(siblings.begin(), siblings.end(), r));
+    node.parent = -1;
+  }
+  for (int r : listed)  // in the scene's order
+    if (scene.nodes[size_t(r)].parent == -1) scene.roots.push_back(r);
 }
 
 }  // namespace
@@ -165,15 +209,10 @@ Status convertNodes(const tinygltf::Model& m, Scene& scene) {
       if (scene.nodes[i].parent == -1) scene.roots.push_back(int(i));
     return {};
   }
-  for (int r : m.scenes[size_t(which)].nodes) {
+  const std::vector<int>& listed = m.scenes[size_t(which)].nodes;
+  for (int r : listed)
     if (!inRange(r, n)) return Status::fail("scene " + std::to_string(which) + ": node " + std::to_string(r) + " does not exist");
-    if (scene.nodes[size_t(r)].parent != -1) {
-      scene.unsupported.push_back("scene " + std::to_string(which) + ": node " + std::to_string(r) +
-                                  " listed as root but has a parent (ignored as root)");
-      continue;
-    }
-    scene.roots.push_back(r);
-  }
+  addSceneRoots(listed, scene);
   return {};
 }
 

@@ -204,6 +204,13 @@ struct LoadStats {
   // EXT_mesh_gpu_instancing (gltf_instancing.cpp).
   int instanceRotationsNormalised = 0;  // instance ROTATIONs off unit length by > 0.00769
   int instancingDrawnOnce = 0;          // instanced skinned / Bezier patch nodes: drawn once
+  // Real files other viewers load: drawn as three.js draws them (gltf_nodes.cpp), from the
+  // image or bytes there are (gltf_materials.cpp, accessors.cpp), or named because nothing of
+  // them can be drawn (gltf_mesh.cpp). The glossary says how each is drawn.
+  int rootsWithParent = 0;              // scene roots that have a parent: drawn as roots, once
+  int webpTexturesWithoutSource = 0;    // EXT_texture_webp naming no image: the texture's own source used
+  int accessorsPastBufferView = 0;      // accessors reading past their bufferView, inside its buffer
+  int zeroAreaPrimitives = 0;           // triangle primitives whose every triangle has zero area
 };
 
 // Geometry and images the loader decoded from a compression or image-format extension

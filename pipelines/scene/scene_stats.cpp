@@ -104,7 +104,9 @@ nlohmann::json toJson(const LoadStats& s) {
           {"dracoCountMismatch", s.dracoCountMismatch}, {"jsonChunkUnpadded", s.jsonChunkUnpadded},
           {"unusedTexturesWithoutImage", s.unusedTexturesWithoutImage},
           {"instanceRotationsNormalised", s.instanceRotationsNormalised},
-          {"instancingDrawnOnce", s.instancingDrawnOnce}};
+          {"instancingDrawnOnce", s.instancingDrawnOnce}, {"rootsWithParent", s.rootsWithParent},
+          {"webpTexturesWithoutSource", s.webpTexturesWithoutSource},
+          {"accessorsPastBufferView", s.accessorsPastBufferView}, {"zeroAreaPrimitives", s.zeroAreaPrimitives}};
 }
 
 nlohmann::json toJson(const CompressionStats& c) {

@@ -61,7 +61,8 @@ std::string counterName(int mb::LoadStats::*c) {
       {&S::basisuTexturesNotDecoded, "basisuTexturesNotDecoded"},
       {&S::camerasRepaired, "camerasRepaired"}, {&S::instanceRotationsNormalised, "instanceRotationsNormalised"},
       {&S::instancingDrawnOnce, "instancingDrawnOnce"}, {&S::dracoCountMismatch, "dracoCountMismatch"},
-      {&S::jsonChunkUnpadded, "jsonChunkUnpadded"}, {&S::unusedTexturesWithoutImage, "unusedTexturesWithoutImage"}};
+      {&S::jsonChunkUnpadded, "jsonChunkUnpadded"}, {&S::unusedTexturesWithoutImage, "unusedTexturesWithoutImage"},
+      {&S::accessorsPastBufferView, "accessorsPastBufferView"}};
   for (const auto& [p, n] : names)
     if (p == c) return n;
   return "";

@@ -135,8 +135,18 @@ std::vector<Case> accessorCases() {
 
   cs.push_back(error("accessor_count_beyond_view.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.pos]["count"] = 100; }),
                      {"range", "exceed", "bounds", "too small", "beyond", "outside", "past"}, "POSITION count 100 in a 48-byte bufferView"));
-  cs.push_back(error("accessor_offset_beyond_view.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.nrm]["byteOffset"] = 40; }),
-                     {"range", "exceed", "bounds", "too small", "beyond", "outside", "past"}, "NORMAL byteOffset 40 leaves 8 of 48 bytes"));
+  // Past its view, inside the buffer: the next view's bytes (the uvs) are read, as the glossary
+  // says. Elements 0 and 2: the last normal's (y, z) and uv 0's x; uv 2 and uv 3's x.
+  Case pastView = fallback("accessor_offset_beyond_view.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.nrm]["byteOffset"] = 40; }),
+                           &LoadStats::accessorsPastBufferView, 1,
+                           "NORMAL byteOffset 40 leaves 8 of 48 bytes, the uv and index views follow (read, counted)");
+  pastView.check = [](const Scene& s) -> std::string {
+    const auto& n = s.meshes[0].primitives[0].normals;
+    return n.size() == 4 && n[0] == glm::vec3(0, 1, 0) && n[2] == glm::vec3(1, 0, 0) ? "" : "normals are not the buffer's bytes";
+  };
+  cs.push_back(pastView);
+  cs.push_back(error("accessor_offset_beyond_buffer.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.nrm]["byteOffset"] = 88; }),
+                     {"past the end of buffer 0"}, "NORMAL byteOffset 88: its 4 normals end 44 bytes past the end of the buffer"));
   cs.push_back(error("accessor_index_missing.glb", glb([](Doc& d, QuadIds&) { d.j["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 42; }),
                      {"accessor"}, "POSITION refers to accessor 42 (there are 4)"));
   cs.push_back(error("accessor_index_negative.glb", glb([](Doc& d, QuadIds&) { d.j["meshes"][0]["primitives"][0]["indices"] = -5; }),

@@ -181,5 +181,5 @@ TEST(SceneAccessors, LoaderErrorNamesFileAccessorAndView) {
   g.meshPrimitive({{"POSITION", pos}});
   auto s = mb::loadGltfMemory(g.glb(), "box.glb");
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(s.error(), "box.glb: accessor 0 (POSITION) reads past bufferView 0");
+  EXPECT_EQ(s.error(), "box.glb: accessor 0 (POSITION) reads past bufferView 0 and past the end of buffer 0 (0 bytes follow the view)");
 }
