@@ -206,7 +206,9 @@ void method(Document& d) {
       "update()/render(); bytes per vertex = shading-attribute bytes / uploaded vertices.",
       "Ops per vertex: counted by executing the pipelines' GLSL transform functions on an op-counting scalar, "
       "and cross-checked in the optimised SPIR-V of the real vertex shaders; per scene, the mean over drawn "
-      "vertices, weighted by the variant (rigid, skinned, scaled fallback) each vertex goes through.",
+      "vertices, weighted by the variant (rigid, skinned, scaled fallback) each vertex goes through; the "
+      "vertices the motor family's exact fallback drew (the most in any frame) at its own variants (linear "
+      "fallback, skinned linear fallback).",
       "Frame timing (harness/timing/frame_timing.h, as `motorbench time`): per scene, in a worker process that runs "
       "alone (never alongside other scenes); on a CPU rasterizer the wall clock around update + render + glFinish, "
       "on a real GPU GL_TIME_ELAPSED timer queries (wall clock beside them), after warm-up, each "

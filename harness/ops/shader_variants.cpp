@@ -13,6 +13,9 @@ const std::string kAffineMain =
 const std::string kCurvedMain =
     "main() adds the projection u_Projection * position (mat4 * vec4: 16 mul, 12 add), the same on both "
     "sides of a space";
+const std::string kHandedness =
+    "the exact fallback (pipelines/motor/linear_fallback.h); main() also takes the frame's handedness, "
+    "motorHandedness (1 div, 1 sign), outside the counted kernel";
 const std::string kTexels = "the 16 control points are texelFetch (no arithmetic)";
 // Instanced draws (EXT_mesh_gpu_instancing, --instances): the rigid transform with its per-draw
 // data read from per-instance attributes; the same arithmetic as the non-instanced variant.
@@ -100,6 +103,11 @@ void motorVariants(std::vector<ShaderVariant>& out) {
         {p, "motor.vs", {{"MB_INSTANCED", ""}}, "rigid, instanced", {"motorRigidVertex", clip}, kInstanced},
         {p, "motor.vs", D{{"MB_INSTANCED", ""}, {"MB_SCALE_FALLBACK", ""}}, "scaled fallback, instanced",
          {"motorScaledVertex", clip}, kInstanced},
+        {p, "motor.vs", {{"MB_LINEAR_FALLBACK", ""}}, "linear fallback", {"motorLinearRotorVertex", clip},
+         kHandedness},
+        {p, "motor.vs", D{{"MB_SKINNED", ""}, {"MB_LINEAR_FALLBACK", ""}}, "skinned, linear fallback",
+         {"motorBlendJoints", "motorBlendLinear", "motorBlendLinear", "motorLinearRotorVertex", clip},
+         "joint world motors and linear parts; " + kHandedness},
     });
   }
   D rotor = kMorph;

@@ -19,7 +19,8 @@ struct ShaderVariant {
 };
 
 // Labels: "rigid", "skinned", "scaled fallback", "bezier patch" are what each pipeline draws by
-// default (the report weights them by its vertex mix). The skinned configurations of issue 18
+// default (the report weights them by its vertex mix); "linear fallback" and "skinned, linear
+// fallback" what the motor family's exact fallback draws (weighted by the vertices it drew). The skinned configurations of issue 18
 // are counted side by side for matrix and motor: "skinned, reference" (as the references do: the
 // node's transform after the blend) and "skinned, world palette" (neither reference); the
 // matrix default "skinned" is the former, the motor default the latter. "..., no tangent": the

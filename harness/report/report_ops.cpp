@@ -1,5 +1,6 @@
 #include "harness/report/report_ops.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -76,7 +77,7 @@ json measureOpsPerVertex() {
           {"perPipeline", opsv::toJson(opsv::pipelineOps(ops))}, {"detail", full}};
 }
 
-json sceneOpsPerVertex(const json& ops, const json& mix) {
+json sceneOpsPerVertex(const json& ops, const json& mix, const json& pipelines) {
   if (!mix.is_object()) return nullptr;
   if (mix.value("curvedInstance", 0.0) > 0) {  // one variant draws every vertex of a curved scene
     json out = json::object();
@@ -97,7 +98,14 @@ json sceneOpsPerVertex(const json& ops, const json& mix) {
     const json* skin = findVariant(ops, pipeline, "skinned");
     const json* fb = findVariant(ops, pipeline, "scaled fallback");
     const json* bezier = findVariant(ops, pipeline, "bezier patch");
+    const json* linear = findVariant(ops, pipeline, "linear fallback");
+    const json* skinLinear = findVariant(ops, pipeline, "skinned, linear fallback");
     if (!rigid || (skinned > 0 && !skin) || (patch > 0 && !bezier)) continue;
+    // The exact fallback's vertices (the most in one frame drawn), within the scene's own counts.
+    const json drawn = pipelines.is_object() && pipelines.contains(pipeline)
+                           ? pipelines[pipeline].value("fallbacks", json::object()) : json::object();
+    const double fbSkin = std::min(skinned, drawn.value("skinFallbackVertices", 0.0));
+    const double fbRigid = std::min(rigidAll, std::max(0.0, drawn.value("fallbackVertices", 0.0) - fbSkin));
     json row;
     for (const char* way : {"counted", "spirv"}) {
       if ((*rigid)[way].is_null() || (skinned > 0 && (*skin)[way].is_null()) ||
@@ -105,17 +113,23 @@ json sceneOpsPerVertex(const json& ops, const json& mix) {
         row[way] = nullptr;
         continue;
       }
-      const double nFallback = fb && !(*fb)[way].is_null() ? scaled : 0.0;
+      auto usable = [&](const json* v) { return v && !(*v)[way].is_null(); };
+      const double nLinear = usable(linear) ? fbRigid : 0.0, nSkinLinear = usable(skinLinear) ? fbSkin : 0.0;
+      const double nFallback = usable(fb) ? std::min(scaled, rigidAll - nLinear) : 0.0;
       json mean;
       for (const char* c : kColumns) {
-        double sum = ops5((*rigid)[way])[c].get<double>() * (rigidAll - nFallback);
-        if (nFallback > 0) sum += ops5((*fb)[way])[c].get<double>() * nFallback;
-        if (skinned > 0) sum += ops5((*skin)[way])[c].get<double>() * skinned;
-        if (patch > 0) sum += ops5((*bezier)[way])[c].get<double>() * patch;
+        auto cost = [&](const json* v) { return ops5((*v)[way])[c].get<double>(); };
+        double sum = cost(rigid) * (rigidAll - nFallback - nLinear);
+        if (nFallback > 0) sum += cost(fb) * nFallback;
+        if (nLinear > 0) sum += cost(linear) * nLinear;
+        if (skinned > 0) sum += cost(skin) * (skinned - nSkinLinear);
+        if (nSkinLinear > 0) sum += cost(skinLinear) * nSkinLinear;
+        if (patch > 0) sum += cost(bezier) * patch;
         mean[c] = sum / total;
       }
       row[way] = mean;
     }
+    row["fallbackVertices"] = {{"rigid", fbRigid}, {"skinned", fbSkin}};
     out[pipeline] = row;
   }
   return out;

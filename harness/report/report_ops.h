@@ -21,6 +21,11 @@ nlohmann::json measureOpsPerVertex();
 // have none and use "rigid". A curved scene ("curvedInstance" > 0): the "<curvedSpace>
 // instance" variant ("S3 instance", "H3 instance") of each pipeline that has it. null when the
 // scene draws nothing.
-nlohmann::json sceneOpsPerVertex(const nlohmann::json& ops, const nlohmann::json& mix);
+// `pipelines` (the scene's report entry "pipelines", or null): each pipeline's "fallbacks"
+// (the most in any frame drawn); the vertices its exact fallback drew (fallbackVertices, of them
+// skinFallbackVertices) are priced at its "linear fallback" and "skinned, linear fallback"
+// variants instead of the rigid and skinned ones, and each row says how many ("fallbackVertices").
+nlohmann::json sceneOpsPerVertex(const nlohmann::json& ops, const nlohmann::json& mix,
+                                 const nlohmann::json& pipelines = nullptr);
 
 }  // namespace mb::report

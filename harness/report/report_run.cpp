@@ -219,7 +219,8 @@ int runReport(const Options& o) {
   // Phase 3: ops per vertex (shared by every scene, weighted by each scene's vertices).
   say("counting ops per vertex (shim and SPIR-V)");
   json ops = measureOpsPerVertex();
-  for (json& s : scenes) s["opsPerVertex"] = sceneOpsPerVertex(ops, s.value("vertexMix", json()));
+  for (json& s : scenes)
+    s["opsPerVertex"] = sceneOpsPerVertex(ops, s.value("vertexMix", json()), s.value("pipelines", json()));
 
   // Phase 3b: the curved spaces' camera drift (about a second), when the run has a curved scene.
   json curvedExtra = json::object();
