@@ -240,6 +240,16 @@ def plot_kernel_ratios(plt, report, outdir):
             "no error bars; a logarithmic axis when the ratios span more than 10x.", bars)
 
 
+def fallback_label(scene):
+    """The scene's id, and under it the motor pipeline's exact fallback when it took one."""
+    fb = ((scene.get("pipelines") or {}).get("motor") or {}).get("fallbacks") or {}
+    draws = (fb.get("linearFallbackDraws") or 0) + (fb.get("skinFallbackDraws") or 0)
+    if not draws:
+        return scene["id"]
+    return "%s\nmotor fallback: %d draws, %d joints, %d vertices" % (
+        scene["id"], draws, fb.get("skinFallbackJoints") or 0, fb.get("fallbackVertices") or 0)
+
+
 def plot_frame_time_ratio(plt, report, outdir):
     """Per scene, the figures the text quotes (frame_time.<scene>.motor_over_matrix and the
     vertex-bound one: medians of per-frame paired ratios) with their IQR as error bars."""
@@ -248,18 +258,18 @@ def plot_frame_time_ratio(plt, report, outdir):
               or num((s.get("timing") or {}).get("ratio_motor_matrix"))]
     if not scenes:
         return None
-    labels = [s["id"] for s in scenes]
+    labels = [fallback_label(s) for s in scenes]
     series, spreads = [], {}
     for name, key in (("frame", "frame_time"), ("64x64 viewport (vertex-bound)", "frame_time_vertex_bound")):
         vals = []
-        for s in scenes:
+        for s, label in zip(scenes, labels):
             f = figure(report, "%s.%s.motor_over_matrix" % (key, s["id"]))
             if f is None and key == "frame_time":  # a report.json before the figures layer
                 vals.append(num((s.get("timing") or {}).get("ratio_motor_matrix")))
                 continue
             vals.append(f["value"] if f else None)
             if f and iqr(f):
-                spreads[(name, s["id"])] = iqr(f)
+                spreads[(name, label)] = iqr(f)
         if any(v is not None for v in vals):
             series.append((name, vals))
     cpu = [num((s["timing"].get("update") or {}).get("ratio_motor_matrix")) for s in scenes]
@@ -276,7 +286,9 @@ def plot_frame_time_ratio(plt, report, outdir):
             "Per scene, frame time motor / matrix: the median of per-frame paired ratios (both pipelines "
             "render each frame back to back), error bars the interquartile range of those ratios; the values "
             "are report.json's figures, the same the text quotes. CPU update: ratio of medians, timed apart "
-            "(no spread recorded). On a CPU rasterizer these times cannot discriminate GPU costs.", bars)
+            "(no spread recorded). A scene whose motor pipeline drew with its exact fallback says so under "
+            "its name (the most draws, joints and vertices in any frame drawn). On a CPU rasterizer these "
+            "times cannot discriminate GPU costs.", bars)
 
 
 def image_error_series(report, scenes, pipes):

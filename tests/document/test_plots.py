@@ -1,4 +1,4 @@
-"""scripts/plot.py (issue 28 item 1): the plots are read from their data, the "bars" that
+"""scripts/plot.py: the plots are read from their data, the "bars" that
 plots/index.json records for every bar drawn, never from pixels.
 
 image_error: one bar per pipeline and scene (grouped: within a scene every pipeline at its own
@@ -46,6 +46,9 @@ def report():
         scenes.append({"id": sid, "frames": frames, "pipelines": pipelines,
                        "opsPerVertex": {p: {"counted": {"mul": 50 + i, "add": 40}} for i, p in enumerate(PIPES)},
                        "timing": {"ratio_motor_matrix": 0.9, "update": {"ratio_motor_matrix": 0.8}}})
+    # The tube's motor pipeline drew with its exact skin fallback.
+    scenes[2]["pipelines"]["motor"]["fallbacks"] = {"linearFallbackDraws": 0, "skinFallbackDraws": 1,
+                                                    "skinFallbackJoints": 4, "fallbackVertices": 100}
     # A curved scene: compared by its space's pair (s3_motor against s3_matrix).
     scenes.append({"id": "s3_tiling", "frames": [{"time": 0, "metrics": {"s3_motor": metrics(70.0, 0.0)}}]})
     return {"settings": {"pipelines": PIPES, "baseline": "matrix"}, "scenes": scenes}
@@ -102,6 +105,12 @@ class Plots(unittest.TestCase):
             self.assertIsNone(bars[(p, "normal_torus")]["text"])
             self.assertEqual(bars[(p, "normal_torus")]["value"], 40.0 + i)
         self.assertEqual(bars[("motor", "skinned_tube")]["value"], 42.0)
+
+    def test_frame_time_ratio_names_the_motor_fallback_under_its_scene(self):
+        labels = {b["label"] for b in self.plots["frame_time_ratio"]["bars"]}
+        self.assertIn("skinned_tube\nmotor fallback: 1 draws, 4 joints, 100 vertices", labels)
+        self.assertIn("normal_torus", labels)
+        self.assertNotIn("skinned_tube", labels)
 
     def test_one_colour_per_pipeline_in_every_plot(self):
         seen = {}
