@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "harness/render/render_frame.h"
+#include "harness/render/rounding_magnitude.h"
 #include "pipelines/compact/compact_encoding.h"
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
@@ -16,22 +17,6 @@
 #include "pipelines/scene/transform.h"
 
 namespace mb::survey {
-namespace {
-// Largest singular value of the linear part of `m`: sqrt of the largest eigenvalue of A^T A,
-// closed form for a symmetric 3x3 (the trigonometric solution of its characteristic cubic).
-double spectralNorm(const glm::dmat3& a) {
-  const glm::dmat3 s = glm::transpose(a) * a;
-  const double p1 = s[0][1] * s[0][1] + s[0][2] * s[0][2] + s[1][2] * s[1][2];
-  const double q = (s[0][0] + s[1][1] + s[2][2]) / 3.0;
-  if (p1 == 0.0) return std::sqrt(std::max({s[0][0], s[1][1], s[2][2]}));
-  const double p2 = (s[0][0] - q) * (s[0][0] - q) + (s[1][1] - q) * (s[1][1] - q) + (s[2][2] - q) * (s[2][2] - q) + 2 * p1;
-  const double p = std::sqrt(p2 / 6.0);
-  const glm::dmat3 b = (1.0 / p) * (s - q * glm::dmat3(1.0));
-  const double r = std::clamp(glm::determinant(b) / 2.0, -1.0, 1.0);
-  return std::sqrt(std::max(0.0, q + 2.0 * p * std::cos(std::acos(r) / 3.0)));
-}
-
-}  // namespace
 
 // The 16-byte pipelines' position error, as a bound in world units and in pixels, for a rigid
 // frame (posed by `anim`, framed by `view`, `height` pixels tall). A position is int16 SNORM in
@@ -65,7 +50,7 @@ PositionBound positionBound(const Scene& scene, const AnimState& anim, const Vie
       double h = std::max({half.x, half.y, half.z});
       if (!(h > 0)) h = 1;  // one point: the pipelines quantise in a unit cube
       for (const glm::dmat4& m : draws) {
-        const double sigma = spectralNorm(glm::dmat3(m));
+        const double sigma = largestSingularValue(glm::dmat3(m));
         const double eps = h / 32767.0 * sigma;
         const double depth = -(toCamera * m * glm::dvec4(centre, 1.0)).z - std::sqrt(3.0) * h * sigma;
         const double z = std::max(depth, double(view.znear));
@@ -114,25 +99,34 @@ namespace {
 // resolved by the rasteriser from the last bits of the transformed positions, so any other
 // correct rounding of the same transform (motor vs matrix) flips some of them. The probe: the
 // baseline draws each frame again from the scene with every vertex position moved by a
-// pseudo-random amount of at most kTieJitter times the largest coordinate magnitude of its
-// primitive (per vertex and axis, fixed per file), in antithetic pairs (+j, -j: a tie the
-// jitter reaches flips in one of the two), probe.pairs pair(s); a pixel whose RGB differs from the
-// baseline's image in any of them is a tie pixel. The camera is the baseline's (framed on the
-// unjittered scene). Why the vertices and not the view: moving the eye or nudging the projection
-// moves coplanar surfaces together and leaves z-fights as they were (court.glb: 48 eye shifts of
-// 1e-6 of the radius in 24 directions left 3 of motor's line pixels out, 1e-5 still one), while a
-// pipeline's rounding differs per vertex. Why 2^-20: it is 8 to 16 float32 ulps of the
-// primitive's largest coordinate, the order of the rounding of a few chained multiply-adds by
-// which two correct float pipelines differ (court.glb: it finds 15 of the 17 line pixels motor
-// flips); for a primitive around its origin it is 30 times below the 16-byte pipelines' int16
-// step (h / 32767), and at 128 px it moves a vertex by about 1e-4 pixel: orders of magnitude
-// below any transform error the rules are there to catch (a wrong sign, a dropped scale, a rotor
-// off by 1e-4 all move pixels by 0.01 px and more). normal_torus, with no coplanar surfaces, gets
-// 4 tie pixels, all 1-byte shading roundings (README: Corpus check).
+// pseudo-random amount of at most kTieJitter times its primitive's rounding magnitude (per vertex
+// and axis, fixed per file), in antithetic pairs (+j, -j: a tie the jitter reaches flips in one of
+// the two), probe.pairs pair(s); a pixel whose RGB differs from the baseline's image in any of
+// them is a tie pixel. The camera is the baseline's (framed on the unjittered scene). Why the
+// vertices and not the view: moving the eye or nudging the projection moves coplanar surfaces
+// together and leaves z-fights as they were (court.glb: 48 eye shifts of 1e-6 of the radius in 24
+// directions left 3 of motor's line pixels out, 1e-5 still one), while a pipeline's rounding
+// differs per vertex. Why the rounding magnitude (harness/render/rounding_magnitude.h: the largest
+// of the primitive's own, world and view-space coordinates, in its units) and not the primitive's
+// own coordinates: the pipelines round the world and view coordinates too, so they differ by ulps
+// of those, a multiple of the primitive's own for a small mesh away from the origin or the camera
+// (hello-fragments.glb: cells 0.1 across seen from 2.5 away; scaled by the primitive's own
+// coordinates the jitter moves its vertices 9 times less than motor and matrix differ and leaves
+// out 4 pixels motor flips, on a silhouette edge and on coincident primitives: 44.4 dB). Why
+// 2^-20: it is 8 to 16 float32 ulps of that magnitude, more than the rounding of the chained
+// multiply-adds by which two correct float pipelines differ (rounding_magnitude.h: matrix and
+// motor vertices up to 6.4 units of roundoff of it apart; court.glb: 62 tie pixels, motor 65.6 dB
+// outside them); for a primitive around its origin it is 30 times below the 16-byte pipelines'
+// int16 step (h / 32767), and it moves a vertex by at most 2^-20 sqrt(3) (m / z) (H / 2) /
+// tan(yfov / 2) (1 + tx^2 + ty^2)^(1/2) pixels (m the magnitude in world units, z the depth),
+// 3e-4 at 128 px where the view coordinates are the largest: orders of magnitude below any
+// transform error the rules are there to catch (a wrong sign, a dropped scale, a rotor off by
+// 1e-4 all move pixels by 0.01 px and more). normal_torus, with no coplanar surfaces, gets 17 tie
+// pixels (README: Corpus check).
 // kFloatTies, one pair: two more matrix draws (and prepares) per frame. Missing a tie only makes the rules
-// stricter; a second pair finds the other 2 line pixels of court.glb (motor outside the ties:
-// 54 dB with one pair, 66 dB with two) at twice the cost.
-constexpr double kTieJitter = 1.0 / (1 << 20);
+// stricter; a second pair would find more at twice the cost (court.glb, jittered at its
+// primitives' own scale: motor 54 dB outside the ties with one pair, 66 dB with two).
+constexpr double kTieJitter = kFloatTieJitter;
 
 // A uniform value in [-1, 1] from (pair, primitive, vertex, axis): splitmix64, fixed for a file.
 double jitterValue(uint64_t pair, uint64_t prim, uint64_t vertex, uint64_t axis) {
@@ -156,14 +150,11 @@ std::vector<uint8_t> differingMask(const RgbaImage& a, const RgbaImage& b) {
 
 namespace {
 
-// The largest move of a coordinate of the primitive whose positions are `from` (TieJitter).
-double jitterAmplitude(const std::vector<glm::vec3>& from, TieJitter jitter) {
+// The largest move of a coordinate of the primitive whose positions are `from` (TieJitter);
+// `rounding`: its rounding magnitude (roundingMagnitudes).
+double jitterAmplitude(const std::vector<glm::vec3>& from, double rounding, TieJitter jitter) {
   if (from.empty()) return 0;
-  if (jitter == TieJitter::FloatRounding) {
-    float scale = 0;  // the largest coordinate magnitude of the primitive: its ulps set the rounding
-    for (const glm::vec3& v : from) scale = std::max({scale, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-    return kTieJitter * double(scale);
-  }
+  if (jitter == TieJitter::FloatRounding) return kTieJitter * rounding;
   glm::dvec3 lo(from.front()), hi = lo;  // the bounding cube the 16-byte pipelines quantise in
   for (const glm::vec3& v : from) lo = glm::min(lo, glm::dvec3(v)), hi = glm::max(hi, glm::dvec3(v));
   double h = 0.5 * std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
@@ -229,6 +220,11 @@ Result<std::vector<std::vector<uint8_t>>> tieMasks(Scene& scene, const std::stri
           for (Primitive& prim : mesh.primitives) prim.positions = std::move(original[n++]);
       }
     } restore{scene, original};
+    std::vector<AnimState> poses;  // the rounding magnitudes of the unjittered scene, every frame
+    for (const FrameSettings& f : settings) poses.push_back(f.anim);
+    const std::vector<double> rounding = probe.jitter == TieJitter::FloatRounding
+                                             ? roundingMagnitudes(scene, poses, views)
+                                             : std::vector<double>(original.size(), 0.0);
     for (int render = 0; render < tieRenders(probe); ++render) {
       const double sign = render % 2 ? -1.0 : 1.0;  // antithetic: +j, then -j
       const bool rounded = render == 2 * probe.pairs;  // Int16Cell's last render: the int16 grid itself
@@ -246,7 +242,7 @@ Result<std::vector<std::vector<uint8_t>>> tieMasks(Scene& scene, const std::stri
             }
             continue;
           }
-          const double amplitude = jitterAmplitude(from, probe.jitter);
+          const double amplitude = jitterAmplitude(from, rounding[n - 1], probe.jitter);
           const uint64_t prim = uint64_t(m) << 20 | uint64_t(q);
           for (size_t i = 0; i < from.size(); ++i)
             for (int c = 0; c < 3; ++c) {
