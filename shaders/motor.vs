@@ -39,6 +39,8 @@
 //                     (u_Dequant, never folded) before the float deltas are added, the 4-byte
 //                     rotor decoded, morphed as a frame and re-formed (morphRotorFrameHanded;
 //                     motor_cf: morphSignedRotorFrame keeps the stored sign's hemisphere)
+//   MB_ORTHOGRAPHIC   an orthographic View: u_ProjectionK holds motorOrthographicConstants and
+//                     clip space is motorWorldToClipOrthographic's (no division by depth)
 #include "pga.glsl"
 #include "motor_transform.glsl"
 #ifdef MB_MORPH
@@ -238,5 +240,9 @@ void main() {
   v_uv0 = a_uv0;
   v_uv1 = a_uv1;
   v_color = a_color;
+#ifdef MB_ORTHOGRAPHIC
+  gl_Position = motorWorldToClipOrthographic(motor(u_Camera[0], u_Camera[1]), v[0].xyz, u_ProjectionK);
+#else
   gl_Position = motorWorldToClipConstants(motor(u_Camera[0], u_Camera[1]), v[0].xyz, u_ProjectionK);
+#endif
 }

@@ -4,7 +4,7 @@
 // the frame by patch_transform.glsl's motorPatchVertex: both derivatives moved by the world
 // motor's direction sandwich and crossed (method (a); method (b), a tangent rotor built per
 // vertex and composed with gp_rr, counts more and is reported by the tests, not drawn).
-// Same uniforms and varyings as motor.vs; MB_SCALE_FALLBACK as there.
+// Same uniforms and varyings as motor.vs; MB_SCALE_FALLBACK and MB_ORTHOGRAPHIC as there.
 #include "pga.glsl"
 #include "matrix_transform.glsl"
 #include "motor_transform.glsl"
@@ -40,5 +40,9 @@ void main() {
   v_uv0 = a_patchUv;
   v_uv1 = a_patchUv;
   v_color = vec4(1.0);
+#ifdef MB_ORTHOGRAPHIC
+  gl_Position = motorWorldToClipOrthographic(motor(u_Camera[0], u_Camera[1]), v[0].xyz, u_ProjectionK);
+#else
   gl_Position = motorWorldToClipConstants(motor(u_Camera[0], u_Camera[1]), v[0].xyz, u_ProjectionK);
+#endif
 }

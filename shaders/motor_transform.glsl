@@ -212,6 +212,24 @@ vec4 motorWorldToClipConstants(motor camera, vec3 worldPosition, vec4 k) {
   return vec4(p.xy * k.xy, k.z - k.w * p.z, p.z);
 }
 
+// The orthographic projection's constants in the same layout (an orthographic View, e.g. a glTF
+// orthographic camera): (x scale, y scale, depth offset, depth slope) = (-1 / xmag, 1 / ymag,
+// (n + f) / (n - f), 2 / (n - f)), xmag and ymag the half-width and half-height of the frame.
+// With them motorWorldToClipOrthographic equals glm::ortho(-xmag, xmag, -ymag, ymag, n, f) * view.
+// counted: 0 mul, 2 add, 4 div (once per frame)
+vec4 motorOrthographicConstants(float znear, float zfar, float xmag, float ymag) {
+  float depth = znear - zfar;
+  return vec4(-1.0 / xmag, 1.0 / ymag, (znear + zfar) / depth, 2.0 / depth);
+}
+
+// World to clip with motorOrthographicConstants' `k`: motorWorldToClipConstants with w = 1 (an
+// orthographic projection does not divide by depth).
+// counted: 24 mul, 19 add (sw_mp 21/18, projection 3/1)
+vec4 motorWorldToClipOrthographic(motor camera, vec3 worldPosition, vec4 k) {
+  vec3 p = sw_mp(camera, worldPosition);
+  return vec4(p.xy * k.xy, k.z - k.w * p.z, 1.0);
+}
+
 // ---- motor_c: the 4-byte tangent rotor (compact_frame.glsl) ---------------------------------
 
 // Rigid vertex of motor_c: motorRigidVertex with the frame decoded from compactRotor and its

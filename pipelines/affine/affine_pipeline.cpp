@@ -212,8 +212,7 @@ void AffinePipeline::render(const View& view) {
   streamInstances();
   const glm::mat4 viewMatrix = glm::inverse(glm::translate(glm::mat4(1.0f), view.eye) *
                                             glm::mat4_cast(view.orientation));
-  const glm::mat4 viewProjection =
-      glm::perspective(view.yfov, view.aspect, view.znear, view.zfar) * viewMatrix;
+  const glm::mat4 viewProjection = projectionMatrix(view) * viewMatrix;
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (as matrix and
   // motor do: a program the frame does not use uploads nothing).

@@ -163,7 +163,8 @@ void SceneTextures::bindMaterial(const Program& program, int materialIndex,
 void setFrameUniforms(const Program& program, const View& view, uint64_t& counter) {
   glm::vec3 key = cameraRelative(view, {-0.45f, 0.75f, 0.55f});
   glm::vec3 fill = cameraRelative(view, {0.7f, -0.15f, 0.6f});
-  uniform3f(program.uniform("u_CameraPosition"), &view.eye.x, counter);
+  const glm::vec3 eye = shadingEye(view);
+  uniform3f(program.uniform("u_CameraPosition"), &eye.x, counter);
   uniform3f(program.uniform("u_KeyLightDirection"), &key.x, counter);
   uniform3f(program.uniform("u_FillLightDirection"), &fill.x, counter);
 }

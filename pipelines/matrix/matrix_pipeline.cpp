@@ -180,8 +180,7 @@ void MatrixPipeline::render(const View& view) {
   streamInstances();
   glm::mat4 viewMatrix = glm::inverse(glm::translate(glm::mat4(1.0f), view.eye) *
                                       glm::mat4_cast(view.orientation));
-  glm::mat4 viewProjection =
-      glm::perspective(view.yfov, view.aspect, view.znear, view.zfar) * viewMatrix;
+  glm::mat4 viewProjection = projectionMatrix(view) * viewMatrix;
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (unused variants
   // upload nothing, so uniformBytesPerFrame counts what a frame needs).

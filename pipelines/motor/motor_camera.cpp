@@ -15,7 +15,15 @@ CameraMotor cameraFromView(const View& view) {
   c.zfar = view.zfar;
   c.yfov = view.yfov;
   c.aspect = view.aspect;
+  c.orthographic = view.orthographic;
+  c.xmag = view.ymag * view.aspect;
+  c.ymag = view.ymag;
   return c;
+}
+
+MK::vec4 projectionConstants(const CameraMotor& camera) {
+  if (camera.orthographic) return mk().motorOrthographicConstants(camera.znear, camera.zfar, camera.xmag, camera.ymag);
+  return mk().motorProjectionConstants(camera.znear, camera.zfar, camera.yfov, camera.aspect);
 }
 
 }  // namespace mb::motor

@@ -87,6 +87,9 @@ public:
 private:
   void uploadPalettes();
   void streamInstances();
+  Status buildOrthographic() {
+    return orthoPrograms_.build(*scene_, variant_, referenceSkin_, morphMethod_, true);
+  }
   void setDequant(const gl::Program& program, const gl::DrawItem& d);
   void drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g, const Primitive& prim,
                   const motor::JointPalette* palette, GLuint paletteBuffer, const gl::Program& program,
@@ -96,6 +99,7 @@ private:
   MotorVariant variant_;
   const Scene* scene_ = nullptr;
   motor::MotorPrograms programs_;
+  motor::MotorPrograms orthoPrograms_;  // MB_ORTHOGRAPHIC: built for an orthographic View
   MorphMethod morphMethod_ = MorphMethod::PipelineDefault;
   gl::PaletteBuffers linearBuffers_;             // per palette: the fallback's 24 floats per joint
   std::vector<std::vector<motor::ScaledMotor>> instanceMotors_;  // per node: fromTRS(instance)
@@ -118,6 +122,8 @@ Status MotorPipeline::prepare(const Scene& scene) {
   scene_ = &scene;
   stats_ = PipelineStats{};
   if (Status built = programs_.build(scene, variant_, referenceSkin_, morphMethod_); !built) return built;
+  if (hasOrthographicCamera(scene))
+    if (Status built = buildOrthographic(); !built) return built;
   if (Status fits = gl::checkPaletteSize(scene, 8 * sizeof(float)); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
   if (gl::hasPatches(scene))
@@ -203,8 +209,12 @@ void MotorPipeline::render(const View& view) {
   uploadPalettes();
   streamInstances();
   const motor::CameraMotor camera = motor::cameraFromView(view);
-  const MK::vec4 k =  // once per frame, not per vertex as the paper listing's project() does
-      mk().motorProjectionConstants(camera.znear, camera.zfar, camera.yfov, camera.aspect);
+  const MK::vec4 k = motor::projectionConstants(camera);  // once per frame, not per vertex as the
+                                                          // paper listing's project() does
+  // An orthographic View draws with the MB_ORTHOGRAPHIC programs (a hand-made View on a scene
+  // without an orthographic camera builds them here; prepare() did for the others).
+  if (view.orthographic && !orthoPrograms_.built() && !buildOrthographic()) return;
+  const motor::MotorPrograms& programs = view.orthographic ? orthoPrograms_ : programs_;
   gl::beginDraws();
   // Per-frame uniforms go to a program when the frame first draws with it (unused variants
   // upload nothing, so uniformBytesPerFrame counts what a frame needs).
@@ -222,7 +232,7 @@ void MotorPipeline::render(const View& view) {
     return p;
   };
   auto useProgram = [&](DrawKind kind, ScaleForm form, bool morph) -> const gl::Program& {
-    return setFrame(programs_.draw(kind, form, morph), frameSet[int(kind)][int(form)][morph]);
+    return setFrame(programs.draw(kind, form, morph), frameSet[int(kind)][int(form)][morph]);
   };
   auto formOf = [](bool fallback) { return fallback ? ScaleForm::PerAxis : ScaleForm::Uniform; };
   uint64_t transformBytes = 0, transforms = 0, transformScaleBytes = 0;
@@ -284,7 +294,7 @@ void MotorPipeline::render(const View& view) {
       world = &folded;
     }
     const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
-    const gl::Program& program = patch ? setFrame(programs_.patch(formOf(scale.fallback)), patchSet[scale.fallback])
+    const gl::Program& program = patch ? setFrame(programs.patch(formOf(scale.fallback)), patchSet[scale.fallback])
                                        : bindMorph(useProgram(kind, formOf(scale.fallback), morph));
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
     if (dequantise) setDequant(program, d);
@@ -381,6 +391,7 @@ void MotorPipeline::release() {
   textures_.release();
   instances_.release();
   programs_.release();
+  orthoPrograms_.release();
   scene_ = nullptr;
 }
 

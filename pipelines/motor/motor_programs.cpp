@@ -7,7 +7,7 @@
 namespace mb::motor {
 
 Status MotorPrograms::build(const Scene& scene, const MotorVariant& variant, bool referenceSkin,
-                            MorphMethod morph) {
+                            MorphMethod morph, bool orthographic) {
   release();
   const bool instanced = gl::hasInstances(scene), morphs = gl::maxMorphTargets(scene) > 0;
   for (int kind = 0; kind < 3; ++kind)
@@ -25,6 +25,7 @@ Status MotorPrograms::build(const Scene& scene, const MotorVariant& variant, boo
         if (variant.compact) defines.push_back({"MB_COMPACT", ""});
         if (variant.fragmentRotor) defines.push_back({"MB_SIGNED_ROTOR", ""});
         if (variant.fragmentRotor && form == 0) defines.push_back({"MB_FRAGMENT_ROTOR", ""});
+        if (orthographic) defines.push_back({"MB_ORTHOGRAPHIC", ""});
         auto program = gl::Program::fromFiles("motor.vs", "forward.fs", defines);
         if (!program) return Status::fail(program.error());
         std::unique_ptr<gl::Program>& p = table_[kind][form][morphing];
@@ -36,10 +37,12 @@ Status MotorPrograms::build(const Scene& scene, const MotorVariant& variant, boo
   for (int fallback = 0; fallback < 2 && gl::hasPatches(scene); ++fallback) {
     gl::Defines defines;
     if (fallback) defines.push_back({"MB_SCALE_FALLBACK", ""});
+    if (orthographic) defines.push_back({"MB_ORTHOGRAPHIC", ""});
     auto program = gl::Program::fromFiles("motor_patch.vs", "forward.fs", defines);
     if (!program) return Status::fail(program.error());
     patch_[fallback] = program.take();
   }
+  built_ = true;
   return {};
 }
 
@@ -54,6 +57,7 @@ void MotorPrograms::release() {
     for (auto& form : kind)
       for (auto& p : form) p.reset();
   for (auto& p : patch_) p.reset();
+  built_ = false;
 }
 
 }  // namespace mb::motor

@@ -27,7 +27,10 @@ Result<Scene> loadScene(const std::string& fileOrBuiltinName) {
   if (!isBuiltinScene(fileOrBuiltinName)) return loadGltfFile(fileOrBuiltinName);
   auto glb = builtinSceneGlb(fileOrBuiltinName);
   if (!glb) return Result<Scene>::fail(glb.error());
-  return loadGltfMemory(*glb, fileOrBuiltinName);
+  Result<Scene> scene = loadGltfMemory(*glb, fileOrBuiltinName);
+  // The built-in scenes keep the framing their goldens and committed figures were made with.
+  if (scene) scene->framing = Framing::BoundingSphere;
+  return scene;
 }
 
 }  // namespace mb

@@ -256,8 +256,15 @@ struct CurvedScene {
   float yfov = 1.5707964f;                  // vertical field of view
 };
 
+// The automatic camera's rule for a scene (camera_rule.h, frameScene): Fit, the default, fits
+// the posed vertices to the frame (a flat scene seen from its front); BoundingSphere frames
+// their padded bounding sphere, the rule the built-in scenes' goldens and committed figures were
+// made with (loadScene sets it for them).
+enum class Framing { Fit, BoundingSphere };
+
 struct Scene {
   std::string source;  // file path or built-in name
+  Framing framing = Framing::Fit;
   std::vector<Node> nodes;
   std::vector<int> roots;  // root nodes of the default (or first) scene
   std::vector<Mesh> meshes;

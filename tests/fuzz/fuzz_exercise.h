@@ -26,7 +26,7 @@ namespace mb::fuzz {
 inline std::string checkView(const Scene& scene, const View& v, const char* what) {
   if (!hostile::poseInputsTame(scene)) return "";
   bool finite = hostile::finite(v.eye) && hostile::finite(v.orientation) && std::isfinite(v.yfov) &&
-                std::isfinite(v.znear) && std::isfinite(v.zfar);
+                std::isfinite(v.znear) && std::isfinite(v.zfar) && std::isfinite(v.ymag);
   return finite ? "" : std::string(what) + ": frameScene produced a non-finite view";
 }
 
