@@ -373,6 +373,7 @@ void MotorPipeline::drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g,
   const uint64_t drawn = g.draw();
   stats_.drawnVertices += drawn;
   stats_.fallbackVertices += drawn;
+  if (palette) stats_.skinFallbackVertices += drawn;
   ++stats_.draws;
 }
 
@@ -383,7 +384,6 @@ void MotorPipeline::setDequant(const gl::Program& program, const gl::DrawItem& d
 }
 
 void MotorPipeline::release() {
-  if (palette) stats_.skinFallbackVertices += drawn;
   geometry_.release();
   patches_.release();
   paletteBuffers_.release();
