@@ -20,28 +20,15 @@
 #include "harness/render/drawn_check.h"
 #include "harness/render/flip.h"
 #include "harness/render/frame_notes.h"
+#include "harness/render/gpu_option.h"
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
+#include "harness/render/thresholds.h"
 #include "harness/report/report_scene.h"
 #include "harness/report/report_sources.h"
 
 namespace mb {
 namespace {
-
-// The measured differences, one quantity per line, every channel difference in both units
-// (byte steps /255 and fraction of full scale); "identical" when every byte agrees (as the report).
-std::vector<std::string> metricLines(const ImageMetrics& m) {
-  if (m.rmse == 0.0) return {"identical: every byte of the two images agrees"};
-  char b[3][256];
-  std::snprintf(b[0], sizeof b[0], "PSNR %.2f dB; RMSE %s; mean error %s", m.psnr, differenceText(m.rmse).c_str(),
-                differenceText(m.meanError).c_str());
-  static const char* const kChannel[] = {"R", "G", "B", "A"};
-  std::snprintf(b[1], sizeof b[1], "max error %s at (%d,%d) channel %s", differenceText(m.maxError).c_str(), m.maxX,
-                m.maxY, kChannel[std::clamp(m.maxChannel, 0, 3)]);
-  std::snprintf(b[2], sizeof b[2], "pixels off by more than 1/255: %.3f %%, 2/255: %.3f %%, 4/255: %.3f %%",
-                100 * m.fractionOver1, 100 * m.fractionOver2, 100 * m.fractionOver4);
-  return {b[0], b[1], b[2]};
-}
 
 // True when the two pipelines blend joints by different methods (LBS vs motor blending).
 bool methodsDiffer(const std::string& a, const std::string& b) {
@@ -78,13 +65,8 @@ int runCompare(const std::vector<std::string>& argv) {
     if (given[0] == given[1]) return fail("--pipelines " + given[0] + "," + given[1] + ": two different pipelines");
     if (Status ok = checkPipelineNames("--pipelines", given); !ok) return fail(ok.error());
   }
-  const bool thresholdsGiven = args.has("fail") || args.has("failpercent") || args.has("hardfail");
-  Thresholds t;
-  t.fail = args.real("fail", t.fail, 0.0, 1.0, "a channel difference as a fraction of full scale (1/255 = one byte step)");
-  // --hardfail alone judges the largest difference only; --failpercent alone counts any change.
-  t.failPercent = args.real("failpercent", args.has("fail") || !args.has("hardfail") ? 0.0 : 100.0, 0.0, 100.0,
-                            "a percentage of pixels");
-  t.hardFail = args.real("hardfail", t.hardFail, 0.0, 1.0, "a channel difference as a fraction of full scale");
+  const bool thresholdsGiven = failThresholdGiven(args);
+  const Thresholds t = compareThresholds(args);  // harness/render/thresholds.h: the byte-step trap refused
   {
     namespace fs = std::filesystem;
     const std::string dir = args.get("o", args.get("output", ""));
@@ -199,7 +181,7 @@ int runCompare(const std::vector<std::string>& argv) {
               metrics->height);
   std::printf("  drawn pixels (not background): %s %lld, %s %lld of %lld\n", names[0].c_str(), (long long)drawn[0],
               names[1].c_str(), (long long)drawn[1], (long long)metrics->width * metrics->height);
-  for (const std::string& line : metricLines(*metrics)) std::printf("  %s\n", line.c_str());
+  for (const std::string& line : differenceLines(*metrics)) std::printf("  %s\n", line.c_str());
   std::printf("  %s (LDR-FLIP, 0..1, %.0f pixels per degree; map: flip.png)\n", flipText(*flip).c_str(),
               flip->pixelsPerDegree);
   if (!skinning.empty()) std::printf("  note: %s\n", skinning.c_str());
@@ -237,10 +219,13 @@ MB_COMMAND_HELP(compare, "compare",
                "  SCENE              a .gltf/.glb file or a built-in scene name\n"
                "  -o, --output DIR   a folder (created): A.png, B.png, diff.png, diff_legend.png, flip.png, metrics.json\n"
                "  --pipelines A,B    the two pipelines (default matrix,motor; curved scenes: their space's pair)\n"
-               "  --fail F           a channel difference (fraction of full scale, 0..1; 1/255 = one byte step)\n"
-               "  --failpercent P    % of pixels (0..100) allowed over F\n"
-               "  --hardfail H       the largest channel difference allowed anywhere (0..1)\n"
+               "  --fail F           a channel difference: a fraction of full scale below 1 or byte steps N/255 (2/255);\n"
+               "                     a plain 1 or more is refused (did you mean 1/255?) (default 1e-6: any difference;\n"
+               "                     with none of --fail, --failpercent, --hardfail given, nothing is judged)\n"
+               "  --failpercent P    % of pixels (0..100) allowed over F (default 0; with --hardfail alone 100)\n"
+               "  --hardfail H       the largest channel difference allowed anywhere, as F (default none)\n"
                "  --anim A, --time T, --anim2 B, --time2 T2, --blend W, --camera C, --size WxH   as render\n"
+               MB_INSTANCES_OPTION_HELP MB_GPU_OPTION_HELP
                "  Exit 0 pass (or not judged), 1 a threshold exceeded, one image empty or drawn pixels more than 1 % apart\n"
                "  (with or without a threshold), 2 an error, or a threshold given and nothing drawn in either image.\n",
                 "motorbench compare textured_box --failpercent 0.1 -o out/box", true);

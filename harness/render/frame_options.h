@@ -26,6 +26,11 @@ struct FrameSettings {
 // addGridInstances (pipelines/scene/instancing.h); a note says what it did (nodes instanced,
 // nodes left drawn once). Returns N, or an error naming the option.
 constexpr long kMaxInstances = 1 << 20;
+// Its line under "options:" in every command's help that takes it (a literal, as gpu_option.h's).
+#define MB_INSTANCES_OPTION_HELP \
+  "  --instances N      every mesh node drawn N times on a grid around it, one instanced draw (1..1048576,\n" \
+  "                     default 1; skinned and Bezier patch nodes stay drawn once)\n"
+
 Result<int> applyInstancesOption(const Args& args, Scene& scene, std::vector<std::string>* notes);
 
 // The option spec of a command that renders one SCENE to -o/--output: `values` and `flags`

@@ -10,6 +10,11 @@
 namespace mb {
 
 inline constexpr const char* kGpuOptionUsage = "[--gpu auto|llvmpipe|N]";
+// Its lines under "options:" in every such command's help (a macro: help texts are literals joined
+// at compile time).
+#define MB_GPU_OPTION_HELP \
+  "  --gpu auto|llvmpipe|N  the GL device that draws (default auto: the first hardware EGL device, else\n" \
+  "                     llvmpipe; N: an EGL device index); the option wins over the environment's MB_GPU\n"
 
 // Reads --gpu (else MB_GPU): a malformed value, or a device index that eglQueryDevicesEXT does
 // not list, is an error naming it (the latter lists the devices seen). Sets MB_GPU.

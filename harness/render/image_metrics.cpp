@@ -77,10 +77,11 @@ Status writeAnimation(const std::string& path, const std::vector<RgbaImage>& fra
   return {};
 }
 
-Result<RgbaImage> readImage(const std::string& path) {
+Result<RgbaImage> readImage(const std::string& path, ImageFileInfo* info) {
   auto in = OIIO::ImageInput::open(path);
   if (!in) return Result<RgbaImage>::fail(path + ": cannot read image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
+  if (info) *info = {spec.nchannels, spec.format.c_str()};
   int channels = spec.nchannels;
   std::vector<uint8_t> raw(size_t(spec.width) * size_t(spec.height) * size_t(channels));
   if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
@@ -119,6 +120,19 @@ Result<ImageMetrics> compareImages(const RgbaImage& a, const RgbaImage& b) {
   m.fractionOver2 = double(over(2).nfail) / pixels;
   m.fractionOver4 = double(over(4).nfail) / pixels;
   return m;
+}
+
+std::vector<std::string> differenceLines(const ImageMetrics& m) {
+  if (m.rmse == 0.0) return {"identical: every byte of the two images agrees"};
+  char b[3][256];
+  std::snprintf(b[0], sizeof b[0], "PSNR %.2f dB; RMSE %s; mean error %s", m.psnr, differenceText(m.rmse).c_str(),
+                differenceText(m.meanError).c_str());
+  static const char* const kChannel[] = {"R", "G", "B", "A"};
+  std::snprintf(b[1], sizeof b[1], "max error %s at (%d,%d) channel %s", differenceText(m.maxError).c_str(), m.maxX,
+                m.maxY, kChannel[std::clamp(m.maxChannel, 0, 3)]);
+  std::snprintf(b[2], sizeof b[2], "pixels off by more than 1/255: %.3f %%, 2/255: %.3f %%, 4/255: %.3f %%",
+                100 * m.fractionOver1, 100 * m.fractionOver2, 100 * m.fractionOver4);
+  return {b[0], b[1], b[2]};
 }
 
 int64_t countPixelsOtherThan(const RgbaImage& image, const std::array<uint8_t, 3>& background) {

@@ -20,8 +20,14 @@ struct RgbaImage {
 
 // PNG (or any OpenImageIO format) <-> RGBA8. Errors name the file and the reason. Reading
 // converts 1-3 channel images to RGBA (grey replicated, alpha 1).
+// `info` (optional) receives what the file held before the conversion: its channel count and
+// pixel type ("uint8", "uint16", "half", "float").
+struct ImageFileInfo {
+  int channels = 0;
+  std::string pixelType;
+};
 Status writeImage(const std::string& path, const RgbaImage& image);
-Result<RgbaImage> readImage(const std::string& path);
+Result<RgbaImage> readImage(const std::string& path, ImageFileInfo* info = nullptr);
 // An animated image (GIF through OpenImageIO: one subimage per frame, looping forever) of
 // `frames`, all the same size, shown at `fps` frames per second. Errors name the file.
 Status writeAnimation(const std::string& path, const std::vector<RgbaImage>& frames, int fps);
@@ -61,6 +67,10 @@ std::string differenceText(double fraction);
 
 // Compares two images of the same size (error naming both sizes otherwise).
 Result<ImageMetrics> compareImages(const RgbaImage& a, const RgbaImage& b);
+// The measured differences for people, one quantity per line (PSNR, RMSE and mean error; the
+// largest difference and where; the pixels over 1, 2 and 4 byte steps), every channel
+// difference in both units; "identical: ..." alone when every byte agrees.
+std::vector<std::string> differenceLines(const ImageMetrics& m);
 
 // Applies idiff semantics to `a` vs `b` (same size, else failed with the reason).
 Verdict judge(const RgbaImage& a, const RgbaImage& b, const Thresholds& t);
