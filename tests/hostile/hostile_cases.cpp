@@ -312,14 +312,15 @@ std::vector<Case> numericCases() {
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
   auto glb = [](const std::function<void(Doc&, QuadIds&)>& e) { return toGlb(quadDoc(e)); };
 
+  // Vertices 2 and 3 (set to the origin) leave the triangle 0 1 2 its area: the quad still draws.
   cs.push_back(fallback("nan_positions.glb", glb([&](Doc& d, QuadIds& q) {
-                          pokeBin(d, q.pos, 1, 0, nan);
+                          pokeBin(d, q.pos, 2, 0, nan);
                           pokeBin(d, q.pos, 3, 2, nan);
                         }),
                         &LoadStats::nonFinitePositions, 2, "two vertices with a NaN coordinate (set to 0, counted)"));
   cs.push_back(fallback("inf_positions.glb", glb([&](Doc& d, QuadIds& q) {
-                          pokeBin(d, q.pos, 0, 1, inf);
-                          pokeBin(d, q.pos, 2, 0, -inf);
+                          pokeBin(d, q.pos, 0, 1, inf);  // vertices 0 and 1: the triangle 0 2 3 keeps its area
+                          pokeBin(d, q.pos, 1, 0, -inf);
                         }),
                         &LoadStats::nonFinitePositions, 2, "+Inf and -Inf coordinates"));
   cs.push_back(fallback("zero_normals.glb", glb([&](Doc& d, QuadIds& q) {
