@@ -5,6 +5,7 @@
 #include "pipelines/matrix/matrix_pipeline.h"
 #include "pipelines/motor/motor_pipeline.h"
 #include "pipelines/pipeline.h"
+#include "pipelines/skin_method.h"
 
 namespace mb {
 namespace {
@@ -12,21 +13,23 @@ struct Entry {
   const char* name;
   std::unique_ptr<Pipeline> (*make)();
   Space space;  // the scenes it draws
+  SkinMethod skin;  // how its vertex shader blends joints (skin_method.h)
 };
+constexpr SkinMethod kLbs = SkinMethod::LinearBlend, kMotors = SkinMethod::MotorBlend, kNoSkin = SkinMethod::None;
 const Entry kPipelines[] = {
-    {"matrix", makeMatrixPipeline, Space::Euclidean},
-    {"motor", makeMotorPipeline, Space::Euclidean},
-    {"affine", makeAffinePipeline, Space::Euclidean},
-    {"qtangent", makeQtangentPipeline, Space::Euclidean},
-    {"motor_q", makeMotorQPipeline, Space::Euclidean},
-    {"hybrid", makeHybridPipeline, Space::Euclidean},
-    {"matrix_c", makeMatrixCPipeline, Space::Euclidean},
-    {"motor_c", makeMotorCPipeline, Space::Euclidean},
-    {"motor_cf", makeMotorCFPipeline, Space::Euclidean},
-    {"s3_matrix", makeS3MatrixPipeline, Space::Spherical},
-    {"s3_motor", makeS3MotorPipeline, Space::Spherical},
-    {"h3_matrix", makeH3MatrixPipeline, Space::Hyperbolic},
-    {"h3_motor", makeH3MotorPipeline, Space::Hyperbolic},
+    {"matrix", makeMatrixPipeline, Space::Euclidean, kLbs},
+    {"motor", makeMotorPipeline, Space::Euclidean, kMotors},
+    {"affine", makeAffinePipeline, Space::Euclidean, kLbs},
+    {"qtangent", makeQtangentPipeline, Space::Euclidean, kLbs},
+    {"motor_q", makeMotorQPipeline, Space::Euclidean, kMotors},
+    {"hybrid", makeHybridPipeline, Space::Euclidean, kLbs},
+    {"matrix_c", makeMatrixCPipeline, Space::Euclidean, kLbs},
+    {"motor_c", makeMotorCPipeline, Space::Euclidean, kMotors},
+    {"motor_cf", makeMotorCFPipeline, Space::Euclidean, kMotors},
+    {"s3_matrix", makeS3MatrixPipeline, Space::Spherical, kNoSkin},
+    {"s3_motor", makeS3MotorPipeline, Space::Spherical, kNoSkin},
+    {"h3_matrix", makeH3MatrixPipeline, Space::Hyperbolic, kNoSkin},
+    {"h3_motor", makeH3MotorPipeline, Space::Hyperbolic, kNoSkin},
 };
 }  // namespace
 
@@ -34,6 +37,12 @@ std::unique_ptr<Pipeline> createPipeline(const std::string& name) {
   for (const Entry& e : kPipelines)
     if (name == e.name) return e.make();
   return nullptr;
+}
+
+SkinMethod skinMethodOf(const std::string& name) {
+  for (const Entry& e : kPipelines)
+    if (name == e.name) return e.skin;
+  return SkinMethod::None;
 }
 
 std::vector<std::string> pipelineNames(Space space) {

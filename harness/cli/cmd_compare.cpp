@@ -8,6 +8,10 @@
 // Only the thresholds given judge: --hardfail alone fails only on the largest difference.
 // Before any threshold, the drawn-pixel check (harness/render/drawn_check.h) fails a frame one
 // pipeline left empty or drawn-pixel counts more than 1 % apart, with or without thresholds.
+// A skinned frame of two pipelines that blend joints by different methods is judged by each
+// pipeline's own method (harness/render/skin_judgement.h): a motor-blend pipeline's drawn pixels
+// and thresholds against the motor-blend reference, a linear-blend one's against matrix; the
+// figures against matrix are printed beside them.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -23,35 +27,129 @@
 #include "harness/render/gpu_option.h"
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
+#include "harness/render/skin_judgement.h"
 #include "harness/render/thresholds.h"
-#include "harness/report/report_scene.h"
 #include "harness/report/report_sources.h"
 
 namespace mb {
 namespace {
 
-// True when the two pipelines blend joints by different methods (LBS vs motor blending).
-bool methodsDiffer(const std::string& a, const std::string& b) {
-  const std::string ma = report::skinBlendOf(a), mbl = report::skinBlendOf(b);
-  return !ma.empty() && !mbl.empty() && ma != mbl;
+using json = nlohmann::json;
+
+// What decides compare's exit: the drawn-pixel check and the thresholds given, on the two images;
+// on a skinned frame of pipelines of different skinning methods, each pipeline against its own
+// method's reference instead (skin_judgement.h), when every such reference could be made.
+struct PairVerdict {
+  DrawnCheck shape;  // the check that decides (the first failed; else the last judged)
+  std::vector<SkinnedFrameJudgement> skin;  // the pipelines judged by their own method (not matrix)
+  bool skinApplies = false;  // skinned frame, methods differ
+  bool byOwnMethod = false;  // skinApplies and every reference made
+  bool failed = false;
+  double failPercent = 0;
+  std::string reason;
+};
+
+// Each pipeline of the pair but matrix (the linear blend's reference itself) judged by its own
+// method: matrix's frame (rendered when neither is matrix) and the motor-blend reference.
+Result<std::vector<SkinnedFrameJudgement>> judgeByOwnMethod(Scene& scene, const FrameSettings& settings,
+                                                            const std::vector<std::string>& names,
+                                                            const std::vector<Frame>& frames, const Thresholds* t) {
+  using R = Result<std::vector<SkinnedFrameJudgement>>;
+  const std::string matrix = kMatrixReference;
+  RgbaImage matrixImage;
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == matrix) matrixImage = frames[i].image;
+  if (matrixImage.rgba.empty()) {
+    auto m = renderFrame(scene, matrix, settings);
+    if (!m) return R::fail(m.error());
+    matrixImage = m->image;
+  }
+  MotorBlendFrames own;
+  for (const std::string& n : names)
+    if (std::string(skinReferenceOf(n)) == kMotorBlendReference && own.images.empty() && own.why.empty())
+      own = motorBlendReferenceFrames(scene, {settings});
+  std::vector<SkinnedFrameJudgement> out;
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (names[i] == matrix) continue;
+    auto j = judgeSkinnedFrame(names[i], frames[i].image, matrixImage, own.images.empty() ? nullptr : &own.images[0],
+                               own.why, t);
+    if (!j) return R::fail(j.error());
+    out.push_back(j.take());
+  }
+  return out;
 }
 
-// "matrix blends joints with linear blend skinning, motor blends joint motors": only where the
-// drawn-pixel check lets the difference be the skinning method's (skinned primitives drawn, the
-// drawn pixels within 1 %); where the check failed, the note says why it is not offered.
-std::string skinningMethodNote(const DrawnCheck& check, bool skinnedDrawn, const std::string& a,
-                               const std::string& b) {
-  if (!skinnedDrawn || !methodsDiffer(a, b)) return "";
+PairVerdict judgePair(Scene& scene, const FrameSettings& settings, const std::vector<std::string>& names,
+                      const std::vector<Frame>& frames, const Thresholds* t) {
+  PairVerdict v;
+  const bool skinned = drawsSkinned(scene), differ = skinMethodsDiffer(names[0], names[1]);
+  v.shape = checkDrawn(names[0], frames[0].image, names[1], frames[1].image, skinned, differ);
+  v.skinApplies = skinned && differ && v.shape.kind != DrawnCheck::Kind::NothingDrawn;
+  if (v.skinApplies) {
+    auto judged = judgeByOwnMethod(scene, settings, names, frames, t);
+    if (!judged) {
+      v.reason = judged.error();  // an error, not a verdict: the caller exits 2
+      return v;
+    }
+    v.skin = judged.take();
+    v.byOwnMethod = std::all_of(v.skin.begin(), v.skin.end(), [](const SkinnedFrameJudgement& j) { return j.judged; });
+  }
+  if (v.byOwnMethod) {
+    for (const SkinnedFrameJudgement& j : v.skin) {
+      if (j.failed) v.reason += (v.reason.empty() ? "" : "; ") + j.reason;
+      v.failPercent = std::max(v.failPercent, j.thresholds.failPercent);
+    }
+    v.failed = !v.reason.empty();
+    v.shape = v.skin.back().vsReference.drawn;
+    for (auto j = v.skin.rbegin(); j != v.skin.rend(); ++j)
+      if (j->vsReference.drawn.failed) v.shape = j->vsReference.drawn;  // the first failed
+    v.shape.skinningMethodNote = !v.shape.failed;
+    return v;
+  }
+  // Not skinned, one method, or an own reference not made: the two images against each other.
+  const Verdict thresholds = t ? judge(frames[0].image, frames[1].image, *t) : Verdict{};
+  v.failPercent = thresholds.failPercent;
+  v.failed = v.shape.failed || thresholds.failed;
+  v.reason = v.shape.reason;  // the drawn-pixel check first, then the thresholds'
+  if (thresholds.failed) v.reason += (v.reason.empty() ? "" : "; ") + thresholds.reason;
+  return v;
+}
+
+// "matrix blends joints with linear blend skinning, motor by motor blending" and how the frame is
+// judged: by each pipeline's own method, or (an own reference not made) the images against each
+// other, a difference taken for the methods' only while both drew and their drawn pixels agree
+// within 1 %.
+std::string skinningMethodNote(const PairVerdict& v, const std::string& a, const std::string& b) {
+  if (!v.skinApplies) return "";
   const std::string which = "skinned scene: " + a + " blends joints by " + report::skinBlendOf(a) + ", " + b + " by " +
-                            report::skinBlendOf(b);
-  if (check.failed)
-    return which + "; but a difference is taken for the methods' only while both images drew and their drawn "
+                            report::skinBlendOf(b) + "; the two methods pose a skinned mesh differently by design (LBS "
+                            "loses volume where joints turn far apart)";
+  if (v.byOwnMethod)
+    return which + ", so each is judged against its own method's reference, with the thresholds given (below, beside "
+                   "its figures against matrix)";
+  std::string why;
+  for (const SkinnedFrameJudgement& j : v.skin)
+    if (!j.judged) why = j.pipeline + "'s own method's reference could not be made (" + j.why + "), so it is judged "
+                         "against " + a + " (the strict reading)";
+  if (v.shape.failed)
+    return which + "; " + why + ": a difference is taken for the methods' only while both images drew and their drawn "
                    "pixels agree within 1 %; here they do not, so it fails (look for a wrong pose, scale or a missing "
                    "mesh in the images)";
-  if (!check.skinningMethodNote) return "";
-  return which + "; the two methods pose a skinned mesh differently by design (LBS loses volume where joints turn far "
-                 "apart), so differences there are the methods' expected difference, not an error (motorbench report "
-                 "measures them apart: summary.skinningMethodImages)";
+  return which + "; " + why + ": differences there are the methods' expected difference, not an error";
+}
+
+// The decisive drawn-pixel failure: the own method's judgement's reason, else the pair's.
+std::string drawnFailure(const PairVerdict& v) {
+  if (v.byOwnMethod)
+    for (const SkinnedFrameJudgement& j : v.skin)
+      if (j.vsReference.drawn.failed) return j.reason;
+  return v.shape.reason;
+}
+
+json judgedJson(const PairVerdict& v) {
+  json pipelines = json::array();
+  for (const SkinnedFrameJudgement& j : v.skin) pipelines.push_back(toJson(j));
+  return {{"applies", v.skinApplies}, {"byOwnMethod", v.byOwnMethod}, {"pipelines", pipelines}};
 }
 
 int runCompare(const std::vector<std::string>& argv) {
@@ -109,17 +207,19 @@ int runCompare(const std::vector<std::string>& argv) {
   if (!metrics) return fail(metrics.error());
   auto flip = computeFlip(frames[0].image, frames[1].image);  // the first pipeline is the reference
   if (!flip) return fail(flip.error());
-  Verdict verdict = judge(frames[0].image, frames[1].image, t);
   const int64_t drawn[2] = {drawnPixels(frames[0].image), drawnPixels(frames[1].image)};
-  // Skinned primitives drawn: skinned vertices on nodes the scene reaches (the report's vertexMix).
-  const bool skinnedDrawn = report::vertexMix(scene).value("skinned", 0L) > 0;
-  const DrawnCheck shape =
-      checkDrawn(names[0], drawn[0], names[1], drawn[1], skinnedDrawn, methodsDiffer(names[0], names[1]));
-  const std::string skinning = skinningMethodNote(shape, skinnedDrawn, names[0], names[1]);
+  const PairVerdict verdict = judgePair(cmd->scene, settings, names, frames, thresholdsGiven ? &t : nullptr);
+  if (verdict.skinApplies && verdict.skin.empty()) return fail(verdict.reason);  // a reference frame's error
+  const DrawnCheck& shape = verdict.shape;
+  const std::string skinning = skinningMethodNote(verdict, names[0], names[1]);
   const bool nothingDrawn = shape.kind == DrawnCheck::Kind::NothingDrawn;
-  const bool failed = shape.failed || (thresholdsGiven && verdict.failed);
-  std::string reason = shape.reason;  // the drawn-pixel check first, then the thresholds'
-  if (thresholdsGiven && verdict.failed) reason += (reason.empty() ? "" : "; ") + verdict.reason;
+  const bool failed = verdict.failed;
+  const std::string& reason = verdict.reason;
+  json judgedAgainst = json::object();
+  if (verdict.byOwnMethod)
+    for (const SkinnedFrameJudgement& j : verdict.skin) judgedAgainst[j.pipeline] = j.reference;
+  else
+    judgedAgainst[names[1]] = names[0];
 
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -158,8 +258,9 @@ int runCompare(const std::vector<std::string>& argv) {
       {"metrics", toJson(*metrics, *flip)},
       {"drawnPixels", {{names[0], drawn[0]}, {names[1], drawn[1]}, {"total", int64_t(metrics->width) * metrics->height}}},
       {"skinningMethods", {{names[0], report::skinBlendOf(names[0])}, {names[1], report::skinBlendOf(names[1])},
-                           {"methodsDiffer", skinnedDrawn && methodsDiffer(names[0], names[1])},
-                           {"differByDesign", shape.skinningMethodNote}}},
+                           {"methodsDiffer", verdict.skinApplies},
+                           {"differByDesign", verdict.skinApplies && shape.skinningMethodNote}}},
+      {"skinJudgement", judgedJson(verdict)},
       {"drawnCheck", toJson(shape)},
       {"thresholds", {{"applied", thresholdsGiven},
                       {"units", "fail, hardfail: channel difference / 255 (0..1); failpercent: % of pixels"},
@@ -171,6 +272,7 @@ int runCompare(const std::vector<std::string>& argv) {
                    {"text", nothingDrawn ? "nothing drawn" : failed ? "fail" : !thresholdsGiven ? "no threshold given" : "pass"},
                    {"failed", failed || (thresholdsGiven && nothingDrawn)},
                    {"failPercent", verdict.failPercent},
+                   {"judgedAgainst", judgedAgainst},  // pipeline: the image it was judged against
                    {"reason", nothingDrawn ? nlohmann::json("neither image drew any pixel")
                               : failed || thresholdsGiven ? nlohmann::json(reason) : nlohmann::json(nullptr)}}},
       {"stats", {toJson(frames[0].stats), toJson(frames[1].stats)}}};  // in --pipelines order
@@ -185,6 +287,8 @@ int runCompare(const std::vector<std::string>& argv) {
   std::printf("  %s (LDR-FLIP, 0..1, %.0f pixels per degree; map: flip.png)\n", flipText(*flip).c_str(),
               flip->pixelsPerDegree);
   if (!skinning.empty()) std::printf("  note: %s\n", skinning.c_str());
+  for (const SkinnedFrameJudgement& j : verdict.skin)
+    for (const std::string& line : judgementLines(j)) std::printf("  %s\n", line.c_str());
   // Two background-only frames agree trivially: nothing was compared.
   if (nothingDrawn && !thresholdsGiven) {  // nothing judged, but said
     commandNotes("compare", {"warning: neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are "
@@ -194,12 +298,21 @@ int runCompare(const std::vector<std::string>& argv) {
     return fail("neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are background only: the " +
                 "scene is off screen, empty or scaled to zero at this pose); nothing was compared, so it cannot pass");
   }
-  if (shape.failed) std::printf("  drawn-pixel check: FAIL: %s\n", shape.reason.c_str());
+  if (shape.failed) std::printf("  drawn-pixel check: FAIL: %s\n", drawnFailure(verdict).c_str());
+  std::string judgedBy;  // "motor against the motor-blend reference"
+  for (const SkinnedFrameJudgement& j : verdict.skin)
+    if (verdict.byOwnMethod)
+      judgedBy += (judgedBy.empty() ? "" : ", ") + j.pipeline + " against " +
+                  (j.reference == kMatrixReference ? j.reference : "the " + j.reference);
   std::string verdictText = " -> no threshold given, not judged (--fail/--failpercent/--hardfail judge; exit 0)";
+  if (verdict.byOwnMethod && !thresholdsGiven && !failed)
+    verdictText = " -> no threshold given (" + judgedBy + ": drawn pixels within 1 %; --fail/--failpercent/--hardfail "
+                  "judge the pixels; exit 0)";
   if (failed)
-    verdictText = " -> FAIL (" + reason + (shape.skinningMethodNote ? "; the skinning methods differ by design, see the note" : "") + ")";
+    verdictText = " -> FAIL (" + reason + (verdict.skinApplies && !verdict.byOwnMethod && shape.skinningMethodNote
+                                               ? "; the skinning methods differ by design, see the note" : "") + ")";
   else if (thresholdsGiven)
-    verdictText = " -> PASS (within the thresholds given)";
+    verdictText = " -> PASS (" + (judgedBy.empty() ? std::string() : judgedBy + ": ") + "within the thresholds given)";
   std::printf("%s: %s vs %s%s\n", scene.source.c_str(), names[0].c_str(), names[1].c_str(), verdictText.c_str());
   return failed ? 1 : 0;
 }
@@ -213,7 +326,8 @@ MB_COMMAND(compare, "compare",
            "[--gpu auto|llvmpipe|N] -o DIR",
            "render a scene with two pipelines; write both images, diff.png, diff_legend.png, flip.png and "
            "metrics.json (PSNR, LDR-FLIP); exit 1 when a threshold given is exceeded (F, H: channel difference / 255) or one image "
-           "is empty or the drawn pixels differ by more than 1 %",
+           "is empty or the drawn pixels differ by more than 1 % (skinned frames of two skinning methods: each pipeline against its "
+           "own method's reference)",
            mb::runCompare);
 MB_COMMAND_HELP(compare, "compare",
                "  SCENE              a .gltf/.glb file or a built-in scene name\n"
@@ -226,6 +340,9 @@ MB_COMMAND_HELP(compare, "compare",
                "  --hardfail H       the largest channel difference allowed anywhere, as F (default none)\n"
                "  --anim A, --time T, --anim2 B, --time2 T2, --blend W, --camera C, --size WxH   as render\n"
                MB_INSTANCES_OPTION_HELP MB_GPU_OPTION_HELP
+               "  Skinned frame, pipelines of two skinning methods: each judged against its own method's reference (a\n"
+               "  motor-blend pipeline: the motor-blend reference, the pose skinned on the CPU by the motor blend and drawn\n"
+               "  by matrix; a linear-blend one: matrix), with the same thresholds; its figures against matrix beside them.\n"
                "  Exit 0 pass (or not judged), 1 a threshold exceeded, one image empty or drawn pixels more than 1 % apart\n"
                "  (with or without a threshold), 2 an error, or a threshold given and nothing drawn in either image.\n",
                 "motorbench compare textured_box --failpercent 0.1 -o out/box", true);

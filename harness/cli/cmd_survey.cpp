@@ -5,8 +5,10 @@
 // frame's tie pixels, those the baseline itself draws differently from vertex positions jittered
 // by ~1e-6 of their magnitude: survey_probe.h), the fallback counters, the 16-byte pipelines'
 // position bound and their envelope test (in the geometry view, outside the pixels the baseline
-// draws differently with its positions moved within their int16 cells), and seconds. The worker of scripts/corpus-check.sh: it judges nothing (the script
-// applies the rules); exit 0 drawn or nothing to draw, 2 an error.
+// draws differently with its positions moved within their int16 cells), skinned frames' figures
+// against their own skinning method's reference (skin_judgement.h: "skinJudgement", and the
+// motor-blend pipelines' "motorBlend"), and seconds. The worker of scripts/corpus-check.sh: it
+// decides nothing (the script applies the rules); exit 0 drawn or nothing to draw, 2 an error.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -19,12 +21,12 @@
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
 #include "harness/cli/survey_probe.h"
-#include "harness/render/skin_reference.h"
 #include "harness/options/args.h"
 #include "harness/render/counter_glossary.h"
 #include "harness/render/gpu_option.h"
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
+#include "harness/render/skin_judgement.h"
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
 #include "pipelines/pipeline.h"
@@ -47,17 +49,6 @@ double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>
 
 // The pipelines whose positions are int16 in each primitive's bounding cube (pipelines/compact).
 bool isCompact(const std::string& p) { return p == "matrix_c" || p == "motor_c" || p == "motor_cf"; }
-
-// A frame draws a skinned primitive: a reachable node with a skin and a mesh primitive with joints.
-bool drawsSkinned(const Scene& scene) {
-  for (int n : nodesInDrawOrder(scene)) {
-    const Node& node = scene.nodes[size_t(n)];
-    if (node.skin < 0 || node.mesh < 0 || size_t(node.mesh) >= scene.meshes.size()) continue;
-    for (const Primitive& p : scene.meshes[size_t(node.mesh)].primitives)
-      if (!p.joints.empty()) return true;
-  }
-  return false;
-}
 
 json fallbackJson(const PipelineStats& s) {
   return {{"nonUniformScaleNodes", s.nonUniformScaleNodes}, {"negativeScaleNodes", s.negativeScaleNodes},
@@ -101,6 +92,11 @@ int runSurvey(const std::vector<std::string>& argv) {
   if (args.has("pipelines"))
     if (Status ok = checkPipelineNames("--pipelines", splitList(args.get("pipelines", ""))); !ok) return fail(ok.error());
   if (Status ok = checkSceneSpec(spec); !ok) return fail(ok.error());
+  // The outputs before the first render: -o's folder writable, --images created and writable.
+  if (!out.empty())
+    if (Status ok = prepareOutputFile("-o", out); !ok) return fail(ok.error());
+  if (auto images = args.get("images"))
+    if (Status ok = prepareOutputFolder("--images", *images, "<pipeline>_<frame>.png"); !ok) return fail(ok.error());
 
   json doc = {{"file", spec}, {"status", "error"}, {"error", nullptr}, {"size", {width, height}}};
   // Every outcome is written (stdout or -o) before the exit code says it.
@@ -162,29 +158,15 @@ int runSurvey(const std::vector<std::string>& argv) {
 
   std::vector<RgbaImage> base;  // the baseline's images, one per shot
   std::vector<std::vector<uint8_t>> ties;  // and their tie masks (tieMasks; rigid files)
-  // The skinned rule's reference for the motor family (skinned files): matrix drawing the pose
-  // skinned on the CPU by the motor blend (survey_skin_reference.h), one image per shot.
-  std::vector<RgbaImage> motorBlendBase;
+  // The skinned rule's reference for the motor-blend pipelines (skinned files): the pose skinned
+  // on the CPU by the motor blend, drawn by matrix (skin_judgement.h), one image per shot.
+  MotorBlendFrames motorBlendBase;
   if (skinned) {
-    json reference = {{"available", true}, {"why", nullptr}};
-    const std::vector<View> views = framings(scene, settings);  // the skinned scene's camera
-    for (size_t k = 0; k < settings.size(); ++k) {
-      PreSkinnedScene pre(*loaded, settings[k].anim);
-      if (!pre.available()) {
-        reference = {{"available", false}, {"why", pre.why()}};
-        motorBlendBase.clear();
-        break;
-      }
-      auto frame = drawFromViews(scene, baseline, {settings[k]}, {views[k]});
-      if (!frame) {
-        reference = {{"available", false}, {"why", frame.error()}};
-        motorBlendBase.clear();
-        break;
-      }
-      motorBlendBase.push_back(frame->front());
-      doc["frames"][k]["motorBlendReference"] = {{"drawnPixels", drawnPixels(frame->front())}};
-    }
-    doc["motorBlendReference"] = reference;
+    motorBlendBase = motorBlendReferenceFrames(*loaded, settings);
+    doc["motorBlendReference"] = {{"available", motorBlendBase.available()},
+                                  {"why", motorBlendBase.available() ? json(nullptr) : json(motorBlendBase.why)}};
+    for (size_t k = 0; k < motorBlendBase.images.size(); ++k)
+      doc["frames"][k]["motorBlendReference"] = {{"drawnPixels", drawnPixels(motorBlendBase.images[k])}};
   }
   // The 16-byte rule's references (rigid files, made at the first 16-byte pipeline): the
   // baseline's frames in the geometry view and their int16-cell tie masks.
@@ -229,9 +211,16 @@ int runSurvey(const std::vector<std::string>& argv) {
           f["psnr"] = m->rmse == 0.0 ? json(nullptr) : json(m->psnr);
           f["maxError"] = m->maxError;
         }
-        if (k < motorBlendBase.size())
-          if (auto mb = compareImages(motorBlendBase[k], frame->image))  // against the motor blend's reference
-            f["motorBlend"] = {{"identical", mb->rmse == 0.0}, {"psnr", mb->rmse == 0.0 ? json(nullptr) : json(mb->psnr)}};
+        if (skinned) {  // judged by its own skinning method (skin_judgement.h); the script applies the rule
+          const RgbaImage* own = k < motorBlendBase.images.size() ? &motorBlendBase.images[k] : nullptr;
+          if (auto j = judgeSkinnedFrame(name, frame->image, base[k], own, motorBlendBase.why, nullptr))
+            f["skinJudgement"] = toJson(*j);
+          // Every pipeline against the motor-blend reference, the figure corpus-check reads (the
+          // linear-blend ones' too: they show the reference is not matrix's method again).
+          if (own)
+            if (auto mb = compareImages(*own, frame->image))
+              f["motorBlend"] = {{"identical", mb->rmse == 0.0}, {"psnr", mb->rmse == 0.0 ? json(nullptr) : json(mb->psnr)}};
+        }
         // The same judged outside the tie pixels: those set to the baseline's value.
         if (tie) {
           const std::vector<uint8_t> diff = differingMask(base[k], frame->image);
@@ -321,6 +310,7 @@ MB_COMMAND_HELP(survey, "survey",
                "  --size WxH         image size (default 128x128)\n"
                "  --pipelines A,...  the pipelines (default: every one of the scene's space; its matrix baseline is always drawn)\n"
                "  -o, --output FILE  the JSON document (default: stdout)\n"
-               "  --images DIR       also write every frame as DIR/<pipeline>_<frame>.png (DIR must exist)\n"
+               "  --images DIR       also write every frame as DIR/<pipeline>_<frame>.png (created; default: none)\n"
+               MB_GPU_OPTION_HELP
                "  Exit 0: drawn (or nothing to draw: status no-data), 2: the file did not load or a pipeline failed (reasons in the JSON).\n",
                "motorbench survey skinned_tube --size 96x96 -o out/tube.json", true);

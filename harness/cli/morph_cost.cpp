@@ -48,8 +48,6 @@ json metricsJson(const ImageMetrics& m) {
 // One scene: every frame by every method, against matrix (unskinned) or the skin reference.
 json measureScene(const std::string& spec, int size, json& glInfo) {
   json doc = {{"scene", spec}};
-  using survey::drawFromViews;
-  using survey::framings;
   auto loaded = loadScene(spec);
   if (!loaded) return doc["error"] = loaded.error(), doc;
   Scene& scene = *loaded;

@@ -166,33 +166,6 @@ double jitterAmplitude(const std::vector<glm::vec3>& from, double rounding, TieJ
 
 int tieRenders(TieProbe probe) { return 2 * probe.pairs + (probe.jitter == TieJitter::Int16Cell ? 1 : 0); }
 
-std::vector<View> framings(const Scene& scene, const std::vector<FrameSettings>& settings) {
-  std::vector<View> views;
-  for (const FrameSettings& f : settings) views.push_back(frameScene(scene, f.anim, float(f.width) / float(f.height), f.camera));
-  return views;
-}
-
-Result<std::vector<RgbaImage>> drawFromViews(const Scene& scene, const std::string& pipeline,
-                                             const std::vector<FrameSettings>& settings, const std::vector<View>& views) {
-  using R = Result<std::vector<RgbaImage>>;
-  auto ctx = gl::sharedContext();
-  if (!ctx) return R::fail(ctx.error());
-  std::unique_ptr<Pipeline> p = createPipeline(pipeline);
-  if (!p) return R::fail(pipeline + ": unknown or unimplemented pipeline");
-  if (Status ok = p->prepare(scene); !ok) return R::fail(ok.error());
-  std::vector<RgbaImage> images;
-  for (size_t k = 0; k < settings.size() && k < views.size(); ++k) {
-    const FrameSettings& f = settings[k];
-    auto fb = gl::Framebuffer::create(f.width, f.height);
-    if (!fb) return R::fail(fb.error());
-    p->update(f.anim);
-    (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
-    p->render(views[k]);
-    images.push_back(RgbaImage{f.width, f.height, (*fb)->readRgba()});
-  }
-  return images;
-}
-
 // The tie masks of every shot: the baseline pipeline drawn from the scene with probe.pairs x 2
 // jitters of its positions (each prepared once, posed and drawn per shot) against `base`, its
 // images of the scene. The positions are jittered in place (a copy would copy every texture)

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/render/fixed_views.h"
 #include "harness/render/frame_options.h"
 #include "harness/render/image_metrics.h"
 #include "pipelines/gl/program.h"
@@ -61,14 +62,7 @@ int tieRenders(TieProbe probe);
 constexpr TieProbe kFloatTies{TieJitter::FloatRounding, 1};
 constexpr TieProbe kInt16Ties{TieJitter::Int16Cell, 2};
 
-// The automatic framing of each frame (frameScene with its animation, aspect and camera), as
-// renderFrame frames it.
-std::vector<View> framings(const Scene& scene, const std::vector<FrameSettings>& settings);
-
-// Every frame of `settings` drawn by `pipeline` (prepared once) from `views`, one per frame, not
-// framed anew: a scene changed in place (jittered, pre-skinned) seen by the unchanged scene's camera.
-Result<std::vector<RgbaImage>> drawFromViews(const Scene& scene, const std::string& pipeline,
-                                             const std::vector<FrameSettings>& settings, const std::vector<View>& views);
+// framings and drawFromViews: harness/render/fixed_views.h.
 
 // The tie masks of every frame: the pixels `baseline` draws differently from `base` (its images
 // of the unjittered scene, one per `settings`) in any of the probe's jittered renders. The

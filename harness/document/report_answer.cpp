@@ -121,18 +121,41 @@ AnswerLine timeLine(const json& r) {
   return l;
 }
 
+// The first frame the report could not judge, with its reason (summary.images.<p>.notJudged).
+std::string firstNotJudged(const json& r, const std::string& p) {
+  const json& list = at(r, {"summary", "images", p.c_str(), "notJudged"});
+  return list.is_array() && !list.empty() && list[0].is_string() ? "first: " + list[0].get<std::string>()
+                                                                 : "no reason recorded";
+}
+
+// A count figure, quoted (named in the line's figures) only when it is above 0, as the text
+// prints it only then.
+std::optional<Figure> countAboveZero(Quote& q, const std::string& name) {
+  const std::optional<Figure> f = figures::figureNamed(q.report, name);
+  return f && std::isfinite(f->value) && f->value > 0 ? q.get(name) : std::nullopt;
+}
+
 AnswerLine imageLine(const json& r, const std::string& m, const std::string& M) {
   AnswerLine l{"image cost (PSNR, FLIP)", "#scenes"};
   Quote q{r, l};
   const auto psnr = q.get("image.worst_psnr." + M);
   const auto same = q.get("image.identical_frames." + M);
+  const auto own = countAboveZero(q, "image.skinned_frames_own_reference." + M);
+  const auto notJudged = countAboveZero(q, "image.frames_not_judged." + M);
   const auto flip = q.get("image.flip_mean_worst." + M);
-  l.text = M + " vs " + m + ": worst PSNR " + (psnr ? marked(*psnr) : "- (none differs)") + ", " +
+  l.text = M + " vs " + m + ", each frame against its own reference: worst PSNR " +
+           (psnr ? marked(*psnr) : "- (none differs)") + ", " +
            (same ? fmt(same->value, 6) + " of " + std::to_string(same->n) : std::string("-")) + " frames identical" +
-           "; worst frame mean FLIP " + (flip ? figureMark(flip->name, fmt(flip->value, 3)) : std::string("not measured"));
-  if (!same || same->n == 0) l.verdict = "not compared";
+           (own ? " (of them " + marked(*own) + " skinned, judged against " + M +
+                      "'s own skinning method's reference, the motor-blend reference, not " + m + ")"
+                : std::string()) +
+           "; worst frame mean FLIP " + (flip ? figureMark(flip->name, fmt(flip->value, 3)) : std::string("not measured")) +
+           (notJudged ? "; " + marked(*notJudged) + " not judged (" + firstNotJudged(r, M) + ")" : std::string());
+  const std::string unjudged = notJudged ? figures::valueText(*notJudged) + " not judged" : "";
+  if (!same || same->n == 0) l.verdict = notJudged ? "not judged (" + unjudged + ")" : "not compared";
   else if (!psnr || psnr->value >= 50) l.verdict = "equivalent (every differing frame >= 50 dB)";
   else l.verdict = "differs: worst " + figures::valueText(*psnr);
+  if (notJudged && same && same->n > 0) l.verdict += "; " + unjudged;
   return l;
 }
 

@@ -16,6 +16,11 @@ using json = nlohmann::json;
 using figures::Figure;
 using figures::numberOrNaN;
 
+// The motor-blend reference as the figures' scopes name it (harness/render/skin_judgement.h's
+// definition; document code reads JSON only).
+const char* kMotorBlendReferenceText =
+    "the motor-blend reference: the same pose skinned on the CPU by the motor blend, drawn by matrix";
+
 const char* kFetchDevice = "meshoptimizer's analyzers on the mesh and the pipeline's vertex layout (not timed)";
 
 Figure overScenes(std::string name, std::string unit, std::string scope, std::string device, std::string definition,
@@ -78,10 +83,11 @@ void ownFormatFigure(json& out, const json& r, const std::string& p, const std::
   if (!im.is_object()) return;
   Figure f;
   f.name = "image.worst_psnr_own_format." + p, f.unit = "dB", f.device = device;
-  f.scope = "frames where " + p + " and " + base + " should agree and " + p +
-            " draws its own vertex format (its uploaded mesh vertices), Euclidean scenes";
+  f.scope = "frames where " + p + " draws its own vertex format (its uploaded mesh vertices), Euclidean scenes, each "
+            "against its own reference: " + base + ", but a skinned frame of another skinning method than " + base +
+            "'s against its own method's reference (" + kMotorBlendReferenceText + ")";
   f.statistic = "minimum over the frames that differ";
-  f.definition = "PSNR of " + p + " against " + base + "; identical frames (infinite PSNR) are counted apart";
+  f.definition = "PSNR of " + p + " against its reference; identical frames (infinite PSNR) are counted apart";
   f.value = numberOrNaN(at(im, {"psnr", "min"}));
   f.n = at(im, {"psnr", "n"}).is_number() ? im["psnr"]["n"].get<int>() : 0;
   if (!std::isfinite(f.value))
@@ -89,45 +95,83 @@ void ownFormatFigure(json& out, const json& r, const std::string& p, const std::
   figures::put(out, f);
 }
 
-// Frames where both pipelines should agree (the skinning methods' difference left out).
+// Every frame of the Euclidean scenes, each judged against its own reference (judgedFrame: a
+// skinned frame of another skinning method than the baseline's against its own method's).
+struct JudgedImages {
+  std::vector<double> psnr, flip;
+  int compared = 0, identical = 0, ownSkinReference = 0, notJudged = 0;
+  std::vector<std::string> whyNot;  // each reason once
+};
+
+JudgedImages judgedImages(const json& r, const std::string& p, const std::string& base) {
+  JudgedImages out;
+  for (const json& s : r["scenes"]) {
+    if (!isEuclidean(s)) continue;
+    for (const json& fr : s.value("frames", json::array())) {
+      const JudgedFrame j = judgedFrame(s, fr, p, base);
+      if (!j.compared) continue;
+      if (!j.metrics) {
+        ++out.notJudged;
+        if (std::find(out.whyNot.begin(), out.whyNot.end(), j.why) == out.whyNot.end()) out.whyNot.push_back(j.why);
+        continue;
+      }
+      const json& m = *j.metrics;
+      ++out.compared;
+      out.ownSkinReference += j.skinnedOwnMethod && j.reference != base;
+      if (m.value("identical", false)) ++out.identical;
+      else if (m["psnr"].is_number()) out.psnr.push_back(m["psnr"].get<double>());
+      if (at(m, {"flip", "mean"}).is_number()) out.flip.push_back(m["flip"]["mean"].get<double>());
+    }
+  }
+  return out;
+}
+
+std::string joinedReasons(const std::vector<std::string>& why) {
+  std::string text;
+  for (const std::string& w : why) text += (text.empty() ? "" : "; ") + w;
+  return text;
+}
+
 void imageFigures(json& out, const json& r, const std::vector<std::string>& pipes) {
   const std::string base = pipes.empty() ? "" : pipes[0];
   for (size_t i = 1; i < pipes.size(); ++i) {
     const std::string& p = pipes[i];
-    std::vector<double> psnr, flip;
-    int compared = 0, identical = 0;
-    for (const json& s : r["scenes"]) {
-      if (!isEuclidean(s) || skinningMethodsDiffer(s, p, base)) continue;
-      for (const json& fr : s.value("frames", json::array())) {
-        const json& m = at(fr, {"metrics", p.c_str()});
-        if (!m.is_object()) continue;
-        ++compared;
-        if (m.value("identical", false)) ++identical;
-        else if (m["psnr"].is_number()) psnr.push_back(m["psnr"].get<double>());
-        if (at(m, {"flip", "mean"}).is_number()) flip.push_back(m["flip"]["mean"].get<double>());
-      }
-    }
-    const std::string scope = "frames where " + p + " and " + base + " should agree, Euclidean scenes";
+    const JudgedImages im = judgedImages(r, p, base);
+    const std::string scope = "every frame of the Euclidean scenes, each against its own reference: " + base +
+                              ", but a skinned frame of a pipeline that blends joints by another method than " + base +
+                              " against its own method's reference (" + kMotorBlendReferenceText + ")";
     Figure w;
     w.name = "image.worst_psnr." + p, w.unit = "dB", w.scope = scope, w.device = "the rendered images (8-bit RGBA)";
     w.statistic = "minimum over the frames that differ";
-    w.definition = "PSNR of " + p + " against " + base + "; identical frames (infinite PSNR) are counted apart";
-    w.n = int(psnr.size());
-    w.value = psnr.empty() ? std::nan("") : *std::min_element(psnr.begin(), psnr.end());
-    if (psnr.empty()) w.why = compared ? "every compared frame identical" : "no frame compared";
+    w.definition = "PSNR of " + p + " against its reference; identical frames (infinite PSNR) are counted apart";
+    w.n = int(im.psnr.size());
+    w.value = im.psnr.empty() ? std::nan("") : *std::min_element(im.psnr.begin(), im.psnr.end());
+    if (im.psnr.empty()) w.why = im.compared ? "every compared frame identical" : "no frame compared";
     figures::put(out, w);
     Figure id;
     id.name = "image.identical_frames." + p, id.unit = "frames", id.scope = scope, id.device = w.device;
-    id.statistic = "count", id.value = identical, id.n = compared;
-    id.definition = "frames whose every pixel equals " + base + "'s, of n compared";
+    id.statistic = "count", id.value = im.identical, id.n = im.compared;
+    id.definition = "frames whose every pixel equals their reference's, of n judged";
     figures::put(out, id);
+    Figure own;
+    own.name = "image.skinned_frames_own_reference." + p, own.unit = "frames", own.scope = scope, own.device = w.device;
+    own.statistic = "count", own.value = im.ownSkinReference, own.n = im.compared;
+    own.definition = "skinned frames of the n judged that were judged against " + p +
+                     "'s own skinning method's reference, not " + base;
+    figures::put(out, own);
+    Figure no;
+    no.name = "image.frames_not_judged." + p, no.unit = "frames", no.scope = scope, no.device = w.device;
+    no.statistic = "count", no.value = im.notJudged, no.n = im.compared + im.notJudged;
+    no.definition = "frames drawn by both pipelines that could not be judged (their reference could not be made), of n" +
+                    (im.notJudged ? "; why: " + joinedReasons(im.whyNot) : std::string());
+    figures::put(out, no);
     ownFormatFigure(out, r, p, base, w.device);
-    if (flip.empty()) continue;
+    if (im.flip.empty()) continue;
     Figure fl;
     fl.name = "image.flip_mean_worst." + p, fl.unit = "", fl.scope = scope, fl.device = w.device;
     fl.statistic = "maximum over frames of each frame's mean LDR-FLIP";
-    fl.definition = "perceptual difference of " + p + " against " + base + " (0: none, 1: largest)";
-    fl.value = *std::max_element(flip.begin(), flip.end()), fl.n = int(flip.size());
+    fl.definition = "perceptual difference of " + p + " against its reference (0: none, 1: largest)";
+    fl.value = *std::max_element(im.flip.begin(), im.flip.end()), fl.n = int(im.flip.size());
     figures::put(out, fl);
   }
 }

@@ -19,7 +19,11 @@ std::string pipelineFamily(const std::string& pipeline);
 // vertex_fetch.bytes_per_frame_over_baseline.<p>, isa.instructions.rigid.<family id>.<p>,
 // image.worst_psnr.<p>, image.worst_psnr_own_format.<p> (the frames drawing p's own vertex
 // format, from report["summary"]), image.identical_frames.<p>, image.flip_mean_worst.<p> (when
-// FLIP was measured); and report["pipelineFamilies"] {p: family}.
+// FLIP was measured): every frame against its own reference (report_document.h's judgedFrame:
+// a skinned frame of another skinning method than the baseline's against its own method's), with
+// image.skinned_frames_own_reference.<p> (how many were judged so) and
+// image.frames_not_judged.<p> (frames whose reference could not be made; its "why" the reasons);
+// and report["pipelineFamilies"] {p: family}.
 void addAnswerFigures(nlohmann::json& report);
 
 }  // namespace mb::report

@@ -60,21 +60,34 @@ json pipelineSummary(const std::vector<json>& scenes, const std::string& p) {
           {"floatsPerJoint", spread(fpj)}, {"conversionMs", spread(conv)}, {"bytesPerInstance", spread(bpi)}};
 }
 
-// Image agreement of `p` with the baseline over the frames of `scenes` for which
-// methodDifference(scene) is `method`.
+// Image agreement of `p` with the baseline over the frames of the scenes `include` takes: each
+// frame judged against its own reference (judgedFrame) when `judged`, else against the baseline
+// (the skinning methods' difference, measured).
 template <class Pred>
-json imageSummary(const std::vector<json>& scenes, const std::string& p, Pred methodDifference, bool method) {
+json imageSummary(const std::vector<json>& scenes, const std::string& p, const std::string& baseline, Pred include,
+                  bool judged) {
   std::vector<double> psnr, over1, over4, maxErr;
-  int identical = 0, compared = 0, wrongShape = 0;
+  int identical = 0, compared = 0, wrongShape = 0, notJudged = 0;
+  json against = json::object(), whyNot = json::array();
   for (const json& s : scenes) {
-    if (methodDifference(s) != method) continue;
+    if (!include(s)) continue;
     for (const json& f : s.value("frames", json::array())) {
-      if (!f.contains("metrics") || !f["metrics"].contains(p)) continue;
-      const json& m = f["metrics"][p];
-      ++compared;
-      // compare's drawn-pixel check (one image empty, counts > 1 % apart) failed on this frame.
+      const JudgedFrame j = judged ? judgedFrame(s, f, p, baseline) : JudgedFrame{};
+      const json& plain = at(f, {"metrics", p.c_str()});
+      if (judged ? !j.compared : !plain.is_object()) continue;
+      // compare's drawn-pixel check (one image empty, counts > 1 % apart) failed on this frame
+      // (a frame not judged by its own method: against the baseline, the strict reading).
       const json& check = at(f, {"drawnCheck"});
       wrongShape += check.is_object() && check.contains(p) && check[p].is_object() && check[p].value("failed", false);
+      if (judged && !j.metrics) {
+        ++notJudged;
+        const std::string why = s.value("id", "?") + " t=" + fmt(f.value("time", json()), 4) + ": " + j.why;
+        if (whyNot.size() < 20) whyNot.push_back(why);  // the first ones: enough to see the reason
+        continue;
+      }
+      const json& m = judged ? *j.metrics : plain;
+      ++compared;
+      if (judged) against[j.reference] = against.value(j.reference, 0) + 1;
       if (m.value("identical", false)) ++identical;
       else push(psnr, number(m, {"psnr"}));
       push(over1, number(m, {"fractionOver1"}));
@@ -82,9 +95,11 @@ json imageSummary(const std::vector<json>& scenes, const std::string& p, Pred me
       push(maxErr, number(m, {"maxError"}));
     }
   }
-  return {{"comparedFrames", compared}, {"identicalFrames", identical}, {"drawnCheckFailed", wrongShape},
-          {"psnr", spread(psnr)}, {"fractionOver1", spread(over1)}, {"fractionOver4", spread(over4)},
-          {"maxError", spread(maxErr)}};
+  json out = {{"comparedFrames", compared}, {"identicalFrames", identical}, {"drawnCheckFailed", wrongShape},
+              {"psnr", spread(psnr)}, {"fractionOver1", spread(over1)}, {"fractionOver4", spread(over4)},
+              {"maxError", spread(maxErr)}};
+  if (judged) out.update({{"judgedAgainst", against}, {"notJudgedFrames", notJudged}, {"notJudged", whyNot}});
+  return out;
 }
 
 // A curved scene's figures side by side (issue 15): its space's pipelines, floats per instance
@@ -127,6 +142,33 @@ json spread(std::vector<double> v) {
 
 bool isEuclidean(const json& scene) { return scene.value("space", "Euclidean") == "Euclidean"; }
 
+JudgedFrame judgedFrame(const json& scene, const json& frame, const std::string& p, const std::string& baseline) {
+  JudgedFrame j;
+  const json& plain = at(frame, {"metrics", p.c_str()});
+  j.compared = plain.is_object();
+  if (!j.compared) return j;
+  const json& skin = at(frame, {"skinJudgement", p.c_str()});
+  if (skin.is_object()) {
+    j.skinnedOwnMethod = true;
+    j.reference = skin.value("reference", "");
+    const json& own = at(frame, {"referenceMetrics", p.c_str()});
+    if (skin.value("judged", false) && own.is_object()) j.metrics = &own;
+    else
+      j.why = "not judged against the " + j.reference + ": " +
+              (skin["why"].is_string() ? skin["why"].get<std::string>() : std::string("no reason recorded"));
+    return j;
+  }
+  if (skinningMethodsDiffer(scene, p, baseline)) {
+    j.reference = baseline;
+    j.why = "a skinned frame of another skinning method than " + baseline + "'s with no judgement by its own method "
+            "(a report.json made before skinned frames were judged so: run the report again)";
+    return j;
+  }
+  j.metrics = &plain;
+  j.reference = baseline;
+  return j;
+}
+
 bool skinningMethodsDiffer(const json& scene, const std::string& p, const std::string& baseline) {
   const json& mix = scene.value("vertexMix", json::object());
   if (!mix.is_object() || !(mix.value("skinned", 0.0) > 0)) return false;
@@ -147,16 +189,15 @@ json assembleReport(json machine, json settings, std::vector<json> scenes, json 
   // Skinned scenes whose two pipelines blend joints differently (LBS vs motor blending) are
   // summed apart: their difference is the methods' expected one, not an equivalence error.
   for (size_t i = 1; i < pipelines.size(); ++i) {
-    auto differ = [&](const json& s) { return skinningMethodsDiffer(s, pipelines[i], pipelines[0]); };
-    summary["images"][pipelines[i]] = imageSummary(scenes, pipelines[i], differ, false);
-    summary["skinningMethodImages"][pipelines[i]] = imageSummary(scenes, pipelines[i], differ, true);
+    const std::string p = pipelines[i], base = pipelines[0];
+    auto differ = [&](const json& s) { return skinningMethodsDiffer(s, p, base); };
+    auto every = [](const json&) { return true; };
+    summary["images"][p] = imageSummary(scenes, p, base, every, true);
+    summary["skinningMethodImages"][p] = imageSummary(scenes, p, base, differ, false);
     // The vertex format's own image cost (issue 35 item 5): frames of scenes where the pipeline
     // uploads its mesh vertices (a scene of patches, the teapot, draws none of them).
-    const std::string p = pipelines[i];
-    auto ownVertices = [&](const json& s) {
-      return differ(s) || !(number(s, {"pipelines", p.c_str(), "memory", "bytesPerVertex"}) > 0);
-    };
-    summary["vertexFormatImages"][p] = imageSummary(scenes, p, ownVertices, false);
+    auto ownVertices = [&](const json& s) { return number(s, {"pipelines", p.c_str(), "memory", "bytesPerVertex"}) > 0; };
+    summary["vertexFormatImages"][p] = imageSummary(scenes, p, base, ownVertices, true);
   }
   json curved = json::array(), origins = {{"built-in", 0}, {"file", 0}};
   for (const json& s : scenes) {

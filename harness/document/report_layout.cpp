@@ -52,6 +52,21 @@ void header(Document& d, const json& r) {
   }
 }
 
+// "every frame, each against its own reference (4 against matrix, 6 skinned against the
+// motor-blend reference; 1 not judged: id t=0: why)": summary.images' judgedAgainst and notJudged.
+std::string judgedText(const json& im, const std::string& baseline) {
+  std::string counts;
+  for (const auto& [reference, n] : members(im, "judgedAgainst").items())
+    counts += (counts.empty() ? "" : ", ") + str(n) + (reference == baseline ? " against " + reference
+                                                                             : " skinned against the " + reference);
+  std::string why;
+  for (const json& w : im.value("notJudged", json::array())) why += (why.empty() ? "" : "; ") + str(w);
+  const int notJudged = im.value("notJudgedFrames", 0);
+  return "every frame, each against its own reference (a skinned frame of another skinning method against its own "
+         "method's)" + (counts.empty() ? std::string() : " (" + counts + ")") +
+         (notJudged ? "; " + std::to_string(notJudged) + " frame(s) not judged: " + why : std::string());
+}
+
 void summary(Document& d, const json& r) {
   const std::vector<std::string> pipes = pipelinesOf(r);
   const json& sum = r["summary"];
@@ -112,12 +127,11 @@ void summary(Document& d, const json& r) {
     const json& im = at(sum, {"images"})[pipes[i]];
     const json& sm = at(sum, {"skinningMethodImages"}).is_object() ? at(sum, {"skinningMethodImages"})[pipes[i]] : json();
     const bool method = sm.is_object() && sm.value("comparedFrames", 0) > 0;
-    if (!method || im.value("comparedFrames", 0) > 0)
-      lines.push_back(pipes[i] + " vs " + pipes[0] + " (frames where both should agree): " + imageLine(im) + ".");
+    lines.push_back(pipes[i] + " vs " + pipes[0] + ", " + judgedText(im, pipes[0]) + ": " + imageLine(im) + ".");
     if (method)
-      lines.push_back(pipes[i] + " vs " + pipes[0] + ", skinned scenes where one blends joints with linear blend "
-                      "skinning and the other with motors: the methods' expected difference (measured, not an "
-                      "error of either): " + imageLine(sm) + ".");
+      lines.push_back(pipes[i] + " against " + pipes[0] + " itself on the skinned scenes where one blends joints with "
+                      "linear blend skinning and the other with motors: the methods' expected difference (measured, "
+                      "not an error of either, and not what judges these frames): " + imageLine(sm) + ".");
   }
   const json& ft = sum["frameTimeRatio"];
   lines.push_back("Frame time motor / matrix (median over Euclidean scenes of each scene's median of per-frame "

@@ -15,22 +15,38 @@ using namespace layout;
 namespace {
 
 
-// Worst metrics of `p` over a scene's frames (lowest PSNR, largest changed fraction).
-std::pair<std::string, std::string> worstImage(const json& s, const std::string& p) {
+// Worst metrics of `p` over a scene's frames (lowest PSNR, largest changed fraction), each frame
+// against its own reference (judgedFrame); the third: "against the motor-blend reference" when a
+// skinned frame was judged against its own skinning method's, with the frames not judged.
+struct WorstImage {
+  std::string psnr = "-", over = "-", note;
+};
+WorstImage worstImage(const json& s, const std::string& p, const std::string& base) {
   double psnr = 1e300, over = -1;
   bool any = false, allIdentical = true;
+  int notJudged = 0;
+  std::string own;
   for (const json& f : s.value("frames", json::array())) {
-    const json& m = at(f, {"metrics"});
-    if (!m.is_object() || !m.contains(p)) continue;
-    any = true;
-    if (!m[p].value("identical", false)) {
-      allIdentical = false;
-      if (m[p]["psnr"].is_number()) psnr = std::min(psnr, m[p]["psnr"].get<double>());
+    const JudgedFrame j = judgedFrame(s, f, p, base);
+    if (!j.compared) continue;
+    if (!j.metrics) {
+      ++notJudged;
+      continue;
     }
-    over = std::max(over, m[p].value("fractionOver1", 0.0));
+    const json& m = *j.metrics;
+    any = true;
+    if (j.skinnedOwnMethod && j.reference != base) own = j.reference;
+    if (!m.value("identical", false)) {
+      allIdentical = false;
+      if (m["psnr"].is_number()) psnr = std::min(psnr, m["psnr"].get<double>());
+    }
+    over = std::max(over, m.value("fractionOver1", 0.0));
   }
-  if (!any) return {"-", "-"};
-  return {allIdentical ? "identical" : fixed(json(psnr), 1) + " dB", percent(json(over), 3)};
+  WorstImage w;
+  if (any) w.psnr = allIdentical ? "identical" : fixed(json(psnr), 1) + " dB", w.over = percent(json(over), 3);
+  if (!own.empty()) w.note = " (skinned: against the " + own + ")";
+  if (notJudged) w.note += "; " + std::to_string(notJudged) + " frame(s) not judged";
+  return w;
 }
 
 
@@ -98,11 +114,10 @@ void sceneTable(Document& d, const json& r) {
     for (const std::string& p : pipes) row.push_back({fixed(at(s, {"timing", "pipelines"}).is_object() && s["timing"]["pipelines"].contains(p) ? s["timing"]["pipelines"][p].value("medianMs", json()) : json(), 2)});
     row.push_back({ratio(at(s, {"timing", "ratio_motor_matrix"}))});
     for (size_t i = 1; i < pipes.size(); ++i) {
-      auto [psnr, over] = worstImage(s, pipes[i]);
+      const WorstImage w = worstImage(s, pipes[i], pipes[0]);
       const int wrong = drawnFailures(s, pipes[i]);
-      row.push_back({psnr + (skinningMethodsDiffer(s, pipes[i], pipes[0]) ? " (skinning methods differ)" : "") +
-                     (wrong ? "; " + std::to_string(wrong) + " frame(s) FAILED the drawn-pixel check" : "")});
-      row.push_back({over});
+      row.push_back({w.psnr + w.note + (wrong ? "; " + std::to_string(wrong) + " frame(s) FAILED the drawn-pixel check" : "")});
+      row.push_back({w.over});
     }
     const json& last = at(s, {"pipelines"}).is_object() && s["pipelines"].contains(pipes.back()) ? s["pipelines"][pipes.back()] : json();
     row.push_back({last.is_object() ? fallbacksText(last) : "-"});
@@ -133,11 +148,13 @@ void sceneSection(Document& d, const json& r, const json& s) {
     d.paragraph("Skinned scene: " + lbs + " blend joints with linear blend skinning (LBS, a matrix palette); " + motors +
                 " blend joint motors (the dual-quaternion method). Where joints turn far apart the two methods pose "
                 "the mesh differently by design (LBS loses volume: on a half turn, candy_wrapper, the ring between "
-                "the joints collapses towards the axis), so the difference figures of " + motors +
-                " against " + pipes[0] + " below are the methods' expected difference, measured, not an error of either" +
+                "the joints collapses towards the axis), so each frame of " + motors + " is judged against its own "
+                "method's reference, the motor-blend reference (the same pose skinned on the CPU by the motor blend, "
+                "drawn by matrix), in the rows \"vs motor-blend reference\" below; the difference figures of " + motors +
+                " against " + pipes[0] + " are the methods' expected difference, measured, not an error of either" +
                 (std::any_of(methodDiffers.begin(), methodDiffers.end(), [&](const std::string& p) { return drawnFailures(s, p) > 0; })
-                     ? " -- except in the frames marked FAILED, where one image is empty or the drawn pixels differ by "
-                       "more than 1 %, more than the methods' difference allows."
+                     ? " -- except in the frames marked FAILED, where one image is empty or the drawn pixels differ from "
+                       "the pipeline's own method's reference by more than 1 %: a wrong pose, scale or missing mesh."
                      : "."));
   }
   // Small multiples per shown time (of each animation shown): each pipeline's image with its
@@ -174,14 +191,29 @@ void sceneSection(Document& d, const json& r, const json& s) {
       const bool method = methodDifferenceAllowed(
           f, pipes[i], std::find(methodDiffers.begin(), methodDiffers.end(), pipes[i]) != methodDiffers.end());
       const std::string mark = drawnMark(f, pipes[i]);
+      // A skinned frame judged by its own skinning method: its check on the row of the figures
+      // that judge it (or why they could not be made), after the row against the baseline.
+      const JudgedFrame j = judgedFrame(s, f, pipes[i], pipes[0]);
+      const bool own = j.skinnedOwnMethod && j.reference != pipes[0];
       metricRows.push_back({{when}, {pipes[i] + (method ? " (skinning method difference)" : "")}, {psnrText(m)},
                             {fmt(m["rmse"], 3)}, {fmt(json(255.0 * m.value("maxError", 0.0)), 3)},
                             {percent(m["fractionOver1"], 3)}, {percent(m["fractionOver4"], 3)},
-                            {fmt(at(m, {"flip", "mean"}), 3)}, {fmt(at(m, {"flip", "max"}), 3)}, {mark}});
+                            {fmt(at(m, {"flip", "mean"}), 3)}, {fmt(at(m, {"flip", "max"}), 3)},
+                            {own ? std::string("judged on the next row") : mark}});
+      if (!own) continue;
+      const std::string label = pipes[i] + " vs " + j.reference + " (its own skinning method's)";
+      if (!j.metrics) {
+        metricRows.push_back({{when}, {label}, {j.why}, {"-"}, {"-"}, {"-"}, {"-"}, {"-"}, {"-"}, {mark}});
+        continue;
+      }
+      const json& o = *j.metrics;
+      metricRows.push_back({{when}, {label}, {psnrText(o)}, {fmt(o["rmse"], 3)}, {fmt(json(255.0 * o.value("maxError", 0.0)), 3)},
+                            {percent(o["fractionOver1"], 3)}, {percent(o["fractionOver4"], 3)},
+                            {fmt(at(o, {"flip", "mean"}), 3)}, {fmt(at(o, {"flip", "max"}), 3)}, {mark}});
     }
   }
   if (!metricRows.empty())
-    d.table({"time", "pipeline vs " + pipes[0], "PSNR", "RMSE", "max /255", "> 1/255", "> 4/255", "FLIP mean",
+    d.table({"time", "pipeline vs " + pipes[0] + " (or its own skinning method's reference)", "PSNR", "RMSE", "max /255", "> 1/255", "> 4/255", "FLIP mean",
              "FLIP max", "drawn-pixel check"},
             metricRows);
   // One loop of each animation shown, baseline | pipeline | diff, per compared pipeline.

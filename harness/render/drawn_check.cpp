@@ -22,8 +22,8 @@ DrawnCheck checkDrawn(const std::string& a, int64_t drawnA, const std::string& b
     const bool aEmpty = drawnA == 0;
     c.kind = DrawnCheck::Kind::OneEmpty;
     c.failed = true;
-    c.reason = (aEmpty ? a : b) + " drew nothing (0 pixels) where " + (aEmpty ? b : a) + " drew " +
-               std::to_string(most) + ": one image is empty";
+    c.counts = (aEmpty ? a : b) + " drew nothing (0 pixels) where " + (aEmpty ? b : a) + " drew " + std::to_string(most);
+    c.reason = c.counts + ": one image is empty";
     return c;
   }
   // 1 % of the larger count: 1000 vs 1010 agrees (10 <= 10.1), 1000 vs 1011 does not.
@@ -32,8 +32,9 @@ DrawnCheck checkDrawn(const std::string& a, int64_t drawnA, const std::string& b
     std::snprintf(pct, sizeof pct, "%.2f", c.apartPercent);
     c.kind = DrawnCheck::Kind::CountsApart;
     c.failed = true;
-    c.reason = "drawn-pixel counts more than 1 % apart (" + a + " " + std::to_string(drawnA) + ", " + b + " " +
-               std::to_string(drawnB) + ": " + pct + " %): the two pipelines did not draw the same shape";
+    c.counts = "drawn-pixel counts more than 1 % apart (" + a + " " + std::to_string(drawnA) + ", " + b + " " +
+               std::to_string(drawnB) + ": " + pct + " %)";
+    c.reason = c.counts + ": the two pipelines did not draw the same shape";
     return c;
   }
   c.skinningMethodNote = skinnedDrawn && methodsDiffer;

@@ -1,9 +1,9 @@
 // Did two pipelines draw the same shape? Judged from the pixels each drew (not the background),
-// before any threshold (issue 34): a pipeline that drew nothing where the other drew, or
-// drawn-pixel counts more than 1 % apart, is a wrong image, whatever the skinning methods; only
-// where the counts agree may a skinned scene's difference be called the methods' difference
-// (LBS vs motor blending). compare's exit status and note and the report's frame marks both
-// come from checkDrawn, so the two never disagree.
+// before any threshold: a pipeline that drew nothing where the other drew, or drawn-pixel
+// counts more than 1 % apart, is a wrong image. A skinned frame of two skinning methods is checked
+// against the pipeline's own method's reference instead (skin_judgement.h), with this same
+// check. compare's exit status and note and the report's frame marks both come from checkDrawn,
+// so the two never disagree.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -29,7 +29,9 @@ struct DrawnCheck {
   bool skinningMethodNote = false;  // Agree, skinned primitives drawn, the blend methods differ
   int64_t drawnA = 0, drawnB = 0;
   double apartPercent = 0;          // |a - b| / max(a, b) x 100 (0 when both are 0)
-  std::string reason;               // why it failed, naming both pipelines; "" otherwise
+  std::string counts;               // what failed, naming both: "drawn-pixel counts more than 1 % apart
+                                    // (a N, b M: x %)" or "a drew nothing (0 pixels) where b drew M"
+  std::string reason;               // counts and what it means; "" unless failed
 };
 
 // `skinnedDrawn`: the frame draws skinned primitives; `methodsDiffer`: pipelines a and b blend

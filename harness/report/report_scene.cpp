@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "harness/render/drawn_check.h"
@@ -16,6 +18,7 @@
 #include "harness/report/report_sources.h"
 #include "harness/report/vertex_fetch.h"
 #include "harness/render/render_frame.h"
+#include "harness/render/skin_judgement.h"
 #include "pipelines/scene/curved_space.h"
 #include "pipelines/scene/drawable.h"
 #include "pipelines/scene/instancing.h"
@@ -80,6 +83,70 @@ double median(std::vector<double> v) {
   const size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
+
+// One frame's judge of skinned frames by their own skinning method (skin_judgement.h): the
+// references are made once per frame, when first needed (matrix's image: the frame's own when
+// matrix drew it; the motor-blend reference), and each judgement is written into the frame:
+// "skinJudgement.<p>" and, judged, "referenceMetrics.<p>" (with FLIP against the reference);
+// a reference frame's error into "errors.skin_<p>".
+class OwnMethodJudge {
+public:
+  OwnMethodJudge(Scene& scene, const FrameSettings& settings, const std::map<std::string, RgbaImage>& images,
+                 std::function<void(const std::string&)> progress)
+      : scene_(scene), settings_(settings), images_(images), progress_(std::move(progress)) {}
+
+  const SkinnedFrameJudgement* judge(const std::string& p, json& frame) {
+    if (auto it = done_.find(p); it != done_.end()) return &it->second;
+    const RgbaImage* matrix = matrixImage();
+    if (!matrix) {
+      frame["errors"]["skin_" + p] = matrixError_;
+      return nullptr;
+    }
+    const MotorBlendFrames& own = motorBlend();
+    auto j = judgeSkinnedFrame(p, images_.at(p), *matrix, own.images.empty() ? nullptr : &own.images[0], own.why, nullptr);
+    if (!j) {
+      frame["errors"]["skin_" + p] = j.error();
+      return nullptr;
+    }
+    frame["skinJudgement"][p] = toJson(*j);
+    if (j->judged) {
+      const RgbaImage& reference = j->reference == kMatrixReference ? *matrix : own.images[0];
+      auto flip = computeFlip(reference, images_.at(p));
+      frame["referenceMetrics"][p] = flip ? toJson(j->vsReference.metrics, *flip) : toJson(j->vsReference.metrics);
+    }
+    return &done_.emplace(p, j.take()).first->second;
+  }
+
+private:
+  const RgbaImage* matrixImage() {
+    if (auto it = images_.find(kMatrixReference); it != images_.end()) return &it->second;
+    if (!matrix_ && matrixError_.empty()) {
+      progress_("rendering matrix (the linear blend's reference)");
+      auto f = renderFrame(scene_, kMatrixReference, settings_);
+      if (f) matrix_ = std::move(f->image);
+      else matrixError_ = f.error();
+    }
+    return matrix_ ? &*matrix_ : nullptr;
+  }
+  const MotorBlendFrames& motorBlend() {
+    if (!motorBlendMade_) {
+      progress_("rendering the motor-blend reference");
+      motorBlend_ = motorBlendReferenceFrames(scene_, {settings_});
+      motorBlendMade_ = true;
+    }
+    return motorBlend_;
+  }
+
+  Scene& scene_;
+  const FrameSettings& settings_;
+  const std::map<std::string, RgbaImage>& images_;
+  std::function<void(const std::string&)> progress_;
+  std::optional<RgbaImage> matrix_;
+  std::string matrixError_;
+  bool motorBlendMade_ = false;
+  MotorBlendFrames motorBlend_;
+  std::map<std::string, SkinnedFrameJudgement> done_;
+};
 
 }  // namespace
 
@@ -195,6 +262,7 @@ json measureScene(const SceneJob& job) {
   std::map<std::string, std::vector<double>> conversion;
   std::map<std::string, std::string> pipelineError;
   int framesOk = 0, framesTried = 0;
+  const bool skinned = drawsSkinned(*scene);
   for (size_t k = 0; k < shots.size(); ++k) {
     FrameSettings settings;
     settings.width = job.width, settings.height = job.height;
@@ -250,6 +318,7 @@ json measureScene(const SceneJob& job) {
       images.emplace(p, std::move(f->image));
     }
     const std::string& base = job.pipelines.front();
+    OwnMethodJudge own(*scene, settings, images, [&](const std::string& what) { progress(job, what + " t=" + when); });
     for (size_t i = 1; i < job.pipelines.size() && images.count(base); ++i) {
       const std::string& p = job.pipelines[i];
       if (!images.count(p)) continue;
@@ -275,11 +344,20 @@ json measureScene(const SceneJob& job) {
         else
           frame["errors"]["flip_" + p] = f.error();
       }
-      // compare's drawn-pixel check: an empty image or counts > 1 % apart marks the frame failed,
-      // and only a frame that passes may be called the skinning methods' difference.
-      const bool skinned = out["vertexMix"].value("skinned", 0L) > 0;
-      const bool methods = !skinBlendOf(base).empty() && !skinBlendOf(p).empty() && skinBlendOf(base) != skinBlendOf(p);
-      frame["drawnCheck"][p] = toJson(checkDrawn(base, images[base], p, images[p], skinned, methods));
+      // compare's drawn-pixel check: an empty image or counts > 1 % apart marks the frame failed.
+      // A skinned frame of another skinning method than the baseline's is judged against its
+      // own method's reference instead (skin_judgement.h), as compare judges it.
+      const bool methods = skinned && skinMethodsDiffer(base, p);
+      DrawnCheck check = checkDrawn(base, images[base], p, images[p], skinned, methods);
+      const SkinnedFrameJudgement* j = methods ? own.judge(p, frame) : nullptr;
+      if (j && j->judged) {
+        check = j->vsReference.drawn;
+        check.reason = j->reason;
+        check.skinningMethodNote = !check.failed;
+      }
+      json checkJson = toJson(check);
+      checkJson["against"] = j && j->judged ? j->reference : base;  // the image the counts were checked against
+      frame["drawnCheck"][p] = checkJson;
     }
     out["frames"].push_back(frame);
   }

@@ -1,6 +1,7 @@
 #include "harness/report/report_sources.h"
 
 #include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/skin_method.h"
 #include "pipelines/scene/scene_stats.h"
 
 namespace mb::report {
@@ -8,12 +9,11 @@ namespace mb::report {
 std::string sceneOrigin(const std::string& spec) { return isBuiltinScene(spec) ? "built-in" : "file"; }
 
 std::string skinBlendOf(const std::string& pipeline) {
-  // From each pipeline's vertex shader: matrix.vs and affine.vs (affine, qtangent, hybrid,
-  // matrix_c) blend a matrix palette; motor.vs (motor, motor_q, motor_c, motor_cf) blends joint motors.
-  for (const char* lbs : {"matrix", "affine", "qtangent", "hybrid", "matrix_c"})
-    if (pipeline == lbs) return "linear blend skinning";
-  for (const char* motor : {"motor", "motor_q", "motor_c", "motor_cf"})
-    if (pipeline == motor) return "motor blending";
+  switch (skinMethodOf(pipeline)) {  // the pipeline's registry line (pipelines/skin_method.h)
+    case SkinMethod::LinearBlend: return "linear blend skinning";
+    case SkinMethod::MotorBlend: return "motor blending";
+    case SkinMethod::None: return "";
+  }
   return "";
 }
 

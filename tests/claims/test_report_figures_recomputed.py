@@ -2,7 +2,8 @@
 here from results/report.json's own per-scene numbers: one statistic for a frame-time ratio (the
 median over scenes of each scene's median of per-frame paired ratios, not a ratio of medians and
 not the upper of two middle values), and the compact pipelines' image figures from the frames that
-draw their own vertex format only (the teapot draws patches). A report.json older than the figures
+draw their own vertex format only (the teapot draws patches), each frame against its own reference
+(a skinned frame of another skinning method than the baseline's against that method's). A report.json older than the figures
 layer fails the test: regenerate results/ (scripts/reproduce.sh).
 """
 import json
@@ -80,12 +81,18 @@ class ReportFiguresRecomputed(unittest.TestCase):
                     continue  # no mesh vertex of its own drawn (the teapot's patches)
                 skinned = (s.get("vertexMix") or {}).get("skinned", 0) > 0
                 blends = {(ps.get(q) or {}).get("skinBlend", "") for q in (p, base)}
-                if skinned and "" not in blends and len(blends) == 2:
-                    continue  # the skinning methods' own difference, summed apart
+                methods_differ = skinned and "" not in blends and len(blends) == 2
                 for fr in s.get("frames", []):
                     m = (fr.get("metrics") or {}).get(p)
                     if m is None:
                         continue
+                    # A skinned frame of another skinning method than the baseline's is judged
+                    # against its own method's reference; one not judged so is counted apart.
+                    judgement = (fr.get("skinJudgement") or {}).get(p)
+                    if judgement is not None or methods_differ:
+                        m = (fr.get("referenceMetrics") or {}).get(p) if (judgement or {}).get("judged") else None
+                        if m is None:
+                            continue
                     if not m.get("identical") and m.get("psnr") is not None:
                         psnr.append(m["psnr"])
                     if m.get("fractionOver1") is not None:

@@ -13,6 +13,7 @@
 #include "tests/support/cli_issue_support.h"
 #include "tests/support/png_pixels.h"
 #include "tests/support/scene_test_gltf.h"
+#include "tests/support/skin_test_files.h"
 
 namespace {
 
@@ -39,40 +40,84 @@ fs::path zeroScaleFile(const fs::path& dir) {
   return file;
 }
 
-// Two pipelines that drew shapes of different size fail (issue 34: more than 1 % apart, with or
-// without a threshold, and the skinning methods' note is not offered), and two that drew the
-// same shape do not: candy_wrapper's half turn, where linear blend skinning collapses the ring
-// (matrix) and motor blending keeps it, against the same frame drawn by affine (the same LBS,
-// the same pixels). Counts checked against the PNGs compare wrote.
-TEST(CliCompareText, DifferentDrawnPixelCountsFail) {
-  const fs::path dir = mb::cli_test::scratchDir("compare_drawn_apart");
-  const std::string frame = "compare skinned_tube --anim candy_wrapper --time 1.97 --size 128x128 ";
-  const auto apart = runMb(frame + "--pipelines matrix,motor -o " + quoted(dir / "apart"));
-  EXPECT_EQ(apart.rc, 1) << apart.out;
-  const int64_t m = nonBackground(dir / "apart" / "matrix.png"), q = nonBackground(dir / "apart" / "motor.png");
+// A skinned frame of pipelines that blend joints by different methods is judged by each one's
+// own method: candy_wrapper's near half turn, where linear blend skinning collapses the ring
+// (matrix) and motor blending keeps it, draws more than 1 % apart from matrix yet passes, with
+// the thresholds given, against the motor-blend reference; both figures printed and in
+// metrics.json. Counts checked against the PNGs compare wrote. A frame more than 1 % from its own
+// method's reference fails ("wrong pose, scale or missing mesh"): tests/render
+// test_render_skin_judgement.cpp, on the same judgement.
+TEST(CliCompareText, SkinnedFrameIsJudgedAgainstItsOwnMethodsReference) {
+  const fs::path dir = mb::cli_test::scratchDir("compare_skin_reference");
+  const std::string frame = "compare skinned_tube --anim candy_wrapper --time 1.97 --size 64x64 ";
+  const std::string thresholds = "--fail 2/255 --failpercent 0.1 ";
+  const auto r = runMb(frame + thresholds + "--pipelines matrix,motor -o " + quoted(dir / "own"));
+  EXPECT_EQ(r.rc, 0) << r.out;
+  const int64_t m = nonBackground(dir / "own" / "matrix.png"), q = nonBackground(dir / "own" / "motor.png");
   ASSERT_GT(m, 0);
   ASSERT_GT(std::abs(double(q - m)), 0.01 * double(std::max(m, q))) << "the frame no longer separates the methods";
-  const std::string counts = "drawn-pixel counts more than 1 % apart (matrix " + std::to_string(m) + ", motor " +
-                             std::to_string(q) + ": ";
-  EXPECT_TRUE(contains(apart.out, "  drawn-pixel check: FAIL: " + counts)) << apart.out;
-  EXPECT_TRUE(contains(apart.out, "-> FAIL (" + counts)) << apart.out;
-  EXPECT_FALSE(contains(apart.out, "differently by design")) << apart.out;
-  EXPECT_FALSE(contains(apart.out, "differ by design")) << apart.out;
-  const auto j = readJson(dir / "apart" / "metrics.json");
+  EXPECT_TRUE(contains(r.out, "  motor against the motor-blend reference (its own method's: the same pose skinned on "
+                              "the CPU by the motor blend (GLM dual quaternions), drawn by matrix): ")) << r.out;
+  EXPECT_TRUE(contains(r.out, "  motor against matrix (the other method, measured, decides nothing): PSNR ")) << r.out;
+  EXPECT_TRUE(contains(r.out, "drawn pixels motor " + std::to_string(q) + ", matrix " + std::to_string(m) + " (")) << r.out;
+  EXPECT_TRUE(contains(r.out, "-> PASS (motor against the motor-blend reference: within the thresholds given)")) << r.out;
+  EXPECT_FALSE(contains(r.out, "drawn-pixel check: FAIL")) << r.out;
+  EXPECT_TRUE(contains(r.out, "differently by design")) << r.out;
+  const auto j = readJson(dir / "own" / "metrics.json");
   ASSERT_FALSE(j.is_discarded());
-  EXPECT_EQ(j["drawnCheck"]["kind"], "counts apart");
-  EXPECT_EQ(j["verdict"]["failed"], true);
-  EXPECT_EQ(j["verdict"]["text"], "fail");
-  EXPECT_EQ(j["skinningMethods"]["methodsDiffer"], true);
-  EXPECT_EQ(j["skinningMethods"]["differByDesign"], false);
-  // Thresholds that pass every pixel do not rescue it.
-  const auto lenient = runMb(frame + "--pipelines matrix,motor --fail 1 --failpercent 100 -o " + quoted(dir / "l"));
-  EXPECT_EQ(lenient.rc, 1) << lenient.out;
-  EXPECT_TRUE(contains(lenient.out, "-> FAIL (" + counts)) << lenient.out;
+  EXPECT_EQ(j["verdict"]["text"], "pass");
+  EXPECT_EQ(j["verdict"]["judgedAgainst"]["motor"], "motor-blend reference");
+  EXPECT_EQ(j["skinJudgement"]["byOwnMethod"], true);
+  ASSERT_EQ(j["skinJudgement"]["pipelines"].size(), 1u);
+  const auto& judged = j["skinJudgement"]["pipelines"][0];
+  EXPECT_EQ(judged["pipeline"], "motor");
+  EXPECT_EQ(judged["reference"], "motor-blend reference");
+  EXPECT_EQ(judged["vsMatrix"]["drawnPixels"], q);
+  EXPECT_EQ(judged["vsMatrix"]["referenceDrawnPixels"], m);
+  EXPECT_NEAR(judged["vsMatrix"]["drawnApartPercent"].get<double>(), 100.0 * std::abs(double(q - m)) / double(std::max(m, q)), 1e-9);
+  EXPECT_GE(judged["vsMatrix"]["fractionOver2"].get<double>(), 0.001) << "over the thresholds against matrix";
+  EXPECT_LE(judged["vsReference"]["drawnApartPercent"].get<double>(), 1.0);
+  EXPECT_LE(judged["thresholds"]["failPercent"].get<double>(), 0.1);
+  EXPECT_EQ(judged["thresholds"]["applied"], true);
+  EXPECT_EQ(j["drawnCheck"]["kind"], "agree");
+  EXPECT_EQ(j["skinningMethods"]["differByDesign"], true);
+  // Without thresholds the drawn-pixel check alone judges, against the same reference.
+  const auto plain = runMb(frame + "--pipelines matrix,motor -o " + quoted(dir / "plain"));
+  EXPECT_EQ(plain.rc, 0) << plain.out;
+  EXPECT_TRUE(contains(plain.out, "-> no threshold given (motor against the motor-blend reference: drawn pixels within 1 %")) << plain.out;
+  // Neither pipeline matrix: each against its own method's reference, matrix drawn for the LBS one.
+  const auto both = runMb(frame + thresholds + "--pipelines affine,motor -o " + quoted(dir / "both"));
+  EXPECT_EQ(both.rc, 0) << both.out;
+  EXPECT_TRUE(contains(both.out, "  affine against matrix (its own method's reference): identical")) << both.out;
+  EXPECT_TRUE(contains(both.out, "-> PASS (affine against matrix, motor against the motor-blend reference: within")) << both.out;
+  // One method: the two images against each other, no reference but each other.
   const auto same = runMb(frame + "--pipelines matrix,affine -o " + quoted(dir / "same"));
   ASSERT_EQ(same.rc, 0) << same.out;
   EXPECT_EQ(nonBackground(dir / "same" / "matrix.png"), nonBackground(dir / "same" / "affine.png"));
   EXPECT_FALSE(contains(same.out, "drawn-pixel check")) << same.out;
+  EXPECT_FALSE(contains(same.out, "reference")) << same.out;
+  fs::remove_all(dir);
+}
+
+// A skinned mesh drawn by two nodes cannot be pre-skinned for the motor blend's reference
+// (PreSkinnedScene::why): compare says so and judges motor against matrix, the strict reading,
+// so the frame that separates the methods fails as the two images' drawn pixels differ.
+TEST(CliCompareText, WithoutItsOwnReferenceASkinnedFrameIsJudgedAgainstMatrixAndSaysWhy) {
+  const fs::path dir = mb::cli_test::scratchDir("compare_skin_no_reference");
+  const fs::path file = mbtest::twiceDrawnTube(dir);
+  const auto r = runMb("compare " + quoted(file) + " --anim candy_wrapper --time 1.97 --size 64x64 -o " + quoted(dir / "c"));
+  EXPECT_EQ(r.rc, 1) << r.out;
+  EXPECT_TRUE(contains(r.out, "motor's own method's reference could not be made (a skinned mesh drawn by more than one "
+                              "node), so it is judged against matrix (the strict reading)")) << r.out;
+  EXPECT_TRUE(contains(r.out, "  motor not judged against the motor-blend reference (a skinned mesh drawn by more than "
+                              "one node); against matrix: ")) << r.out;
+  EXPECT_TRUE(contains(r.out, "drawn-pixel check: FAIL: drawn-pixel counts more than 1 % apart (matrix ")) << r.out;
+  const auto j = readJson(dir / "c" / "metrics.json");
+  ASSERT_FALSE(j.is_discarded());
+  EXPECT_EQ(j["skinJudgement"]["byOwnMethod"], false);
+  EXPECT_EQ(j["skinJudgement"]["pipelines"][0]["judged"], false);
+  EXPECT_EQ(j["skinJudgement"]["pipelines"][0]["why"], "a skinned mesh drawn by more than one node");
+  EXPECT_EQ(j["verdict"]["judgedAgainst"]["motor"], "matrix");
   fs::remove_all(dir);
 }
 
@@ -134,37 +179,42 @@ TEST(CliCompareText, DrawnPixelsIdenticalAndUntimedPhases) {
 
 // "compare on a skinned file between LBS and motor pipelines fails with no word that the two
 // skinning methods differ by design; units switch within one line; --hardfail 0.5 prints 'max
-// error 0.670588' beside 'max 171/255'".
+// error 0.670588' beside 'max 171/255'": the note says so, every channel difference reads in both
+// units, and a --hardfail failure against the motor-blend reference names the max error its line
+// printed.
 TEST(CliCompareText, SkinningMethodsAndOneUnitForEveryDifference) {
   const fs::path dir = mb::cli_test::scratchDir("compare_skin");
-  const auto r = runMb("compare skinned_tube --anim candy_wrapper --time 0.5 --size 128x96 --failpercent 0.1 "
-                       "--hardfail 0.01 -o " + quoted(dir));
-  EXPECT_EQ(r.rc, 1) << r.out;
+  const std::string frame = "compare skinned_tube --anim candy_wrapper --time 0.5 --size 128x96 ";
+  const auto r = runMb(frame + "--failpercent 0.1 --hardfail 0.01 -o " + quoted(dir));
+  EXPECT_EQ(r.rc, 0) << r.out;
   EXPECT_TRUE(contains(r.out, "matrix blends joints by linear blend skinning, motor by motor blending")) << r.out;
   EXPECT_TRUE(contains(r.out, "differently by design")) << r.out;
-  EXPECT_TRUE(contains(r.out, "the skinning methods differ by design, see the note)")) << r.out;
   const auto j = readJson(dir / "metrics.json");
   ASSERT_FALSE(j.is_discarded());
   EXPECT_EQ(j["skinningMethods"]["differByDesign"], true);
   // Every channel difference reads "N/255 (F of full scale)", F = N / 255, the max error in the
-  // metrics line and in a --hardfail reason alike.
+  // metrics lines and in a --hardfail reason alike.
   const std::regex both("([0-9.]+)/255 \\(([0-9.e-]+) of full scale\\)");
   int seen = 0;
   for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), both); it != std::sregex_iterator(); ++it, ++seen)
     EXPECT_NEAR(std::stod((*it)[1]) / 255.0, std::stod((*it)[2]), 1e-3 * std::stod((*it)[2]) + 1e-9) << (*it)[0];
-  EXPECT_GE(seen, 3) << r.out;  // RMSE, mean error, max error (and the reason's threshold)
+  EXPECT_GE(seen, 5) << r.out;  // RMSE, mean error, max error; the max errors against both references
   const double maxError = j["metrics"]["maxError"];
   char expect[64];
   std::snprintf(expect, sizeof expect, "max error %.0f/255", maxError * 255.0);
   EXPECT_TRUE(contains(r.out, expect)) << expect << "\n" << r.out;
-  // The --hardfail reason names the same max error text as the metrics line.
-  const auto hard = runMb("compare skinned_tube --anim candy_wrapper --time 0.5 --size 128x96 --hardfail 0.01 -o " +
-                          quoted(dir / "h"));
+  // --hardfail below one byte step fails against the reference, with the max error its line printed.
+  const auto hard = runMb(frame + "--hardfail 0.001 -o " + quoted(dir / "h"));
   EXPECT_EQ(hard.rc, 1) << hard.out;
-  const std::string line = hard.out.substr(hard.out.find("  max error ") + 12);
-  const std::string text = line.substr(0, line.find(" at ("));
-  EXPECT_TRUE(contains(hard.out, "-> FAIL (max error " + text + " exceeds --hardfail 2.55/255 (0.01 of full scale)"))
+  const std::string own = "  motor against the motor-blend reference (";
+  ASSERT_TRUE(contains(hard.out, own)) << hard.out;
+  const std::string line = hard.out.substr(hard.out.find("max error ", hard.out.find(own)) + 10);
+  const std::string text = line.substr(0, line.find(";"));
+  EXPECT_TRUE(contains(hard.out, "-> FAIL (motor against its own method's reference (motor-blend reference): max error " +
+                                     text + " exceeds --hardfail 0.255/255 (0.001 of full scale))"))
       << hard.out;
+  EXPECT_GT(j["skinJudgement"]["pipelines"][0]["vsReference"]["maxError"].get<double>(), 0.0)
+      << "the reference and motor agree to the byte: --hardfail 0.001 would pass";
   fs::remove_all(dir);
 }
 

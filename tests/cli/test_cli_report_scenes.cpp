@@ -51,15 +51,36 @@ TEST(CliReportAnim, SeveralAnimationsByNameAndIndexCommaOrRepeated) {
   EXPECT_TRUE(fs::is_regular_file(dir / candy["file"].get<std::string>()));
   EXPECT_TRUE(fs::is_regular_file(dir / bend["file"].get<std::string>()));
   EXPECT_EQ(tube["animated"], tube["animations"][0]["animated"]);
-  // LBS (matrix) against motor blending: summed apart from the equivalence figures and labelled.
+  // LBS (matrix) against motor blending: every skinned frame judged against motor's own method's
+  // reference, none set aside; the methods' difference from matrix measured apart and labelled.
   EXPECT_EQ(tube["pipelines"]["matrix"]["skinBlend"], "linear blend skinning");
   EXPECT_EQ(tube["pipelines"]["motor"]["skinBlend"], "motor blending");
   EXPECT_EQ(r["summary"]["skinningMethodImages"]["motor"]["comparedFrames"], 6);
-  EXPECT_EQ(r["summary"]["images"]["motor"]["comparedFrames"], 0);
+  const json& images = r["summary"]["images"]["motor"];
+  EXPECT_EQ(images["comparedFrames"], 6);
+  EXPECT_EQ(images["judgedAgainst"], json({{"motor-blend reference", 6}}));
+  EXPECT_EQ(images["notJudgedFrames"], 0);
+  for (const json& f : tube["frames"]) {
+    EXPECT_EQ(f["skinJudgement"]["motor"]["reference"], "motor-blend reference");
+    EXPECT_EQ(f["skinJudgement"]["motor"]["judged"], true);
+    EXPECT_EQ(f["skinJudgement"]["motor"]["vsMatrix"]["drawnPixels"], f["drawnPixels"]["motor"]);
+    EXPECT_EQ(f["skinJudgement"]["motor"]["vsMatrix"]["referenceDrawnPixels"], f["drawnPixels"]["matrix"]);
+    EXPECT_TRUE(f["referenceMetrics"]["motor"].is_object()) << f.dump(1).substr(0, 1000);
+    EXPECT_EQ(f["drawnCheck"]["motor"]["against"], "motor-blend reference");
+  }
+  // The answer's image row: its figures count the skinned frames, with their reference.
+  EXPECT_EQ(r["figures"]["image.identical_frames.motor"]["n"], 6);
+  EXPECT_EQ(r["figures"]["image.skinned_frames_own_reference.motor"]["value"], 6);
+  EXPECT_EQ(r["figures"]["image.frames_not_judged.motor"]["value"], 0);
   const std::string md = readText(dir / "report.md");
+  EXPECT_NE(md.find("frames identical (of them <span title=\"image.skinned_frames_own_reference.motor\">6 frames</span> "
+                    "skinned, judged against motor's own skinning method's reference, the motor-blend reference, not "
+                    "matrix)"), std::string::npos) << md.substr(0, 3000);
   EXPECT_NE(md.find("candy_wrapper, t = 0.667 s"), std::string::npos);
   EXPECT_NE(md.find("the methods' expected difference"), std::string::npos);
   EXPECT_NE(md.find("| motor (skinning method difference) | "), std::string::npos);
+  EXPECT_NE(md.find("| motor vs motor-blend reference (its own skinning method's) | "), std::string::npos);
+  EXPECT_NE(md.find("(6 skinned against the motor-blend reference)"), std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -92,6 +92,56 @@ TEST(ReportAnswer, EveryLineQuotesItsFiguresAsReportJsonHasThem) {
   EXPECT_NE(line(lines, "image").text.find("1 of 3 frames identical"), std::string::npos);
 }
 
+// A skinned scene whose pipelines blend joints by different methods: each frame judged against
+// motor's own method's reference (skinJudgement, referenceMetrics), not set aside. Its frames:
+// 30 dB from matrix but 55 dB from the motor-blend reference; one whose reference could not be
+// made (counted, with its reason); and a scene of a report made before such judgements (counted).
+TEST(ReportAnswer, SkinnedFramesAreJudgedByTheirOwnMethodAndCounted) {
+  json r = syntheticReport(false);
+  const json skinnedScene = {{"space", "Euclidean"}, {"vertexMix", {{"skinned", 100}}},
+                             {"pipelines", {{"matrix", {{"skinBlend", "linear blend skinning"}}},
+                                            {"motor", {{"skinBlend", "motor blending"}}}}}};
+  const json vsMatrix = {{"identical", false}, {"psnr", 30}, {"flip", {{"mean", 0.2}}}};
+  json tube = skinnedScene;
+  tube["id"] = "tube";
+  tube["frames"] = {
+      {{"time", 0}, {"metrics", {{"motor", vsMatrix}}},
+       {"skinJudgement", {{"motor", {{"reference", "motor-blend reference"}, {"judged", true}}}}},
+       {"referenceMetrics", {{"motor", {{"identical", false}, {"psnr", 55}, {"flip", {{"mean", 0.01}}}}}}}},
+      {{"time", 1}, {"metrics", {{"motor", vsMatrix}}},
+       {"skinJudgement", {{"motor", {{"reference", "motor-blend reference"}, {"judged", false},
+                                     {"why", "a skinned mesh drawn by more than one node"}}}}}}};
+  json old = skinnedScene;
+  old["id"] = "old";
+  old["frames"] = {{{"time", 0}, {"metrics", {{"motor", vsMatrix}}}}};
+  r["scenes"].push_back(tube);
+  r["scenes"].push_back(old);
+  r["summary"]["images"]["motor"]["notJudged"] = {"tube t=1: not judged against the motor-blend reference: a skinned "
+                                                  "mesh drawn by more than one node"};
+  addAnswerFigures(r);
+  // Worst PSNR 55 (the reference's), not 30 (matrix's); 4 frames judged: three rigid, one skinned.
+  EXPECT_DOUBLE_EQ(figures::figureNamed(r, "image.worst_psnr.motor")->value, 55);
+  EXPECT_EQ(figures::figureNamed(r, "image.identical_frames.motor")->n, 4);
+  EXPECT_DOUBLE_EQ(figures::figureNamed(r, "image.skinned_frames_own_reference.motor")->value, 1);
+  const auto notJudged = figures::figureNamed(r, "image.frames_not_judged.motor");
+  EXPECT_DOUBLE_EQ(notJudged->value, 2);
+  EXPECT_EQ(notJudged->n, 6);
+  EXPECT_NE(notJudged->definition.find("not judged against the motor-blend reference: a skinned mesh drawn by more "
+                                       "than one node"), std::string::npos) << notJudged->definition;
+  EXPECT_NE(notJudged->definition.find("made before skinned frames were judged so"), std::string::npos);
+  EXPECT_DOUBLE_EQ(figures::figureNamed(r, "image.flip_mean_worst.motor")->value, 0.01);
+  const AnswerLine image = line(answerLines(r), "image");
+  EXPECT_NE(image.text.find("1 of 4 frames identical (of them 1 frames skinned, judged against motor's own skinning "
+                            "method's reference, the motor-blend reference, not matrix)"), std::string::npos) << image.text;
+  EXPECT_NE(image.text.find("; 2 frames not judged (first: tube t=1: not judged against the motor-blend reference: a "
+                            "skinned mesh drawn by more than one node)"), std::string::npos) << image.text;
+  EXPECT_EQ(image.verdict, "equivalent (every differing frame >= 50 dB); 2 frames not judged");
+  // Only skinned frames, none judged: said so, not "not compared".
+  json none = {{"settings", {{"pipelines", {"matrix", "motor"}}}}, {"scenes", json::array({old})}};
+  addAnswerFigures(none);
+  EXPECT_EQ(line(answerLines(none), "image").verdict, "not judged (1 frames not judged)");
+}
+
 TEST(ReportAnswer, VerdictsFollowTheFigures) {
   const std::vector<AnswerLine> cpu = answerLines(syntheticReport(false));
   EXPECT_EQ(line(cpu, "bytes").verdict, "motor side cheaper: it fetches fewer bytes");
