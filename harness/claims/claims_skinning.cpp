@@ -197,41 +197,21 @@ std::vector<double> localVolumes(const Scene& s, const motor::Rig& rig, int node
 
 }  // namespace
 
-std::vector<Claim> skinnedFileVolumeClaims(const std::string& corpusDir) {
+Result<nlohmann::json> measureSkinnedFileVolumes(const std::string& corpusDir) {
   namespace fs = std::filesystem;
-  Claim c{"skinning_volume_file", "Skinning",
-          "motor skinning keeps volume where linear blend skinning loses it, on a real skinned glTF file"};
-  c.paper = "implied (the dual-quaternion skinning pattern)";
-  c.paperValue = nullptr;
-  c.method = "every skinned mesh of every .gltf/.glb directly in " + corpusDir +
-             ", every animation at 64 times over its duration, skinned on the CPU from both pipelines' palettes "
-             "(as skinning_volume). A closed mesh (after welding equal positions): enclosed volume (signed tetrahedra) "
-             "posed / at the rest pose, per method. An open mesh: the local volume, det of the skinning map's Jacobian "
-             "at each vertex (finite differences), posed / rest. Verdict: reproduced when the motor stays within 5 % "
-             "and LBS does not; differs when the motor leaves 5 %; inconclusive when neither does (the file's motion "
-             "does not pinch LBS).";
   std::error_code ec;
-  if (corpusDir.empty() || !fs::is_directory(corpusDir, ec)) {
-    c.verdict = Verdict::NotMeasurable;
-    c.measured = "-";
-    c.measuredValue = nullptr;
-    c.verdictText = "not measurable here: no corpus folder (" + (corpusDir.empty() ? std::string("none given") : corpusDir + " not found") + ")";
-    return {c};
-  }
+  if (corpusDir.empty() || !fs::is_directory(corpusDir, ec))
+    return Result<nlohmann::json>::fail("no corpus folder (" + (corpusDir.empty() ? std::string("none given") : corpusDir + " not found") + ")");
   std::vector<std::string> files;
   for (const auto& e : fs::directory_iterator(corpusDir, ec)) {
     const std::string ext = e.path().extension().string();
     if (e.is_regular_file() && (ext == ".gltf" || ext == ".glb")) files.push_back(e.path().string());
   }
   std::sort(files.begin(), files.end());
-  nlohmann::json per = nlohmann::json::object();
-  std::string text;
-  Range lbsAll, motorAll;
-  int measured = 0;
-  // Per file: meshes measured closed / open and the ranges over them (the text; JSON per mesh).
-  struct FileSum { int closed = 0, open = 0; Range lbs, mot; };
-  std::map<std::string, FileSum> byFile;
+  nlohmann::json out = {{"schema", kSkinVolumesSchema}, {"folder", corpusDir}, {"files", nlohmann::json::array()},
+                        {"meshes", nlohmann::json::array()}};
   for (const std::string& f : files) {
+    out["files"].push_back(fs::path(f).filename().string());
     auto scene = loadScene(f);
     if (!scene || scene->skins.empty() || scene->animations.empty()) continue;
     const motor::Rig rig = motor::buildRig(*scene);
@@ -271,23 +251,78 @@ std::vector<Claim> skinnedFileVolumeClaims(const std::string& corpusDir) {
             }
           }
         if (lbs.hi < lbs.lo || mot.hi < mot.lo) continue;
-        ++measured;
-        const std::string id = fs::path(f).filename().string() + "/" + (mesh.name.empty() ? "mesh" + std::to_string(nd.mesh) : mesh.name) +
-                               (mesh.primitives.size() > 1 ? "#" + std::to_string(pi) : "");
-        per[id] = {{"measure", closed ? "enclosed volume" : "local volume (Jacobian det)"},
-                   {"lbs", {{"min", lbs.lo}, {"max", lbs.hi}}}, {"motor", {{"min", mot.lo}, {"max", mot.hi}}}};
-        FileSum& fsum = byFile[fs::path(f).filename().string()];
-        (closed ? fsum.closed : fsum.open) += 1;
-        fsum.lbs.add(lbs.lo), fsum.lbs.add(lbs.hi), fsum.mot.add(mot.lo), fsum.mot.add(mot.hi);
-        lbsAll.add(lbs.lo), lbsAll.add(lbs.hi), motorAll.add(mot.lo), motorAll.add(mot.hi);
+        const std::string file = fs::path(f).filename().string();
+        out["meshes"].push_back(
+            {{"id", file + "/" + (mesh.name.empty() ? "mesh" + std::to_string(nd.mesh) : mesh.name) +
+                        (mesh.primitives.size() > 1 ? "#" + std::to_string(pi) : "")},
+             {"file", file}, {"closed", closed}, {"measure", closed ? "enclosed volume" : "local volume (Jacobian det)"},
+             {"lbs", {{"min", lbs.lo}, {"max", lbs.hi}}}, {"motor", {{"min", mot.lo}, {"max", mot.hi}}}});
       }
     }
   }
-  if (!measured) {
+  return out;
+}
+
+namespace {
+
+Claim skinnedFileVolumeRow() {
+  Claim c{"skinning_volume_file", "Skinning",
+          "motor skinning keeps volume where linear blend skinning loses it, on a real skinned glTF file"};
+  c.paper = "implied (the dual-quaternion skinning pattern)";
+  c.paperValue = nullptr;
+  return c;
+}
+
+std::string volumeMethod(const std::string& folder, const std::string& keptIn) {
+  return "every skinned mesh of every .gltf/.glb directly in " + folder +
+         (keptIn.empty() ? std::string() : " (its figures kept in " + keptIn + ")") +
+         ", every animation at 64 times over its duration, skinned on the CPU from both pipelines' palettes "
+         "(as skinning_volume). A closed mesh (after welding equal positions): enclosed volume (signed tetrahedra) "
+         "posed / at the rest pose, per method. An open mesh: the local volume, det of the skinning map's Jacobian "
+         "at each vertex (finite differences), posed / rest. Verdict: reproduced when the motor stays within 5 % "
+         "and LBS does not; differs when the motor leaves 5 %; inconclusive when neither does (the file's motion "
+         "does not pinch LBS).";
+}
+
+}  // namespace
+
+std::vector<Claim> skinnedFileVolumeClaims(const std::string& corpusDir) {
+  auto measured = measureSkinnedFileVolumes(corpusDir);
+  if (measured) return skinnedFileVolumeClaimsFrom(*measured);
+  Claim c = skinnedFileVolumeRow();
+  c.method = volumeMethod(corpusDir, "");
+  c.verdict = Verdict::NotMeasurable;
+  c.measured = "-";
+  c.measuredValue = nullptr;
+  c.verdictText = "not measurable here: " + measured.error();
+  return {c};
+}
+
+std::vector<Claim> skinnedFileVolumeClaimsFrom(const nlohmann::json& volumes, const std::string& keptIn) {
+  Claim c = skinnedFileVolumeRow();
+  const std::string folder = volumes.value("folder", std::string("?"));
+  c.method = volumeMethod(folder, keptIn);
+  nlohmann::json per = nlohmann::json::object();
+  std::string text;
+  Range lbsAll, motorAll;
+  // Per file: meshes measured closed / open and the ranges over them (the text; JSON per mesh).
+  struct FileSum { int closed = 0, open = 0; Range lbs, mot; };
+  std::map<std::string, FileSum> byFile;
+  const nlohmann::json meshes = volumes.value("meshes", nlohmann::json::array());
+  for (const nlohmann::json& m : meshes) {
+    const Range lbs{m["lbs"]["min"].get<double>(), m["lbs"]["max"].get<double>()};
+    const Range mot{m["motor"]["min"].get<double>(), m["motor"]["max"].get<double>()};
+    per[m["id"].get<std::string>()] = {{"measure", m["measure"]}, {"lbs", m["lbs"]}, {"motor", m["motor"]}};
+    FileSum& fsum = byFile[m["file"].get<std::string>()];
+    (m.value("closed", false) ? fsum.closed : fsum.open) += 1;
+    fsum.lbs.add(lbs.lo), fsum.lbs.add(lbs.hi), fsum.mot.add(mot.lo), fsum.mot.add(mot.hi);
+    lbsAll.add(lbs.lo), lbsAll.add(lbs.hi), motorAll.add(mot.lo), motorAll.add(mot.hi);
+  }
+  if (meshes.empty()) {
     c.verdict = Verdict::NotMeasurable;
     c.measured = "-";
     c.measuredValue = nullptr;
-    c.verdictText = "not measurable here: no animated skinned mesh in " + corpusDir;
+    c.verdictText = "not measurable here: no animated skinned mesh in " + folder;
     return {c};
   }
   for (const auto& [file, fsum] : byFile)

@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/claims/claims_model.h"
+#include "pipelines/result.h"
 #include "harness/claims/claims_uploads.h"
 
 namespace mb::claims {
@@ -126,8 +127,20 @@ std::vector<Claim> handednessClaims();
 // Motor blend vs slerp over every rotation channel of the built-in animations.
 std::vector<Claim> blendingClaims();
 
-// Volume kept by motor skinning vs LBS on the skinned files directly in `corpusDir`
-// ("not measurable here" when the folder is absent or has none).
+// Volume kept by motor skinning vs LBS on the skinned files directly in `corpusDir`: JSON
+// kSkinVolumesSchema {"schema", "folder", "files": [every .gltf/.glb name read], "meshes":
+// [{"id" (file/mesh[#primitive]), "file", "closed", "measure", "lbs": {"min", "max"}, "motor":
+// {"min", "max"}}]} (posed / rest volume over every time), or why not (no such folder). Written
+// by `claims --skin-volumes-out` so that a run without the corpus reads it (--skin-volumes).
+inline constexpr const char* kSkinVolumesSchema = "motorbench-skin-volumes/1";
+Result<nlohmann::json> measureSkinnedFileVolumes(const std::string& corpusDir);
+
+// The row judged on such a measurement; `keptIn`: the file its figures are kept in ("" when
+// measured only for this row), named in the method.
+std::vector<Claim> skinnedFileVolumeClaimsFrom(const nlohmann::json& volumes, const std::string& keptIn = "");
+
+// Measured over `corpusDir` and judged ("not measurable here" when the folder is absent or has
+// no animated skinned mesh).
 std::vector<Claim> skinnedFileVolumeClaims(const std::string& corpusDir);
 
 }  // namespace mb::claims

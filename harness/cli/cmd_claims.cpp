@@ -1,5 +1,6 @@
 // `motorbench claims [-o FILE] [--json FILE] [--report report.json] [--bench-json FILE]
-//   [--isa FILE] [--corpus DIR] [--scene-graphs FILE|DIR] [--frames N] [--no-run]`: every
+//   [--isa FILE] [--corpus DIR] [--scene-graphs FILE|DIR] [--skin-volumes FILE |
+//   --skin-volumes-out FILE] [--frames N] [--no-run]`: every
 // quantitative claim of the paper with the paper's value, the value measured now, how, and a
 // verdict; plus our own rows (baselines, vs the strongest matrix variant, curved space), counted
 // apart. Op counts and uploads are always measured here. Speed comes from a report (its kernel
@@ -9,7 +10,9 @@
 // opens no GL context, renders and times nothing (issue 35): a figure the report lacks is "not
 // measurable here" with the reason. Scene
 // statistics come from the report's scenes (else the built-in scenes) plus --corpus, or from
-// the scene-graph corpus of --scene-graphs.
+// the scene-graph corpus of --scene-graphs. The skinned real-file volumes are measured over
+// --corpus (and kept in --skin-volumes-out), or read from such a file (--skin-volumes): a clone
+// without the corpus judges the row on the figures measured where it was present.
 #include <unistd.h>
 
 #include <cstdio>
@@ -202,6 +205,28 @@ claims::SpeedInputs speedInputs(const Args& args, const json& report, json& sour
   return in;
 }
 
+// The skinned real-file volume row: judged on the figures of --skin-volumes FILE, else measured
+// over `corpusDir` (and written to --skin-volumes-out FILE when given); an error names the file.
+Result<std::vector<claims::Claim>> skinnedFileVolumeRows(const Args& args, const std::string& corpusDir) {
+  using Rows = Result<std::vector<claims::Claim>>;
+  if (auto in = args.get("skin-volumes")) {
+    std::ifstream f(*in);
+    if (!f) return Rows::fail("--skin-volumes " + *in + ": cannot read");
+    const json v = json::parse(f, nullptr, false);
+    if (v.is_discarded() || !v.is_object() || v.value("schema", "") != claims::kSkinVolumesSchema ||
+        !v.value("meshes", json()).is_array())
+      return Rows::fail("--skin-volumes " + *in + ": not a " + claims::kSkinVolumesSchema + " JSON (claims --skin-volumes-out)");
+    return claims::skinnedFileVolumeClaimsFrom(v, *in);
+  }
+  if (auto out = args.get("skin-volumes-out")) {
+    auto v = claims::measureSkinnedFileVolumes(corpusDir);
+    if (!v) return Rows::fail("--skin-volumes-out: nothing to write: " + v.error());
+    if (Status ok = writeTextFile(*out, report::dumpJson(*v, 1) + "\n"); !ok) return Rows::fail(ok.error());
+    return claims::skinnedFileVolumeClaimsFrom(*v, *out);
+  }
+  return claims::skinnedFileVolumeClaims(corpusDir);
+}
+
 // Every row of one family, marked as the paper's claim or one of our own rows.
 void add(std::vector<claims::Claim>& all, std::vector<claims::Claim> rows, const char* own = nullptr) {
   for (claims::Claim& c : rows) {
@@ -211,13 +236,17 @@ void add(std::vector<claims::Claim>& all, std::vector<claims::Claim> rows, const
 }
 
 int runClaims(const std::vector<std::string>& argv) {
-  const Args args(argv, {{"o", "output", "json", "report", "corpus-report", "bench-json", "isa", "corpus", "scene-graphs", "frames", "gpu"}, {"no-run"}, {}});
+  const Args args(argv, {{"o", "output", "json", "report", "corpus-report", "bench-json", "isa", "corpus", "scene-graphs",
+                                "skin-volumes", "skin-volumes-out", "frames", "gpu"},
+                               {"no-run"},
+                               {}});
   if (!args.error().empty()) return fail(args.error());
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
   if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());  // the report it runs inherits MB_GPU
   args.integer("frames", 20, 1, 100000);  // checked here; speedInputs reads it
-  // Both outputs are checked (folders created) before minutes of measuring.
-  for (const char* key : {"json", "o", "output"})
+  if (args.get("skin-volumes") && args.get("skin-volumes-out")) return fail("give --skin-volumes or --skin-volumes-out, not both");
+  // Every output is checked (folders created) before minutes of measuring.
+  for (const char* key : {"json", "o", "output", "skin-volumes-out"})
     if (auto path = args.get(key))
       if (Status ok = prepareOutputFile(std::string(key) == "o" ? "-o" : std::string("--") + key, *path); !ok)
         return fail(ok.error());
@@ -274,7 +303,9 @@ int runClaims(const std::vector<std::string>& argv) {
   add(all, claims::corpusClaims(corpus));
   say("baselines (counted and SPIR-V)");
   add(all, claims::skinningClaims());
-  add(all, claims::skinnedFileVolumeClaims(corpus.corpusDir));
+  auto fileVolumes = skinnedFileVolumeRows(args, corpus.corpusDir);
+  if (!fileVolumes) return fail(fileVolumes.error());
+  add(all, fileVolumes.take());
   add(all, claims::baselineClaims(), "baseline");
   say("curved space (uploads, ops, frame timing, drift)");
   add(all, claims::curvedClaims(run, int(args.integer("frames", 20, 1, 100000)),
@@ -328,7 +359,7 @@ int runClaims(const std::vector<std::string>& argv) {
 
 MB_COMMAND(claims, "claims",
            "[-o FILE] [--json FILE] [--report report.json] [--corpus-report FILE] [--bench-json FILE] [--isa FILE] [--corpus DIR] "
-           "[--scene-graphs FILE|DIR] [--frames N] [--no-run] [--gpu auto|llvmpipe|N]",
+           "[--scene-graphs FILE|DIR] [--skin-volumes FILE | --skin-volumes-out FILE] [--frames N] [--no-run] [--gpu auto|llvmpipe|N]",
            "every quantitative claim of the paper: paper value, measured value, method, verdict (Markdown/JSON)",
            mb::runClaims);
 MB_COMMAND_HELP(claims, "claims",
@@ -343,7 +374,11 @@ MB_COMMAND_HELP(claims, "claims",
                "  --scene-graphs F   scale statistics of a corpus: an inspect --json file or a folder, e.g.\n"
                "                     ../shared/corpus-graph\n"
                "  --corpus DIR       the real glTF files for the statistics and skinning rows (default ../shared/corpus)\n"
+               "  --skin-volumes-out F  write the skinned-file volumes measured over --corpus to F (the row names F)\n"
+               "  --skin-volumes F   judge the skinned-file volume row on F (written by --skin-volumes-out where the\n"
+               "                     corpus was present) instead of measuring --corpus\n"
                "  --frames N         frames per pipeline when claims times scenes itself (default 20)\n"
+               MB_GPU_OPTION_HELP
                "  --no-run           run no benchmark and time no frame (no curved-space\n"
                "                     frame timing): speed rows come only from --report or\n"
                "                     --bench-json (else \"not measurable here\"). Everything else is still measured:\n"

@@ -269,7 +269,8 @@ TEST(ClaimsSkinning, EnclosedVolumeAndClosedness) {
 }
 
 // Without a corpus the real-file row says so; with one (MB_CORPUS_DIR, else ../shared/corpus)
-// the motor-skinned volume of RiggedSimple stays within 5 % of its rest volume at every time.
+// the motor-skinned volume of RiggedSimple stays within 5 % of its rest volume at every time,
+// and the measurement read back from its JSON judges the same.
 TEST(ClaimsSkinning, RealFileRowSkipsCleanlyOrMeasuresRiggedSimple) {
   const claims::Claim none = only(claims::skinnedFileVolumeClaims("/nonexistent/corpus"), "skinning_volume_file");
   EXPECT_EQ(none.verdict, claims::Verdict::NotMeasurable);
@@ -277,7 +278,13 @@ TEST(ClaimsSkinning, RealFileRowSkipsCleanlyOrMeasuresRiggedSimple) {
   const char* env = std::getenv("MB_CORPUS_DIR");
   const std::filesystem::path dir = env ? env : std::filesystem::path(MB_SOURCE_DIR) / ".." / "shared" / "corpus";
   if (!std::filesystem::exists(dir / "RiggedSimple.gltf")) GTEST_SKIP() << "no corpus at " << dir;
-  const claims::Claim c = only(claims::skinnedFileVolumeClaims(dir.string()), "skinning_volume_file");
+  auto measured = claims::measureSkinnedFileVolumes(dir.string());
+  ASSERT_TRUE(measured) << measured.error();
+  const claims::Claim c = only(claims::skinnedFileVolumeClaimsFrom(*measured), "skinning_volume_file");
+  // Kept in a file (claims --skin-volumes-out) and read back, the row is the same to the bit.
+  const claims::Claim read = only(claims::skinnedFileVolumeClaimsFrom(json::parse(measured->dump(1))), "skinning_volume_file");
+  EXPECT_EQ(read.measuredValue, c.measuredValue);
+  EXPECT_EQ(read.verdictText, c.verdictText);
   const json& meshes = c.measuredValue["meshes"];
   bool rigged = false;
   for (const auto& [id, m] : meshes.items()) {
