@@ -275,10 +275,13 @@ class SurveyTiePixels(unittest.TestCase):
     def test_normal_torus_has_at_most_a_handful(self):
         doc = self.survey("normal_torus", "--pipelines", "motor")
         ties = doc["frames"][0]["ties"]
-        self.assertLessEqual(ties["pixels"], 12)  # measured: 4, all 1-byte shading roundings
+        motor = doc["pipelines"]["motor"]["frames"][0]
+        # The probe's jitter is 16 float steps of each primitive's rounding magnitude
+        # (harness/render/rounding_magnitude.h), at most 3e-4 px here: it may flip only pixels that
+        # rounding decides, a sliver of the drawn ones (measured: 17 of 3412).
+        self.assertLessEqual(ties["pixels"], motor["drawnPixels"] // 100)
         self.assertEqual(len(ties["set"]), ties["pixels"])
         self.assertTrue(all(0 <= i < 128 * 128 for i in ties["set"]))
-        motor = doc["pipelines"]["motor"]["frames"][0]
         self.assertLessEqual(motor["differingNotTies"], motor["differingPixels"])
 
     @unittest.skipUnless(os.path.isdir(CORPUS), "../shared/corpus-wide absent (a clone without ../shared)")
