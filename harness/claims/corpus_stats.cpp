@@ -50,6 +50,10 @@ std::vector<std::string> fileKinds(const json& files) {
   std::map<std::string, std::map<std::string, std::string>> manifests;  // folder -> kinds
   std::vector<std::string> out;
   for (const json& f : files) {
+    if (f.value("kind", json()).is_string()) {  // written beside the file's figures (addCorpusAggregates)
+      out.push_back(f["kind"].get<std::string>());
+      continue;
+    }
     const fs::path p(f.value("input", f.value("file", "")));  // inspect: "input" is the path given
     const std::string dir = p.parent_path().empty() ? "." : p.parent_path().string();
     if (!manifests.count(dir)) manifests[dir] = readManifestKinds(dir);
@@ -76,8 +80,11 @@ json aggregateByKind(const json& files) {
   return out;
 }
 
-void addCorpusAggregates(const json& files, json& aggregate) {
-  if (const json kinds = aggregateByKind(files); !kinds.is_null()) aggregate["byKind"] = kinds;
+void addCorpusAggregates(json& files, json& aggregate) {
+  const std::vector<std::string> kinds = fileKinds(files);
+  for (size_t i = 0; i < kinds.size(); ++i)
+    if (!kinds[i].empty()) files[i]["kind"] = kinds[i];
+  if (const json byKind = aggregateByKind(files); !byKind.is_null()) aggregate["byKind"] = byKind;
   aggregate["models"] = toJson(distinctModels(files));
 }
 

@@ -183,6 +183,17 @@ TEST(ClaimsCorpus, VerdictsCountTheGivenFilesByKind) {
   // A sample too small to resolve 0.5 % is not judged.
   in.sceneGraphs = json::array({files[0], files[1]});
   EXPECT_EQ(only(claims::corpusClaims(in), "animated_scale_corpus").verdict, claims::Verdict::NotMeasurable);
+  // The kinds travel with the files (inspect writes each one's "kind"): with the manifest gone,
+  // as in a clone reading results/corpus-graph.json, the fixtures are still left out.
+  json annotated = files, aggregate = json::object();
+  claims::addCorpusAggregates(annotated, aggregate);
+  EXPECT_EQ(annotated[0]["kind"], "asset");
+  EXPECT_EQ(annotated[249]["kind"], "test");
+  fs::remove(dir / "MANIFEST.tsv");
+  EXPECT_TRUE(claims::aggregateByKind(files).is_null());
+  EXPECT_EQ(claims::aggregateByKind(annotated)["test"]["loaded"], 50);
+  in.sceneGraphs = annotated;
+  EXPECT_EQ(only(claims::corpusClaims(in), "animated_scale_corpus").measuredValue["judgedFiles"], 200);
   fs::remove_all(dir);
 }
 

@@ -59,6 +59,17 @@ class ClaimsWithoutShared(unittest.TestCase):
     def test_real_file_rows_are_measured_from_the_committed_inputs(self):
         for cid in REAL_FILE_ROWS:
             self.assertNotEqual(self.rows[cid]["verdict"], "not measurable here", cid)
+        # The scale rows judge the same models: the kinds (test fixtures left out) travel in
+        # corpus-graph.json, not in ../shared's MANIFEST.tsv. (Each kind's full inspect aggregate
+        # is compared by scripts/results_diff.py after a run.)
+        for cid in ("animated_scale_corpus", "nonuniform_scale_leaves"):
+            now, committed = self.rows[cid]["measuredValue"], self.committed[cid]["measuredValue"]
+            for key in committed:
+                if key == "byKind":
+                    self.assertEqual(sorted(now[key] or {}), sorted(committed[key] or {}), cid)
+                elif not isinstance(committed[key], dict):
+                    self.assertEqual(now[key], committed[key], f"{cid}: {key}")
+            self.assertEqual(self.rows[cid]["verdictText"], self.committed[cid]["verdictText"], cid)
         # Read, not measured: the skinned-file volumes are the committed row's, value for value,
         # and the file is named in the row's method.
         row = self.rows["skinning_volume_file"]
