@@ -203,6 +203,39 @@ Figure sceneFrameTimeFigure(const std::string& name, const json& config, const s
   return f;
 }
 
+// Per pipeline, the exact fallback it drew (PipelineStats; each scene's most in any frame drawn,
+// summed over the Euclidean scenes): scenes, draws (rigid + skinned), joints and vertices.
+void fallbackFigures(json& out, const std::vector<json>& scenes, const std::vector<std::string>& pipelines) {
+  for (const std::string& p : pipelines) {
+    double draws = 0, joints = 0, vertices = 0, taking = 0;
+    int n = 0;
+    for (const json& s : scenes) {
+      const json& fb = at(s, {"pipelines", p.c_str(), "fallbacks"});
+      if (!euclidean(s) || !fb.is_object()) continue;
+      ++n;
+      const double d = fb.value("linearFallbackDraws", 0.0) + fb.value("skinFallbackDraws", 0.0);
+      draws += d, joints += fb.value("skinFallbackJoints", 0.0), vertices += fb.value("fallbackVertices", 0.0);
+      taking += d > 0;
+    }
+    auto put = [&](const std::string& what, double value, const std::string& unit, const std::string& definition) {
+      Figure f;
+      f.name = "fallback." + what + "." + p;
+      f.value = value;
+      f.unit = unit;
+      f.statistic = "sum over scenes of each scene's most in any frame drawn";
+      f.scope = "Euclidean scenes";
+      f.device = "counted by the pipeline (PipelineStats)";
+      f.n = n;
+      f.definition = definition;
+      figures::put(out, f);
+    };
+    put("scenes", taking, "scenes", "scenes in which " + p + " drew with its exact fallback (a transform that is not a similarity)");
+    put("draws", draws, "draws", "draws " + p + " made with its exact fallback (rigid: a general linear part; skinned: per-joint linear parts)");
+    put("joints", joints, "joints", "joints of the palettes " + p + "'s skin fallback draws used");
+    put("vertices", vertices, "vertices", "vertices " + p + "'s exact fallback draws drew");
+  }
+}
+
 json reportFigures(const json& machine, const json& settings, const std::vector<json>& scenes, const json& ops,
                    const json& kernels) {
   json out = json::object();
@@ -214,6 +247,7 @@ json reportFigures(const json& machine, const json& settings, const std::vector<
                "shading attributes per vertex (position, frame, uv)");
   memoryFigure(out, scenes, pipelines, "floatsPerTransform", "floats_per_transform", "floats",
                "per-draw transform uniforms");
+  fallbackFigures(out, scenes, pipelines);
   opsFigures(out, ops);
   kernelFigures(out, kernels, machine.value("cpu", "") + " (" + std::to_string(machine.value("logicalCores", 0)) +
                                   " logical cores)");

@@ -13,6 +13,7 @@
 #include "harness/document/report_layout_common.h"
 #include "harness/document/report_layout_sections.h"
 #include "harness/document/report_marks.h"
+#include "harness/figures/figure.h"
 
 namespace mb::report {
 namespace {
@@ -132,6 +133,18 @@ void summary(Document& d, const json& r) {
       lines.push_back(pipes[i] + " against " + pipes[0] + " itself on the skinned scenes where one blends joints with "
                       "linear blend skinning and the other with motors: the methods' expected difference (measured, "
                       "not an error of either, and not what judges these frames): " + imageLine(sm) + ".");
+  }
+  for (const std::string& p : pipes) {  // the exact fallback, where a pipeline took it
+    const auto scenes = figures::figureNamed(r, "fallback.scenes." + p);
+    if (!scenes || !(scenes->value > 0)) continue;
+    auto text = [&](const std::string& what) {
+      const auto f = figures::figureNamed(r, "fallback." + what + "." + p);
+      return f ? figureMark(f->name, figures::valueText(*f)) : std::string("-");
+    };
+    lines.push_back(p + " drew with its exact fallback (transforms that are not similarities, drawn exactly) in " +
+                    text("scenes") + " of " + std::to_string(scenes->n) + ": " + text("draws") + ", " + text("joints") +
+                    ", " + text("vertices") + " (each scene's most in any frame, summed); its cost is in the frame "
+                    "times and ops per vertex above.");
   }
   const json& ft = sum["frameTimeRatio"];
   lines.push_back("Frame time motor / matrix (median over Euclidean scenes of each scene's median of per-frame "

@@ -18,7 +18,10 @@ std::string g3(double v) {
 std::string withUnit(double v, const std::string& unit) {
   if (!std::isfinite(v)) return "-";
   if (unit == "x") return g3(v) + "x";
-  return unit.empty() ? g3(v) : g3(v) + " " + unit;
+  // A count (a whole number of draws, vertices, files) reads as the integer it is.
+  const bool count = v == std::floor(v) && std::fabs(v) >= 1000 && std::fabs(v) < 1e15;
+  const std::string text = count ? std::to_string(static_cast<long long>(v)) : g3(v);
+  return unit.empty() ? text : text + " " + unit;
 }
 
 json number(double v) { return std::isfinite(v) ? json(v) : json(); }

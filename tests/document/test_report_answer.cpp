@@ -7,6 +7,7 @@
 #include "harness/claims/claims_layout.h"
 #include "harness/document/report_answer.h"
 #include "harness/document/report_answer_figures.h"
+#include "harness/document/report_figures.h"
 #include "harness/document/report_format.h"
 #include "harness/figures/figure.h"
 
@@ -213,6 +214,47 @@ TEST(ReportAnswer, ClaimsOpenWithTheReportsAnswerLines) {
   const std::vector<std::string> after = answerRows(toMarkdown(withAnswerFirst(claims::claimsDocument(claimsJson), changed, "report.md")));
   EXPECT_NE(after, fromReport);
   EXPECT_EQ(after, answerRows(reportAnswerMd(changed)));
+}
+
+}  // namespace
+}  // namespace mb::report
+
+namespace mb::report {
+namespace {
+
+// reportFigures' fallback.* figures of `scenes` into r's figures.
+void addFallbackFigures(json& r, const std::vector<json>& scenes) {
+  const json all = reportFigures(r["machine"], r["settings"], scenes, json::object(), json::object());
+  for (const auto& [name, f] : all.items())
+    if (name.rfind("fallback.", 0) == 0) r["figures"][name] = f;
+}
+
+// The exact fallback's figures (fallback.<what>.<p>: each scene's most in any frame, summed over
+// the scenes) and the time line that quotes them: two of three scenes drew with it.
+TEST(ReportAnswer, TheTimeLineSaysHowMuchTheMotorDrewWithItsExactFallback) {
+  json r = syntheticReport(false);
+  const json fallbacks[] = {{{"linearFallbackDraws", 2}, {"skinFallbackDraws", 1}, {"skinFallbackJoints", 20}, {"fallbackVertices", 500}},
+                            {{"linearFallbackDraws", 0}, {"skinFallbackDraws", 3}, {"skinFallbackJoints", 30}, {"fallbackVertices", 700}},
+                            {{"linearFallbackDraws", 0}, {"skinFallbackDraws", 0}, {"skinFallbackJoints", 0}, {"fallbackVertices", 0}}};
+  std::vector<json> scenes;
+  for (int i = 0; i < 3; ++i) {
+    r["scenes"][i]["pipelines"]["motor"]["fallbacks"] = fallbacks[i];
+    scenes.push_back(r["scenes"][i]);
+  }
+  addFallbackFigures(r, scenes);
+  EXPECT_DOUBLE_EQ(figures::figureNamed(r, "fallback.scenes.motor")->value, 2);
+  EXPECT_EQ(figures::figureNamed(r, "fallback.scenes.motor")->n, 3);
+  EXPECT_DOUBLE_EQ(figures::figureNamed(r, "fallback.draws.motor")->value, 6);     // 2 + 1 + 3
+  EXPECT_DOUBLE_EQ(figures::figureNamed(r, "fallback.joints.motor")->value, 50);
+  EXPECT_DOUBLE_EQ(figures::figureNamed(r, "fallback.vertices.motor")->value, 1200);
+  const std::string text = line(answerLines(r), "time").text;
+  EXPECT_NE(text.find("motor drew with its exact fallback in 2 scenes of 3: 6 draws, 50 joints, 1200 vertices"),
+            std::string::npos) << text;
+
+  for (int i = 0; i < 3; ++i) r["scenes"][i]["pipelines"]["motor"]["fallbacks"] = fallbacks[2];
+  scenes.assign(r["scenes"].begin(), r["scenes"].end());
+  addFallbackFigures(r, scenes);
+  EXPECT_NE(line(answerLines(r), "time").text.find("motor took no exact fallback (0 scenes)"), std::string::npos);
 }
 
 }  // namespace
