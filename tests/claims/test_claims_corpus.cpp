@@ -222,13 +222,13 @@ TEST(ScaleDefinitions, ConstantChannelsAreCountedApartFromAnimatedOnes) {
 }
 
 TEST(ScaleDefinitions, OneNonUniformToleranceForLeavesAndInnerNodes) {
-  // (1, 1.00005, 1): |1/1.00005 - 1| = 5.0e-5 < 1e-4 -> uniform for every statistic (the motor
-  // fallback's own 1e-5 still sees it, per node).
+  // (1, 1.00005, 1): |1/1.00005 - 1| = 5.0e-5 < 1e-4 -> uniform for every statistic and for the
+  // motor fallback's per-node flag alike (one similarity tolerance).
   ScaleReport r = analyzeScale(twoNodes({1, 1.00005f, 1}, {1, 1, 1}));
   EXPECT_EQ(r.innerNonUniformNodes, 0);
   EXPECT_TRUE(r.nonUniformOnlyOnLeaves);
   EXPECT_FALSE(r.nonUniformScale);
-  EXPECT_TRUE(r.nodes[0].restNonUniform);
+  EXPECT_FALSE(r.nodes[0].restNonUniform);
   // (1, 1.001, 1): 1e-3 > 1e-4 on the inner node -> non-uniform, not only on leaves.
   r = analyzeScale(twoNodes({1, 1.001f, 1}, {1, 1, 1}));
   EXPECT_EQ(r.innerNonUniformNodes, 1);
