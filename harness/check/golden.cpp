@@ -4,6 +4,10 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include "harness/render/thresholds.h"
 
 namespace mb::golden {
 namespace {
@@ -28,7 +32,9 @@ json toJson(const Level& l) {
           {"failpercent", l.fail.failPercent}, {"hardfail", numberOrNull(l.fail.hardFail)}};
 }
 
-Level levelFrom(const json& j) {
+// One level of a scene's thresholds; a channel difference of 1 or more (byte steps written as a
+// fraction: it would pass any image) is an error naming `where` (harness/render/thresholds.h).
+Level levelFrom(const json& j, const std::string& where) {
   Level l;
   l.warn = j.at("warn").get<double>();
   l.warnPercent = j.at("warnpercent").get<double>();
@@ -36,6 +42,10 @@ Level levelFrom(const json& j) {
   l.fail.failPercent = j.at("failpercent").get<double>();
   const json& h = j.at("hardfail");
   l.fail.hardFail = h.is_null() ? std::numeric_limits<double>::infinity() : h.get<double>();
+  for (const auto& [key, value] : {std::pair{"fail", l.fail.fail}, std::pair{"warn", l.warn}, std::pair{"hardfail", l.fail.hardFail}})
+    if (!std::isinf(value))
+      if (std::string e = channelDifferenceError("thresholds " + where + " " + key, value); !e.empty())
+        throw std::invalid_argument(e);
   return l;
 }
 
@@ -105,7 +115,7 @@ Result<Manifest> readManifest(const std::string& path) {
     json j = json::parse(in);
     Manifest m;
     for (const auto& [scene, t] : j.at("thresholds").items())
-      m.thresholds[scene] = {levelFrom(t.at("exact")), levelFrom(t.at("portable"))};
+      m.thresholds[scene] = {levelFrom(t.at("exact"), scene + " exact"), levelFrom(t.at("portable"), scene + " portable")};
     for (const json& e : j.at("images")) {
       Entry entry;
       entry.file = e.at("file").get<std::string>();

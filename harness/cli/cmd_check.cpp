@@ -19,6 +19,7 @@
 #include "harness/process/progress.h"
 #include "harness/check/check_report.h"
 #include "harness/cli/command.h"
+#include "harness/cli/output_paths.h"
 #include "harness/check/golden.h"
 #include "harness/check/golden_device.h"
 #include "harness/render/flip.h"
@@ -330,6 +331,10 @@ int runCheck(const std::vector<std::string>& argv) {
                 "scene, pose and pipeline, e.g. tests/golden of the motorbench repository; pass that folder. "
                 "Do not make one here with --update: goldens rendered by the renderer under test would "
                 "compare it with itself");
+  // The output folder before the first render (checking writes there; --update does not).
+  if (!args.has("update"))
+    if (Status ok = prepareOutputFolder("--out", sel.outDir, "images of failures and warnings, summary.html, check.json"); !ok)
+      return fail(ok.error());
   // Which goldens this device is checked against (or, updating, writes): golden_device.h.
   auto ctx = gl::sharedContext();
   if (!ctx) return fail(ctx.error());
@@ -359,5 +364,6 @@ MB_COMMAND_HELP(check, "check",
                "  --out DIR          actual, expected and diff images of failures, summary.html, check.json\n"
                "  --update           re-render the selection into --golden and rewrite golden.json\n"
                "  --shader-dir DIR   run against a modified copy of shaders/\n"
-               "  --shard I/N        only every N-th golden from the I-th\n",
+               "  --shard I/N        only every N-th golden from the I-th\n"
+               MB_GPU_OPTION_HELP,
                 "motorbench check --scenes normal_torus --out out/check", true);

@@ -1,17 +1,21 @@
-// `motorbench inspect FILE|DIR|BUILTIN... [--json FILE] [--shard I/N]`: per-file statistics of glTF files
-// (geometry, materials, skins, animations, scale classes, unsupported features, fallbacks)
-// and, for several files, their aggregate, plus each file's animations (name, duration,
-// channels) and cameras (type, name). A file that fails to load is listed with its error and
-// the run goes on; exit 0 when every input loaded, 1 when any failed (or nothing was found to
-// inspect: an empty folder is warned about), 2 on bad usage or an unwritable --json.
+// `motorbench inspect FILE|DIR|BUILTIN... [--summary] [--json FILE] [--shard I/N]`: per-file
+// statistics of glTF files (geometry, materials, skins, animations, scale classes, unsupported
+// features, fallbacks) and, for several files, their aggregate, plus each file's animations
+// (name, duration, channels) and cameras (type, name); --summary prints the aggregate alone (and
+// the files that failed, on stderr). Several files: progress on stderr with the time left. A file
+// that fails to load is listed with its error and the run goes on; exit 0 when every input
+// loaded, 1 when any failed (or nothing was found to inspect: an empty folder is warned about),
+// 2 on bad usage or an unwritable --json.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "harness/claims/corpus_models.h"
 #include "harness/claims/corpus_stats.h"
 #include "harness/options/args.h"
 #include "harness/options/shard.h"
+#include "harness/process/progress.h"
 #include "harness/report/report_inputs.h"
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
@@ -75,38 +79,39 @@ void printFile(const mb::FileStats& f) {
   for (const auto& u : f.unsupported) std::printf("  unsupported %s\n", u.c_str());
 }
 
-// The motor family's exact fallback at rest (pipelines/motor/fallback_census.h): a line, and
-// "motorFallbacks" in the file's JSON.
-void describeMotorFallbacks(const mb::Scene& scene, nlohmann::json& file) {
+// The motor family's exact fallback at rest (pipelines/motor/fallback_census.h): a line (unless
+// `quiet`), and "motorFallbacks" in the file's JSON.
+void describeMotorFallbacks(const mb::Scene& scene, nlohmann::json& file, bool quiet) {
   if (scene.curved.space != mb::Space::Euclidean) return;
   const mb::motor::FallbackCensus c = mb::motor::restFallbackCensus(scene);
+  file["motorFallbacks"] = {{"generalNodes", c.generalNodes}, {"linearFallbackDraws", c.linearDraws},
+                            {"skinFallbackDraws", c.skinPalettes}, {"skinFallbackJoints", c.skinJoints},
+                            {"fallbackVertices", c.vertices}};
+  if (quiet) return;
   if (c.linearDraws + c.skinPalettes == 0 && c.generalNodes == 0)
     std::printf("  motor exact fallback none (every draw a similarity)\n");
   else
     std::printf("  motor exact fallback %d nodes not similarities; at rest %d rigid draws, %d skins (%d joints), "
                 "%llu vertices\n",
                 c.generalNodes, c.linearDraws, c.skinPalettes, c.skinJoints, (unsigned long long)c.vertices);
-  file["motorFallbacks"] = {{"generalNodes", c.generalNodes}, {"linearFallbackDraws", c.linearDraws},
-                            {"skinFallbackDraws", c.skinPalettes}, {"skinFallbackJoints", c.skinJoints},
-                            {"fallbackVertices", c.vertices}};
 }
 
 // The animations (name, duration, channels) and cameras (type, name) of a loaded scene, as
-// text lines and as JSON ("animationList", "cameraList" of the file's entry).
-void describeViews(const mb::Scene& scene, nlohmann::json& file) {
+// text lines (unless `quiet`) and as JSON ("animationList", "cameraList" of the file's entry).
+void describeViews(const mb::Scene& scene, nlohmann::json& file, bool quiet) {
   nlohmann::json anims = nlohmann::json::array(), cams = nlohmann::json::array();
   for (size_t i = 0; i < scene.animations.size(); ++i) {
     const mb::Animation& a = scene.animations[i];
-    std::printf("  animation %zu '%s': %.3f s, %zu channels\n", i, a.name.c_str(), double(a.duration), a.channels.size());
+    if (!quiet) std::printf("  animation %zu '%s': %.3f s, %zu channels\n", i, a.name.c_str(), double(a.duration), a.channels.size());
     anims.push_back({{"index", i}, {"name", a.name}, {"duration", a.duration}, {"channels", a.channels.size()}});
   }
   for (size_t i = 0; i < scene.cameras.size(); ++i) {
     const mb::Camera& c = scene.cameras[i];
     const char* type = c.perspective ? "perspective" : "orthographic";
-    std::printf("  camera %zu '%s': %s\n", i, c.name.c_str(), type);
+    if (!quiet) std::printf("  camera %zu '%s': %s\n", i, c.name.c_str(), type);
     cams.push_back({{"index", i}, {"name", c.name}, {"type", type}});
   }
-  if (scene.cameras.empty()) std::printf("  cameras     none (render/compare frame the scene automatically)\n");
+  if (scene.cameras.empty() && !quiet) std::printf("  cameras     none (render/compare frame the scene automatically)\n");
   file["animationList"] = anims;
   file["cameraList"] = cams;
 }
@@ -139,9 +144,9 @@ void printAggregate(const nlohmann::json& a) {
 }
 
 int runInspect(const std::vector<std::string>& argv) {
-  mb::Args args(argv, {{"json", "shard"}, {}, {}});
+  mb::Args args(argv, {{"json", "shard"}, {"summary"}, {}});
   if (!args.error().empty() || args.positional().empty()) {
-    std::fprintf(stderr, "usage: motorbench inspect FILE|DIR|BUILTIN... [--json FILE] [--shard I/N]\n  %s\n",
+    std::fprintf(stderr, "usage: motorbench inspect FILE|DIR|BUILTIN... [--summary] [--json FILE] [--shard I/N]\n  %s\n",
                  args.error().empty() ? "expected at least one FILE, DIR or built-in scene name" : args.error().c_str());
     return 2;
   }
@@ -169,25 +174,33 @@ int runInspect(const std::vector<std::string>& argv) {
   const std::vector<size_t> mine = mb::shardPositions(all, shard);
   if (const std::string note = mb::emptyShardNote(shard, all.size(), mine.size()); !note.empty())
     std::fprintf(stderr, "motorbench inspect: %s\n", note.c_str());
+  const bool summary = args.has("summary");
+  // Per-file lines go to stdout (unless --summary): the progress is plain lines there, at most
+  // one a second; with --summary it may rewrite one line on a terminal.
+  std::optional<mb::Progress> progress;
+  if (mine.size() > 1) progress.emplace("inspect", "files inspected", mine.size(), summary, 1.0);
   for (size_t k : mine) {
     const std::string& file = all[k];
     mb::Status spec = mb::checkSceneSpec(file);  // "no such file, and not a built-in (built-in: ...)"
     auto scene = spec ? mb::loadScene(file) : mb::Result<mb::Scene>::fail(spec.error());
     stats.push_back(scene ? mb::computeFileStats(*scene) : mb::failedFileStats(file, scene.error()));
-    printFile(stats.back());
+    if (!summary) printFile(stats.back());
+    if (summary && !scene) std::fprintf(stderr, "motorbench inspect: FAILED %s\n", scene.error().c_str());  // names the file
     files.push_back(mb::toJson(stats.back()));
     files.back()["input"] = file;  // the argument (a built-in's "file" is its generated name)
     if (scene) files.back()["contentHash"] = mb::claims::contentHash(*scene);  // duplicate models
-    if (scene) describeMotorFallbacks(*scene, files.back());
-    if (scene) describeViews(*scene, files.back());
+    if (scene) describeMotorFallbacks(*scene, files.back(), summary);
+    if (scene) describeViews(*scene, files.back(), summary);
     failed += !scene;
+    if (progress) progress->done(file);
   }
+  progress.reset();  // its last line before the aggregate
   nlohmann::json aggregate = mb::aggregateJson(stats);
   // By source kind when the files' folder has a MANIFEST.tsv (../shared/corpus-graph), and files
   // of the same content (harness/claims/corpus_models.h): claims counts each model once.
   mb::claims::addCorpusAggregates(files, aggregate);
-  if (stats.size() > 1) printAggregate(aggregate);
-  if (stats.size() > 1)
+  if (stats.size() > 1 || summary) printAggregate(aggregate);
+  if (stats.size() > 1 || summary)
     std::printf("  models      %s (%zu duplicate groups; the same content hash: see \"models\" in --json)\n",
                 mb::claims::filesAndModels(mb::claims::distinctModels(files)).c_str(),
                 aggregate["models"]["duplicateGroups"].get<size_t>());
@@ -207,7 +220,7 @@ int runInspect(const std::vector<std::string>& argv) {
   }
   if (failed > 0) {
     std::fprintf(stderr, "motorbench inspect: %d of %zu input(s) failed to load (listed as FAILED above)\n", failed,
-                 mine.size());
+                 mine.size());  // (--summary: on stderr)
     return 1;
   }
   return 0;
@@ -215,12 +228,14 @@ int runInspect(const std::vector<std::string>& argv) {
 
 }  // namespace
 
-MB_COMMAND(inspect, "inspect", "FILE|DIR|BUILTIN... [--json FILE] [--shard I/N]",
+MB_COMMAND(inspect, "inspect", "FILE|DIR|BUILTIN... [--summary] [--json FILE] [--shard I/N]",
            "glTF statistics: geometry, skins, animations (name, duration, channels), cameras, scale "
            "classes, unsupported features, fallbacks; exit 1 when any input failed to load",
            runInspect);
 MB_COMMAND_HELP(inspect, "inspect",
                "  FILE|DIR|BUILTIN...  files, folders (searched for .gltf/.glb) or built-in scene names\n"
+               "  --summary          only the aggregate over the files (the files that failed on stderr; default: every\n"
+               "                     file's statistics, then the aggregate); several files: progress on stderr either way\n"
                "  --json FILE        everything as JSON (missing folders are created; checked before the work)\n"
                "  --shard I/N        only every N-th input from the I-th (merge puts shards together)\n",
                 "motorbench inspect skinned_tube crowd --json out/inspect.json", false);

@@ -11,6 +11,7 @@
 #include "harness/options/args.h"
 #include "harness/render/counter_glossary.h"
 #include "harness/render/frame_notes.h"
+#include "harness/render/gpu_option.h"
 #include "harness/render/render_frame.h"
 
 namespace mb {
@@ -77,7 +78,9 @@ int runRender(const std::vector<std::string>& argv) {
     if (Status ok = checkPipelineNames("--pipeline", {*p}); !ok) return fail(ok.error());
   }
   if (auto out = args.get("o", args.get("output", "")); !out.empty()) {
+    // The format, then the folder: created and written into now, before the load and render.
     Status ok = several ? prepareOutputFolder("-o", out, "one <pipeline>.png per pipeline") : checkImageOutput(out);
+    if (ok && !several) ok = prepareOutputFile("-o", out);
     if (!ok) return fail(ok.error());
   }
   auto cmd = parseSceneCommand(args, several ? "DIR" : "out.png");
@@ -129,5 +132,6 @@ MB_COMMAND_HELP(render, "render",
                "  --time T           seconds >= 0 (alone: poses animation 0; past the end: its last pose)\n"
                "  --anim2 B --time2 T2 --blend W   blend towards a second animation (W in 0..1, default 0.5)\n"
                "  --camera C         glTF camera index or name (default: automatic framing)\n"
-               "  --size WxH         image size (default 512x512)\n",
+               "  --size WxH         image size (default 512x512)\n"
+               MB_INSTANCES_OPTION_HELP MB_GPU_OPTION_HELP,
                 "motorbench render skinned_tube --time 0.5 -o out/tube.png", true);

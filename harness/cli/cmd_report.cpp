@@ -83,7 +83,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
                           "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
                           "worker-index", "worker-total", "shard", "anim", "worker-anims", "instances", "gpu",
                           "isa-json", "morph-json"},
-                         {"no-bench", "no-plots"},
+                         {"no-bench", "bench", "no-isa", "no-plots"},
                          {},
                          {"anim"}});
   if (!args.error().empty()) return fail(args.error());
@@ -110,7 +110,14 @@ int runReportCommand(const std::vector<std::string>& argv) {
   o.benchMinTime = args.real("bench-min-time", o.benchMinTime, 0.0, 1e4, "seconds");
   if (args.has("no-bench") && args.has("bench-json"))
     return fail("--no-bench and --bench-json: give one (skip the kernel ratios, or read them from a file)");
-  o.bench = !args.has("no-bench");
+  if (args.has("no-bench") && args.has("bench"))
+    return fail("--no-bench and --bench: give one (skip the kernel ratios, or run them)");
+  // The kernels do not depend on the scenes: a report of the built-in scenes runs them (its
+  // evidence), a report of files only with --bench (they would cost the same for any input).
+  o.bench = args.has("bench") || (!args.has("no-bench") && o.scenes.empty());
+  if (args.has("no-isa") && args.has("isa-json"))
+    return fail("--no-isa and --isa-json: give one (skip the ISA statistics, or read them from a file)");
+  o.isa = !args.has("no-isa");
   o.benchJson = args.get("bench-json", "");
   o.plots = !args.has("no-plots");
   o.python = args.get("python", o.python);
@@ -155,10 +162,10 @@ int runReportCommand(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(report, "report",
-           "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--no-bench | "
+           "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--time-size WxH] [--no-bench | "
            "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--anim [SCENE:]NAME|INDEX|all,...] "
-           "[--time-size WxH] [--instances N] [--no-plots] [--shard I/N] [--gpu auto|llvmpipe|N] [--isa-json FILE] "
-           "[--morph-json FILE]",
+           "[--instances N] [--no-plots] [--python P] [--plot-script FILE] [--timeout S] [--shard I/N] "
+           "[--gpu auto|llvmpipe|N] [--isa-json FILE] [--morph-json FILE]",
            "measure scenes with every pipeline of their space: images, diffs, memory, ops, timing, kernel "
            "ratios -> report.json/.md/.html",
            mb::runReportCommand);
@@ -166,13 +173,22 @@ MB_COMMAND_HELP(report, "report",
                "  SCENE|FILE|DIR...  scenes (default: the built-in ones, then s3_tiling and h3_tiling)\n"
                "  -o, --output DIR   the report folder: report.json/.md/.html, images/, plots/\n"
                "  --jobs N           scenes measured at once (default 1)\n"
-               "  --size WxH         image size (default 256x192);  --time-size WxH  timing viewport\n"
-               "  --frames N         timed frames per pipeline (0: no timing)\n"
-               "  --no-bench | --bench-json FILE   skip the kernel ratios, or read them from `bench --out`\n"
+               "  --size WxH         image size (default 256x192)\n"
+               "  --frames N         timed frames per pipeline and scene (default 30; 0: no timing)\n"
+               "  --time-size WxH    the timing viewport (default 512x512, as `time`)\n"
+               "  --no-bench | --bench-json FILE   skip the kernel ratios, or read them from `bench --out` (default: run\n"
+               "                     the kernels)\n"
                "  --bench-min-time S Google Benchmark min time per kernel (default 0.05)\n"
                "  --pipelines a,b    pipelines (default: every pipeline of each scene's space)\n"
-               "  --anim ITEMS       animations shown: NAME, INDEX, all or SCENE:NAME, comma-separated\n"
-               "  --no-plots         no plots;  --python P  the python with matplotlib;  --timeout S  per worker\n"
+               "  --anim ITEMS       animations shown: NAME, INDEX, all or SCENE:NAME, comma-separated (default: the\n"
+               "                     first animation)\n"
+               MB_INSTANCES_OPTION_HELP
+               "  --no-plots         no plots (default: plots when python3 and matplotlib are there)\n"
+               "  --python P         the python with matplotlib (default /usr/bin/python3 when present, else python3)\n"
+               "  --plot-script FILE the plot script (default scripts/plot.py of this source tree; env MB_PLOT_SCRIPT)\n"
+               "  --timeout S        seconds each scene's worker process may take (default 900)\n"
                "  --shard I/N        only every N-th scene from the I-th (merge puts shards together)\n"
-               "  --morph-json FILE  `motorbench morph --json` file: the morph section (issue 37)\n",
+               MB_GPU_OPTION_HELP
+               "  --isa-json FILE    `motorbench isa --json` file: the ISA statistics per pipeline (default: none)\n"
+               "  --morph-json FILE  `motorbench morph --json` file: the morph section (default: none)\n",
                 "motorbench report textured_box --frames 0 --no-bench -o out/report", true);

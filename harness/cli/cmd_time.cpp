@@ -282,7 +282,9 @@ MB_COMMAND_HELP(time, "time",
                "  --best-of K        renders per frame, the fastest kept (default 3)\n"
                "  --size WxH         viewport (default 512x512);  --tiny WxH  the vertex-bound viewport (default 64x64)\n"
                "  --level N[,M...]   refinement levels of Bezier patch scenes (teapot)\n"
+               MB_INSTANCES_OPTION_HELP
                "  --lp-threads N     LP_NUM_THREADS for llvmpipe\n"
+               MB_GPU_OPTION_HELP
                "  --json FILE        every sample, spread and ratio as JSON (missing folders are created; checked first)\n"
                "  Ratios are motor/matrix (< 1: motor faster) with their spread [q1-q3]; \"noise\" marks a ratio\n"
                "  whose quartiles lie on both sides of 1; \"too few frames\" one measured on fewer than 5 frames.\n",

@@ -12,8 +12,9 @@ const json kNull = nullptr;
 std::string fmt(double v, int digits) {
   if (!std::isfinite(v)) return "-";
   char buf[64];
-  // %g switches to exponents for large values; keep plain integers plain.
-  if (std::fabs(v) >= 1e5 && std::fabs(v) < 1e15 && v == std::floor(v)) std::snprintf(buf, sizeof buf, "%.0f", v);
+  // %g switches to exponents past `digits` digits (3240 -> 3.24e+03): integers (counts) are
+  // printed whole, whatever `digits` says.
+  if (std::fabs(v) < 1e15 && v == std::floor(v)) std::snprintf(buf, sizeof buf, "%.0f", v);
   else std::snprintf(buf, sizeof buf, "%.*g", digits, v);
   return buf;
 }

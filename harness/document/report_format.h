@@ -7,7 +7,8 @@
 
 namespace mb::report {
 
-// `v` with `digits` significant digits ("-" when v is not a number).
+// `v` with `digits` significant digits ("-" when v is not a number); a whole number (a count)
+// in full, never in exponent notation ("3240", not "3.24e+03").
 std::string fmt(const nlohmann::json& v, int digits = 3);
 std::string fmt(double v, int digits = 3);
 // Fixed decimals ("-" when not a number).

@@ -14,9 +14,9 @@ std::string durationText(double s) {
   return buf;
 }
 
-Progress::Progress(std::string command, std::string what, size_t total, bool inPlace)
+Progress::Progress(std::string command, std::string what, size_t total, bool inPlace, double minIntervalS)
     : command_(std::move(command)), what_(std::move(what)), total_(total), start_(std::chrono::steady_clock::now()),
-      terminal_(inPlace && ::isatty(STDERR_FILENO) != 0) {}
+      terminal_(inPlace && ::isatty(STDERR_FILENO) != 0), minIntervalS_(minIntervalS) {}
 
 Progress::~Progress() {
   if (terminal_ && done_ > 0) std::fputc('\n', stderr);
@@ -25,6 +25,9 @@ Progress::~Progress() {
 void Progress::done(const std::string& item) {
   ++done_;
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const bool first = lastPrintedS_ < 0, last = done_ >= total_;
+  if (!terminal_ && !first && !last && elapsed - lastPrintedS_ < minIntervalS_) return;
+  lastPrintedS_ = elapsed;
   std::string line = command_ + ": " + std::to_string(done_) + "/" + std::to_string(total_) + " " + what_ + " (" +
                      item + "), " + durationText(elapsed) + " elapsed";
   if (done_ < total_) line += ", about " + durationText(elapsed / double(done_) * double(total_ - done_)) + " left";

@@ -11,7 +11,9 @@ class Progress {
 public:
   // `command` prefixes each line ("report"); `what` names the items ("scenes rendered").
   // `inPlace` false: plain lines even on a terminal (for commands whose rows go to stdout).
-  Progress(std::string command, std::string what, size_t total, bool inPlace = true);
+  // `minIntervalS` > 0: plain lines at most that often (the first and last always), for runs of
+  // many quick items (inspect over a folder).
+  Progress(std::string command, std::string what, size_t total, bool inPlace = true, double minIntervalS = 0);
   ~Progress();
   // One more item finished; `item` names it ("crowd").
   void done(const std::string& item);
@@ -21,6 +23,8 @@ private:
   size_t total_, done_ = 0;
   std::chrono::steady_clock::time_point start_;
   bool terminal_;
+  double minIntervalS_;
+  double lastPrintedS_ = -1;  // elapsed seconds at the last plain line, -1 before the first
 };
 
 // "45 s", "3 min 05 s", "1 h 02 min".

@@ -66,9 +66,11 @@ Result<float> timeFor(const Args& args, const std::string& timeKey, double fallb
   return float(t);
 }
 
-// The glTF built-ins, then the curved-space ones (s3_tiling, h3_tiling).
+// Every name loadScene builds: the glTF built-ins, those only check draws by default
+// (morph_torus), then the curved-space ones (s3_tiling, h3_tiling).
 std::vector<std::string> everyBuiltinName() {
   std::vector<std::string> names = builtinSceneNames();
+  names.insert(names.end(), goldenOnlySceneNames().begin(), goldenOnlySceneNames().end());
   names.insert(names.end(), curvedSceneNames().begin(), curvedSceneNames().end());
   return names;
 }

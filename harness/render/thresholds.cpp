@@ -14,7 +14,7 @@ const char* const kChannelDifferenceWhat = "a channel difference as a fraction o
 std::string byteStepHint(double value) {
   if (value != std::floor(value) || value < 1 || value > 255) return "";
   char b[64];
-  std::snprintf(b, sizeof b, " Did you mean %.0f/255?", value);
+  std::snprintf(b, sizeof b, " Did you mean %.0f/255 (%.4g)?", value, value / 255);
   return b;
 }
 

@@ -161,6 +161,7 @@ std::string printable(const std::string& s) {
 Status preflightGltf(const std::vector<uint8_t>& bytes, const std::string& nameHint, bool* isGlb,
                      ConformedGltf* conformed) {
   *isGlb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (bytes.empty()) return Status::fail("empty file (0 bytes): neither a .glb nor a .gltf document");
   std::string unpaddedWhy;
   if (std::vector<uint8_t> padded = *isGlb ? padUnpaddedJson(bytes, &unpaddedWhy) : std::vector<uint8_t>{};
       !padded.empty()) {

@@ -1,8 +1,7 @@
 // `motorbench diff A B` against OpenImageIO's idiff on small image pairs written here: the same
 // verdict on the same thresholds every time (idiff 0 PASS / 1 WARNING / 2 FAILURE / 4 file error;
 // diff 0 pass or warning / 1 fail / 2 error), each pair's verdict also derived by hand; FLIP
-// thresholds, the maps and metrics.json. Every process of a test runs at once (each costs ~0.2 s
-// to start).
+// thresholds, the maps and metrics.json. Every process of a test runs at once (cli_parallel.h).
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
@@ -14,6 +13,7 @@
 
 #include "harness/render/image_metrics.h"
 #include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_parallel.h"
 
 namespace {
 
@@ -21,6 +21,8 @@ namespace fs = std::filesystem;
 using mb::RgbaImage;
 using mb::cli_test::contains;
 using mb::cli_test::quoted;
+using mb::cli_test::Ran;
+using mb::cli_test::runAll;
 
 constexpr int kSide = 16;  // 256 pixels: one pixel is 0.390625 %
 
@@ -79,32 +81,6 @@ struct Case {
   Expect diff;        // motorbench's verdict, derived by hand
   bool idiffPasses;   // idiff rc 0 or 1
 };
-
-struct Ran {
-  int rc = -1;
-  std::string out;
-};
-
-// Runs every command line at once in one shell; the exit status and output of each, in order.
-std::vector<Ran> runAll(const fs::path& dir, const std::vector<std::string>& commands) {
-  std::string script = "cd " + quoted(dir) + "\n";
-  for (size_t i = 0; i < commands.size(); ++i) {
-    const std::string n = std::to_string(i);
-    script += "( " + commands[i] + " > run" + n + ".out 2>&1; echo $? > run" + n + ".rc ) &\n";
-  }
-  script += "wait\n";
-  std::ofstream(dir / "run.sh") << script;
-  std::string ignored;
-  mb::cli_test::runCommand("bash " + quoted(dir / "run.sh"), &ignored);
-  std::vector<Ran> ran(commands.size());
-  for (size_t i = 0; i < commands.size(); ++i) {
-    const std::string n = std::to_string(i);
-    const std::string rc = mb::cli_test::readText(dir / ("run" + n + ".rc"));
-    ran[i].rc = rc.empty() ? -1 : std::stoi(rc);
-    ran[i].out = mb::cli_test::readText(dir / ("run" + n + ".out"));
-  }
-  return ran;
-}
 
 bool idiffInstalled() {
   std::string out;

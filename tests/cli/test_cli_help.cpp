@@ -3,6 +3,8 @@
 // loaded and framed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <map>
 #include <string>
 #include <vector>
@@ -17,8 +19,41 @@ using mb::cli_test::contains;
 using mb::cli_test::quoted;
 using mb::cli_test::runMb;
 
-const std::vector<std::string> kCommands = {"bench", "check", "claims", "compare", "drift", "inspect",
-                                            "merge", "ops",   "render", "report",  "scenes", "time"};
+const std::vector<std::string> kCommands = {"bench", "check", "claims", "compare", "diff", "drift", "inspect",
+                                            "merge", "ops",   "render", "report",  "scenes", "survey", "time"};
+
+// The --options of `text` (each once, in order).
+std::vector<std::string> optionsIn(const std::string& text) {
+  std::vector<std::string> out;
+  for (size_t at = text.find("--"); at != std::string::npos; at = text.find("--", at + 2)) {
+    size_t end = at + 2;
+    while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '-' || text[end] == '_' ||
+                                 text[end] == '*'))
+      ++end;
+    const std::string o = text.substr(at, end - at);
+    if (o.size() > 2 && std::find(out.begin(), out.end(), o) == out.end()) out.push_back(o);
+  }
+  return out;
+}
+
+// Every --option of the usage line is explained under "options:", and every option an options
+// line starts with ("  --x", "  -o, --output") is in the usage line (-o stands for --output).
+void expectUsageAndOptionsAgree(const std::string& command, const std::string& help) {
+  const std::string usage = help.substr(0, help.find('\n'));
+  const size_t from = help.find("\noptions:\n"), to = help.find("\nexample:\n");
+  ASSERT_NE(from, std::string::npos) << command;
+  const std::string options = help.substr(from, to - from);
+  for (const std::string& o : optionsIn(usage))
+    EXPECT_TRUE(contains(options, o + " ") || contains(options, o + "=")) << command << ": " << o
+                                                                          << " is in the usage line only\n" << help;
+  for (size_t line = options.find("\n  -"); line != std::string::npos; line = options.find("\n  -", line + 1)) {
+    std::string first = options.substr(line + 3, options.find_first_of(" ,=", line + 3) - line - 3);
+    if (first == "-o") first = "--output";
+    if (first.rfind("--", 0) != 0) continue;
+    EXPECT_TRUE(contains(usage, first) || (first == "--output" && contains(usage, "-o ")))
+        << command << ": " << first << " is under options only\n" << help;
+  }
+}
 
 TEST(CliHelp, HelpCommandPrintsThatCommandsHelpNotTheGlobalOne) {
   const auto help = runMb("help render");
@@ -41,11 +76,23 @@ TEST(CliHelp, EveryCommandListsItsOptionsAndOneExample) {
     EXPECT_TRUE(contains(help.out, "\noptions:\n  ")) << c << ": " << help.out;
     EXPECT_TRUE(contains(help.out, "\nexample:\n  motorbench " + c + " ")) << c << ": " << help.out;
     helps[c] = help.out;
+    expectUsageAndOptionsAgree(c, help.out);
   }
   // Options as the parser knows them (one per line) and the command's own rules.
   const std::string& time = helps.at("time");
   for (const char* option : {"--frames N", "--warmup W", "--best-of K", "--json FILE", "< 1: motor faster"})
     EXPECT_TRUE(contains(time, option)) << option << "\n" << time;
+  // Options the usage line named but the list left out, and defaults it did not give.
+  for (const char* c : {"render", "compare", "time"})
+    for (const char* option : {"\n  --instances N ", "\n  --gpu auto|llvmpipe|N "})
+      EXPECT_TRUE(contains(helps.at(c), option)) << c << ": " << option << "\n" << helps.at(c);
+  const std::string& report = helps.at("report");
+  for (const char* text : {"--frames N         timed frames per pipeline and scene (default 30;",
+                           "--time-size WxH    the timing viewport (default 512x512", "\n  --isa-json FILE ",
+                           "--timeout S        seconds each scene's worker process may take (default 900)"})
+    EXPECT_TRUE(contains(report, text)) << text << "\n" << report;
+  for (const char* text : {"[--python P]", "[--timeout S]", "[--plot-script FILE]"})
+    EXPECT_TRUE(contains(report.substr(0, report.find('\n')), text)) << text << "\n" << report;
   const std::string& claims = helps.at("claims");
   EXPECT_TRUE(contains(claims, "--no-run")) << claims;
   EXPECT_TRUE(contains(claims, "takes minutes")) << claims;

@@ -1,0 +1,170 @@
+// The command line's traps a new user meets, each as they met it: thresholds in byte steps
+// ("2/255") and fractions read alike, and a plain number that reads as byte steps ("--fail 1":
+// 255/255, any image passes) refused with the hint wherever thresholds are read (compare, diff,
+// check's golden.json); output paths checked before any work (render, survey, check); inspect
+// over folders with progress and --summary; a 0-byte .glb named as empty; the missing-file
+// error listing every built-in name. The processes of a test run at once (cli_parallel.h).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "harness/options/args.h"
+#include "harness/render/image_metrics.h"
+#include "harness/render/thresholds.h"
+#include "pipelines/scene/builtin_scenes.h"
+#include "pipelines/scene/curved_space.h"
+#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_parallel.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using mb::cli_test::contains;
+using mb::cli_test::quoted;
+using mb::cli_test::Ran;
+
+mb::Args thresholdArgs(const std::vector<std::string>& line) {
+  return mb::Args(line, mb::OptionSpec{{"fail", "hardfail", "warn", "hardwarn", "failpercent", "warnpercent"}, {}, {}, {}});
+}
+
+// The OptionError's message of reading --key from `line`, "" when it reads.
+std::string refusal(const std::vector<std::string>& line, const std::string& key) {
+  try {
+    mb::channelDifference(thresholdArgs(line), key, 0);
+  } catch (const mb::OptionError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CliTrapsThresholds, ByteStepsAndFractionsReadAlikeAndAPlainOneIsRefused) {
+  EXPECT_DOUBLE_EQ(mb::channelDifference(thresholdArgs({"--fail", "2/255"}), "fail", 0), 2 / 255.0);
+  EXPECT_DOUBLE_EQ(mb::channelDifference(thresholdArgs({"--fail", "0.0078"}), "fail", 0), 0.0078);
+  EXPECT_DOUBLE_EQ(mb::channelDifference(thresholdArgs({"--fail", "255/255"}), "fail", 0), 1.0);  // as written
+  EXPECT_DOUBLE_EQ(mb::channelDifference(thresholdArgs({}), "fail", 0.25), 0.25);
+  EXPECT_TRUE(contains(refusal({"--fail", "1"}, "fail"), "got '1': 1 reads as byte steps")) << refusal({"--fail", "1"}, "fail");
+  EXPECT_TRUE(contains(refusal({"--fail", "1"}, "fail"), "Did you mean 1/255 (0.003922)?"));
+  EXPECT_TRUE(contains(refusal({"--fail", "1.0"}, "fail"), "Did you mean 1/255"));
+  EXPECT_TRUE(contains(refusal({"--hardfail", "16"}, "hardfail"), "--hardfail: expected"));
+  EXPECT_TRUE(contains(refusal({"--hardfail", "16"}, "hardfail"), "Did you mean 16/255"));
+  EXPECT_FALSE(contains(refusal({"--fail", "1.5"}, "fail"), "Did you mean"));  // not a whole step: no guess
+  EXPECT_FALSE(refusal({"--fail", "1.5"}, "fail").empty());
+  EXPECT_FALSE(refusal({"--fail", "300/255"}, "fail").empty());
+  EXPECT_FALSE(refusal({"--fail", "-1/255"}, "fail").empty());
+  EXPECT_TRUE(mb::channelDifferenceError("golden.json fail", 0.004).empty());
+  EXPECT_TRUE(contains(mb::channelDifferenceError("golden.json fail", 2), "Did you mean 2/255"));
+  // idiff's rule: --hardfail below --fail is refused (between them a difference would pass).
+  EXPECT_THROW(mb::idiffThresholds(thresholdArgs({"--fail", "4/255", "--hardfail", "2/255"})), mb::OptionError);
+  EXPECT_NO_THROW(mb::idiffThresholds(thresholdArgs({"--hardfail", "0"})));  // below the 1e-6 default: no byte step
+}
+
+// idiff's verdict by hand on 2x1 images: no pixel over --fail passes, whatever --hardfail says.
+TEST(CliTrapsThresholds, IdiffVerdictLooksPastFailOnlyWhenAPixelIsOverIt) {
+  const mb::RgbaImage a{2, 1, {100, 100, 100, 255, 100, 100, 100, 255}};
+  const mb::RgbaImage b{2, 1, {103, 100, 100, 255, 100, 100, 100, 255}};  // one pixel 3 steps off
+  mb::IdiffThresholds t;
+  EXPECT_EQ(mb::judgeIdiff(a, b, t).outcome, mb::IdiffOutcome::Failure);  // defaults: any difference
+  t.fail.fail = 5 / 255.0;
+  EXPECT_EQ(mb::judgeIdiff(a, b, t).outcome, mb::IdiffOutcome::Pass);  // over the default warn, yet PASS
+  t.fail.fail = 2 / 255.0, t.fail.failPercent = 50;                     // 1 of 2 pixels allowed
+  EXPECT_EQ(mb::judgeIdiff(a, b, t).outcome, mb::IdiffOutcome::Warning);
+  t.warn.fail = 3 / 255.0 + 1e-6;
+  EXPECT_EQ(mb::judgeIdiff(a, b, t).outcome, mb::IdiffOutcome::Pass);
+  t.fail.hardFail = 2.5 / 255;
+  EXPECT_EQ(mb::judgeIdiff(a, b, t).outcome, mb::IdiffOutcome::Failure);
+}
+
+// The same refusals from the commands, before any work: no scene is framed, no image read; and
+// golden.json's "fail": 1 is refused naming the file, the scene and the level.
+TEST(CliTrapsThresholds, CommandsRefuseByteStepsWrittenPlain) {
+  const fs::path dir = mb::cli_test::scratchDir("traps_thresholds");
+  const mb::RgbaImage img{2, 2, std::vector<uint8_t>(16, 200)};
+  ASSERT_TRUE(mb::writeImage((dir / "a.png").string(), img));
+  std::ifstream in(fs::path(MB_SOURCE_DIR) / "tests/golden/golden.json");
+  nlohmann::json golden = nlohmann::json::parse(in);
+  golden["thresholds"]["normal_torus"]["exact"]["fail"] = 1;
+  fs::create_directories(dir / "golden");
+  std::ofstream(dir / "golden/golden.json") << golden.dump();
+  const std::string mb = mb::cli_test::motorbench();
+  const std::vector<Ran> ran = mb::cli_test::runAll(
+      dir, {mb + "compare normal_torus --fail 1 -o cmp", mb + "compare normal_torus --hardfail 2 -o cmp",
+            mb + "diff a.png a.png --warn 3", mb + "diff a.png a.png --fail 2/255 --hardfail 0.02",
+            mb + "check --golden golden --scenes normal_torus --pipelines matrix --out out"});
+  for (size_t i : {0, 1, 2}) {
+    EXPECT_EQ(ran[i].rc, 2) << ran[i].out;
+    EXPECT_FALSE(contains(ran[i].out, "camera:")) << ran[i].out;  // refused before the scene was framed
+  }
+  EXPECT_TRUE(contains(ran[0].out, "--fail: expected")) << ran[0].out;
+  EXPECT_TRUE(contains(ran[0].out, "Did you mean 1/255")) << ran[0].out;
+  EXPECT_TRUE(contains(ran[1].out, "Did you mean 2/255")) << ran[1].out;
+  EXPECT_TRUE(contains(ran[2].out, "--warn: expected")) << ran[2].out;
+  EXPECT_TRUE(contains(ran[2].out, "Did you mean 3/255")) << ran[2].out;
+  EXPECT_FALSE(fs::exists(dir / "cmp"));
+  EXPECT_EQ(ran[3].rc, 0) << ran[3].out;
+  EXPECT_TRUE(contains(ran[3].out, "fail over 2/255 (0.007843 of full scale)")) << ran[3].out;
+  EXPECT_EQ(ran[4].rc, 2) << ran[4].out;
+  EXPECT_TRUE(contains(ran[4].out, "golden.json: thresholds normal_torus exact fail: expected")) << ran[4].out;
+  EXPECT_TRUE(contains(ran[4].out, "Did you mean 1/255")) << ran[4].out;
+  fs::remove_all(dir);
+}
+
+// Each command that writes late checks its outputs first: a folder that cannot be made is refused
+// before the scene is loaded or drawn (before, render drew and then failed).
+TEST(CliTrapsThresholds, OutputPathsAreCheckedBeforeAnyWork) {
+  const fs::path dir = mb::cli_test::scratchDir("traps_outputs");
+  const std::string mb = mb::cli_test::motorbench();
+  const std::vector<Ran> ran = mb::cli_test::runAll(
+      dir, {mb + "render textured_box --size 16x16 -o /proc/nope/x.png",
+            mb + "survey textured_box --size 16x16 -o /proc/nope/x.json",
+            mb + "survey textured_box --size 16x16 --images /proc/nope",
+            mb + "check --scenes normal_torus --pipelines matrix --golden " + quoted(fs::path(MB_SOURCE_DIR) / "tests/golden") +
+                " --out /proc/nope"});
+  const char* const options[] = {"-o /proc/nope/x.png", "-o /proc/nope/x.json", "--images /proc/nope", "--out /proc/nope"};
+  for (size_t i = 0; i < ran.size(); ++i) {
+    EXPECT_EQ(ran[i].rc, 2) << ran[i].out;
+    EXPECT_TRUE(contains(ran[i].out, std::string(options[i]) + ": cannot create folder /proc/nope")) << ran[i].out;
+    for (const char* work : {"camera:", "drawn pixels", "\"frames\"", "golden images"})
+      EXPECT_FALSE(contains(ran[i].out, work)) << work << "\n" << ran[i].out;
+  }
+  fs::remove_all(dir);
+}
+
+// inspect over a folder: progress on stderr (first and last file, the time left), --summary
+// prints the aggregate alone and the failed file on stderr; a 0-byte .glb is "empty file".
+TEST(CliTrapsThresholds, InspectFolderProgressSummaryAndAnEmptyFile) {
+  const fs::path dir = mb::cli_test::scratchDir("traps_inspect");
+  for (const char* name : {"normal_torus", "textured_box", "crowd"}) {
+    auto glb = mb::builtinSceneGlb(name);
+    ASSERT_TRUE(glb) << glb.error();
+    std::ofstream(dir / (std::string(name) + ".glb"), std::ios::binary)
+        .write(reinterpret_cast<const char*>(glb->data()), std::streamsize(glb->size()));
+  }
+  std::ofstream(dir / "empty.glb").close();
+  const std::string mb = mb::cli_test::motorbench();
+  const std::vector<Ran> ran = mb::cli_test::runAll(
+      dir, {"{ " + mb + "inspect --summary " + quoted(dir) + " 2> err.txt; }", mb + "render nope.glb -o x.png"});
+  const std::string& out = ran[0].out;  // stdout only
+  const std::string err = mb::cli_test::readText(dir / "err.txt");
+  EXPECT_EQ(ran[0].rc, 1) << out << err;  // one input failed
+  EXPECT_TRUE(contains(out, "aggregate over 4 files: 3 loaded, 1 failed")) << out;
+  EXPECT_FALSE(contains(out, "  geometry ")) << out;  // no file's own lines
+  EXPECT_FALSE(contains(out, "FAILED")) << out;
+  EXPECT_TRUE(contains(err, "inspect: 1/4 files inspected (")) << err;
+  EXPECT_TRUE(contains(err, " left")) << err;  // the estimate
+  EXPECT_TRUE(contains(err, "inspect: 4/4 files inspected (")) << err;
+  EXPECT_TRUE(contains(err, "inspect: FAILED " + (dir / "empty.glb").string() + ": empty file (0 bytes)")) << err;
+  EXPECT_FALSE(contains(err, "magic")) << err;
+  // The missing-file error lists every name a scene can be (morph_torus included).
+  const std::string& missing = ran[1].out;
+  EXPECT_EQ(ran[1].rc, 2) << missing;
+  std::vector<std::string> names = mb::builtinSceneNames();
+  for (const auto* more : {&mb::goldenOnlySceneNames(), &mb::curvedSceneNames()}) names.insert(names.end(), more->begin(), more->end());
+  for (const std::string& n : names) EXPECT_TRUE(contains(missing, n)) << n << "\n" << missing;
+  EXPECT_TRUE(contains(missing, "morph_torus")) << missing;
+  fs::remove_all(dir);
+}
+
+}  // namespace
