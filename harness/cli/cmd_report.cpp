@@ -83,7 +83,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
                           "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
                           "worker-index", "worker-total", "shard", "anim", "worker-anims", "instances", "gpu",
                           "isa-json", "morph-json"},
-                         {"no-bench", "bench", "no-isa", "no-plots"},
+                         {"no-bench", "no-plots"},
                          {},
                          {"anim"}});
   if (!args.error().empty()) return fail(args.error());
@@ -110,14 +110,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
   o.benchMinTime = args.real("bench-min-time", o.benchMinTime, 0.0, 1e4, "seconds");
   if (args.has("no-bench") && args.has("bench-json"))
     return fail("--no-bench and --bench-json: give one (skip the kernel ratios, or read them from a file)");
-  if (args.has("no-bench") && args.has("bench"))
-    return fail("--no-bench and --bench: give one (skip the kernel ratios, or run them)");
-  // The kernels do not depend on the scenes: a report of the built-in scenes runs them (its
-  // evidence), a report of files only with --bench (they would cost the same for any input).
-  o.bench = args.has("bench") || (!args.has("no-bench") && o.scenes.empty());
-  if (args.has("no-isa") && args.has("isa-json"))
-    return fail("--no-isa and --isa-json: give one (skip the ISA statistics, or read them from a file)");
-  o.isa = !args.has("no-isa");
+  o.bench = !args.has("no-bench");
   o.benchJson = args.get("bench-json", "");
   o.plots = !args.has("no-plots");
   o.python = args.get("python", o.python);
