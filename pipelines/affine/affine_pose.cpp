@@ -1,5 +1,6 @@
 #include "pipelines/affine/affine_pose.h"
 
+#include "pipelines/scene/drawn_skins.h"
 
 namespace mb::affine {
 
@@ -31,18 +32,11 @@ namespace {
 // flatten: GLM's products inlined into the loop, as on the other pipelines.
 [[gnu::flatten]] void skinPalettes(const Scene& scene, const std::vector<glm::mat4>& world,
                                    std::vector<Palette>& palettes) {
-  size_t count = 0;
-  for (size_t n = 0; n < scene.nodes.size(); ++n) {
-    const Skin* skin = drawnSkin(scene, n);
-    if (!skin) continue;
-    if (palettes.size() <= count) palettes.emplace_back();
-    Palette& palette = palettes[count++];
-    palette.node = int(n);
-    palette.joints.resize(skin->joints.size());
-    for (size_t j = 0; j < skin->joints.size(); ++j)
-      palette.joints[j] = glm::mat4x3(jointWorld(*skin, world, j) * inverseBind(*skin, j));
-  }
-  palettes.resize(count);
+  forEachDrawnSkin(scene, palettes, [&](Palette& palette, const Skin& skin, size_t) {
+    palette.joints.resize(skin.joints.size());
+    for (size_t j = 0; j < skin.joints.size(); ++j)
+      palette.joints[j] = glm::mat4x3(jointWorld(skin, world, j) * inverseBind(skin, j));
+  });
 }
 
 }  // namespace

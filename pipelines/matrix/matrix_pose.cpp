@@ -1,5 +1,7 @@
 #include "pipelines/matrix/matrix_pose.h"
 
+#include "pipelines/scene/drawn_skins.h"
+
 namespace mb::matrix {
 namespace {
 
@@ -7,22 +9,15 @@ namespace {
 // inverse and products inlined into the loop (the motor palette gets the same).
 [[gnu::flatten]] void skinPalettes(const Scene& scene, const std::vector<glm::mat4>& world, bool worldPalette,
                                    std::vector<SkinPalette>& palettes) {
-  size_t count = 0;
-  for (size_t n = 0; n < scene.nodes.size(); ++n) {
-    const Skin* skin = drawnSkin(scene, n);
-    if (!skin) continue;
-    if (palettes.size() <= count) palettes.emplace_back();
-    SkinPalette& palette = palettes[count++];
-    palette.node = int(n);
-    palette.matrices.resize(2 * skin->joints.size());
+  forEachDrawnSkin(scene, palettes, [&](SkinPalette& palette, const Skin& skin, size_t n) {
+    palette.matrices.resize(2 * skin.joints.size());
     const glm::mat4 toMesh = worldPalette ? glm::mat4(1.0f) : glm::inverse(world[n]);
-    for (size_t j = 0; j < skin->joints.size(); ++j) {
-      const glm::mat4 m = toMesh * jointWorld(*skin, world, j) * inverseBind(*skin, j);
+    for (size_t j = 0; j < skin.joints.size(); ++j) {
+      const glm::mat4 m = toMesh * jointWorld(skin, world, j) * inverseBind(skin, j);
       palette.matrices[2 * j] = m;
       palette.matrices[2 * j + 1] = glm::transpose(glm::inverse(m));
     }
-  }
-  palettes.resize(count);
+  });
 }
 
 // normalMatrix of every node with a mesh: per-frame CPU work of the matrix form (the motor

@@ -15,7 +15,7 @@
 // Instanced nodes (Node::instances): the same motor and scale per instance, node world
 // composed with the instance's motor per frame (MB_INSTANCED, pipelines/gl/instance_stream.h:
 // 9 floats, 36 bytes; 11 on the scale fallback, PipelineStats::scaleFallbackInstances).
-// motor_c (MotorVariant::compact, issue 29): the 16-byte vertex (motor_c_vertices.h, MB_COMPACT);
+// motor_c (MotorVariant::compact): the 16-byte vertex (motor_c_vertices.h, MB_COMPACT);
 // rigid draws upload the world motor composed with a translation by scale * the primitive's
 // cube center and the scale times its extent, so no dequantisation runs per vertex; skinned and
 // instanced draws upload the cube as u_Dequant.
@@ -24,27 +24,25 @@
 // tangent rotor passed to forward.fs instead of a normal and a tangent; the joint palette put in
 // one hemisphere so neighbouring vertices blend to rotors of one sign; draws on the scale
 // fallback extract per vertex (a non-uniform scale is no rotation).
-// The exact fallback (issue 34, linear_fallback.h, variant MB_LINEAR_FALLBACK): a rigid draw
+// The exact fallback (linear_fallback.h, variant MB_LINEAR_FALLBACK): a rigid draw
 // whose node is general (its world may not be a similarity) gets its exact world's polar
 // factors, a motor and a mat3 (+ its normal matrix); a skin whose palette is not one common
 // positive scale gets a motor and 24 floats per joint (binding 1). Counted in PipelineStats
 // (linearFallbackDraws, skinFallbackDraws, skinFallbackJoints, fallbackVertices).
-// Morph targets (issue 37): a draw (instanced too) whose node has a non-zero weight uses the
+// Morph targets: a draw (instanced too) whose node has a non-zero weight uses the
 // MB_MORPH variant of its program; motor and motor_q morph the rotor by PipelineOptions::morph
 // (Frame by default: exact; morph_rotors.h), motor_c and motor_cf by the frame method on their
 // decoded rotor, their morphing draws dequantising per vertex (the cube is never folded).
-// Programs: motor_programs.h; vertices and morph deltas: motor_geometry.h.
+// Vertices and morph deltas: motor_geometry.h.
 #include "pipelines/motor/motor_pipeline.h"
 
-#include "pipelines/gl/instance_stream.h"
-#include "pipelines/gl/patch_geometry.h"
-#include "pipelines/gl/program.h"
-#include "pipelines/gl/scene_textures.h"
+#include "pipelines/gl/gltf_pipeline.h"
 #include "pipelines/gl/upload.h"
 #include "pipelines/motor/linear_fallback.h"
 #include "pipelines/motor/motor_camera.h"
 #include "pipelines/motor/motor_geometry.h"
-#include "pipelines/motor/motor_programs.h"
+#include "pipelines/gl/instance_stream.h"
+#include "pipelines/gl/morph_buffers.h"
 #include "pipelines/motor/motor_rig.h"
 #include "pipelines/scene/transform.h"
 
@@ -66,7 +64,22 @@ DrawScale drawScale(float uniform, const glm::vec3& residual) {
   return s;
 }
 
-class MotorPipeline final : public Pipeline {
+enum class DrawKind { Rigid = 0, Skinned = 1, Instanced = 2 };
+enum class ScaleForm { Uniform = 0, PerAxis = 1, Linear = 2 };  // MB_SCALE_FALLBACK, MB_LINEAR_FALLBACK
+
+// The motor.vs / motor_patch.vs programs of one projection (owned by the program cache): one
+// per way a draw reaches world space, scale form of its transform and whether it morphs; only
+// those a scene can use are linked.
+struct MotorPrograms {
+  gl::CachedProgram* table[3][3][2] = {};  // [kind][form][morph]
+  gl::CachedProgram* patch[2] = {};        // [per-axis scale]
+  bool built = false;
+  gl::CachedProgram& draw(DrawKind kind, ScaleForm form, bool morph) const {
+    return *table[int(kind)][int(form)][morph ? 1 : 0];
+  }
+};
+
+class MotorPipeline final : public gl::GltfPipeline {
 public:
   explicit MotorPipeline(const MotorVariant& variant) : variant_(variant) {}
   ~MotorPipeline() override { release(); }
@@ -80,16 +93,13 @@ public:
   }
   Status prepare(const Scene& scene) override;
   void update(const AnimState& state) override;
-  void timeUpdatePhases(bool on) override { timePhases_ = on; }
   void render(const View& view) override;
-  PipelineStats stats() const override { return stats_; }
 
 private:
-  void uploadPalettes();
+  uint64_t uploadPalette(size_t i);
   void streamInstances();
-  Status buildOrthographic() {
-    return orthoPrograms_.build(*scene_, variant_, referenceSkin_, morphMethod_, true);
-  }
+  gl::Defines defines(int kind, int form, bool morphing, bool orthographic) const;
+  Status linkPrograms(bool orthographic);
   void setDequant(const gl::Program& program, const gl::DrawItem& d);
   void drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g, const Primitive& prim,
                   const motor::JointPalette* palette, GLuint paletteBuffer, const gl::Program& program,
@@ -97,37 +107,22 @@ private:
   void release();
 
   MotorVariant variant_;
-  const Scene* scene_ = nullptr;
-  motor::MotorPrograms programs_;
-  motor::MotorPrograms orthoPrograms_;  // MB_ORTHOGRAPHIC: built for an orthographic View
+  MotorPrograms programs_[2];  // [MB_ORTHOGRAPHIC: for an orthographic View]
   MorphMethod morphMethod_ = MorphMethod::PipelineDefault;
   gl::PaletteBuffers linearBuffers_;             // per palette: the fallback's 24 floats per joint
   std::vector<std::vector<motor::ScaledMotor>> instanceMotors_;  // per node: fromTRS(instance)
-  gl::InstanceStream instances_;
   bool referenceSkin_ = false;
-  gl::PatchGeometry patches_;
-  gl::SceneTextures textures_;
   motor::MotorGeometry geometry_;                 // vertices, morph deltas, motor_c's cubes
-  gl::PaletteBuffers paletteBuffers_;             // one per pose_.palettes entry
-  std::vector<gl::DrawItem> draws_;
   motor::Rig rig_;
   motor::PoseWork pose_;  // per-frame buffers; world and palettes of the last update()
-  bool timePhases_ = false;
-  PipelineStats stats_;
 };
 
 Status MotorPipeline::prepare(const Scene& scene) {
   release();
-  if (Status curved = refuseCurvedScene(scene, name()); !curved) return curved;
-  scene_ = &scene;
-  stats_ = PipelineStats{};
-  if (Status built = programs_.build(scene, variant_, referenceSkin_, morphMethod_); !built) return built;
+  if (Status begun = beginPrepare(scene, 8 * sizeof(float)); !begun) return begun;
+  if (Status linked = linkPrograms(false); !linked) return linked;
   if (hasOrthographicCamera(scene))
-    if (Status built = buildOrthographic(); !built) return built;
-  if (Status fits = gl::checkPaletteSize(scene, 8 * sizeof(float)); !fits) return fits;
-  if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
-  if (gl::hasPatches(scene))
-    if (Status up = patches_.upload(scene, stats_); !up) return up;
+    if (Status linked = linkPrograms(true); !linked) return linked;
 
   // Load-time conversion: transforms and inverse binds to motors, frames to rotors.
   auto t0 = gl::Clock::now();
@@ -137,11 +132,7 @@ Status MotorPipeline::prepare(const Scene& scene) {
     for (const TRS& t : scene.nodes[n].instances) instanceMotors_[n].push_back(motor::fromTRS(t, true));
   geometry_.upload(scene, variant_, morphMethod_, stats_);
   stats_.conversionMs = gl::msSince(t0);
-  draws_ = gl::buildDrawList(scene);
-  update(AnimState{});
-  GLenum err = glGetError();
-  if (err != GL_NO_ERROR) return Status::fail(scene.source + ": motor prepare: " + gl::errorName(err));
-  return {};
+  return endPrepare(scene);
 }
 
 void MotorPipeline::update(const AnimState& state) {
@@ -157,24 +148,19 @@ void MotorPipeline::update(const AnimState& state) {
   stats_.shearMatrixNodes = counts.shearMatrixNodes;
 }
 
-void MotorPipeline::uploadPalettes() {
-  stats_.skinBytesPerFrame = 0;
-  uint64_t joints = 0;
-  for (size_t i = 0; i < pose_.palettes.size(); ++i) {
-    std::vector<float>& m = pose_.palettes[i].motors;
-    // motor_cf: every joint motor in the first one's hemisphere (negation changes no pose), so
-    // vertices led by different joints blend to world rotors of one sign.
-    for (size_t j = 8; variant_.fragmentRotor && j + 8 <= m.size(); j += 8)
-      if (m[0] * m[j] + m[1] * m[j + 1] + m[2] * m[j + 2] + m[3] * m[j + 3] < 0.0f)
-        for (size_t k = j; k < j + 8; ++k) m[k] = -m[k];
-    paletteBuffers_.upload(i, m.data(), m.size() * sizeof(float), stats_.skinBytesPerFrame);
-    if (pose_.palettes[i].fallback) {
-      const std::vector<float>& l = pose_.palettes[i].linear;
-      linearBuffers_.upload(i, l.data(), l.size() * sizeof(float), stats_.skinBytesPerFrame);
-    }
-    joints += scene_->skins[size_t(pose_.palettes[i].skin)].joints.size();
+uint64_t MotorPipeline::uploadPalette(size_t i) {
+  std::vector<float>& m = pose_.palettes[i].motors;
+  // motor_cf: every joint motor in the first one's hemisphere (negation changes no pose), so
+  // vertices led by different joints blend to world rotors of one sign.
+  for (size_t j = 8; variant_.fragmentRotor && j + 8 <= m.size(); j += 8)
+    if (m[0] * m[j] + m[1] * m[j + 1] + m[2] * m[j + 2] + m[3] * m[j + 3] < 0.0f)
+      for (size_t k = j; k < j + 8; ++k) m[k] = -m[k];
+  palettes_.upload(i, m.data(), m.size() * sizeof(float), stats_.skinBytesPerFrame);
+  if (pose_.palettes[i].fallback) {
+    const std::vector<float>& l = pose_.palettes[i].linear;
+    linearBuffers_.upload(i, l.data(), l.size() * sizeof(float), stats_.skinBytesPerFrame);
   }
-  stats_.floatsPerJoint = gl::floatsPer(stats_.skinBytesPerFrame, joints);
+  return scene_->skins[size_t(pose_.palettes[i].skin)].joints.size();
 }
 
 // Per instance: node world composed with the instance (composeInto), then its motor and the
@@ -200,45 +186,32 @@ void MotorPipeline::streamInstances() {
 
 void MotorPipeline::render(const View& view) {
   if (!scene_) return;
-  stats_.uniformBytesPerFrame = 0;
-  stats_.draws = 0;
-  stats_.morphDraws = 0;
-  stats_.drawnVertices = 0;
-  stats_.linearFallbackDraws = stats_.skinFallbackDraws = stats_.skinFallbackJoints = 0;
-  stats_.fallbackVertices = stats_.skinFallbackVertices = 0;
-  uploadPalettes();
+  beginFrame();
+  uploadPalettes(pose_.palettes.size(), [this](size_t i) { return uploadPalette(i); });
   streamInstances();
   const motor::CameraMotor camera = motor::cameraFromView(view);
   const MK::vec4 k = motor::projectionConstants(camera);  // once per frame, not per vertex as the
                                                           // paper listing's project() does
   // An orthographic View draws with the MB_ORTHOGRAPHIC programs (a hand-made View on a scene
   // without an orthographic camera builds them here; prepare() did for the others).
-  if (view.orthographic && !orthoPrograms_.built() && !buildOrthographic()) return;
-  const motor::MotorPrograms& programs = view.orthographic ? orthoPrograms_ : programs_;
+  if (view.orthographic && !programs_[1].built && !linkPrograms(true)) return;
+  const MotorPrograms& programs = programs_[view.orthographic ? 1 : 0];
   gl::beginDraws();
-  // Per-frame uniforms go to a program when the frame first draws with it (unused variants
-  // upload nothing, so uniformBytesPerFrame counts what a frame needs).
-  using motor::DrawKind;
-  using motor::ScaleForm;
-  bool frameSet[3][3][2] = {}, patchSet[2] = {};
-  auto setFrame = [&](gl::Program& p, bool& set) -> gl::Program& {
-    p.use();
-    if (!set) {
-      set = true;
-      gl::uniform4fv(p.uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
-      gl::uniform4f(p.uniform("u_ProjectionK"), &k[0], stats_.uniformBytesPerFrame);
-      gl::setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
-    }
-    return p;
+  auto setFrame = [&](gl::CachedProgram& p) -> const gl::Program& {
+    return use(p, [&](const gl::Program& program) {
+      gl::uniform4fv(program.uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
+      gl::uniform4f(program.uniform("u_ProjectionK"), &k[0], stats_.uniformBytesPerFrame);
+      gl::setFrameUniforms(program, view, stats_.uniformBytesPerFrame);
+    });
   };
   auto useProgram = [&](DrawKind kind, ScaleForm form, bool morph) -> const gl::Program& {
-    return setFrame(programs.draw(kind, form, morph), frameSet[int(kind)][int(form)][morph]);
+    return setFrame(programs.draw(kind, form, morph));
   };
   auto formOf = [](bool fallback) { return fallback ? ScaleForm::PerAxis : ScaleForm::Uniform; };
   uint64_t transformBytes = 0, transforms = 0, transformScaleBytes = 0;
   for (const gl::DrawItem& d : draws_) {
     const gl::GpuPrimitive& g = geometry_.vertices.at(d);
-    const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
+    const Primitive& prim = primitiveOf(d);
     const bool patch = patches_.has(d);  // Bezier patches: drawn rigidly by their node (never skinned)
     if (!patch && !g.indexCount) continue;
     const bool morph = !patch && geometry_.morph.active(d);
@@ -263,18 +236,16 @@ void MotorPipeline::render(const View& view) {
         const bool fallback = group.key & 1;
         const gl::Program& program = bindMorph(useProgram(DrawKind::Instanced, formOf(fallback), morph));
         if (variant_.compact) setDequant(program, d);
-        textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
+        bindMaterial(program, prim);
         gl::setWinding(group.key & 2);
         stats_.drawnVertices += instances_.draw(g, group, {4, 4, fallback ? 3 : 1});
         ++stats_.draws;
       }
       continue;
     }
-    // A mesh shared by a skinned and an unskinned node is drawn rigidly on the latter.
-    const motor::JointPalette* palette = nullptr;
-    GLuint paletteBuffer = 0;
-    for (size_t i = 0; !patch && g.skinned && i < pose_.palettes.size(); ++i)
-      if (pose_.palettes[i].node == d.node) palette = &pose_.palettes[i], paletteBuffer = paletteBuffers_[i];
+    const int paletteIndex = paletteOf(pose_.palettes, g, patch, d.node);
+    const motor::JointPalette* palette = paletteIndex < 0 ? nullptr : &pose_.palettes[size_t(paletteIndex)];
+    const GLuint paletteBuffer = paletteIndex < 0 ? 0 : palettes_[size_t(paletteIndex)];
     if (palette ? palette->fallback : (!patch && rig_.general[size_t(d.node)])) {
       drawLinear(d, g, prim, palette, paletteBuffer, bindMorph(useProgram(palette ? DrawKind::Skinned : DrawKind::Rigid, ScaleForm::Linear, morph)), transformBytes,
                  transformScaleBytes);
@@ -294,7 +265,7 @@ void MotorPipeline::render(const View& view) {
       world = &folded;
     }
     const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
-    const gl::Program& program = patch ? setFrame(programs.patch(formOf(scale.fallback)), patchSet[scale.fallback])
+    const gl::Program& program = patch ? setFrame(*programs.patch[scale.fallback])
                                        : bindMorph(useProgram(kind, formOf(scale.fallback), morph));
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
     if (dequantise) setDequant(program, d);
@@ -311,15 +282,14 @@ void MotorPipeline::render(const View& view) {
       gl::uniform1f(program.uniform("u_Scale"), scale.value.x, scaleBytes);
     stats_.uniformBytesPerFrame += scaleBytes;
     if (!palette || referenceSkin_) transformScaleBytes += scaleBytes;  // draws with a transform
-    textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
+    bindMaterial(program, prim);
     gl::setWinding(scale.mirrored);
     // motor_cf: triangles whose corner rotors cannot share a hemisphere (rotor_signs.h) are drawn
     // after the others by the per-vertex extraction of its scale-fallback program (motor_c's way).
     const size_t interpolable = variant_.fragmentRotor && !patch && !scale.fallback
                                     ? geometry_.interpolable[size_t(d.mesh)][size_t(d.primitive)] : size_t(g.indexCount);
     if (interpolable >= size_t(g.indexCount)) {
-      stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
-      ++stats_.draws;
+      drawCounted(d, g, patch);
       continue;
     }
     stats_.drawnVertices += g.drawRange(0, GLsizei(interpolable));
@@ -330,7 +300,7 @@ void MotorPipeline::render(const View& view) {
     const glm::vec3 uniformScale(scale.value.x);
     gl::uniform3f(extract.uniform("u_Scale"), &uniformScale[0], extractBytes);
     stats_.uniformBytesPerFrame += extractBytes;
-    textures_.bindMaterial(extract, prim.material, stats_.uniformBytesPerFrame);
+    bindMaterial(extract, prim);
     g.drawRange(GLsizei(interpolable), g.indexCount - GLsizei(interpolable));
     stats_.draws += 2;
   }
@@ -338,6 +308,52 @@ void MotorPipeline::render(const View& view) {
   stats_.uniformBytesPerFrame += transformBytes;
   stats_.floatsPerTransform = gl::floatsPer(transformBytes, transforms);
   stats_.floatsPerTransformWithScale = gl::floatsPer(transformBytes + transformScaleBytes, transforms);
+}
+
+// The variants `scene_` needs: instanced ones only for scenes with instances, MB_MORPH ones only
+// for scenes with morph targets (method (b), MB_MORPH_ROTOR, for the float and int16 rotors when
+// the morph method is Rotor; the compact rotors morph by method (a) always), patch programs only
+// for scenes with Bezier patches. orthographic: every program with MB_ORTHOGRAPHIC.
+gl::Defines MotorPipeline::defines(int kind, int form, bool morphing, bool orthographic) const {
+  gl::Defines d;
+  if (morphing) d = gl::morphDefines(*scene_);
+  if (morphing && morphMethod_ == MorphMethod::Rotor && !variant_.compact) d.push_back({"MB_MORPH_ROTOR", ""});
+  if (kind == 1) d.push_back({"MB_SKINNED", ""});
+  if (kind == 1 && referenceSkin_ && form < 2) d.push_back({"MB_SKIN_REFERENCE", ""});
+  if (kind == 2) d.push_back({"MB_INSTANCED", ""});
+  if (form == 1) d.push_back({"MB_SCALE_FALLBACK", ""});
+  if (form == 2) d.push_back({"MB_LINEAR_FALLBACK", ""});
+  if (variant_.compact) d.push_back({"MB_COMPACT", ""});
+  if (variant_.fragmentRotor) d.push_back({"MB_SIGNED_ROTOR", ""});
+  if (variant_.fragmentRotor && form == 0) d.push_back({"MB_FRAGMENT_ROTOR", ""});
+  if (orthographic) d.push_back({"MB_ORTHOGRAPHIC", ""});
+  return d;
+}
+
+Status MotorPipeline::linkPrograms(bool orthographic) {
+  MotorPrograms& programs = programs_[orthographic ? 1 : 0];
+  programs = MotorPrograms{};
+  const bool instanced = gl::hasInstances(*scene_), morphs = gl::maxMorphTargets(*scene_) > 0;
+  Status linked;
+  for (int kind = 0; kind < 3; ++kind)
+    for (int form = 0; form < 3; ++form)
+      for (int morphing = 0; morphing < 2; ++morphing) {
+        if ((kind == 2 && (!instanced || form == 2)) || (morphing && !morphs)) continue;
+        std::vector<gl::StorageBlock> blocks;
+        if (kind == 1) blocks.push_back({"MotorJoints", 0});
+        if (kind == 1 && form == 2) blocks.push_back({"MotorJointLinear", 1});
+        if (morphing) blocks.push_back({"MorphDeltas", gl::kMorphBinding});
+        gl::CachedProgram*& p = programs.table[kind][form][morphing];
+        if (!(p = link(linked, "motor.vs", defines(kind, form, morphing, orthographic), blocks))) return linked;
+      }
+  for (int fallback = 0; fallback < 2 && gl::hasPatches(*scene_); ++fallback) {
+    gl::Defines d;
+    if (fallback) d.push_back({"MB_SCALE_FALLBACK", ""});
+    if (orthographic) d.push_back({"MB_ORTHOGRAPHIC", ""});
+    if (!(programs.patch[fallback] = link(linked, "motor_patch.vs", d))) return linked;
+  }
+  programs.built = true;
+  return linked;
 }
 
 // One draw on the exact fallback: a rigid draw of a general node with its exact world's polar
@@ -368,7 +384,7 @@ void MotorPipeline::drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g,
     ++stats_.linearFallbackDraws;
   }
   if (variant_.compact) setDequant(program, d);
-  textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
+  bindMaterial(program, prim);
   gl::setWinding(mirrored);
   const uint64_t drawn = g.draw();
   stats_.drawnVertices += drawn;
@@ -385,14 +401,9 @@ void MotorPipeline::setDequant(const gl::Program& program, const gl::DrawItem& d
 
 void MotorPipeline::release() {
   geometry_.release();
-  patches_.release();
-  paletteBuffers_.release();
   linearBuffers_.release();
-  textures_.release();
-  instances_.release();
-  programs_.release();
-  orthoPrograms_.release();
-  scene_ = nullptr;
+  programs_[0] = programs_[1] = MotorPrograms{};
+  releaseShared();
 }
 
 }  // namespace
@@ -402,13 +413,13 @@ std::unique_ptr<Pipeline> makeMotorPipeline(const MotorVariant& variant) {
 }
 std::unique_ptr<Pipeline> makeMotorPipeline() { return makeMotorPipeline(MotorVariant{}); }
 std::unique_ptr<Pipeline> makeMotorQPipeline() {
-  return makeMotorPipeline(MotorVariant{"motor_q", true});
+  return makeMotorPipeline(MotorVariant{.name = "motor_q", .quantizedFrame = true});
 }
 std::unique_ptr<Pipeline> makeMotorCPipeline() {
-  return makeMotorPipeline(MotorVariant{"motor_c", false, true});
+  return makeMotorPipeline(MotorVariant{.name = "motor_c", .compact = true});
 }
 std::unique_ptr<Pipeline> makeMotorCFPipeline() {
-  return makeMotorPipeline(MotorVariant{"motor_cf", false, true, true});
+  return makeMotorPipeline(MotorVariant{.name = "motor_cf", .compact = true, .fragmentRotor = true});
 }
 
 }  // namespace mb

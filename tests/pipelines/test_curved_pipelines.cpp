@@ -221,3 +221,26 @@ TEST(CurvedPipelines, EachKindRefusesTheOtherKindOfScene) {
   ASSERT_FALSE(r3);
   EXPECT_NE(r3.error().find("spherical (S3)"), std::string::npos) << r3.error();
 }
+
+// Every glTF pipeline (pipelineNames(), the shared draw path's guard) refuses a scene of each
+// curved space with the one message: the scene, the pipeline, the space and who draws it.
+TEST(CurvedPipelines, EveryGltfPipelineRefusesCurvedScenesWithOneMessage) {
+  auto ctx = mb::gl::sharedContext();
+  ASSERT_TRUE(ctx) << ctx.error();
+  const std::pair<const char*, const char*> spaces[] = {
+      {"s3_tiling", "this is a spherical (S3) scene: use s3_matrix or s3_motor"},
+      {"h3_tiling", "this is a hyperbolic (H3) scene: use h3_matrix or h3_motor"}};
+  for (const auto& [sceneName, space] : spaces) {
+    auto scene = mb::loadScene(sceneName);
+    ASSERT_TRUE(scene) << scene.error();
+    for (const std::string& name : mb::pipelineNames()) {
+      auto p = mb::createPipeline(name);
+      ASSERT_TRUE(p) << name;
+      const mb::Status s = p->prepare(*scene);
+      ASSERT_FALSE(s) << name << " drew " << sceneName;
+      EXPECT_EQ(s.error(), std::string(scene->source) + ": pipeline " + name +
+                               " draws Euclidean glTF scenes; " + space)
+          << name;
+    }
+  }
+}

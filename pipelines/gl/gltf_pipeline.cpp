@@ -1,0 +1,96 @@
+#include "pipelines/gl/gltf_pipeline.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "pipelines/gl/upload.h"
+#include "pipelines/scene/camera_rule.h"
+#include "pipelines/scene/transform.h"
+
+namespace mb::gl {
+
+Result<CachedProgram*> ProgramCache::get(const std::string& vs, const std::string& fs, const Defines& defines,
+                                         const std::vector<StorageBlock>& blocks) {
+  std::string key = vs + '\n' + fs;
+  for (const auto& [name, value] : defines) key += '\n' + name + '=' + value;
+  std::unique_ptr<CachedProgram>& cached = programs_[key];
+  if (cached) return cached.get();
+  auto program = Program::fromFiles(vs, fs, defines);
+  if (!program) {
+    programs_.erase(key);
+    return Result<CachedProgram*>::fail(program.error());
+  }
+  cached = std::make_unique<CachedProgram>();
+  cached->program = program.take();
+  for (const StorageBlock& b : blocks) cached->program->bindStorageBlock(b.name, b.binding);
+  return cached.get();
+}
+
+Status GltfPipeline::beginPrepare(const Scene& scene, size_t bytesPerJoint) {
+  if (Status curved = refuseCurvedScene(scene, name()); !curved) return curved;
+  scene_ = &scene;
+  stats_ = PipelineStats{};
+  if (Status fits = checkPaletteSize(scene, bytesPerJoint); !fits) return fits;
+  if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
+  if (hasPatches(scene))
+    if (Status up = patches_.upload(scene, stats_); !up) return up;
+  return {};
+}
+
+Status GltfPipeline::endPrepare(const Scene& scene) {
+  draws_ = buildDrawList(scene);
+  update(AnimState{});
+  GLenum err = glGetError();
+  if (err != GL_NO_ERROR) return Status::fail(scene.source + ": " + name() + " prepare: " + errorName(err));
+  return {};
+}
+
+CachedProgram* GltfPipeline::link(Status& status, const std::string& vs, const Defines& defines,
+                                  const std::vector<StorageBlock>& blocks) {
+  auto program = cache_.get(vs, "forward.fs", defines, blocks);
+  if (!program) {
+    status = Status::fail(program.error());
+    return nullptr;
+  }
+  return *program;
+}
+
+std::vector<std::vector<glm::mat4>> GltfPipeline::instanceMatrices(const Scene& scene) {
+  std::vector<std::vector<glm::mat4>> matrices(scene.nodes.size());
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    for (const TRS& t : scene.nodes[n].instances) matrices[n].push_back(trsMatrix(t));
+  return matrices;
+}
+
+void GltfPipeline::setMatrixFrame(const Program& p, const glm::mat4& viewProjection, const View& view) {
+  uniformMatrix4(p.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection), stats_.uniformBytesPerFrame);
+  setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
+}
+
+glm::mat4 GltfPipeline::viewProjection(const View& view) {
+  const glm::mat4 viewMatrix =
+      glm::inverse(glm::translate(glm::mat4(1.0f), view.eye) * glm::mat4_cast(view.orientation));
+  return projectionMatrix(view) * viewMatrix;
+}
+
+void GltfPipeline::beginFrame() {
+  stats_.uniformBytesPerFrame = 0;
+  stats_.draws = 0;
+  stats_.morphDraws = 0;
+  stats_.drawnVertices = 0;
+  stats_.linearFallbackDraws = stats_.skinFallbackDraws = stats_.skinFallbackJoints = 0;
+  stats_.fallbackVertices = stats_.skinFallbackVertices = 0;
+  ++frame_;
+}
+
+void GltfPipeline::releaseShared() {
+  patches_.release();
+  palettes_.release();
+  textures_.release();
+  instances_.release();
+  cache_.release();
+  draws_.clear();
+  scene_ = nullptr;
+}
+
+}  // namespace mb::gl

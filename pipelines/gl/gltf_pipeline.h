@@ -1,0 +1,169 @@
+// The draw path every glTF pipeline shares (matrix, affine, motor and their variants): the
+// guards of prepare() (the curved-space refusal, the palette limit, the GL error check), the
+// programs (linked once per define set, as the Khronos Sample Viewer's shader cache keys them),
+// textures, Bezier patches, the draw list, the per-frame stat resets, the joint palette and
+// instance buffers, material binding, winding and the draw counts, and release(). A pipeline
+// derives from it and supplies what is its own: its vertex layout and encoding, its vertex
+// shader and defines, its per-draw uniforms and its CPU update.
+#pragma once
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "pipelines/gl/gpu_geometry.h"
+#include "pipelines/gl/instance_stream.h"
+#include "pipelines/gl/morph_buffers.h"
+#include "pipelines/gl/patch_geometry.h"
+#include "pipelines/gl/program.h"
+#include "pipelines/gl/scene_textures.h"
+#include "pipelines/pipeline.h"
+
+namespace mb::gl {
+
+// A linked program and the frame that last set its per-frame uniforms.
+struct CachedProgram {
+  std::unique_ptr<Program> program;
+  uint64_t frame = 0;
+};
+
+// A shader storage block a program reads and the binding point it is bound to.
+struct StorageBlock {
+  const char* name;
+  GLuint binding;
+};
+
+// Programs keyed by (vertex shader, fragment shader, define set): one link per key.
+class ProgramCache {
+public:
+  // The program of the key, linked (its storage blocks bound) the first time it is asked for.
+  Result<CachedProgram*> get(const std::string& vs, const std::string& fs, const Defines& defines,
+                             const std::vector<StorageBlock>& blocks = {});
+  void release() { programs_.clear(); }
+
+private:
+  std::map<std::string, std::unique_ptr<CachedProgram>> programs_;
+};
+
+// How a draw reaches world space; the rows of a pipeline's program table.
+enum DrawKind { kRigid = 0, kSkinned = 1, kInstanced = 2, kDrawKinds = 3 };
+using ProgramTable = CachedProgram* [kDrawKinds][2];  // [kind][frame variant]
+
+class GltfPipeline : public Pipeline {
+public:
+  void timeUpdatePhases(bool on) override { timePhases_ = on; }
+  PipelineStats stats() const override { return stats_; }
+
+protected:
+  // prepare()'s shared start: the previous scene released, a curved-space scene refused, the
+  // stats reset, the palette checked against the storage block limit at `bytesPerJoint`, the
+  // textures and Bezier patches uploaded.
+  Status beginPrepare(const Scene& scene, size_t bytesPerJoint);
+  // prepare()'s shared end: the draw list, the rest pose (update(AnimState{})) and the GL
+  // error check naming the scene and the pipeline.
+  Status endPrepare(const Scene& scene);
+  // The program of a define set (see ProgramCache::get); nullptr with `status` set on failure.
+  CachedProgram* link(Status& status, const std::string& vs, const Defines& defines,
+                      const std::vector<StorageBlock>& blocks = {});
+  // Links `vs` for each draw kind (instanced only for scenes with instances) and each of its
+  // `frames` frame variants (0, 1: MB_NO_TANGENT where the pipeline has it) with
+  // defines(kind, frame), into `plain`; for scenes with morph targets the same with the morph
+  // defines into `morphing`. Skinned programs read `jointBlock` at binding 0.
+  template <class DefinesOf>
+  Status linkTable(const Scene& scene, const std::string& vs, int frames, const char* jointBlock,
+                   DefinesOf definesOf, ProgramTable& plain, ProgramTable& morphing) {
+    Status linked;
+    for (int kind = 0; kind < (hasInstances(scene) ? 3 : 2); ++kind)
+      for (int frame = 0; frame < frames; ++frame) {
+        Defines defines = definesOf(kind, frame);
+        std::vector<StorageBlock> blocks;
+        if (kind == kSkinned) blocks.push_back({jointBlock, 0});
+        if (!(plain[kind][frame] = link(linked, vs, defines, blocks))) return linked;
+        if (!maxMorphTargets(scene)) continue;
+        for (const auto& d : morphDefines(scene)) defines.push_back(d);
+        blocks.push_back({"MorphDeltas", kMorphBinding});
+        if (!(morphing[kind][frame] = link(linked, vs, defines, blocks))) return linked;
+      }
+    return linked;
+  }
+  // Per node: the TRS matrix of each of its instances.
+  static std::vector<std::vector<glm::mat4>> instanceMatrices(const Scene& scene);
+
+  // render()'s shared start: the per-frame counters reset, a new frame for the programs'
+  // per-frame uniforms.
+  void beginFrame();
+  // The matrix families' per-frame uniforms: u_ViewProjectionMatrix and the shared ones.
+  void setMatrixFrame(const Program& p, const glm::mat4& viewProjection, const View& view);
+  static glm::mat4 viewProjection(const View& view);
+  // Makes `p` current; the first time in a frame, setFrame(program) uploads its per-frame
+  // uniforms (a program the frame does not use uploads nothing, so uniformBytesPerFrame
+  // counts what a frame needs).
+  template <class SetFrame>
+  const Program& use(CachedProgram& p, SetFrame&& setFrame) {
+    p.program->use();
+    if (p.frame != frame_) {
+      p.frame = frame_;
+      setFrame(*p.program);
+    }
+    return *p.program;
+  }
+  // The frame's joint palettes: upload(i) uploads palette i of `count` (adding its bytes to
+  // skinBytesPerFrame) and returns its joints.
+  template <class Upload>
+  void uploadPalettes(size_t count, Upload upload) {
+    stats_.skinBytesPerFrame = 0;
+    uint64_t joints = 0;
+    for (size_t i = 0; i < count; ++i) joints += upload(i);
+    stats_.floatsPerJoint = floatsPer(stats_.skinBytesPerFrame, joints);
+  }
+  // The index in `palettes` of node `node`'s palette, or -1 (a mesh shared by a skinned and an
+  // unskinned node is drawn rigidly on the latter; patches are never skinned).
+  template <class Palette>
+  static int paletteOf(const std::vector<Palette>& palettes, const GpuPrimitive& g, bool patch, int node) {
+    int found = -1;
+    for (size_t i = 0; !patch && g.skinned && i < palettes.size(); ++i)
+      if (palettes[i].node == node) found = int(i);
+    return found;
+  }
+  void bindMaterial(const Program& program, const Primitive& prim) {
+    textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
+  }
+  // One draw of `d` (its patch or its triangles), counted.
+  void drawCounted(const DrawItem& d, const GpuPrimitive& g, bool patch) {
+    stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
+    ++stats_.draws;
+  }
+  // The instance groups of a node drawn with the bound program and material, each
+  // with its winding (key 1: mirrored), counted.
+  void drawInstanceGroups(const GpuPrimitive& g, const std::vector<InstanceGroup>& groups,
+                          const InstanceLayout& layout) {
+    for (const InstanceGroup& group : groups) {
+      setWinding(group.key == 1);
+      stats_.drawnVertices += instances_.draw(g, group, layout);
+      ++stats_.draws;
+    }
+  }
+  const Primitive& primitiveOf(const DrawItem& d) const {
+    return scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
+  }
+  // The shared GL objects released (a pipeline's release() calls it after its own).
+  void releaseShared();
+
+  const Scene* scene_ = nullptr;
+  PipelineStats stats_;
+  bool timePhases_ = false;
+  ProgramCache cache_;
+  PatchGeometry patches_;
+  SceneTextures textures_;
+  PaletteBuffers palettes_;  // one per palette of the pose (same order every update)
+  InstanceStream instances_;
+  std::vector<DrawItem> draws_;
+
+private:
+  uint64_t frame_ = 0;
+};
+
+}  // namespace mb::gl

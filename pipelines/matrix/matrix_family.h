@@ -1,0 +1,146 @@
+// The matrix family's pipelines (matrix, and affine, qtangent, matrix_c, hybrid in
+// pipelines/affine): one prepare, update and render over the shared draw path, the pipeline
+// (`Self`, CRTP so that no virtual call is made per draw or per instance) supplying what is its
+// own:
+//   kVertexShader, kPatchShader, kJointBlock, kBytesPerJoint, kInstanceLayout, frames(),
+//   defines(kind, frame)                                   its programs
+//   convert(scene) (timed as conversionMs), preparePose(scene)   its vertices and pose set-up
+//   pose(state, clock), posed(clock)                       its CPU update
+//   palettes(), uploadPalette(i) -> joints                 its joint palettes
+//   instanceWorld(node), writeInstance(model, out) -> key  its per-instance data
+//   instancedUniforms(program, d), drawUniforms(program, d, palette, patch, morph, counters)
+//                                                          its per-draw uniforms (-> mirrored)
+// Every draw's program is picked from the table by draw kind (rigid, skinned, instanced), frame
+// variant (GpuPrimitive::variant 1: MB_NO_TANGENT) and whether the draw morphs (MB_MORPH).
+#pragma once
+#include <vector>
+
+#include "pipelines/gl/frame_vertices.h"
+#include "pipelines/gl/gltf_pipeline.h"
+#include "pipelines/gl/morph_buffers.h"
+
+namespace mb::gl {
+
+// What the per-draw uniforms of a frame added up to: the transforms, the bytes of their
+// matrices and of what a transform adds beside them (affine's mirror float).
+struct TransformCounters {
+  uint64_t transformBytes = 0, scaleBytes = 0, transforms = 0;
+};
+
+template <class Self>
+class MatrixFamily : public GltfPipeline {
+public:
+  Status prepare(const Scene& scene) override {
+    release();
+    if (Status begun = beginPrepare(scene, Self::kBytesPerJoint); !begun) return begun;
+    auto defines = [this](int kind, int frame) { return self().defines(kind, frame); };
+    Status linked = linkTable(scene, Self::kVertexShader, self().frames(), Self::kJointBlock, defines,
+                              programs_, morphing_);
+    if (linked && hasPatches(scene)) patch_ = link(linked, Self::kPatchShader, {});
+    if (!linked) return linked;
+    instanceMatrices_ = instanceMatrices(scene);
+    auto t0 = Clock::now();
+    if (Status converted = self().convert(scene); !converted) return converted;
+    morph_.upload(scene, packFrameDeltas, stats_);
+    stats_.conversionMs = msSince(t0);
+    self().preparePose(scene);
+    return endPrepare(scene);
+  }
+
+  void update(const AnimState& state) override {
+    if (!scene_) return;
+    auto t0 = Clock::now();
+    PhaseClock clock(timePhases_ ? &stats_.updatePhases : nullptr);
+    self().pose(state, clock);
+    morph_.update(*scene_, state);
+    self().posed(clock);
+    stats_.updateMs = msSince(t0);
+  }
+
+  void render(const View& view) override {
+    if (!scene_) return;
+    beginFrame();
+    uploadPalettes(self().palettes().size(), [this](size_t i) { return self().uploadPalette(i); });
+    streamInstances();
+    const glm::mat4 viewProjection = GltfPipeline::viewProjection(view);
+    beginDraws();
+    auto useProgram = [&](CachedProgram* p) -> const Program& {
+      return use(*p, [&](const Program& program) { setMatrixFrame(program, viewProjection, view); });
+    };
+    TransformCounters counters;
+    for (const DrawItem& d : draws_) {
+      const GpuPrimitive& g = geometry_.at(d);
+      const bool patch = patches_.has(d);  // Bezier patches: drawn rigidly by their node (never skinned)
+      if (!patch && !g.indexCount) continue;
+      const int paletteIndex = paletteOf(self().palettes(), g, patch, d.node);
+      const GLuint palette = paletteIndex < 0 ? 0 : palettes_[size_t(paletteIndex)];
+      const bool morph = !patch && morph_.active(d);
+      const int frame = g.variant == 1 ? 1 : 0;
+      const ProgramTable& table = morph ? morphing_ : programs_;
+      const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
+      const Program& program = useProgram(!groups.empty() ? table[kInstanced][frame]
+                                          : patch          ? patch_
+                                                           : table[palette ? kSkinned : kRigid][frame]);
+      if (!groups.empty()) self().instancedUniforms(program, d);
+      if (morph) morph_.bind(program, d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
+      if (!groups.empty()) {
+        bindMaterial(program, primitiveOf(d));
+        drawInstanceGroups(g, groups, Self::kInstanceLayout);
+        continue;
+      }
+      const bool mirrored = self().drawUniforms(program, d, palette, patch, morph, counters);
+      bindMaterial(program, primitiveOf(d));
+      setWinding(mirrored);
+      drawCounted(d, g, patch);
+    }
+    endDraws();
+    stats_.uniformBytesPerFrame += counters.transformBytes + counters.scaleBytes;
+    stats_.floatsPerTransform = floatsPer(counters.transformBytes, counters.transforms);
+    stats_.floatsPerTransformWithScale = floatsPer(counters.transformBytes + counters.scaleBytes, counters.transforms);
+  }
+
+protected:
+  ~MatrixFamily() override { release(); }
+  // The defaults of the optional hooks.
+  void preparePose(const Scene&) {}
+  void posed(PhaseClock&) {}
+  void instancedUniforms(const Program&, const DrawItem&) {}
+
+  SceneGeometry geometry_;
+  MorphBuffers morph_;
+
+private:
+  Self& self() { return static_cast<Self&>(*this); }
+
+  // Per instance: model = node world * instance, written by the pipeline, which returns its
+  // key (1: mirrored, the winding flips).
+  void streamInstances() {
+    instances_.begin(scene_->nodes.size());
+    for (size_t n = 0; n < instanceMatrices_.size(); ++n) {
+      const std::vector<glm::mat4>& local = instanceMatrices_[n];
+      if (local.empty()) continue;
+      const glm::mat4 world = self().instanceWorld(n);
+      instances_.addNode(int(n), local.size(), [&](size_t i, std::vector<float>& out) {
+        return self().writeInstance(world * local[i], out);
+      });
+    }
+    instances_.upload(stats_);
+  }
+
+  void release() {
+    geometry_.release();
+    morph_.release();
+    for (auto* table : {&programs_, &morphing_})
+      for (auto& row : *table)
+        for (auto& p : row) p = nullptr;
+    patch_ = nullptr;
+    releaseShared();
+  }
+
+  ProgramTable programs_ = {};  // [rigid, skinned, instanced][frame variant]
+  ProgramTable morphing_ = {};  // the same with MB_MORPH, for scenes with morph targets
+  CachedProgram* patch_ = nullptr;  // kPatchShader, for scenes with Bezier patches
+  std::vector<std::vector<glm::mat4>> instanceMatrices_;  // per node: trsMatrix(instance)
+};
+
+}  // namespace mb::gl
