@@ -25,6 +25,7 @@ COLOURS = {
     "frame": "#3182bd", "64x64 viewport (vertex-bound)": "#e6550d", "CPU update": "#31a354",
     "in cache": "#6baed6", "out of cache (>= 256 MiB)": "#fd8d3c", "one working set": "#969696",
     "matrix family": "#08519c", "motor family": "#e6550d",
+    "bytes fetched per frame": "#756bb1", "ops counted per vertex": "#de9ed6",
 }
 # Every label is at least 10 px high at the plots' 90 dpi: 8 pt = 8 * 90 / 72 = 10 px.
 DPI = 90
@@ -413,6 +414,70 @@ def plot_design_space(plt, report, outdir):
             "against its vertex shader's instructions; lower left is cheaper on both. Motor and matrix "
             "families in two colours.", bars)
 
+# The kinds of content the answer splits the report into (harness/document/report_kind_figures.h).
+CONTENT_KINDS = [("all", "all content"), ("normal_mapped", "normal-mapped"), ("not_normal_mapped", "not normal-mapped"),
+                 ("skinned", "skinned"), ("morph", "morph"), ("rigid", "rigid"), ("built_in", "built-in scenes")]
+
+
+def content_kind_ratios(report):
+    """Per kind the content draws: (kind, label with its share, bytes ratio, ops ratio), motor over
+    the baseline, from the kind figures the answer quotes (kind.fetched_over_baseline.K.motor,
+    kind.ops_counted.K.<p>, kind.share_vertices.K)."""
+    pipes = (report.get("settings") or {}).get("pipelines") or []
+    if len(pipes) < 2:
+        return []
+    base = pipes[0]
+    motor = "motor" if "motor" in pipes else next((p for p in pipes[1:] if "motor" in p), pipes[1])
+    out = []
+    for kind, label in CONTENT_KINDS:
+        count = figure(report, "kind.vertices." + kind)
+        if count is None or not count["value"] > 0:
+            continue
+        share = figure(report, "kind.share_vertices." + kind)
+        shares = figure(report, "kind.share_primitives." + kind)
+        if share is not None:
+            label += "\n%.3g %% of vertices" % share["value"]
+            if shares is not None:
+                label += "\n%.3g %% of primitives" % shares["value"]
+        elif kind == "built_in":
+            label += "\n(controlled cases)"
+        b = figure(report, "kind.fetched_over_baseline.%s.%s" % (kind, motor))
+        om, ob = figure(report, "kind.ops_counted.%s.%s" % (kind, motor)), figure(report, "kind.ops_counted.%s.%s" % (kind, base))
+        ops = om["value"] / ob["value"] if om and ob and ob["value"] > 0 else None
+        out.append((kind, label, b["value"] if b else None, ops))
+    return out
+
+
+def plot_content_kinds(plt, report, outdir):
+    """The answer by kind of content: cost motor / matrix (bytes fetched per frame, ops counted
+    per vertex by the variant each vertex draws) per kind, each kind's share under its name."""
+    kinds = content_kind_ratios(report)
+    if not kinds:
+        return None
+    labels = [label for _, label, _, _ in kinds]
+    series = [(name, vals) for name, vals in (("bytes fetched per frame", [k[2] for k in kinds]),
+                                              ("ops counted per vertex", [k[3] for k in kinds]))
+              if any(v is not None for v in vals)]
+    if not series:
+        return None
+    fig, ax = plt.subplots(figsize=(max(12.0, 1.7 * len(kinds)), 4.4))  # room for the shares under each kind
+    bars = []
+    grouped_bars(ax, labels, series, "motor / matrix (%s)" % CONVENTION, digits=3, reference=1.0, bars=bars)
+    ax.set_xticklabels(labels, rotation=0, ha="center", fontsize=FONT)
+    kind_of = {label: kind for kind, label, _, _ in kinds}
+    for b in bars:  # the kind's figure key beside its printed label
+        b["kind"] = kind_of[b["label"]]
+    ax.set_title("Cost motor / matrix by kind of content (device: meshoptimizer's fetch model and the op counts, "
+                 "not timed)", fontsize=9, pad=24)
+    legend(fig, [name for name, _ in series])
+    save(fig, outdir, "content_kinds")
+    return ("content_kinds", "Cost by kind of content",
+            "Per kind of content the report draws, cost motor / matrix (< 1: motor side cheaper): bytes a GPU "
+            "fetches per frame (meshoptimizer's fetch model, each pipeline's stride) and arithmetic ops counted per "
+            "vertex, each vertex by the shader variant its primitive draws with (exact fallback included); under each "
+            "kind its share of the content's drawn vertices and primitives. The values are report.json's kind "
+            "figures, the same the answer quotes; the built-in scenes are controlled cases beside the files.", bars)
+
 
 def main():
     if len(sys.argv) != 3:
@@ -431,7 +496,7 @@ def main():
     if plt is not None:
         with open(src) as f:
             report = json.load(f)
-        for fn in (plot_design_space, plot_bytes_per_vertex, plot_ops_per_vertex, plot_kernel_ratios,
+        for fn in (plot_design_space, plot_content_kinds, plot_bytes_per_vertex, plot_ops_per_vertex, plot_kernel_ratios,
                    plot_frame_time_ratio, plot_image_error):
             got = fn(plt, report, outdir)
             plt.close("all")

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "harness/document/report_answer_figures.h"
+#include "harness/document/report_answer_kinds.h"
 #include "harness/document/report_format.h"
 #include "harness/document/report_layout_common.h"
 #include "harness/figures/figure.h"
@@ -170,6 +171,16 @@ AnswerLine imageLine(const json& r, const std::string& m, const std::string& M) 
   return l;
 }
 
+// A line's figures by kind, as claims.json carries them (null for a share or ratio not measured).
+json kindsJson(const AnswerLine& l) {
+  json out = json::array();
+  auto number = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  for (const KindAnswer& k : l.kinds)
+    out.push_back({{"kind", k.kind}, {"label", k.label}, {"shareVertices", number(k.shareVertices)},
+                   {"sharePrimitives", number(k.sharePrimitives)}, {"ratio", number(k.ratio)}, {"text", k.text}});
+  return out;
+}
+
 // "dir/" of "dir/report.md" ("" for "" or "report.md").
 std::string folderOf(const std::string& path) {
   const size_t slash = path.rfind('/');
@@ -186,22 +197,30 @@ std::string answerQuestion() {
 std::vector<AnswerLine> answerLines(const json& r) {
   const auto [m, M] = headline(r);
   std::vector<AnswerLine> lines = {bytesLine(r, m, M), opsLine(r, m, M), isaLine(r, m, M), timeLine(r, M), imageLine(r, m, M)};
+  addKindAnswers(lines, r, m, M);
   for (AnswerLine& l : lines) l.marked = l.text, l.text = withoutFigureMarks(l.text);
   return lines;
 }
 
 json answerJson(const json& r) {
   json lines = json::array();
-  for (const AnswerLine& l : answerLines(r))
-    lines.push_back({{"evidence", l.evidence}, {"table", l.anchor}, {"text", l.text}, {"verdict", l.verdict}, {"figures", l.figures}});
-  return {{"question", answerQuestion()}, {"lines", lines}};
+  const std::vector<AnswerLine> all = answerLines(r);
+  for (const AnswerLine& l : all)
+    lines.push_back({{"evidence", l.evidence}, {"table", l.anchor}, {"text", l.text}, {"verdict", l.verdict},
+                     {"figures", l.figures}, {"kinds", kindsJson(l)}});
+  return {{"question", answerQuestion()}, {"headline", answerHeadline(all, r)}, {"lines", lines}};
 }
 
 void answerSection(Document& d, const json& r, const std::string& reportPath) {
   d.heading(2, "The answer", "answer");
   d.paragraph(answerQuestion());
+  const std::vector<AnswerLine> lines = answerLines(r);
+  if (const std::string headline = answerHeadline(lines, r); !headline.empty()) {
+    d.paragraph(headline);
+    d.blocks.back().anchor = "answer-headline";
+  }
   std::vector<std::vector<Cell>> rows;
-  for (const AnswerLine& l : answerLines(r)) rows.push_back({{l.evidence, "", reportPath + l.anchor}, {l.marked}, {l.verdict}});
+  for (const AnswerLine& l : lines) rows.push_back({{l.evidence, "", reportPath + l.anchor}, {l.marked}, {l.verdict}});
   d.table({"evidence", "figures (report.json \"figures\")", "verdict"}, rows);
   d.blocks.back().anchor = "answer-table";
   for (const json& f : at(r, {"plots", "files"}).is_array() ? r["plots"]["files"] : json::array())
@@ -209,6 +228,7 @@ void answerSection(Document& d, const json& r, const std::string& reportPath) {
       d.figure(folderOf(reportPath) + f.value("file", ""), f.value("title", ""), f.value("caption", ""));
       d.blocks.back().anchor = "design-space";
     }
+  answerKindsTable(d, lines, r);
 }
 
 Document withAnswerFirst(const Document& doc, const json& report, const std::string& reportPath) {

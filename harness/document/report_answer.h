@@ -12,6 +12,15 @@
 
 namespace mb::report {
 
+// One line's figures for one kind of content (report_answer_kinds.h).
+struct KindAnswer {
+  std::string kind, label;           // "normal_mapped", "normal-mapped"
+  double shareVertices = 0, sharePrimitives = 0;  // % of the content's drawn ones; NaN: not a share
+  double ratio = 0;                  // motor / matrix of the line's measure; NaN: not measured
+  std::string head;                  // the kind with its share, marked ("normal-mapped [12 % of vertices, ...]")
+  std::string text, marked;          // the figures as printed, and marked by name
+};
+
 struct AnswerLine {
   std::string evidence;              // "bytes", "ops", ...
   std::string anchor;                // the table it links to ("#gpu-evidence")
@@ -19,12 +28,14 @@ struct AnswerLine {
   std::string marked;                // the same with each figure marked by name (figureMark)
   std::string verdict;
   std::vector<std::string> figures;  // the names of the figures the text quotes
+  std::vector<KindAnswer> kinds;     // the line by kind of content (empty: not recorded)
 };
 
 // "Look, Ma, No Matrices!" asks: ...
 std::string answerQuestion();
 std::vector<AnswerLine> answerLines(const nlohmann::json& report);
-// {"question", "lines": [{"evidence", "table", "text", "verdict", "figures"}]}: the block in claims.json.
+// {"question", "headline", "lines": [{"evidence", "table", "text", "verdict", "figures", "kinds": [{"kind",
+// "label", "shareVertices", "sharePrimitives", "ratio", "text"}]}]}: the block in claims.json.
 nlohmann::json answerJson(const nlohmann::json& report);
 // Heading "The answer" (id "answer"), the question, the lines as a table (id "answer-table"),
 // the design-space plot (id "design-space") when plot.py drew it. `reportPath`: where report.md

@@ -7,6 +7,7 @@
 #include "harness/document/report_document.h"
 #include "harness/document/report_format.h"
 #include "harness/document/report_isa.h"
+#include "harness/document/report_kind_figures.h"
 #include "harness/figures/figure.h"
 
 namespace mb::report {
@@ -193,6 +194,7 @@ void addAnswerFigures(json& r) {
   fetchFigures(out, r, pipes, base);
   isaFigures(out, r, pipes);
   imageFigures(out, r, pipes);
+  addKindFigures(r);
   json families = json::object();
   for (const std::string& p : pipes) families[p] = pipelineFamily(p);
   r["pipelineFamilies"] = families;

@@ -14,6 +14,7 @@
 #include "harness/render/flip.h"
 #include "harness/render/frame_notes.h"
 #include "harness/render/image_metrics.h"
+#include "harness/report/content_kinds.h"
 #include "harness/report/report_animation.h"
 #include "harness/report/report_sources.h"
 #include "harness/report/vertex_fetch.h"
@@ -227,6 +228,7 @@ json measureScene(const SceneJob& job) {
     return out;
   }
   out["vertexMix"] = vertexMix(*scene);
+  out["contentKinds"] = contentKindsJson(*scene);  // the answer's split by kind of content
   if (scene->curved.space == Space::Euclidean) out["overdraw"] = overdrawJson(*scene);  // the mesh alone
   // The animations shown: --anim's choice, else the first (none: the rest pose, anim -1).
   std::vector<int> anims = job.animations;

@@ -1,10 +1,13 @@
 #include "harness/report/vertex_fetch.h"
 
 #include <cmath>
+#include <map>
+#include <string>
 #include <vector>
 
 #include <meshoptimizer.h>
 
+#include "harness/report/content_kinds.h"
 #include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/scene_textures.h"
 
@@ -60,14 +63,31 @@ FetchFigures analyzePrimitive(const Primitive& p, unsigned stride, const CacheMo
   return f;
 }
 
+// Per kind of content: bytes fetched, unique vertex bytes (the upload those vertices need)
+// and vertices referenced per frame.
+static json byKindJson(const std::map<std::string, FetchFigures>& byKind) {
+  json out = json::object();
+  for (const auto& [key, f] : byKind)
+    out[key] = {{"bytesFetchedPerFrame", f.bytesFetched}, {"uniqueVertexBytesPerFrame", f.uniqueVertexBytes},
+                {"verticesReferencedPerFrame", f.verticesReferenced}};
+  return out;
+}
+
 json vertexFetchJson(const Scene& scene, const PipelineStats& s, const CacheModel& model) {
   const unsigned mapped = strideOf(s.normalMappedVertexBytes, s.normalMappedVertices);
   const unsigned other = strideOf(s.vertexBytes - s.normalMappedVertexBytes, s.vertices - s.normalMappedVertices);
   FetchFigures sum;
+  std::map<std::string, FetchFigures> byKind;  // content_kinds.h: material and deformation kinds
   for (const gl::DrawItem& d : gl::buildDrawList(scene)) {
     const Primitive& p = scene.meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
     const uint64_t times = std::max<uint64_t>(1, scene.nodes[size_t(d.node)].instances.size());
     const FetchFigures f = analyzePrimitive(p, gl::normalMapped(scene, p) ? mapped : other, model);
+    const ContentKind kind = contentKindOf(scene, scene.nodes[size_t(d.node)], p);
+    for (const std::string& key : {materialKey(kind), kind.deformation}) {
+      byKind[key].bytesFetched += times * f.bytesFetched;
+      byKind[key].uniqueVertexBytes += times * f.uniqueVertexBytes;
+      byKind[key].verticesReferenced += times * f.verticesReferenced;
+    }
     sum.bytesFetched += times * f.bytesFetched;
     sum.uniqueVertexBytes += times * f.uniqueVertexBytes;
     sum.verticesReferenced += times * f.verticesReferenced;
@@ -88,6 +108,7 @@ json vertexFetchJson(const Scene& scene, const PipelineStats& s, const CacheMode
           {"strideBytes", {{"normalMapped", mapped ? json(mapped) : json(nullptr)},
                            {"other", other ? json(other) : json(nullptr)}}},
           {"skippedPrimitives", sum.skippedPrimitives},
+          {"byKind", byKindJson(byKind)},
           {"model", cacheModelText(model)}};
 }
 

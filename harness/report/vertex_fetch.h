@@ -38,7 +38,9 @@ FetchFigures analyzePrimitive(const Primitive& p, unsigned strideBytes, const Ca
 // attribute bytes per uploaded vertex, normal-mapped and other primitives apart: the matrix
 // pipeline uploads a tangent only on the former). Skin and optional streams are shared by all
 // pipelines and left out. JSON: bytesFetchedPerFrame, uniqueVertexBytesPerFrame, overfetch,
-// bytesFetchedPerVertex, verticesTransformedPerFrame, acmr, atvr, strideBytes, skippedPrimitives.
+// bytesFetchedPerVertex, verticesTransformedPerFrame, acmr, atvr, strideBytes, skippedPrimitives,
+// byKind {kind: {bytesFetchedPerFrame, uniqueVertexBytesPerFrame, verticesReferencedPerFrame}} per
+// kind of content (content_kinds.h: normalMapped, notNormalMapped, rigid, skinned, morph).
 nlohmann::json vertexFetchJson(const Scene& scene, const PipelineStats& stats, const CacheModel& model = {});
 
 // The mesh alone (the same for every pipeline): meshopt_analyzeOverdraw summed over the drawn

@@ -108,5 +108,50 @@ class AnswerPlots(unittest.TestCase):
         self.assertEqual(texts, {"motor": "0.80x", "qtangent": "0.90x", "matrix": None})
 
 
+def kinds_report():
+    """Files 40 % normal-mapped (motor 0.75x the bytes, 1.1x the ops), 60 % skinned without a
+    normal map (1.125x the bytes, 0.72x the ops); the built-in scenes 0.75x the bytes."""
+    r = report()
+    figs = r["figures"]
+    for kind, vertices, share, prims, b, om, ob in (("all", 500, None, None, 0.9375, 122, 148),
+                                                   ("normal_mapped", 200, 40, 25, 0.75, 110, 100),
+                                                   ("not_normal_mapped", 300, 60, 75, 1.125, 130, 180),
+                                                   ("morph", 0, 0, 0, None, None, None),
+                                                   ("built_in", 50, None, None, 0.75, 110, 100)):
+        figs["kind.vertices." + kind] = fig(vertices, "vertices")
+        if share is not None:
+            figs["kind.share_vertices." + kind] = fig(share, "%")
+            figs["kind.share_primitives." + kind] = fig(prims, "%")
+        if b is not None:
+            figs["kind.fetched_over_baseline.%s.motor" % kind] = fig(b)
+            figs["kind.ops_counted.%s.motor" % kind] = fig(om, "ops")
+            figs["kind.ops_counted.%s.matrix" % kind] = fig(ob, "ops")
+    return r
+
+
+@unittest.skipUnless(has_matplotlib(), "matplotlib not installed (python3-matplotlib)")
+class ContentKindPlot(unittest.TestCase):
+    def test_one_bar_per_kind_and_cost_with_its_share_under_it(self):
+        folder, _, plots = run_plots(kinds_report(), "motorbench_plots_kinds_")
+        shutil.rmtree(folder, ignore_errors=True)
+        bars = plots["content_kinds"]["bars"]
+        got = {(b["kind"], b["series"]): b["value"] for b in bars}
+        self.assertEqual(got[("normal_mapped", "bytes fetched per frame")], 0.75)
+        self.assertEqual(got[("not_normal_mapped", "bytes fetched per frame")], 1.125)
+        self.assertAlmostEqual(got[("not_normal_mapped", "ops counted per vertex")], 130 / 180)
+        self.assertAlmostEqual(got[("normal_mapped", "ops counted per vertex")], 1.1)
+        self.assertEqual(got[("built_in", "bytes fetched per frame")], 0.75)
+        self.assertNotIn("morph", {b["kind"] for b in bars})  # a kind the content does not draw
+        labels = {b["kind"]: b["label"] for b in bars}
+        self.assertEqual(labels["normal_mapped"], "normal-mapped\n40 % of vertices\n25 % of primitives")
+        self.assertIn("controlled cases", labels["built_in"])
+        self.assertEqual(len({b["x"] for b in bars}), len(bars))  # never two bars at one x
+
+    def test_no_kind_figures_no_plot(self):
+        folder, index, _ = run_plots(report(), "motorbench_plots_nokinds_")
+        shutil.rmtree(folder, ignore_errors=True)
+        self.assertIn("content_kinds", index["skipped"])
+
+
 if __name__ == "__main__":
     unittest.main()
