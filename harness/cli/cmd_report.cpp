@@ -83,7 +83,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
                           "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
                           "worker-index", "worker-total", "shard", "anim", "worker-anims", "instances", "gpu",
                           "isa-json", "morph-json"},
-                         {"no-bench", "no-plots"},
+                         {"no-bench", "bench", "no-isa", "no-plots"},
                          {},
                          {"anim"}});
   if (!args.error().empty()) return fail(args.error());
@@ -110,7 +110,17 @@ int runReportCommand(const std::vector<std::string>& argv) {
   o.benchMinTime = args.real("bench-min-time", o.benchMinTime, 0.0, 1e4, "seconds");
   if (args.has("no-bench") && args.has("bench-json"))
     return fail("--no-bench and --bench-json: give one (skip the kernel ratios, or read them from a file)");
-  o.bench = !args.has("no-bench");
+  if (args.has("no-bench") && args.has("bench"))
+    return fail("--no-bench and --bench: give one (skip the kernel ratios, or run them)");
+  // The kernels do not depend on the scenes: a report of the built-in scenes runs them (its
+  // evidence), a report of files only with --bench (they would cost the same for any input).
+  o.bench = args.has("bench") || (!args.has("no-bench") && o.scenes.empty());
+  if (!o.bench && !args.has("no-bench"))
+    o.benchSkipped = "not run: a report of files runs the kernel benchmark only with --bench or --bench-json FILE "
+                     "(it measures the same kernels whatever the files)";
+  if (args.has("no-isa") && args.has("isa-json"))
+    return fail("--no-isa and --isa-json: give one (skip the ISA statistics, or read them from a file)");
+  o.isa = !args.has("no-isa");
   o.benchJson = args.get("bench-json", "");
   o.plots = !args.has("no-plots");
   o.python = args.get("python", o.python);
@@ -155,10 +165,10 @@ int runReportCommand(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(report, "report",
-           "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--time-size WxH] [--no-bench | "
+           "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--time-size WxH] [--bench | --no-bench | "
            "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--anim [SCENE:]NAME|INDEX|all,...] "
            "[--instances N] [--no-plots] [--python P] [--plot-script FILE] [--timeout S] [--shard I/N] "
-           "[--gpu auto|llvmpipe|N] [--isa-json FILE] [--morph-json FILE]",
+           "[--gpu auto|llvmpipe|N] [--isa-json FILE | --no-isa] [--morph-json FILE]",
            "measure scenes with every pipeline of their space: images, diffs, memory, ops, timing, kernel "
            "ratios -> report.json/.md/.html",
            mb::runReportCommand);
@@ -169,8 +179,9 @@ MB_COMMAND_HELP(report, "report",
                "  --size WxH         image size (default 256x192)\n"
                "  --frames N         timed frames per pipeline and scene (default 30; 0: no timing)\n"
                "  --time-size WxH    the timing viewport (default 512x512, as `time`)\n"
-               "  --no-bench | --bench-json FILE   skip the kernel ratios, or read them from `bench --out` (default: run\n"
-               "                     the kernels)\n"
+               "  --bench | --no-bench | --bench-json FILE   run the kernel ratios, skip them, or read them from\n"
+               "                     `bench --out` (default: run them for the built-in scenes; not for files and\n"
+               "                     folders, whose kernels are the same for any input)\n"
                "  --bench-min-time S Google Benchmark min time per kernel (default 0.05)\n"
                "  --pipelines a,b    pipelines (default: every pipeline of each scene's space)\n"
                "  --anim ITEMS       animations shown: NAME, INDEX, all or SCENE:NAME, comma-separated (default: the\n"
@@ -182,6 +193,8 @@ MB_COMMAND_HELP(report, "report",
                "  --timeout S        seconds each scene's worker process may take (default 900)\n"
                "  --shard I/N        only every N-th scene from the I-th (merge puts shards together)\n"
                MB_GPU_OPTION_HELP
-               "  --isa-json FILE    `motorbench isa --json` file: the ISA statistics per pipeline (default: none)\n"
+               "  --isa-json FILE    `motorbench isa --json` file: the ISA statistics per pipeline (default: measured\n"
+               "                     now, each shader variant compiled once, kept in the cache: MB_CACHE_DIR)\n"
+               "  --no-isa           no ISA statistics\n"
                "  --morph-json FILE  `motorbench morph --json` file: the morph section (default: none)\n",
                 "motorbench report textured_box --frames 0 --no-bench -o out/report", true);

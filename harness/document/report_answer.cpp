@@ -95,7 +95,9 @@ AnswerLine isaLine(const json& r, const std::string& m, const std::string& M) {
     text += (text.empty() ? "" : ", ") + id + " " + figureMark(b->name, fmt(b->value, 4)) + "/" + figureMark(a->name, fmt(a->value, 4));
   }
   if (!families) {
-    l.text = "not measured in this report (motorbench isa --json FILE, then report --isa-json FILE)";
+    const json& why = at(r, {"isa", "error"});  // --no-isa, or why the report's own run did not measure it
+    l.text = why.is_string() ? why.get<std::string>()
+                             : "not measured in this report (motorbench isa --json FILE, then report --isa-json FILE)";
     l.verdict = "not measured";
     return l;
   }
@@ -127,6 +129,14 @@ AnswerLine timeLine(const json& r, const std::string& M) {
   l.text = "frame motor / matrix " + (f ? marked(*f) + spreadOf(*f) + " over " + std::to_string(f->n) + " scene(s)" : "-") +
            " on " + str(at(r, {"machine", "gl", "renderer"}), "an unnamed device") +
            (cpu ? " (a CPU rasterizer)" : "") + fallbackClause(q, M);
+  // --frames 0 timed nothing: no verdict to give, whatever the device.
+  const json& frames = at(r, {"settings", "frames"});
+  if (frames.is_number() && frames.get<double>() == 0 && (!f || f->n == 0)) {
+    l.text = "not measured (--frames 0: no frame was timed)";
+    l.verdict = "not measured";
+    l.figures.clear();
+    return l;
+  }
   if (cpu) l.verdict = "inconclusive: a CPU rasterizer cannot discriminate";
   else if (!f || !f->q1 || !f->q3) l.verdict = "not measured";
   else l.verdict = *f->q3 < 1 ? "motor side faster" : *f->q1 > 1 ? "matrix side faster" : "no difference beyond the spread";

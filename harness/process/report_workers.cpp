@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "harness/process/interrupt.h"
 #include "harness/process/progress.h"
 
 #include <fcntl.h>
@@ -89,7 +90,35 @@ bool finished(const Child& c, double timeoutS, std::string* how) {
   return false;
 }
 
+// SIGTERM, then SIGKILL after two seconds; reaped either way.
+void stopChild(pid_t pid) {
+  kill(pid, SIGTERM);
+  int status = 0;
+  for (int i = 0; i < 100; ++i) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+}
+
 }  // namespace
+
+std::string workerProgressLine(const std::string& what, size_t done, size_t total, const std::string& item,
+                               const nlohmann::json& result, double seconds, double elapsed) {
+  char took[32];
+  std::snprintf(took, sizeof took, "%.1f s", seconds);
+  std::string status = result.is_object() ? result.value("status", "ok") : "ok";
+  if (status != "ok" && result.is_object() && result.contains("error") && result["error"].is_string()) {
+    std::string why = result["error"].get<std::string>();
+    if (why.size() > 120) why = why.substr(0, 117) + "...";
+    status += " (" + why + ")";
+  }
+  std::string line = "report: [" + std::to_string(done) + "/" + std::to_string(total) + "] " + what + " " + item + ": " +
+                     status + " " + took + ", " + durationText(elapsed) + " elapsed";
+  if (done < total) line += ", about " + durationText(elapsed / double(done) * double(total - done)) + " left";
+  return line;
+}
 
 std::string selfExecutable() {
   char buf[PATH_MAX];
@@ -101,8 +130,8 @@ std::string selfExecutable() {
 std::vector<nlohmann::json> runWorkers(const std::vector<WorkerTask>& tasks, int jobs, double timeoutS,
                                        const std::string& progress) {
   std::vector<nlohmann::json> results(tasks.size());
-  std::optional<Progress> line;
-  if (!progress.empty()) line.emplace("report", progress, tasks.size());
+  const Clock::time_point runStart = Clock::now();
+  size_t finishedCount = 0;
   std::vector<Child> running;
   size_t next = 0;
   // A result counts when the child marked it complete ("complete": true, written last), even
@@ -119,12 +148,28 @@ std::vector<nlohmann::json> runWorkers(const std::vector<WorkerTask>& tasks, int
     results[i] = tasks[i].onFailure;
     results[i]["status"] = "failed";
     results[i]["error"] = "worker " + (how.empty() ? "ended without writing a result" : how);
+    if (interruptSignal() != 0) {  // Ctrl-C reaches the workers too: stopped, not failed
+      results[i]["interrupted"] = true;
+      results[i]["error"] = std::string("not measured: the run was interrupted (") + interruptName() + ")";
+    }
+  };
+  auto announce = [&](size_t i, double seconds) {
+    ++finishedCount;
+    if (progress.empty()) return;
+    const double elapsed = std::chrono::duration<double>(Clock::now() - runStart).count();
+    std::fprintf(stderr, "%s\n",
+                 workerProgressLine(progress, finishedCount, tasks.size(),
+                                    tasks[i].onFailure.value("id", "#" + std::to_string(i + 1)), results[i], seconds,
+                                    elapsed)
+                     .c_str());
+    std::fflush(stderr);
   };
   while (next < tasks.size() || !running.empty()) {
+    if (interruptSignal() != 0) break;
     while (next < tasks.size() && int(running.size()) < std::max(1, jobs)) {
       std::remove(tasks[next].resultPath.c_str());
       const pid_t pid = spawn(selfExecutable(), tasks[next].args, "", false);
-      if (pid < 0) collect(next, "could not be started");
+      if (pid < 0) collect(next, "could not be started"), announce(next, 0);
       else running.push_back({pid, Clock::now(), next});
       ++next;
     }
@@ -133,7 +178,7 @@ std::vector<nlohmann::json> runWorkers(const std::vector<WorkerTask>& tasks, int
       std::string how;
       if (finished(running[r], timeoutS, &how)) {
         collect(running[r].task, how);
-        if (line) line->done(tasks[running[r].task].onFailure.value("id", "#" + std::to_string(running[r].task + 1)));
+        announce(running[r].task, std::chrono::duration<double>(Clock::now() - running[r].start).count());
         running.erase(running.begin() + long(r));
         any = true;
       } else {
@@ -141,6 +186,18 @@ std::vector<nlohmann::json> runWorkers(const std::vector<WorkerTask>& tasks, int
       }
     }
     if (!any) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (interruptSignal() != 0) {
+    // Interrupted: the children still running are stopped (and reaped); their scenes and those
+    // never started are marked, not measured.
+    for (const Child& c : running) stopChild(c.pid);
+    for (size_t i = 0; i < tasks.size(); ++i)
+      if (results[i].is_null()) {
+        results[i] = tasks[i].onFailure;
+        results[i]["status"] = "failed";
+        results[i]["interrupted"] = true;
+        results[i]["error"] = std::string("not measured: the run was interrupted (") + interruptName() + ")";
+      }
   }
   return results;
 }
@@ -155,7 +212,13 @@ std::string runProgram(const std::string& exe, const std::vector<std::string>& a
   if (pid < 0) return "could not be started";
   Child c{pid, Clock::now(), 0};
   std::string how;
-  while (!finished(c, timeoutS, &how)) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  while (!finished(c, timeoutS, &how)) {
+    if (interruptSignal() != 0) {
+      stopChild(pid);
+      return std::string("interrupted (") + interruptName() + ")";
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
   return how;
 }
 

@@ -11,6 +11,7 @@
 
 #include "harness/bench/report_bench.h"
 #include "harness/document/ops_ranking.h"
+#include "harness/document/report_answer.h"
 #include "harness/document/report_answer_figures.h"
 #include "harness/document/report_document.h"
 #include "harness/report/report_sources.h"
@@ -22,9 +23,12 @@
 #include "harness/options/shard.h"
 #include "harness/report/report_ops.h"
 #include "harness/document/report_plots.h"
+#include "harness/process/interrupt.h"
 #include "harness/process/report_workers.h"
 #include "harness/report/report_anim_select.h"
 #include "harness/report/report_drift.h"
+#include "harness/report/report_folder.h"
+#include "harness/report/report_isa_run.h"
 #include "harness/report/report_scene.h"
 #include "pipelines/pipeline.h"
 #include "pipelines/scene/builtin_scenes.h"
@@ -96,7 +100,7 @@ json kernels(const Options& o) {
       return k;
     }
   } else {
-    k["error"] = "not measured (--no-bench)";
+    k["error"] = o.benchSkipped.empty() ? "not measured (--no-bench)" : o.benchSkipped;
     return k;
   }
   auto j = readBenchJson(path);
@@ -126,6 +130,39 @@ void addLastStep(json& scene, const std::string& resultPath) {
                                                             : " while " + step + " (its message is on the run's stderr)");
 }
 
+// The AMD ISA statistics: the --isa-json file, else measured now (cached, report_isa_run.h),
+// else why not (--no-isa, no RADV).
+void attachIsa(json& report, const Options& o) {
+  if (!o.isaJson.empty()) {  // checked by the command before the run (schema motorbench-isa/1)
+    std::ifstream in(o.isaJson);
+    report["isa"] = json::parse(in, nullptr, false);
+    report["isaSource"] = {{"source", "file"}, {"file", o.isaJson}};
+    return;
+  }
+  if (!o.isa) {
+    report["isa"] = {{"error", "not measured (--no-isa)"}};
+    report["isaSource"] = {{"source", "skipped"}};
+    return;
+  }
+  say("measuring the AMD ISA of every shader variant (motorbench isa on RADV's null device; cached)");
+  IsaEvidence e = measureIsa(o.outDir, o.timeoutS);
+  char took[32];
+  std::snprintf(took, sizeof took, "%.1f", e.seconds);
+  say(std::string("AMD ISA: ") + (e.isa.contains("error") ? e.isa["error"].get<std::string>()
+                                                           : e.source == "cache" ? "read from the cache" : "measured") +
+      " in " + took + " s");
+  report["isaSource"] = {{"source", e.source}, {"seconds", e.seconds},
+                         {"file", e.isa.contains("error") ? json(nullptr) : json("isa.json")}};
+  report["isa"] = std::move(e.isa);
+}
+
+// How many of the run's scenes have a result (not marked interrupted).
+int scenesMeasured(const std::vector<json>& scenes) {
+  int n = 0;
+  for (const json& s : scenes) n += !s.value("interrupted", false);
+  return n;
+}
+
 }  // namespace
 
 std::vector<std::string> scenePipelines(const Options& o, const std::string& spec) {
@@ -137,11 +174,22 @@ std::vector<std::string> runPipelines(const Options& o) {
 }
 
 int runReport(const Options& o) {
+  catchInterrupts();  // Ctrl-C / kill: the workers are stopped and the folder says it is partial
   std::error_code ec;
+  if (Status clear = clearOldReport(o.outDir, {o.benchJson, o.isaJson, o.morphJson}); !clear) {
+    std::fprintf(stderr, "motorbench report: error: %s\n", clear.error().c_str());
+    return 2;
+  }
   fs::create_directories(o.outDir, ec);
   if (ec) {
     std::fprintf(stderr, "motorbench report: error: %s: cannot create folder: %s\n", o.outDir.c_str(),
                  ec.message().c_str());
+    return 2;
+  }
+  if (Status m = markPartial(o.outDir, "motorbench report: this folder holds no complete report: the run is still "
+                                       "going, or was stopped before it finished (this file goes when it completes)");
+      !m) {
+    std::fprintf(stderr, "motorbench report: error: %s\n", m.error().c_str());
     return 2;
   }
   std::string tmpl = (fs::temp_directory_path() / "motorbench-report-XXXXXX").string();
@@ -197,11 +245,11 @@ int runReport(const Options& o) {
     tasks.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "render", result, anims[size_t(i)]), result,
                      {{"id", inputs[size_t(i)].id}, {"spec", inputs[size_t(i)].spec}}});
   }
-  std::vector<json> scenes = runWorkers(tasks, o.jobs, o.timeoutS, "scenes measured");
+  std::vector<json> scenes = runWorkers(tasks, o.jobs, o.timeoutS, "measured");
   for (size_t i = 0; i < scenes.size(); ++i) addLastStep(scenes[i], tasks[i].resultPath);
 
   // Phase 2: frame timing, one scene at a time.
-  if (o.frames > 0) {
+  if (o.frames > 0 && interruptSignal() == 0) {
     std::vector<WorkerTask> timing;
     std::vector<size_t> which;
     for (int i = 0; i < total; ++i) {
@@ -211,7 +259,7 @@ int runReport(const Options& o) {
                         {{"id", inputs[size_t(i)].id}}});
       which.push_back(size_t(i));
     }
-    std::vector<json> times = runWorkers(timing, 1, o.timeoutS, "scenes timed");
+    std::vector<json> times = runWorkers(timing, 1, o.timeoutS, "timed");
     for (size_t t = 0; t < times.size(); ++t) addLastStep(times[t], timing[t].resultPath);
     for (size_t t = 0; t < times.size(); ++t) scenes[which[t]]["timing"] = times[t];
   }
@@ -226,13 +274,14 @@ int runReport(const Options& o) {
   json curvedExtra = json::object();
   bool anyCurved = false;
   for (const Input& in : inputs) anyCurved = anyCurved || curvedSceneSpace(in.spec) != Space::Euclidean;
-  if (anyCurved) {
+  if (anyCurved && interruptSignal() == 0) {
     say("measuring the curved camera drift (" + std::to_string(kReportDriftSteps) + " steps per space)");
     curvedExtra["drift"] = driftJson(kReportDriftSteps);
   }
 
   // Phase 4: kernel throughput.
-  json kernelJson = kernels(o);
+  json kernelJson = interruptSignal() == 0 ? kernels(o)
+                                            : json{{"source", "skipped"}, {"error", "not measured (interrupted)"}, {"file", nullptr}};
 
   json curved = json::object();  // the curved scenes' pipelines per space (whole list: alike in every shard)
   if (o.pipelines.empty())
@@ -248,17 +297,38 @@ int runReport(const Options& o) {
                                std::move(kernelJson));
   report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files
   if (anyCurved) report["curved"] = curvedExtra;
-  if (!o.isaJson.empty()) {  // checked by the command before the run (schema motorbench-isa/1)
-    std::ifstream in(o.isaJson);
-    report["isa"] = json::parse(in, nullptr, false);
-  }
+  if (interruptSignal() == 0) attachIsa(report, o);
+  else report["isa"] = {{"error", "not measured (interrupted)"}};
   if (!o.morphJson.empty()) {  // checked by the command before the run (schema motorbench-morph/1)
     std::ifstream in(o.morphJson);
     report["morph"] = json::parse(in, nullptr, false);
   }
+  const int measured = scenesMeasured(report["scenes"].get<std::vector<json>>());
+  if (const int sig = interruptSignal(); sig != 0) {
+    report["interrupted"] = {{"signal", interruptName()}, {"measured", measured}, {"scenes", total}};
+    const std::string line = "INTERRUPTED (" + std::string(interruptName()) + "): " + std::to_string(measured) +
+                             " of " + std::to_string(total) + " scenes measured; this report is partial";
+    // The marker says it before the documents are written, and stays.
+    markPartial(o.outDir, line);
+    Options partial = o;
+    partial.plots = false;
+    writeReportFolder(std::move(report), partial);
+    fs::remove_all(work, ec);
+    std::fprintf(stderr, "motorbench report: %s (folder %s, marked %s); exit 130\n", line.c_str(), o.outDir.c_str(),
+                 kPartialMarker);
+    return 130;
+  }
   const std::vector<std::string> failures = failedSceneLines(report);  // as report.md lists them
-  const int status = writeReportFolder(std::move(report), o);
+  std::vector<std::string> answer;
+  const int status = writeReportFolder(std::move(report), o, &answer);
   fs::remove_all(work, ec);
+  if (status == 0) {
+    clearPartialMark(o.outDir);
+    // The answer on stdout as well (the lines of report.md's answer block), then where it is.
+    for (const std::string& l : answer) std::printf("%s\n", l.c_str());
+    std::printf("report: %s (report.md, report.json beside it)\n", (fs::path(o.outDir) / "report.html").string().c_str());
+    std::fflush(stdout);
+  }
   if (status != 0 || failures.empty()) return status;
   // As inspect: the report is written, but a scene that failed is not a success (exit 1).
   say(std::to_string(failures.size()) + " scene(s) not measured fully (exit 1):");
@@ -266,7 +336,7 @@ int runReport(const Options& o) {
   return 1;
 }
 
-int writeReportFolder(json report, const Options& o) {
+int writeReportFolder(json report, const Options& o, std::vector<std::string>* answer) {
   addAnswerFigures(report);  // the answer block's figures: fetch, ISA, images (after isa is attached)
   addOpsRanking(report);     // where counted ops, SPIR-V and ISA order the pipelines differently (ops and isa)
   report["glossary"] = glossaryJson();    // what every counter means (shown in the documents)
@@ -283,14 +353,29 @@ int writeReportFolder(json report, const Options& o) {
   } else {
     report["plots"] = {{"available", false}, {"error", "not made (--no-plots)"}, {"files", json::array()}};
   }
+  Document doc = reportDocument(report);
+  if (const json& stop = report.contains("interrupted") ? report["interrupted"] : json(); stop.is_object()) {
+    // A partial report says so on its first line, before anything that could read as complete.
+    Document top;
+    top.paragraph("INTERRUPTED: " + std::to_string(stop.value("measured", 0)) + " of " +
+                  std::to_string(stop.value("scenes", 0)) + " scenes measured (stopped by " +
+                  stop.value("signal", std::string("a signal")) +
+                  "); the figures below are of those scenes only, and the timing, kernel and ISA phases did not run.");
+    doc.blocks.insert(doc.blocks.begin(), top.blocks.begin(), top.blocks.end());
+  }
+  if (answer) {
+    answer->push_back("The answer: " + answerQuestion());
+    for (const AnswerLine& l : answerLines(report)) answer->push_back("  " + l.evidence + ": " + l.text + " -> " + l.verdict);
+  }
   for (const auto& [path, text] : {std::pair{jsonPath, dumpJson(report, 2) + "\n"},
-                                   std::pair{fs::path(o.outDir) / "report.md", toMarkdown(reportDocument(report))},
-                                   std::pair{fs::path(o.outDir) / "report.html", toHtml(reportDocument(report))}}) {
+                                   std::pair{fs::path(o.outDir) / "report.md", toMarkdown(doc)},
+                                   std::pair{fs::path(o.outDir) / "report.html", toHtml(doc)}}) {
     if (Status s = writeText(path, text); !s) {
       std::fprintf(stderr, "motorbench report: error: %s\n", s.error().c_str());
       return 2;
     }
   }
+  if (report.contains("interrupted")) return 0;  // the caller says what it is
   const json& sum = report["summary"];
   say("done: " + std::to_string(sum.value("scenes", 0)) + " scene(s), " +
       std::to_string(sum.value("ok", 0)) + " ok, " + std::to_string(sum.value("partial", 0)) +

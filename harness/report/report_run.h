@@ -23,10 +23,12 @@ struct Options {
   int width = 256, height = 192;
   int frames = 30;                   // timed frames per pipeline and scene; 0: no timing
   int timeWidth = 512, timeHeight = 512;  // viewport of the normal timing configuration (as `time`)
-  bool bench = true;                 // false: --no-bench
+  bool bench = true;                 // run the kernels (the command: with no scene named, or --bench)
   std::string benchJson;             // read this instead of running `motorbench bench`
+  std::string benchSkipped;          // why the kernels were not run, as report.json says it ("": --no-bench)
   std::string morphJson;             // `motorbench morph --json` file embedded as report.json "morph"
   std::string isaJson;               // `motorbench isa --json` file embedded as report.json "isa"
+  bool isa = true;                   // without isaJson: measure the ISA now (cached); false: --no-isa
   double benchMinTime = 0.05;        // --benchmark_min_time when the report runs the bench
   bool plots = true;
   std::string python;                // "" = defaultPython() (report_plots.h)
@@ -48,12 +50,17 @@ std::vector<std::string> runPipelines(const Options& options);
 
 // Runs every phase; a failing scene is recorded and the run goes on. Returns 0 when every scene
 // was measured ("ok"), 1 when the report was written but some scene failed or is partial (each
-// named with its reason on stderr, as in report.md), 2 when the output could not be written.
+// named with its reason on stderr, as in report.md), 2 when the output could not be written,
+// 130 when SIGINT / SIGTERM stopped it (the scenes done written, the folder marked PARTIAL).
+// The folder's earlier report is removed first (report_folder.h); the answer goes to stdout.
 int runReport(const Options& options);
 
 // The last phase, shared with `motorbench merge`: writes report.json, the plots (when
 // options.plots) and report.md / report.html into options.outDir. 0, or 2 when a file could not
 // be written (the message is printed).
-int writeReportFolder(nlohmann::json report, const Options& options);
+// `answer`: filled with the answer block's lines as printed on stdout (the question, then one
+// "evidence: figures -> verdict" line each). A report.json with "interrupted" gets a first line
+// saying so in report.md and report.html.
+int writeReportFolder(nlohmann::json report, const Options& options, std::vector<std::string>* answer = nullptr);
 
 }  // namespace mb::report

@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 TEST(AnimatedComparison, ReportHasOneLoopPerAnimatedScene) {
   const fs::path dir = scratchDir("animated");
   std::string out;
-  ASSERT_EQ(runCommand(motorbench() + "report skinned_tube textured_box --frames 0 --no-bench --no-plots --size 64x48 -o " +
+  ASSERT_EQ(runCommand(motorbench() + "report skinned_tube textured_box --frames 0 --no-bench --no-isa --no-plots --size 64x48 -o " +
                            quoted(dir), &out), 0) << out;
   const nlohmann::json r = readJson(dir / "report.json");
   ASSERT_FALSE(r.is_discarded());

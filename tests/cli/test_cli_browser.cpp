@@ -38,7 +38,7 @@ TEST(Browser, ReportImagesDecodeAndPageIsNotBlank) {
   std::string out;
   // Two pipelines: every kind of image the page shows (frames, diffs, the animated comparison,
   // the plots), written and linked by the same code for each pipeline, in a third of the time.
-  ASSERT_EQ(runCommand(motorbench() + "report skinned_tube textured_box --frames 0 --no-bench --pipelines matrix,motor -o " +
+  ASSERT_EQ(runCommand(motorbench() + "report skinned_tube textured_box --frames 0 --no-bench --no-isa --pipelines matrix,motor -o " +
                            quoted(dir / "report"), &out), 0) << out;
   const fs::path page = dir / "report" / "report.html";
 

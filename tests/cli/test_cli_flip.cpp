@@ -56,7 +56,7 @@ TEST(CliFlip, CheckReportsFlipBesidePsnrAndMapsAFailure) {
 
 TEST(CliFlip, ReportHasFlipForEveryComparedFrame) {
   const fs::path dir = mb::cli_test::scratchDir("flip_report");
-  const auto r = runMb("report skinned_tube --pipelines matrix,motor,motor_q --frames 0 --no-bench --no-plots "
+  const auto r = runMb("report skinned_tube --pipelines matrix,motor,motor_q --frames 0 --no-bench --no-isa --no-plots "
                        "--size 64x48 -o " + quoted(dir));
   ASSERT_EQ(r.rc, 0) << r.out;
   const auto j = mb::cli_test::readJson(dir / "report.json");

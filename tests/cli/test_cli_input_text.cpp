@@ -53,7 +53,7 @@ TEST(CliInputText, AnEmptyShardSaysSo) {
                            " --scenes normal_torus --pipelines matrix --shard 2/2 --out " + quoted(dir / "c"));
   EXPECT_EQ(check.rc, 0) << check.out;
   EXPECT_TRUE(contains(check.out, "shard 2/2 holds none of the 1 input(s)")) << check.out;
-  const auto report = runMb("report normal_torus --shard 3/3 --frames 0 --no-bench --no-plots -o " + quoted(dir / "r"));
+  const auto report = runMb("report normal_torus --shard 3/3 --frames 0 --no-bench --no-isa --no-plots -o " + quoted(dir / "r"));
   EXPECT_EQ(report.rc, 0) << report.out;
   EXPECT_TRUE(contains(report.out, "warning: shard 3/3 holds none of the 1 input(s)")) << report.out;
   fs::remove_all(dir);

@@ -198,7 +198,7 @@ TEST(CliMessages, EmptyFolderIsWarnedAbout) {
   EXPECT_EQ(time.rc, 2) << time.out;
   EXPECT_TRUE(contains(time.out, "folder holds no .gltf or .glb files")) << time.out;
   const auto report = runMb("report " + quoted(dir / "empty") + " -o " + quoted(dir / "r") +
-                            " --no-bench --no-plots --frames 0");
+                            " --no-bench --no-isa --no-plots --frames 0");
   EXPECT_TRUE(contains(report.out, "motorbench report: warning: " + (dir / "empty").string() +
                                        ": folder holds no .gltf or .glb files"))
       << report.out;

@@ -88,7 +88,7 @@ TEST(CliOutputs, CompareRefusesAFileLikeFolderName) {
   EXPECT_FALSE(contains(r.out, "camera:")) << "rendered before refusing:\n" << r.out;
   // report -o on a file: refused before any scene is measured.
   std::ofstream(dir / "plain") << "x";
-  const auto rep = runMb("report textured_box --no-bench --frames 0 -o " + quoted(dir / "plain"));
+  const auto rep = runMb("report textured_box --no-bench --no-isa --frames 0 -o " + quoted(dir / "plain"));
   EXPECT_EQ(rep.rc, 2) << rep.out;
   EXPECT_TRUE(contains(rep.out, "is a file; this command writes a folder (report.json")) << rep.out;
   EXPECT_FALSE(contains(rep.out, "[1/1]")) << rep.out;

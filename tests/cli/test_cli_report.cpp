@@ -36,7 +36,7 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
   std::string log;
   // The bad file first: the good scene after it must still be measured.
   const int rc = runCommand(motorbench() + "report " + quoted(bad) + " textured_box -o " + quoted(out) +
-                                " --no-bench --frames 3 --size 64x48 --jobs 2",
+                                " --no-bench --no-isa --frames 3 --size 64x48 --jobs 2",
                             &log);
   // Written in full, but a scene failed: exit 1 (issue 34), as inspect.
   ASSERT_EQ(rc, 1) << log;
@@ -145,7 +145,7 @@ TEST(CliReport, MissingPythonIsReportedAndTheRunGoesOn) {
   const fs::path dir = mb::cli_test::scratchDir("report_nopython");
   std::string log;
   const int rc = runCommand(motorbench() + "report textured_box -o " + quoted(dir) +
-                                " --no-bench --frames 0 --size 32x24 --python /nonexistent/python3",
+                                " --no-bench --no-isa --frames 0 --size 32x24 --python /nonexistent/python3",
                             &log);
   ASSERT_EQ(rc, 0) << log;
   const json r = readJson(dir / "report.json");

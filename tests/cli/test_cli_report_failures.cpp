@@ -45,7 +45,7 @@ TEST(CliReportFailures, FailedSceneExitsOneWithItsReasonAndFramesAreMarked) {
   const fs::path twice = mbtest::twiceDrawnTube(dir);
   const fs::path out = dir / "out";
   const auto r = runMb("report " + quoted(bad) + " skinned_tube " + quoted(twice) + " --anim candy_wrapper "
-                       "--pipelines matrix,motor --size 96x72 --frames 0 --no-bench --no-plots -o " + quoted(out));
+                       "--pipelines matrix,motor --size 96x72 --frames 0 --no-bench --no-isa --no-plots -o " + quoted(out));
   EXPECT_EQ(r.rc, 1) << r.out;
   const json rep = readJson(out / "report.json");
   ASSERT_FALSE(rep.is_discarded()) << r.out;
@@ -134,7 +134,7 @@ TEST(CliReportFailures, FailedSceneExitsOneWithItsReasonAndFramesAreMarked) {
 // only with how it ended.
 TEST(CliReportFailures, DeadWorkerIsNamedWithItsLastStep) {
   const fs::path dir = mb::cli_test::scratchDir("report_dead_worker");
-  const auto r = runMb("report skinned_tube --timeout 3 --size 800x600 --frames 0 --no-bench --no-plots -o " + quoted(dir));
+  const auto r = runMb("report skinned_tube --timeout 3 --size 800x600 --frames 0 --no-bench --no-isa --no-plots -o " + quoted(dir));
   EXPECT_EQ(r.rc, 1) << r.out;
   const json rep = readJson(dir / "report.json");
   ASSERT_FALSE(rep.is_discarded()) << r.out;

@@ -25,7 +25,7 @@ using mb::cli_test::readJson;
 using mb::cli_test::readText;
 using mb::cli_test::runCommand;
 
-const char* const kSmall = " --no-bench --no-plots --frames 0 --size 48x32 --pipelines matrix,motor";
+const char* const kSmall = " --no-bench --no-isa --no-plots --frames 0 --size 48x32 --pipelines matrix,motor";
 
 TEST(CliReportAnim, SeveralAnimationsByNameAndIndexCommaOrRepeated) {
   const fs::path dir = mb::cli_test::scratchDir("report_anim");
@@ -109,7 +109,7 @@ TEST(CliReportAnim, UnknownAnimationListsTheScenesAnimations) {
 TEST(CliReportCurved, CurvedScenesGetTheirSpacesPipelinesAndASection) {
   const fs::path dir = mb::cli_test::scratchDir("report_curved");
   std::string log;
-  ASSERT_EQ(runCommand(motorbench() + "report textured_box s3_tiling h3_tiling --no-bench --no-plots --frames 2 "
+  ASSERT_EQ(runCommand(motorbench() + "report textured_box s3_tiling h3_tiling --no-bench --no-isa --no-plots --frames 2 "
                            "--size 48x32 --time-size 64x64 -o " + quoted(dir), &log), 0) << log;
   const json r = readJson(dir / "report.json");
   ASSERT_FALSE(r.is_discarded()) << log;

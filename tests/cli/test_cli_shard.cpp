@@ -41,7 +41,7 @@ const char* kScenes = "textured_box normal_torus scaled_hierarchy skinned_tube";
 TEST(Shard, ReportShardsMergeToTheSingleRunsFigures) {
   if (!haveParallel()) GTEST_SKIP() << "GNU parallel not installed (scripts/setup.sh installs it)";
   const fs::path dir = scratchDir("shard_report");
-  const std::string args = std::string("report ") + kScenes + " --frames 0 --no-bench --no-plots --size 64x48";
+  const std::string args = std::string("report ") + kScenes + " --frames 0 --no-bench --no-isa --no-plots --size 64x48";
   runShards(dir, args, "-o", "");
   std::string out;
   ASSERT_EQ(runCommand(motorbench() + args + " -o " + quoted(dir / "single"), &out), 0) << out;
@@ -84,7 +84,7 @@ TEST(Shard, ReportShardsMergeToTheSingleRunsFigures) {
   EXPECT_FALSE(fs::exists(dir / "m2" / "report.json"));
   // Shards of a different input list do not merge.
   out.clear();
-  ASSERT_EQ(runCommand(motorbench() + "report textured_box --frames 0 --no-bench --no-plots --size 64x48 --shard 2/3 -o " +
+  ASSERT_EQ(runCommand(motorbench() + "report textured_box --frames 0 --no-bench --no-isa --no-plots --size 64x48 --shard 2/3 -o " +
                            quoted(dir / "other"), &out), 0) << out;
   out.clear();
   EXPECT_EQ(runCommand(motorbench() + "merge " + quoted(dir / "s1") + " " + quoted(dir / "other") + " " +
