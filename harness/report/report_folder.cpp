@@ -15,10 +15,19 @@ bool owned(const std::string& name) {
   return std::find(n.begin(), n.end(), name) != n.end();
 }
 
+// An input the run reads, or the console text beside one (bench.txt beside --bench-json
+// DIR/bench.json, isa.txt beside --isa-json DIR/isa.json: written by the same earlier command).
 bool isKept(const fs::path& p, const std::vector<std::string>& keep) {
   std::error_code ec;
-  for (const std::string& k : keep)
-    if (!k.empty() && fs::equivalent(p, k, ec)) return true;
+  for (const std::string& k : keep) {
+    if (k.empty()) continue;
+    if (fs::equivalent(p, k, ec)) return true;
+    const fs::path input(k);
+    if (p.extension() == ".txt" && (input.filename() == "bench.json" || input.filename() == "isa.json") &&
+        fs::equivalent(p.parent_path(), input.parent_path().empty() ? fs::path(".") : input.parent_path(), ec) &&
+        p.stem() == input.stem())
+      return true;
+  }
   return false;
 }
 

@@ -20,7 +20,7 @@ const std::vector<std::string>& reportOwnedNames();
 // names, they are removed; holding other files too, they are kept (and named on stderr) when the
 // folder holds an earlier report (report.json or the marker), else the run is refused naming
 // them (a folder of the user's that is no report's). Files in `keep` (inputs the run reads, such
-// as --bench-json DIR/bench.json) are never removed.
+// as --bench-json DIR/bench.json, with the bench.txt / isa.txt beside such an input) are never removed.
 Status clearOldReport(const std::string& dir, const std::vector<std::string>& keep);
 
 // Writes the marker with `text` (why the folder is not complete).
