@@ -112,9 +112,13 @@ claims::SpeedInputs speedInputs(const Args& args, const json& report, json& sour
   std::string missing;
   const std::string reportPath = args.get("report", "");
   if (report.is_object()) {
-    if (report["kernels"].is_object() && report["kernels"]["pairs"].is_array() && !report["kernels"]["pairs"].empty()) {
-      in.kernelPairs = report["kernels"]["pairs"];
-      const json& file = report["kernels"]["file"];
+    // value(), not operator[]: on a const json a missing key is undefined behaviour (a report
+    // without kernels crashed here).
+    const json kernels = report.value("kernels", json::object());
+    const json pairs = kernels.is_object() ? kernels.value("pairs", json()) : json();
+    if (pairs.is_array() && !pairs.empty()) {
+      in.kernelPairs = pairs;
+      const json file = kernels.value("file", json());
       in.kernelSource = reportPath + " (kernels from " + (file.is_string() ? file.get<std::string>() : "its bench run") + ")";
       in.kernelMachine = report.value("machine", json());
     }
