@@ -10,26 +10,31 @@
 #include "harness/figures/figure.h"
 
 namespace mb::report {
+
+std::optional<figures::Figure> FigureQuote::get(const std::string& name) {
+  line.figures.push_back(name);
+  std::optional<figures::Figure> f = figures::figureNamed(report, name);
+  return f && std::isfinite(f->value) ? f : std::nullopt;
+}
+
+std::string FigureQuote::value(const std::string& name, int digits) {
+  const std::optional<figures::Figure> f = get(name);
+  if (!f) return "-";
+  return figureMark(name, digits == 3 ? figures::valueText(*f)
+                                      : fmt(f->value, digits) + (f->unit.empty() ? "" : " " + f->unit));
+}
+
+double FigureQuote::number(const std::string& name) {
+  const std::optional<figures::Figure> f = get(name);
+  return f ? f->value : std::nan("");
+}
+
 namespace {
 
 using namespace layout;
 using figures::Figure;
 
-// The figures a line quotes, each looked up once and remembered for the test.
-struct Quote {
-  const json& report;
-  AnswerLine& line;
-  std::optional<Figure> get(const std::string& name) {
-    line.figures.push_back(name);
-    std::optional<Figure> f = figures::figureNamed(report, name);
-    return f && std::isfinite(f->value) ? f : std::nullopt;
-  }
-  // The figure's value, marked with its name (figureMark), or "-".
-  std::string value(const std::string& name) {
-    const std::optional<Figure> f = get(name);
-    return f ? figureMark(name, figures::valueText(*f)) : "-";
-  }
-};
+using Quote = FigureQuote;
 
 std::string marked(const Figure& f) { return figureMark(f.name, figures::valueText(f)); }
 

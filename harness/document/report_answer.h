@@ -3,12 +3,14 @@
 // and a link to its table, then the design-space figure. Every value is a figure of
 // report.json's "figures", quoted by name (report_answer_figures.h, report_figures.h).
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "harness/document/report_model.h"
+#include "harness/figures/figure.h"
 
 namespace mb::report {
 
@@ -29,6 +31,20 @@ struct AnswerLine {
   std::string verdict;
   std::vector<std::string> figures;  // the names of the figures the text quotes
   std::vector<KindAnswer> kinds;     // the line by kind of content (empty: not recorded)
+};
+
+// The figures a line quotes, each looked up by name and remembered in line.figures (the tests
+// check every quoted name against report.json).
+struct FigureQuote {
+  const nlohmann::json& report;
+  AnswerLine& line;
+  // The figure, or nothing when it is missing or not finite.
+  std::optional<figures::Figure> get(const std::string& name);
+  // Its value with its unit, marked with its name (figureMark), or "-"; `digits` other than 3
+  // prints that many significant digits.
+  std::string value(const std::string& name, int digits = 3);
+  // Its value, NaN when missing.
+  double number(const std::string& name);
 };
 
 // "Look, Ma, No Matrices!" asks: ...

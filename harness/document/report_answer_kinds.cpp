@@ -13,25 +13,7 @@ namespace {
 using json = nlohmann::json;
 using figures::Figure;
 
-// The figures a kind's text quotes, each named in the line's figures.
-struct KindQuote {
-  const json& report;
-  AnswerLine& line;
-  std::optional<Figure> get(const std::string& name) {
-    line.figures.push_back(name);
-    std::optional<Figure> f = figures::figureNamed(report, name);
-    return f && std::isfinite(f->value) ? f : std::nullopt;
-  }
-  std::string value(const std::string& name, int digits = 3) {
-    const std::optional<Figure> f = get(name);
-    if (!f) return "-";
-    return figureMark(name, digits == 3 ? figures::valueText(*f) : fmt(f->value, digits) + (f->unit.empty() ? "" : " " + f->unit));
-  }
-  double number(const std::string& name) {
-    const std::optional<Figure> f = get(name);
-    return f ? f->value : std::nan("");
-  }
-};
+using KindQuote = FigureQuote;
 
 bool isShare(const std::string& kind) { return kind != "all" && kind != "built_in"; }
 

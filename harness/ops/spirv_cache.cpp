@@ -12,37 +12,35 @@
 #include <sstream>
 
 namespace mb::spirv {
-namespace {
 
 namespace fs = std::filesystem;
 
-uint64_t fnv1a(const std::string& s) {
+uint64_t keyHash(const std::string& s) {
   uint64_t h = 1469598103934665603ull;
   for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
   return h;
 }
 
+std::string cacheRoot() {
+  if (const char* dir = std::getenv("MB_CACHE_DIR")) return std::string(dir) == "off" ? "" : dir;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return (fs::path(xdg) / "motorbench").string();
+  if (const char* home = std::getenv("HOME"); home && *home) return (fs::path(home) / ".cache" / "motorbench").string();
+  return "";
+}
+
+namespace {
+
 // "" when the cache is off or has no place.
 fs::path cacheFolder() {
-  fs::path base;
-  if (const char* dir = std::getenv("MB_CACHE_DIR")) {
-    if (std::string(dir) == "off") return {};
-    base = dir;
-  } else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
-    base = fs::path(xdg) / "motorbench";
-  } else if (const char* home = std::getenv("HOME"); home && *home) {
-    base = fs::path(home) / ".cache" / "motorbench";
-  } else {
-    return {};
-  }
-  return base / "spirv";
+  const std::string root = cacheRoot();
+  return root.empty() ? fs::path() : fs::path(root) / "spirv";
 }
 
 fs::path entryPath(const std::string& key) {
   const fs::path dir = cacheFolder();
   if (dir.empty()) return {};
   char name[32];
-  std::snprintf(name, sizeof name, "%016llx.spvasm", static_cast<unsigned long long>(fnv1a(key)));
+  std::snprintf(name, sizeof name, "%016llx.spvasm", static_cast<unsigned long long>(keyHash(key)));
   return dir / name;
 }
 

@@ -8,10 +8,18 @@
 // compileToBinary keeps its SPIR-V modules here too, under keys of their own (the entry is the
 // module's bytes instead of text).
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <string>
 
 namespace mb::spirv {
+
+// The cache's root folder ($MB_CACHE_DIR, else $XDG_CACHE_HOME/motorbench, else
+// $HOME/.cache/motorbench); "" when MB_CACHE_DIR=off or no place is known. Other memos (the
+// report's ISA document) keep a folder of their own inside it.
+std::string cacheRoot();
+// A 64-bit FNV-1a hash of `s`, for entry file names (the whole key is kept inside the entry).
+uint64_t keyHash(const std::string& s);
 
 // The key of one compilation: every input that decides its output.
 std::string cacheKey(const std::string& source, const std::string& stage, const std::string& passes);

@@ -31,6 +31,9 @@ void Progress::done(const std::string& item) {
   std::string line = command_ + ": " + std::to_string(done_) + "/" + std::to_string(total_) + " " + what_ + " (" +
                      item + "), " + durationText(elapsed) + " elapsed";
   if (done_ < total_) line += ", about " + durationText(elapsed / double(done_) * double(total_ - done_)) + " left";
+  // What the command printed so far goes out first: a progress line written while stdout's
+  // buffer held half a line would land inside that line where both go to one pipe.
+  std::fflush(stdout);
   if (terminal_) std::fprintf(stderr, "\r\033[K%s", line.c_str());
   else std::fprintf(stderr, "%s\n", line.c_str());
   std::fflush(stderr);

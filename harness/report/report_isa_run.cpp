@@ -13,6 +13,7 @@
 #include <sstream>
 #include <vector>
 
+#include "harness/ops/spirv_cache.h"
 #include "harness/process/report_workers.h"
 #include "pipelines/gl/shader_source.h"
 
@@ -22,11 +23,6 @@ namespace {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-uint64_t fnv1a(const std::string& s) {
-  uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
-  return h;
-}
 
 std::string readText(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -75,25 +71,16 @@ std::string isaCacheKey(const std::string& executable) {
   for (const auto& e : fs::recursive_directory_iterator(gl::shaderDir(), ec))
     if (e.is_regular_file(ec)) shaders.push_back(e.path());
   std::sort(shaders.begin(), shaders.end());
-  for (const fs::path& p : shaders) key += p.string() + " " + std::to_string(fnv1a(readText(p))) + "\n";
+  for (const fs::path& p : shaders) key += p.string() + " " + std::to_string(spirv::keyHash(readText(p))) + "\n";
   return key;
 }
 
 std::string isaCacheFile(const std::string& key) {
-  fs::path base;
-  if (const char* dir = std::getenv("MB_CACHE_DIR")) {
-    if (std::string(dir) == "off") return {};
-    base = dir;
-  } else if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
-    base = fs::path(xdg) / "motorbench";
-  } else if (const char* home = std::getenv("HOME"); home && *home) {
-    base = fs::path(home) / ".cache" / "motorbench";
-  } else {
-    return {};
-  }
+  const std::string root = spirv::cacheRoot();
+  if (root.empty()) return {};
   char name[32];
-  std::snprintf(name, sizeof name, "%016llx.json", static_cast<unsigned long long>(fnv1a(key)));
-  return (base / "isa" / name).string();
+  std::snprintf(name, sizeof name, "%016llx.json", static_cast<unsigned long long>(spirv::keyHash(key)));
+  return (fs::path(root) / "isa" / name).string();
 }
 
 namespace {
