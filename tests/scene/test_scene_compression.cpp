@@ -21,6 +21,7 @@
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/drawable.h"
 #include "pipelines/scene/loader.h"
+#include "tests/scene/load_bytes.h"
 #include "tests/support/compressed_gltf.h"
 
 using namespace mb;
@@ -29,11 +30,7 @@ using compressed::Json;
 
 namespace {
 
-Scene load(const Bytes& bytes, const std::string& name) {
-  auto s = loadGltfMemory(bytes, name);
-  EXPECT_TRUE(s) << s.error();
-  return s ? s.take() : Scene{};
-}
+using scene_test::load;
 
 Bytes builtin(const std::string& name) {
   auto glb = builtinSceneGlb(name);

@@ -16,6 +16,7 @@
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scene_stats.h"
 #include "tests/hostile/hostile_cases.h"
+#include "tests/scene/load_bytes.h"
 #include "tests/support/compressed_gltf.h"
 
 using namespace mb;
@@ -25,11 +26,7 @@ using hostile::Json;
 
 namespace {
 
-Scene load(const Bytes& bytes, const std::string& name) {
-  auto s = loadGltfMemory(bytes, name);
-  EXPECT_TRUE(s) << s.error();
-  return s ? s.take() : Scene{};
-}
+using scene_test::load;
 
 std::string refusal(const Bytes& bytes, const std::string& name) {
   auto s = loadGltfMemory(bytes, name);

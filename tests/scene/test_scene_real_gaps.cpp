@@ -18,6 +18,7 @@
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scene_stats.h"
 #include "tests/hostile/hostile_cases.h"
+#include "tests/scene/load_bytes.h"
 
 using namespace mb;
 using hostile::Bytes;
@@ -26,11 +27,7 @@ using hostile::Json;
 
 namespace {
 
-Scene load(const Bytes& bytes, const std::string& name) {
-  auto s = loadGltfMemory(bytes, name);
-  EXPECT_TRUE(s) << s.error();
-  return s ? s.take() : Scene{};
-}
+using scene_test::load;
 
 // The non-zero LoadStats counters of `s`, as inspect lists them.
 Json fallbacks(const Scene& s) {
