@@ -64,7 +64,7 @@ std::string isaText(KindQuote& q, KindAnswer& k, const std::string& m, const std
     const double va = q.number(a), vb = q.number(b);
     if (!std::isfinite(va) || !std::isfinite(vb)) continue;
     summ += va, sumM += vb;
-    text += (text.empty() ? "" : ", ") + id + " " + figureMark(b, fmt(vb, 4)) + "/" + figureMark(a, fmt(va, 4));
+    text += (text.empty() ? "" : ", ") + id + " " + figureMark(b, fmt(vb, 3)) + "/" + figureMark(a, fmt(va, 3));
   }
   k.ratio = summ > 0 ? sumM / summ : std::nan("");
   return text.empty() ? "not measured" : M + "/" + m + " " + text;
