@@ -65,7 +65,7 @@ def isa_cell(F, p):
     return ", ".join(F.fig(f"isa.instructions.rigid.{fam}.{p}") for fam in ISA_FAMILIES)
 
 
-def pipelines_table(F, report):
+def pipelines_table(F, report, results=None):
     pipes = [p for p in report.get("settings", {}).get("pipelines", []) if f"bytes_per_vertex.{p}" in F.figures]
     header = ["pipeline", "bytes/vertex uploaded", "bytes fetched/vertex", "floats/transform",
               "ops rigid / skinned / to clip, counted (SPIR-V)", "ISA rigid VS instr. " + " / ".join(ISA_FAMILIES),
@@ -76,7 +76,7 @@ def pipelines_table(F, report):
     return table(header, rows)
 
 
-def compact_table(F, report):
+def compact_table(F, report, results=None):
     pipes = [p for p in ("matrix", "qtangent", "motor_q", "matrix_c", "motor_c", "motor_cf")
              if f"bytes_per_vertex.{p}" in F.figures]
     header = ["pipeline", "bytes/vertex (uploads)", "worst PSNR vs matrix, own vertex format",
@@ -88,7 +88,7 @@ def compact_table(F, report):
     return table(header, rows)
 
 
-def curved_table(F, report):
+def curved_table(F, report, results=None):
     rows = [[cid.replace("curved_", "").replace("_", " "), F.claim(cid)]
             for cid in ("curved_floats_per_instance", "curved_ops_per_vertex", "curved_frame_time", "curved_drift")]
     for p in ("s3_matrix", "s3_motor", "h3_matrix", "h3_motor"):
@@ -97,9 +97,50 @@ def curved_table(F, report):
     return table(["figure", "measured"], rows)
 
 
-TABLES = {"pipelines": pipelines_table, "compact": compact_table, "curved": curved_table}
+SPAN = re.compile(r'<span title="[^"]*">(.*?)</span>')
+LINK = re.compile(r"\[([^\]]*)\]\([^)]*\)")
 
-CURVED_README = """# results/curved — curved space (issue 15)
+
+def answer_of(path):
+    """The answer block of a report.md: its headline paragraph, its evidence -> verdict rows and
+    its scene count line, as plain text (figure marks and links dropped)."""
+    if not os.path.exists(path):
+        return None
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    start = text.find("## The answer")
+    block = text[start:text.find("**Design space**", start)] if start >= 0 else ""
+    plain = lambda t: LINK.sub(r"\1", SPAN.sub(r"\1", t)).strip()
+    paragraphs = [p for p in block.split("\n\n")[1:] if p.strip() and not p.lstrip().startswith("|")]
+    headline = plain(paragraphs[1]) if len(paragraphs) > 1 else ""
+    rows = {}
+    for line in block.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split(" | ")]
+        if line.startswith("| [") and len(cells) >= 3:
+            rows[plain(cells[0])] = plain(cells[-1])
+    line = next((plain(l) for l in text.splitlines() if " scene(s): " in l), "")
+    counts = re.match(r"(\d+) scene\(s\).*?(\d+) built-in.*?(\d+) from files", line)
+    count = f"{counts[1]} scenes: {counts[2]} built-in, {counts[3]} from files" if counts else ""
+    return {"headline": headline, "rows": rows, "count": count}
+
+
+def answer_table(F, report, results):
+    """The answer of the last run on the built-in scenes (results/report.md) and on the real files
+    of results/corpus (results/corpus/report.md), each verdict as that report prints it."""
+    sides = [("built-in scenes", "report.md"), ("real files", os.path.join("corpus", "report.md"))]
+    answers = [(label, rel, answer_of(os.path.join(results, rel))) for label, rel in sides]
+    answers = [a for a in answers if a[2]]
+    out = []
+    for label, rel, a in answers:
+        out.append(f"- **{label}** (results/{rel.replace(os.sep, '/')}; {a['count'] or 'no scene count'}): {a['headline']}")
+    evidence = list(dict.fromkeys(k for _, _, a in answers for k in a["rows"]))
+    rows = [[e] + [a["rows"].get(e, "-") for _, _, a in answers] for e in evidence]
+    return "\n".join(out) + "\n\n" + table(["evidence"] + [label for label, _, _ in answers], rows)
+
+
+TABLES = {"pipelines": pipelines_table, "compact": compact_table, "curved": curved_table, "answer": answer_table}
+
+CURVED_README = """# results/curved — curved space
 
 Images at t = 2.7 s of each scene's camera path, 512x384, one per pipeline (`motorbench render
 <scene> --pipeline <p> --time 2.7 --size 512x384 -o results/curved/<scene>.<p>.png`):
@@ -125,12 +166,12 @@ figures; image equivalence per frame: ../report.md, section "Curved space".
 """
 
 
-def fill(text, F, report):
+def fill(text, F, report, results):
     def region(m):
         make = TABLES.get(m.group(2))
         if not make:
             raise SystemExit(f"document_figures: unknown table '{m.group(2)}'")
-        return m.group(1) + make(F, report) + m.group(4)
+        return m.group(1) + make(F, report, results) + m.group(4)
     return REGION.sub(region, text)
 
 
@@ -155,7 +196,7 @@ def main(argv=None):
         if os.path.exists(path):
             with open(path, encoding="utf-8") as f:
                 old = f.read()
-        new = fill(template if template is not None else old, F, report)
+        new = fill(template if template is not None else old, F, report, a.results)
         if new == old:
             continue
         stale.append(path)
