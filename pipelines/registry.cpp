@@ -1,60 +1,76 @@
-// Name -> factory for every pipeline. One line per pipeline.
+// Every pipeline's registry entry, one line per pipeline; each entry is declared in its folder.
+#include "pipelines/registry.h"
+
+#include <algorithm>
+
 #include "pipelines/affine/affine_pipeline.h"
-#include "pipelines/hybrid/hybrid_pipeline.h"
 #include "pipelines/curved/curved_pipeline.h"
+#include "pipelines/hybrid/hybrid_pipeline.h"
 #include "pipelines/matrix/matrix_pipeline.h"
 #include "pipelines/motor/motor_pipeline.h"
-#include "pipelines/pipeline.h"
-#include "pipelines/skin_method.h"
 
 namespace mb {
 namespace {
-struct Entry {
-  const char* name;
-  std::unique_ptr<Pipeline> (*make)();
-  Space space;  // the scenes it draws
-  SkinMethod skin;  // how its vertex shader blends joints (skin_method.h)
-};
-constexpr SkinMethod kLbs = SkinMethod::LinearBlend, kMotors = SkinMethod::MotorBlend, kNoSkin = SkinMethod::None;
-const Entry kPipelines[] = {
-    {"matrix", makeMatrixPipeline, Space::Euclidean, kLbs},
-    {"motor", makeMotorPipeline, Space::Euclidean, kMotors},
-    {"affine", makeAffinePipeline, Space::Euclidean, kLbs},
-    {"qtangent", makeQtangentPipeline, Space::Euclidean, kLbs},
-    {"motor_q", makeMotorQPipeline, Space::Euclidean, kMotors},
-    {"hybrid", makeHybridPipeline, Space::Euclidean, kLbs},
-    {"matrix_c", makeMatrixCPipeline, Space::Euclidean, kLbs},
-    {"motor_c", makeMotorCPipeline, Space::Euclidean, kMotors},
-    {"motor_cf", makeMotorCFPipeline, Space::Euclidean, kMotors},
-    {"s3_matrix", makeS3MatrixPipeline, Space::Spherical, kNoSkin},
-    {"s3_motor", makeS3MotorPipeline, Space::Spherical, kNoSkin},
-    {"h3_matrix", makeH3MatrixPipeline, Space::Hyperbolic, kNoSkin},
-    {"h3_motor", makeH3MotorPipeline, Space::Hyperbolic, kNoSkin},
-};
+
+std::vector<PipelineEntry>& entries() {
+  static std::vector<PipelineEntry> list = {
+      matrixEntry(),
+      motorEntry(),
+      affineEntry(),
+      qtangentEntry(),
+      motorQEntry(),
+      hybridEntry(),
+      matrixCEntry(),
+      motorCEntry(),
+      motorCFEntry(),
+      curvedEntry(Space::Spherical, false),
+      curvedEntry(Space::Spherical, true),
+      curvedEntry(Space::Hyperbolic, false),
+      curvedEntry(Space::Hyperbolic, true),
+  };
+  return list;
+}
+
 }  // namespace
 
-std::unique_ptr<Pipeline> createPipeline(const std::string& name) {
-  for (const Entry& e : kPipelines)
-    if (name == e.name) return e.make();
+const std::vector<PipelineEntry>& registeredPipelines() { return entries(); }
+
+const PipelineEntry* findPipeline(const std::string& name) {
+  for (const PipelineEntry& e : entries())
+    if (e.name == name) return &e;
   return nullptr;
 }
 
+ScopedRegistration::ScopedRegistration(PipelineEntry entry) : name_(entry.name) {
+  if (findPipeline(name_)) return;
+  entries().push_back(std::move(entry));
+  added_ = true;
+}
+
+ScopedRegistration::~ScopedRegistration() {
+  if (added_) std::erase_if(entries(), [&](const PipelineEntry& e) { return e.name == name_; });
+}
+
+std::unique_ptr<Pipeline> createPipeline(const std::string& name) {
+  const PipelineEntry* e = findPipeline(name);
+  return e ? e->make() : nullptr;
+}
+
 SkinMethod skinMethodOf(const std::string& name) {
-  for (const Entry& e : kPipelines)
-    if (name == e.name) return e.skin;
-  return SkinMethod::None;
+  const PipelineEntry* e = findPipeline(name);
+  return e ? e->skin : SkinMethod::None;
 }
 
 std::vector<std::string> pipelineNames(Space space) {
   std::vector<std::string> names;
-  for (const Entry& e : kPipelines)
+  for (const PipelineEntry& e : entries())
     if (e.space == space) names.push_back(e.name);
   return names;
 }
 
 std::vector<std::string> allPipelineNames() {
   std::vector<std::string> names;
-  for (const Entry& e : kPipelines) names.push_back(e.name);
+  for (const PipelineEntry& e : entries()) names.push_back(e.name);
   return names;
 }
 

@@ -12,13 +12,39 @@
 #include "harness/ops/pipeline_ops.h"
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
+#include "pipelines/registry.h"
 #include "pipelines/scene/loader.h"
 
 namespace mb::claims {
 namespace {
 
-const char* kMotor = "motor_c";
-const char* kMatrix = "matrix_c";
+// The pipelines these claims compare, by their registry traits: a family's smallest vertex (the
+// first registered with the fewest bytes) and its baseline (its first), and the pipeline that
+// passes the rotor to the fragment shader.
+std::string smallestVertex(PipelineFamily family) {
+  const PipelineEntry* best = nullptr;
+  for (const PipelineEntry& e : registeredPipelines())
+    if (e.space == Space::Euclidean && e.family == family && e.vertexBytes > 0 &&
+        (!best || e.vertexBytes < best->vertexBytes))
+      best = &e;
+  return best ? best->name : "";
+}
+
+std::string baselineOf(PipelineFamily family) {
+  for (const PipelineEntry& e : registeredPipelines())
+    if (e.space == Space::Euclidean && e.family == family) return e.name;
+  return "";
+}
+
+std::string fragmentRotorPipeline() {
+  for (const PipelineEntry& e : registeredPipelines())
+    if (e.frame.perFragment) return e.name;
+  return "";
+}
+
+const std::string kMotor = smallestVertex(PipelineFamily::Motor), kMatrix = smallestVertex(PipelineFamily::Matrix);
+const std::string kMotorBase = baselineOf(PipelineFamily::Motor), kMatrixBase = baselineOf(PipelineFamily::Matrix);
+const std::string kRotor = fragmentRotorPipeline();
 
 Claim row(const std::string& id, const std::string& statement, const std::string& method) {
   Claim c{id, "Compact vertices", statement};
@@ -117,21 +143,21 @@ Claim fragmentRotorClaim(const nlohmann::json& isa, const std::vector<std::strin
   // With a report: its worst PSNR of each against matrix (the figure the report prints; it
   // compares with matrix only), never a render here.
   const bool fromReport = report.is_object();
-  auto image = fromReport ? reportWorstPsnr(report, {"motor_cf", kMotor}) : worstPsnr(scenes, kMotor, {"motor_cf"});
+  auto image = fromReport ? reportWorstPsnr(report, {kRotor, kMotor}) : worstPsnr(scenes, kMotor, {kRotor});
   if (fromReport && image)
     c.method.replace(c.method.find("image: "), std::string::npos,
                      "image: the report's worst PSNR against matrix of motor_cf and of motor_c (" + reportSource +
                          " summary.images, its frames where both should agree)");
-  if (!rigid.count("motor_cf") || !rigid.count(kMotor) || !image) {
+  if (!rigid.count(kRotor) || !rigid.count(kMotor) || !image) {
     c.verdict = Verdict::NotMeasurable;
     c.verdictText = "not measurable here: " + (image ? "no counted rigid variant " + zero : image.error());
     c.measured = "-";
     return c;
   }
-  const double vf = rigid.at("motor_cf"), vc = rigid.at(kMotor);
+  const double vf = rigid.at(kRotor), vc = rigid.at(kMotor);
   const uint64_t ff = opsv::total(frag[0]), fc = opsv::total(frag[1]);
   const nlohmann::json* rf = isa.is_object() && !isa.value("families", nlohmann::json::array()).empty()
-                                 ? report::isaRow(isa, "motor_cf", "rigid", isa["families"][0].value("id", ""))
+                                 ? report::isaRow(isa, kRotor, "rigid", isa["families"][0].value("id", ""))
                                  : nullptr;
   const nlohmann::json* rc = rf ? report::isaRow(isa, kMotor, "rigid", isa["families"][0].value("id", "")) : nullptr;
   const bool slots = rf && rc && rf->contains("varyingSlots") && rc->contains("varyingSlots");
@@ -141,14 +167,14 @@ Claim fragmentRotorClaim(const nlohmann::json& isa, const std::vector<std::strin
                                          : "") +
                (fromReport ? "; image vs matrix " + psnrText(image->front()) + " vs " + psnrText(image->back())
                            : "; image vs motor_c " + psnrText(image->front()));
-  c.measuredValue = {{"vertexOps", {{"motor_cf", vf}, {kMotor, vc}}},
-                     {"fragmentOps", {{"motor_cf", opsJson(frag[0])}, {kMotor, opsJson(frag[1])}}},
-                     {"fragmentOpsNoNormalMap", {{"motor_cf", opsJson(plain[0])}, {kMotor, opsJson(plain[1])}}},
+  c.measuredValue = {{"vertexOps", {{kRotor, vf}, {kMotor, vc}}},
+                     {"fragmentOps", {{kRotor, opsJson(frag[0])}, {kMotor, opsJson(frag[1])}}},
+                     {"fragmentOpsNoNormalMap", {{kRotor, opsJson(plain[0])}, {kMotor, opsJson(plain[1])}}},
                      {fromReport ? "worstPsnrAgainstMatrix" : "worstPsnrAgainstMotorC",
                       image->front() > 1e299 ? nlohmann::json() : nlohmann::json(image->front())}};
   if (fromReport) c.measuredValue["worstPsnrAgainstMatrixMotorC"] = image->back() > 1e299 ? nlohmann::json() : nlohmann::json(image->back());
   if (slots)
-    c.measuredValue["varyingSlots"] = {{"motor_cf", (*rf)["varyingSlots"]}, {kMotor, (*rc)["varyingSlots"]}};
+    c.measuredValue["varyingSlots"] = {{kRotor, (*rf)["varyingSlots"]}, {kMotor, (*rc)["varyingSlots"]}};
   const bool vertexSaves = vf < vc, fragmentSaves = ff < fc;
   // What the claim leaves out, measured beside it.
   const std::string caveat = "; without a normal map the fragment pays " + fmt("%g", double(opsv::total(plain[0]))) +
@@ -186,7 +212,7 @@ std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& i
                         uploads.source());
   double b[4] = {0, 0, 0, 0};
   std::string error;
-  const char* names[4] = {kMotor, kMatrix, "motor", "matrix"};
+  const std::string names[4] = {kMotor, kMatrix, kMotorBase, kMatrixBase};
   for (int i = 0; i < 4 && error.empty(); ++i) {
     auto f = uploads.of("normal_torus", names[i]);
     if (!f) error = f.error();
@@ -198,7 +224,7 @@ std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& i
   } else {
     bytes.measured = fmt("%g", b[0]) + " vs " + fmt("%g", b[1]) + " bytes/vertex (motor " + fmt("%g", b[2]) +
                      ", matrix " + fmt("%g", b[3]) + ")";
-    bytes.measuredValue = {{kMotor, b[0]}, {kMatrix, b[1]}, {"motor", b[2]}, {"matrix", b[3]}};
+    bytes.measuredValue = {{kMotor, b[0]}, {kMatrix, b[1]}, {kMotorBase, b[2]}, {kMatrixBase, b[3]}};
     bytes.verdict = Verdict::Baseline;
     bytes.verdictText = b[0] == b[1] ? "baseline: at their smallest both sides need the same bytes; only the frame's "
                                        "encoding and its unpacking differ"
@@ -219,7 +245,7 @@ std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& i
                    std::to_string(report["settings"].value("width", 0)) + "x" +
                    std::to_string(report["settings"].value("height", 0)) + ", its scenes";
   } else if (!report.is_object()) {  // a report without both: not rendered here (issue 35)
-    w = worstPsnr(scenes, "matrix", {kMotor, kMatrix});
+    w = worstPsnr(scenes, kMatrixBase, {kMotor, kMatrix});
   }
   if (!w) {
     notMeasurable(image, w.error());

@@ -5,21 +5,12 @@
 #include "harness/document/report_format.h"
 #include "harness/figures/figure.h"
 #include "harness/document/report_isa.h"
+#include "pipelines/registry.h"
 
 namespace mb::report {
 namespace {
 
 using nlohmann::json;
-
-// The kernel that unpacks each pipeline's frame (shaders/*.glsl): the float frames (matrix,
-// affine, motor) have none; motor_q's int16 SNORM rotor is converted by the vertex fetch.
-std::string decodeKernel(const std::string& pipeline) {
-  if (pipeline == "qtangent" || pipeline == "hybrid") return "qtangentFrame";
-  if (pipeline == "matrix_c") return "compactMatrixFrame";
-  if (pipeline == "motor_c") return "compactRotor";
-  if (pipeline == "motor_cf") return "compactSignedRotor";
-  return "";
-}
 
 // The counted ops of the kernel `function` (the frame decoders; harness/ops/
 // vertex_kernels_fragment.cpp for the fragment frame).
@@ -29,10 +20,19 @@ std::string kernelText(const json& r, const std::string& function) {
   return function + ": -";
 }
 
+// The counted ops of the kernel that unpacks the pipeline's frame (its registry entry); none
+// where the vertex fetch reads the frame as it is.
 std::string decodeText(const json& r, const std::string& pipeline) {
-  const std::string fn = decodeKernel(pipeline);
-  if (fn.empty()) return pipeline == "motor_q" ? "0 (SNORM16: the vertex fetch)" : "0 (float frame)";
-  return kernelText(r, fn);
+  const PipelineEntry* e = findPipeline(pipeline);
+  if (!e) return "-";
+  if (e->frame.decodeKernel.empty()) return "0 (" + e->frame.fetched + ")";
+  return kernelText(r, e->frame.decodeKernel);
+}
+
+// Where the fragment shader shades from: the rotor (unpacked per fragment) or a normal and a tangent.
+bool rotorPerFragment(const std::string& pipeline) {
+  const PipelineEntry* e = findPipeline(pipeline);
+  return e && e->frame.perFragment;
 }
 
 const json* rigidVariant(const json& r, const std::string& pipeline) {
@@ -81,8 +81,8 @@ void fragmentStageTable(Document& d, const json& r, const std::vector<std::strin
         {p},
         {v && v->contains("varyingSlots") ? fmt((*v)["varyingSlots"], 3) + " / " + fmt((*v)["varyingComponents"], 3)
                                           : "-"},
-        {kernelText(r, p == "motor_cf" ? "rotorShadingNormal" : "tbnShadingNormal")},
-        {kernelText(r, p == "motor_cf" ? "rotorSurfaceNormal" : "tbnSurfaceNormal")}};
+        {kernelText(r, rotorPerFragment(p) ? "rotorShadingNormal" : "tbnShadingNormal")},
+        {kernelText(r, rotorPerFragment(p) ? "rotorSurfaceNormal" : "tbnSurfaceNormal")}};
     for (const std::string& f : families) row.push_back({isaText(r, p, f, "fragment")});
     rows.push_back(std::move(row));
   }

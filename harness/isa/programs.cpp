@@ -36,9 +36,7 @@ std::vector<Program> allPrograms() {
       out[it->second].labels.push_back(v.label);
       continue;
     }
-    // The curved pipelines link curved.fs, every other pipeline forward.fs (pipelines/*/).
-    const std::string fragment = v.file.rfind("curved_", 0) == 0 ? "curved.fs" : "forward.fs";
-    out.push_back({v.pipeline, programId(v.label), v.label, {v.label}, v.file, fragment, v.defines});
+    out.push_back({v.pipeline, programId(v.label), v.label, {v.label}, v.file, v.fragment, v.defines});
   }
   return out;
 }

@@ -8,6 +8,7 @@
 
 #include "pipelines/affine/affine_pose.h"
 #include "pipelines/pipeline.h"
+#include "pipelines/registry.h"
 
 namespace mb {
 namespace affine {
@@ -36,10 +37,17 @@ std::unique_ptr<Poser> makeMatrixPoser();
 std::unique_ptr<Pipeline> makePipeline(const std::string& name, FrameFormat format,
                                        std::unique_ptr<Poser> poser);
 
+// The programs of the int16-quaternion vertex (qtangent's, hybrid's), `also` added to each note.
+std::vector<ShaderVariant> qtangentVariants(const std::string& also);
+
 }  // namespace affine
 
 std::unique_ptr<Pipeline> makeAffinePipeline();
 std::unique_ptr<Pipeline> makeQtangentPipeline();
 std::unique_ptr<Pipeline> makeMatrixCPipeline();  // matrix_c: 16-byte vertex, 4-byte frame
+// Their registry entries (affine_entry.cpp).
+PipelineEntry affineEntry();
+PipelineEntry qtangentEntry();
+PipelineEntry matrixCEntry();
 
 }  // namespace mb

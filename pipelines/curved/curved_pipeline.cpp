@@ -190,4 +190,19 @@ std::unique_ptr<Pipeline> makeS3MotorPipeline() { return std::make_unique<Curved
 std::unique_ptr<Pipeline> makeH3MatrixPipeline() { return std::make_unique<CurvedPipeline>(Space::Hyperbolic, false); }
 std::unique_ptr<Pipeline> makeH3MotorPipeline() { return std::make_unique<CurvedPipeline>(Space::Hyperbolic, true); }
 
+// One program each: the instance vertex of its space (MB_KAPPA = the curvature) and curved.fs.
+PipelineEntry curvedEntry(Space space, bool motor) {
+  static const std::string kMain = "main() adds the projection u_Projection * position (mat4 * vec4: 16 mul, 12 add), "
+                                   "the same on both sides of a space";
+  const bool s3 = space == Space::Spherical;
+  std::unique_ptr<Pipeline> (*make)() = s3 ? (motor ? makeS3MotorPipeline : makeS3MatrixPipeline)
+                                           : (motor ? makeH3MotorPipeline : makeH3MatrixPipeline);
+  return {.name = std::string(s3 ? "s3_" : "h3_") + (motor ? "motor" : "matrix"), .make = make, .space = space,
+          .skin = SkinMethod::None, .family = motor ? PipelineFamily::Motor : PipelineFamily::Matrix,
+          .variants = {{.stage = motor ? "curved_motor.vs" : "curved_matrix.vs", .defines = {{"MB_KAPPA", s3 ? "1" : "-1"}},
+                        .draws = s3 ? "S3 instance" : "H3 instance",
+                        .kernels = {motor ? "curvedMotorVertex" : "curvedMatrixVertex"}, .note = kMain,
+                        .fragment = "curved.fs"}}};
+}
+
 }  // namespace mb

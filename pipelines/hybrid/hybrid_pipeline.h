@@ -7,6 +7,7 @@
 
 #include "pipelines/motor/motor_kernels.h"
 #include "pipelines/pipeline.h"
+#include "pipelines/registry.h"
 
 namespace mb {
 
@@ -16,5 +17,6 @@ glm::mat4x3 toMatrix(const mb::Motor& m, const glm::vec3& scale);
 }  // namespace hybrid
 
 std::unique_ptr<Pipeline> makeHybridPipeline();
+PipelineEntry hybridEntry();
 
 }  // namespace mb

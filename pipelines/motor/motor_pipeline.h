@@ -3,6 +3,7 @@
 #include <string>
 
 #include "pipelines/pipeline.h"
+#include "pipelines/registry.h"
 
 namespace mb {
 
@@ -20,4 +21,9 @@ std::unique_ptr<Pipeline> makeMotorPipeline();   // the paper's form
 std::unique_ptr<Pipeline> makeMotorQPipeline();  // motor_q: quantized frame
 std::unique_ptr<Pipeline> makeMotorCPipeline();  // motor_c: 16-byte vertex, 4-byte rotor
 std::unique_ptr<Pipeline> makeMotorCFPipeline();  // motor_cf: motor_c, rotor to the fragment shader
+// Their registry entries (motor_entry.cpp).
+PipelineEntry motorEntry();
+PipelineEntry motorQEntry();
+PipelineEntry motorCEntry();
+PipelineEntry motorCFEntry();
 }

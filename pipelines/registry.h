@@ -1,0 +1,89 @@
+// What each pipeline declares beside its factory (one registry line per pipeline, registry.cpp):
+// the scenes it draws, how it blends joints, its family, its vertex and frame encoding, and the
+// shader variants it links. The harness reads these instead of naming pipelines: harness/ops
+// counts the variants, harness/isa compiles them, and the report's tables take their rows and
+// columns from the traits.
+#pragma once
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pipelines/pipeline.h"
+#include "pipelines/skin_method.h"
+
+namespace mb {
+
+// One program a pipeline links: its vertex stage (file and #defines, as its prepare() links
+// them), what it draws, and the GLSL functions its main() calls that harness/ops counts
+// (harness/ops/vertex_kernels*.cpp). What each label means: harness/ops/shader_variants.h.
+struct ShaderVariant {
+  std::string stage;  // the vertex shader, relative to the shader folder
+  std::vector<std::pair<std::string, std::string>> defines = {};  // name, value ("" = none)
+  std::string draws;                                               // "rigid", "skinned", ...
+  std::vector<std::string> kernels;
+  std::string note = "";                // what main() does besides those kernels
+  std::string fragment = "forward.fs";  // the fragment stage it is linked with
+};
+
+// Which side of the paper's comparison a pipeline is on.
+enum class PipelineFamily { Matrix, Motor };
+
+// How a vertex stores its tangent frame and where it is unpacked.
+struct FrameEncoding {
+  std::string decodeKernel = "";  // the counted GLSL function that unpacks it ("": none runs)
+  std::string fetched = "";       // without one: what the vertex fetch reads ("float frame")
+  bool perFragment = false;       // the world tangent rotor is the varying, unpacked in forward.fs
+};
+
+struct PipelineEntry {
+  std::string name;
+  std::unique_ptr<Pipeline> (*make)();
+  Space space;                 // the scenes it draws
+  SkinMethod skin;             // how its vertex shader blends joints (skin_method.h)
+  PipelineFamily family;
+  int vertexBytes = 0;         // shading attributes of a normal-mapped vertex (0: no glTF vertex)
+  FrameEncoding frame = {};
+  std::vector<ShaderVariant> variants = {};
+};
+
+// Every registered pipeline, in registry order (the matrix baseline first).
+const std::vector<PipelineEntry>& registeredPipelines();
+// nullptr when `name` is not registered.
+const PipelineEntry* findPipeline(const std::string& name);
+
+// A registration that lasts as long as the object: a test adds a pipeline (a copy of one under
+// another name) with one entry and finds it in every command's lists. A name already taken is
+// not added (added() is false).
+class ScopedRegistration {
+public:
+  explicit ScopedRegistration(PipelineEntry entry);
+  ~ScopedRegistration();
+  ScopedRegistration(const ScopedRegistration&) = delete;
+  ScopedRegistration& operator=(const ScopedRegistration&) = delete;
+  bool added() const { return added_; }
+
+private:
+  std::string name_;
+  bool added_ = false;
+};
+
+}  // namespace mb
+
+namespace mb::variant_notes {
+
+// What several pipelines' variants say alike (constants, not strings built at start-up: the
+// registry may be read during static initialisation).
+inline constexpr const char* kTexels = "the 16 control points are texelFetch (no arithmetic)";
+// Instanced draws (EXT_mesh_gpu_instancing): the rigid transform with its per-draw data read
+// from per-instance attributes; the same arithmetic as the non-instanced variant.
+inline constexpr const char* kInstanced = "the per-draw transform read from per-instance attributes (divisor 1)";
+inline constexpr const char* kMorphSums =
+    "morph.glsl's delta sums, per target with a non-zero weight 1 mul + 1 add per float of the target "
+    "(storage-buffer reads by the vertex index), before the transform";
+// A morphing rigid vertex beside the rigid one (shaders/morph.glsl), two targets as morph_torus.
+inline std::vector<std::pair<std::string, std::string>> morphDefines() {
+  return {{"MB_MORPH", ""}, {"MB_MORPH_TARGETS", "2"}};
+}
+
+}  // namespace mb::variant_notes
