@@ -74,7 +74,7 @@ std::vector<Claim> baselineClaims() {
       {"matrix", "rigid, no tangent", "world_to_clip_matrix_no_tangent",
        "matrix pipeline, object to clip without a tangent (no TANGENT, no normal map: the Sample Viewer's "
        "shader has no tangent input); the motor vertex has no such variant (its rotor carries the normal)"},
-      // Symmetric skinning (issue 18): each pipeline in the same configuration.
+      // Symmetric skinning: each pipeline in the same configuration.
       {"matrix", "skinned, reference", "skinned_vertex_matrix",
        "matrix pipeline, skinned vertex (4 joints, LBS of joint and joint-normal matrices) to clip, as the Sample "
        "Viewer does it: palette relative to the mesh node, then u_ModelMatrix per vertex"},

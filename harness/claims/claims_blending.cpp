@@ -1,4 +1,4 @@
-// Motor blending against slerp (issue 18). The paper blends animations by "directly blending
+// Motor blending against slerp. The paper blends animations by "directly blending
 // and renormalizing PGA motors" (the dual-quaternion pattern: a normalised linear blend), where
 // the sampler interpolates rotations with slerp. How far apart are the two? Measured on every
 // rotation channel of every animation of the built-in scenes: for each pair of consecutive

@@ -1,4 +1,4 @@
-// The smallest motor vertex against the smallest matrix vertex (issue 29): motor_c (4-byte
+// The smallest motor vertex against the smallest matrix vertex: motor_c (4-byte
 // tangent rotor) and matrix_c (octahedral normal + diamond tangent), both 16 bytes with int16
 // positions and half uvs. Bytes from the uploads, image cost from renders compared with matrix,
 // ops counted through the shim, ISA from a `motorbench isa` JSON when one is given.
@@ -244,7 +244,7 @@ std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& i
                    "both should agree (skinning-method frames apart), " +
                    std::to_string(report["settings"].value("width", 0)) + "x" +
                    std::to_string(report["settings"].value("height", 0)) + ", its scenes";
-  } else if (!report.is_object()) {  // a report without both: not rendered here (issue 35)
+  } else if (!report.is_object()) {  // a report without both: not rendered here
     w = worstPsnr(scenes, kMatrixBase, {kMotor, kMatrix});
   }
   if (!w) {

@@ -1,4 +1,4 @@
-// Composition claims (issue 18): "for two general PGA motors, their composition clocks in at
+// Composition claims: "for two general PGA motors, their composition clocks in at
 // just 48 multiplications and 40 additions" against the 4x4 product's 64/48, and "the gain of
 // switching to motors is obvious" for the scene-graph update. Both judged against the
 // strongest matrix code measured, not only the 4x4 product the paper names: the affine
@@ -52,9 +52,8 @@ std::vector<Claim> compositionClaims(const json& kernelPairs) {
   std::string text = "counted: gp_mm " + opsText(motor) + ", mat4*mat4 " + opsText(mat4) + ", affine mat4x3 " + opsText(affine);
   const bool countedVsMat4 = total(motor) < total(mat4), countedVsAffine = total(motor) < total(affine);
   // Timed, fastest against fastest: the bench's compose pair (every implementation, the Highway
-  // SIMD kernels included), read from the bench's JSON; claims times nothing itself (issue 35
-  // item 7: its in-process timing of the scalar sources, quoted beside the bench's figures,
-  // was a second, unexplained figure for the same quantity).
+  // SIMD kernels included), read from the bench's JSON; claims times nothing itself (a timing of
+  // its own, quoted beside the bench's figures, would be a second figure for the same quantity).
   std::string timedText = "not timed: no bench compose pair";
   int timedVerdict = 0;  // +1 motor faster than the fastest matrix side, -1 slower or equal within noise, 0 not timed
   std::string fastest, fastestMotor = "motor", timedFrom;
@@ -148,7 +147,7 @@ std::vector<Claim> sceneGraphClaims(const json& kernelPairs, const json& timings
     for (const auto& [scene, t] : timings.items()) {
       if (!t.is_object() || !t.contains("pipelines")) continue;
       const json& ps = t["pipelines"];
-      // The hierarchy phase of the update (issue 35 item 7): what the sentence is about; the whole
+      // The hierarchy phase of the update: what the sentence is about; the whole
       // update also builds the skin palette and samples the animation.
       auto update = [&](const std::string& p) {
         const json& h = ps.contains(p) ? ps[p].value("updatePhasesMedianMs", json()) : json();

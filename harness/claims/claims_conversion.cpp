@@ -1,4 +1,4 @@
-// Conversion and scale claims (issue 18): quaternions enter the motor pipeline "conversion
+// Conversion and scale claims: quaternions enter the motor pipeline "conversion
 // free" (a glTF rotation (x, y, z, w) is the rotor [w, -x, -y, -z]); the uniform scale kept
 // beside each motor has an "absolutely minimal" impact. Both counted through the code the
 // pipeline runs, and the quaternion rule checked bit for bit on the loader's own function.

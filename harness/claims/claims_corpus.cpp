@@ -1,13 +1,14 @@
 // The paper's statistics over glTF files: "less than 0.5 % of the almost 400 random glTF files
-// tested had any animation on the scale", and non-uniform scale found only on leaf nodes.
-// Judged on the files given with one relative tolerance, 1e-4 (the paper's loader applies it to a
-// matrix's column scales): a scale is non-uniform when |s0/s1 - 1| or |s1/s2 - 1| exceeds it, and a
-// scale channel animates the scale when its keys change over time (a key differs from the first
-// by more than it; constant channels apart) (pipelines/scene/scale_analysis.h). The sample: the scene-graph corpus when given (issue 26:
-// ../shared/corpus-graph, ~960 real files), else the report's scenes (or the built-in scenes)
-// plus the --corpus folder. Test fixtures (manifest kind "test") are listed but left out of the
-// verdict: they are synthetic scenes, not the random files the paper sampled. Duplicate models
-// (the same content in two files: corpus_models.h) are counted once, beside the file count.
+// tested had any animation on the scale", and non-uniform scale found only on leaf nodes. Judged on
+// the files given with one relative tolerance, 1e-4 (the paper's loader applies it to a matrix's
+// column scales): a scale is non-uniform when |s0/s1 - 1| or |s1/s2 - 1| exceeds it, and a scale
+// channel animates the scale when its keys change over time (a key differs from the first by more
+// than it; constant channels apart) (pipelines/scene/scale_analysis.h). The sample: the scene-graph
+// corpus when given (../shared/corpus-graph, ~960 real files), else the report's scenes (or the
+// built-in scenes) plus the --corpus folder. Test fixtures (manifest kind "test") are listed but
+// left out of the verdict: they are synthetic scenes, not the random files the paper sampled.
+// Duplicate models (the same content in two files: corpus_models.h) are counted once, beside the
+// file count.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -196,7 +197,7 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
   l.measured = allWhat + ": non-uniform scale (beyond " + rule + ") on an inner node in " + pct(a.inner, a.files) +
                "; " + judgedWhat + " (" + judgedCount + "): " + pct(r.inner, r.files) + ", " +
                std::to_string(r.innerBeyondPercent) + " of them beyond 1 %" + (examples.empty() ? "" : " (" + examples + ")");
-  // What the motor family's exact fallback (issue 34) takes on the same files, at rest, as inspect
+  // What the motor family's exact fallback takes on the same files, at rest, as inspect
   // counted it (motorFallbacks in its JSON; absent from an inspect run older than the fallback).
   int censused = 0, generalFiles = 0, skinFiles = 0, linearDraws = 0, skinDraws = 0;
   for (const json& f : judged) {

@@ -1,7 +1,7 @@
-// Curved space (issue 15): the paper's question on S3 and H3, where a motor has no scale or
+// Curved space: the paper's question on S3 and H3, where a motor has no scale or
 // shear to excuse: floats per instance (uploads), ops per vertex (counted + SPIR-V), frame
 // time motor / matrix (normal and vertex-bound viewport, one run), camera drift. No paper
-// figure exists: verdict "baseline", except floats per instance (the issue's 16 vs 8).
+// figure exists: verdict "baseline", except floats per instance (the expected 16 vs 8).
 #include <cmath>
 #include <cstdio>
 
@@ -52,7 +52,7 @@ std::vector<Claim> curvedClaims(bool runTiming, int frames, const json& reportSc
   // Floats per instance, from the uploads of one frame of each pipeline.
   Claim fpi{"curved_floats_per_instance", section,
             "floats per instance: O(4) / O(3,1) mat4 vs 8-float motor (S3: quaternion pair)"};
-  fpi.paper = "16 vs 8 (issue 15)";
+  fpi.paper = "16 vs 8";
   fpi.paperValue = {{"matrix", 16}, {"motor", 8}};
   fpi.method = "PipelineStats.floatsPerTransform (instance-buffer bytes uploaded / instances / 4) of "
                "s3_matrix, s3_motor on s3_tiling and h3_matrix, h3_motor on h3_tiling; uploads: " + uploads.source();
@@ -114,7 +114,7 @@ std::vector<Claim> curvedClaims(bool runTiming, int frames, const json& reportSc
   ft.method = "report::timeScene per curved scene: " + std::to_string(frames) +
               " frames per pipeline at 512x512 and at 64x64 (vertex-bound: >= 10 drawn vertices per "
               "pixel), pipelines interleaved, median of the paired per-frame ratios";
-  // The report's own timing of the curved scenes when it has them (issue 35 item 4: one figure,
+  // The report's own timing of the curved scenes when it has them (one figure,
   // the report's, not a second timing at another size); else timed here.
   auto reported = [&](const std::string& id) -> json {
     if (!reportScenes.is_array()) return nullptr;

@@ -1,4 +1,4 @@
-// Which device a frame time was measured on, from report.json's machine.gl (issue 25: "kind"
+// Which device a frame time was measured on, from report.json's machine.gl ("kind"
 // "gpu" | "cpu-rasterizer" and "renderer"; older reports: "realGpu" and the renderer string), so
 // that every timing verdict names its device and one from a CPU rasterizer says so.
 #pragma once
@@ -22,8 +22,8 @@ struct TimingDevice {
 TimingDevice timingDevice(const nlohmann::json& machine);
 
 // Two timed pipelines whose counted ops differ by more than kDiscriminateOps but whose times agree
-// within kTimeTolerance: a device that times unequal arithmetic alike cannot discriminate it
-// (issue 25). The pair with the largest ops ratio, `dearer` the one with more ops.
+// within kTimeTolerance: a device that times unequal arithmetic alike cannot discriminate it.
+// The pair with the largest ops ratio, `dearer` the one with more ops.
 inline constexpr double kDiscriminateOps = 1.25;
 struct AlikePair {
   std::string dearer, cheaper;
@@ -34,7 +34,7 @@ std::optional<AlikePair> timedAlike(const std::map<std::string, double>& times,
                                     const std::map<std::string, double>& ops);
 
 // "CPU verdicts hold for <cpu> (<n> logical cores[, Highway target T])": CPU results depend on
-// the CPU (issue 26 item 10).
+// the CPU.
 std::string cpuScope(const nlohmann::json& machine);
 
 }  // namespace mb::claims

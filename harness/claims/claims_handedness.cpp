@@ -1,4 +1,4 @@
-// The tangent-frame handedness rule (issue 18). The paper stores the handedness in the sign
+// The tangent-frame handedness rule. The paper stores the handedness in the sign
 // of the tangent rotor's scalar part, chosen at load time with
 //   if (Math.sign(motor[0]) != tangents[i*4+3]) motor = motor.map(x => -x);
 // and decodes it in the shader as sign(1/x). When fromMatrix3 returns a scalar of exactly

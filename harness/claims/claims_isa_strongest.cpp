@@ -1,7 +1,7 @@
-// The ISA kind of op evidence against the strongest matrix form (issue 25 item 4; issue 35 item
-// 1): per vertex shader (rigid to clip, skinned) and family, the fewest instructions and the
-// highest occupancy (waves per SIMD) of each side; the worst family decides. VGPRs are quoted
-// beside the occupancy: more registers cost nothing while the waves per SIMD stay equal.
+// The ISA kind of op evidence against the strongest matrix form: per vertex shader (rigid to clip,
+// skinned) and family, the fewest instructions and the highest occupancy (waves per SIMD) of each
+// side; the worst family decides. VGPRs are quoted beside the occupancy: more registers cost
+// nothing while the waves per SIMD stay equal.
 #include <algorithm>
 
 #include "harness/claims/claims_ranking.h"

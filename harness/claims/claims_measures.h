@@ -1,4 +1,4 @@
-// The measurements behind the claims of issue 18 that tests check against independent
+// The measurements behind the claim rows that tests check against independent
 // references (hand-derived counts, GLM, closed forms). The rows themselves: claims_sources.h.
 #pragma once
 #include <string>

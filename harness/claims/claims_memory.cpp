@@ -106,7 +106,7 @@ std::vector<Claim> memoryClaims(const Uploads& uploads) {
                  "or TANGENT: the Sample Viewer uploads 8 floats (3 position, 3 normal, 2 uv), the motor pipeline still 9"};
   fpvPlain.method = "PipelineStats.floatsPerVertex of each pipeline on " + plainScene +
                     " (as a file with neither), the matrix pipeline "
-                    "uploading a tangent only where the Sample Viewer would (issue 18)";
+                    "uploading a tangent only where the Sample Viewer would";
   Claim fpt{"floats_per_transform", section, "floats per transform: 4x4 model matrix (+ normal matrix) vs 8-float motor"};
   fpt.method = std::string("PipelineStats.floatsPerTransform (per-draw transform uniforms uploaded, in floats) on ") +
                kRigidScene + "; the paper's table counts one 4x4 matrix per transform (16 + 16 with the "

@@ -33,7 +33,7 @@ struct Claim {
   Verdict verdict = Verdict::NotMeasurable;
   std::string verdictText;  // "reproduced", "differs: +2 mul, +5 add (+10 %)", ...
   // "" : a claim the paper makes; else one of our own rows, by kind ("baseline", "vs strongest",
-  // "curved"): counted apart from the paper's claims in the tally (issue 26 item 4).
+  // "curved"): counted apart from the paper's claims in the tally.
   std::string origin;
   // The paper's sentence (or table row) this row tests (claims_quotes.cpp); empty: ours.
   std::string quote;
@@ -68,7 +68,7 @@ struct PaperOps {
 void judgeOps(Claim& c, const PaperOps& paper, const OpCounts& measured);
 nlohmann::json paperOpsJson(const PaperOps& p);
 
-// Three sources where they differ (issue 18): the paper's table `paper`, the paper's printed
+// Three sources where they differ: the paper's table `paper`, the paper's printed
 // listing counted through the shim `listing`, and ours `measured`. Reproduced when ours equals
 // the table, or when the printed listing does (the paper's code costs what its table says;
 // ours then differs for the reason `oursWhy`); else Differs, saying whether the listing reaches

@@ -1,4 +1,4 @@
-// Morph targets (issue 37), our own rows (not claimed by the paper): does the paper's 9-float
+// Morph targets, our own rows (not claimed by the paper): does the paper's 9-float
 // motor vertex survive blend shapes, what each rotor method costs per target, and which method
 // is exact. Read from report.json "morph" (`motorbench morph` via `report --morph-json`): the
 // figures are quoted by name, none recomputed.

@@ -168,7 +168,7 @@ std::vector<Claim> opClaims() {
     handedness();
   });
   const OpCounts motorVertex = vertexFunction("motorRigidVertex");
-  // Judged on what the shader executes (issue 35 item 7), never on the paper's 1 mul added to
+  // Judged on what the shader executes, never on the paper's 1 mul added to
   // our count: the paper counts its handedness as 1 multiplication; its listing and our shader
   // compute it as sign(1/x), which keeps the sign of a zero scalar part.
   add("vertex_frame_motor", vertex,

@@ -1,4 +1,4 @@
-// Which sentence (or table row) of the paper each of the paper's rows tests (issue 35 item 2).
+// Which sentence (or table row) of the paper each of the paper's rows tests.
 // A row quotes its sentence; a row without one is ours, whatever its family. Rows the paper
 // prints as one table entry (gp_rt / gp_tr) are tallied once.
 #pragma once

@@ -1,6 +1,6 @@
 // AMD ISA statistics per family and pipeline, and the rows that say where the three kinds of op
 // evidence (counted, SPIR-V probe, ISA instructions) put the pipelines in different orders
-// (issue 35 item 8; the ranking itself is computed once, by harness/document/ops_ranking.h).
+// (the ranking itself is computed once, by harness/document/ops_ranking.h).
 #pragma once
 #include <map>
 #include <string>

@@ -1,4 +1,4 @@
-// Skinning claims (issue 18): motor blending, like dual-quaternion skinning, keeps the mesh's
+// Skinning claims: motor blending, like dual-quaternion skinning, keeps the mesh's
 // volume where linear blend skinning (LBS) pinches. Measured on the built-in skinned_tube's
 // "candy_wrapper" animation (the middle joint turns 180 degrees about the tube's axis): each
 // ring of the tube is skinned on the CPU both ways from the pipelines' own palettes (matrix

@@ -8,13 +8,13 @@
 //   claims_corpus.cpp    animated / non-uniform scale (1e-4 rule) over a corpus of real files
 //   claims_skinning.cpp  volume kept by motor skinning vs LBS (candy wrapper)
 //   claims_baselines.cpp affine matrix path, full world-to-clip, skinning per vertex
-//   claims_curved.cpp    curved space (issue 15): S3 / H3 matrix vs motor
+//   claims_curved.cpp    curved space: S3 / H3 matrix vs motor
 //   claims_strongest.cpp the paper's verdicts against the strongest matrix variant measured
 //   claims_composition.cpp  gp_mm vs mat4 vs affine composition; the scene-graph update
 //   claims_conversion.cpp   quaternion -> rotor for free; the uniform-scale overhead
 //   claims_handedness.cpp   the paper's tangent-frame handedness rule on the built-in scenes
 //   claims_blending.cpp     motor blending vs slerp over the built-in animations
-//   claims_compact.cpp      the smallest motor vertex vs the smallest matrix vertex (issue 29)
+//   claims_compact.cpp      the smallest motor vertex vs the smallest matrix vertex
 #pragma once
 #include <string>
 #include <vector>
@@ -58,7 +58,7 @@ struct SpeedInputs {
 };
 std::vector<Claim> speedClaims(const SpeedInputs& in);
 
-// The ISA kind of op evidence as rows of their own (issue 25 item 4), beside the counted and
+// The ISA kind of op evidence as rows of their own, beside the counted and
 // SPIR-V ops rows: per vertex shader (rigid to clip, skinned) the instructions and VGPRs of the
 // cheapest motor-side pipeline against the cheapest matrix-side one on every family of `isa`
 // (SpeedInputs::isa); the worst family decides ("holds" when the motor side needs no more).
@@ -77,7 +77,7 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in);
 // Skinning: ring radius of skinned_tube's candy_wrapper, LBS vs motor (claims_skinning.cpp).
 std::vector<Claim> skinningClaims();
 
-// motor_c vs matrix_c (issue 29): bytes from uploads, worst PSNR against matrix (from `report`'s
+// motor_c vs matrix_c: bytes from uploads, worst PSNR against matrix (from `report`'s
 // summary, the same figure the report shows; renders at rest only without a report), counted
 // ops, ISA from `isa` (a `motorbench isa` JSON, or null: that row not measurable); and motor_cf
 // against motor_c (the paper's fragment-rotor suggestion). Needs GL only without a report.
@@ -95,9 +95,9 @@ std::vector<Claim> curvedClaims(bool runTiming, int frames, const nlohmann::json
 
 // Every pipeline's bytes per vertex, floats per transform and joint (`uploads` of built-in
 // scenes), ops per vertex (counted and SPIR-V) and time ratios (`timings`: {scene: timing JSON},
-// or null), the motor pipeline judged against the best matrix-side pipeline (issue 16); and the
+// or null), the motor pipeline judged against the best matrix-side pipeline; and the
 // CPU kernels vertex_frame / skinned_vertex, the fastest motor implementation against the
-// fastest matrix implementation measured (`kernelPairs`: report_bench's pairs, or null; issue 13).
+// fastest matrix implementation measured (`kernelPairs`: report_bench's pairs, or null).
 // Timed rows count only scenes with the minimum of work (claims_work.h; `sceneStats` as in
 // SpeedInputs, or null: drawn vertices unknown).
 std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource,

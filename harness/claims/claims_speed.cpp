@@ -1,5 +1,5 @@
-// "PGA motors can be just as fast as 4x4 matrices to transform your mesh vertices" (issue 35
-// item 1): judged on what the paper's sentence claims, a rigid vertex with its full tangent frame
+// "PGA motors can be just as fast as 4x4 matrices to transform your mesh vertices":
+// judged on what the paper's sentence claims, a rigid vertex with its full tangent frame
 // to world space, the paper's motor against the paper's 4x4 baseline (the Sample Viewer's matrix
 // pipeline). The skinned vertex is its own row (ours: the sentence does not claim it); the
 // strongest matrix forms are the "vs strongest" rows. Kinds of evidence, each a cost ratio motor /
@@ -108,7 +108,7 @@ Evidence isaEvidence(const json& isa, const Scope& s, bool occupancy) {
 Evidence cpuEvidence(const SpeedInputs& in, const Scope& s) {
   Evidence e{std::string("CPU kernel ") + s.kernel + ", fastest motor vs fastest 4x4 matrix implementation"};
   std::vector<double> ratios;
-  std::string machine;  // the CPU and SIMD target the pairs ran on (issue 38)
+  std::string machine;  // the CPU and SIMD target the pairs ran on
   if (in.kernelPairs.is_array())
     for (const json& p : in.kernelPairs) {
       if (p.value("kernel", "") != s.kernel) continue;
@@ -145,8 +145,8 @@ Evidence frameEvidence(const SpeedInputs& in, const Scope& s, const TimingDevice
   if (vb.value("paired_ratio_spread", json()).is_object())
     e.detail += ", IQR " + fmt("%.3g", vb["paired_ratio_spread"].value("q1", 0.0)) + ".." +
                 fmt("%.3g", vb["paired_ratio_spread"].value("q3", 0.0));
-  // A skinned scene timed with each pipeline's default skinning configuration (report.json before
-  // issue 18) compares two configurations, not two representations: not usable.
+  // A skinned scene timed with each pipeline's default skinning configuration (an older
+  // report.json) compares two configurations, not two representations: not usable.
   if (in.frameTimes.is_array())
     for (const json& f : in.frameTimes)
       if (f.value("scene", "") == s.scene && f.value("skinSpace", "-").find("defaults") != std::string::npos) {

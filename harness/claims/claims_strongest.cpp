@@ -1,4 +1,4 @@
-// The paper's verdicts against the strongest matrix variant measured (issue 16). The paper
+// The paper's verdicts against the strongest matrix variant measured. The paper
 // compares with the glTF Sample Viewer's path (mat4 model + mat4 normal matrix, two mat4 per
 // joint, 12-float vertices); production engines do better: `affine` (mat4x3 + mat3, one mat4x3
 // per joint) and `qtangent` (the frame as an int16 quaternion, 28-byte vertices). Every figure
@@ -172,13 +172,13 @@ Claim kernelClaim(const std::string& kernel, const json& pairs, const std::strin
   bool holds = true;
   int sizes = 0;
   std::string disturbed;  // sizes whose pair was disturbed
-  std::string machine;    // the CPU and SIMD target the pairs ran on (issue 38)
+  std::string machine;    // the CPU and SIMD target the pairs ran on
   if (pairs.is_array())
     for (const json& p : pairs) {
       if (p.value("kernel", "") != kernel || !p["ratio_motor_fastest_matrix"].is_number()) continue;
       machine = report::pairMachineText(p);
       const std::string size = p["size"].is_string() ? p["size"].get<std::string>() : "-";
-      if (p.value("disturbed", false)) {  // taken on shared cores: not a verdict input (issue 38)
+      if (p.value("disturbed", false)) {  // taken on shared cores: not a verdict input
         disturbed += (disturbed.empty() ? "" : ", ") + size;
         continue;
       }
@@ -354,7 +354,7 @@ std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const 
     if (!tf.cpu && c.verdict != Verdict::NotMeasurable) {
       c.verdictText += "; device: " + device.label();
       // A CPU rasterizer's frame time cannot tell pipelines apart whose arithmetic differs by
-      // more than 25 % when it times them within the noise (issue 25): any two timed pipelines
+      // more than 25 % when it times them within the noise: any two timed pipelines
       // (not only motor and the strongest) that show it make every ratio of this timing moot.
       if (device.cpuRasterizer)
         if (const auto alike = timedAlike(f.values, clipOps)) {

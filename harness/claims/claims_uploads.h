@@ -1,7 +1,7 @@
 // Where the claims read a pipeline's uploads (PipelineStats): report.json's
 // scenes[].pipelines[p].stats, which the report room measured from its own renders, when claims
-// was given a report (issue 35: claims given its JSON inputs opens no GL context and renders
-// nothing); else one 32x32 render here (claims run without a report).
+// was given a report (claims given its JSON inputs opens no GL context and renders nothing);
+// else one 32x32 render here (claims run without a report).
 #pragma once
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-// The minimum of work for a timed verdict (issue 26 item 3): a scene whose timed block is shorter
+// The minimum of work for a timed verdict: a scene whose timed block is shorter
 // than 50 us, or that draws fewer than 1000 vertices, is listed but not counted — a 100 ns update
 // of a one-node scene times the clock and the call, not the transforms.
 #pragma once
@@ -15,8 +15,8 @@ namespace mb::claims {
 
 inline constexpr double kMinTimedMs = 0.05;
 
-// The timed block of a CPU update (issue 35 item 3: the rule printed is per timed block, so it is
-// applied per block): R calls of `perCallMs` each, R as the timing recorded it
+// The timed block of a CPU update (the rule printed is per timed block, so it is applied per
+// block): R calls of `perCallMs` each, R as the timing recorded it
 // ("updateCallsPerBlock"), else as the timing chooses it (enough calls for kMinUpdateBlockMs,
 // at most 1000: harness/timing/frame_timing.h).
 inline double updateBlockMs(double perCallMs, const nlohmann::json& pipelineTiming) {

@@ -1,4 +1,4 @@
-// Duplicate models in a corpus (issue 35 item 6): the same model copied into two repositories,
+// Duplicate models in a corpus: the same model copied into two repositories,
 // or re-exported under another name, is one sample of real content, not two. Each file gets a
 // content hash; files with equal hashes are one model, and a corpus statistic counts the first
 // file (sorted by path) of each group once, the file count printed beside it.

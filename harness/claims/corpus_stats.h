@@ -1,4 +1,4 @@
-// Scene-graph statistics of a corpus of glTF files for the two scale claims (issue 26 item 7):
+// Scene-graph statistics of a corpus of glTF files for the two scale claims:
 // per file the scale fields of `motorbench inspect` (pipelines/scene/scene_stats.h), grouped by
 // the source kind a MANIFEST.tsv beside the files gives (columns `output_file` and `kind`:
 // asset, sample, test; ../shared/corpus-graph has one).

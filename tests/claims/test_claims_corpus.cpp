@@ -1,4 +1,4 @@
-// The scale statistics behind the two corpus claims (issue 26 items 6 and 7), checked against
+// The scale statistics behind the two corpus claims, checked against
 // values derived by hand: the paper's 1e-4 relative rule, channels that change the scale or only
 // restate it, inner nodes, the source kinds of a MANIFEST.tsv and the verdicts over a sample.
 #include <gtest/gtest.h>
@@ -90,8 +90,8 @@ TEST(ClaimsCorpus, ChangingChannelsAndInnerNodes) {
   EXPECT_DOUBLE_EQ(r.innerNonUniformityMax, 1.0);  // |1/2 - 1| and |2/1 - 1|: the larger is 1
   EXPECT_EQ(r.innerNonUniformScale, glm::vec3(1, 2, 1));
 
-  // A constant channel that differs from the rest scale sets a scale; it does not animate one
-  // (issue 35 item 6): counted apart.
+  // A constant channel that differs from the rest scale sets a scale; it does not animate one:
+  // counted apart.
   Scene rest = twoNodes({1, 1, 1}, {3, 3, 3});
   Animation b;
   b.channels.push_back(scaleChannel(1, {{1, 1, 1}, {1, 1, 1}}));
@@ -197,7 +197,7 @@ TEST(ClaimsCorpus, VerdictsCountTheGivenFilesByKind) {
   fs::remove_all(dir);
 }
 
-// Issue 35 item 6, against scales worked by hand: a scale channel animates scale only when its
+// The scale statistics against scales worked by hand: a scale channel animates scale only when its
 // keys change over time (constant channels, equal to the rest scale or not, are counted apart),
 // and one relative tolerance (1e-4) decides non-uniformity for every statistic, so "only on
 // leaves" and the inner-node count can never disagree.
@@ -296,7 +296,7 @@ void writeInterleavedGltf(const fs::path& path) {
 
 }  // namespace
 
-// Issue 35 item 6: files of the same mesh content are one model. A corpus of three files written
+// Duplicate models: files of the same mesh content are one model. A corpus of three files written
 // here: a.glb and b.gltf hold the same triangle (and the same growing scale) in different
 // layouts, names and generators; c.glb a different triangle that does not animate. Expected by
 // construction: 3 files, 2 distinct models, and the growing scale counted once, 1 of 2 models

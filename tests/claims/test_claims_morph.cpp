@@ -1,4 +1,4 @@
-// The morph rows of claims (issue 37) on hand-made report.json "morph" figures: each row quotes
+// The morph rows of claims on hand-made report.json "morph" figures: each row quotes
 // its figure, the 50 dB rule decides the image rows, and without morph figures every row says
 // why it is not measurable.
 #include <gtest/gtest.h>

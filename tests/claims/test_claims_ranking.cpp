@@ -1,4 +1,4 @@
-// claims' ops_ranking rows (issue 35 item 8) print the report's ranking as it is: the verdict is
+// claims' ops_ranking rows print the report's ranking as it is: the verdict is
 // report.json's line, the measured value its table of the three; a report without the ranking
 // gives "not measurable", never a ranking of claims' own.
 #include <gtest/gtest.h>

@@ -1,8 +1,9 @@
-"""claims.json against its JSON inputs (issue 35): each figure of items 1-3 and 7 (item 8:
-test_ops_ranking_recomputed.py) recomputed here from results/report.json, isa.json and ops.json
-with the rule the row prints, never by calling motorbench's own formula. results/ is what
-`motorbench claims` wrote from those inputs (scripts/reproduce.sh); a claims.json older than
-issue 35 (no "quote" field) fails the test.
+"""claims.json against its JSON inputs: the speed row, the tally, the minimum of work and the
+scene-graph row (the ops ranking line: test_ops_ranking_recomputed.py) recomputed here from
+results/report.json, isa.json and ops.json with the rule the row prints, never by calling
+motorbench's own formula. results/ is what
+`motorbench claims` wrote from those inputs (scripts/reproduce.sh); a claims.json whose rows
+carry no "quote" field fails the test.
 """
 import json
 import os
@@ -37,9 +38,9 @@ class ClaimsRecomputed(unittest.TestCase):
 
     def test_claims_json_is_of_issue_35(self):
         self.assertTrue(all("quote" in c for c in self.claims["claims"]),
-                        "results/claims.json predates issue 35: regenerate it with motorbench claims")
+                        "results/claims.json has rows without a quote field: regenerate it with motorbench claims")
 
-    # Item 1: the paper's row is the rigid vertex with its frame, motor against the 4x4 matrix.
+    # Speed: the paper's row is the rigid vertex with its frame, motor against the 4x4 matrix.
     def isa_ratio(self, program, stat):
         per_family = {}
         for s in self.isa["shaders"]:
@@ -113,7 +114,7 @@ class ClaimsRecomputed(unittest.TestCase):
             self.assertIn("vgprs", v)
             self.assertIn("occupancyCost", v)
 
-    # Item 2: the tally recomputed from the rows: a row quoting the paper is the paper's, a pair
+    # The tally recomputed from the rows: a row quoting the paper is the paper's, a pair
     # printed as one table row counts once.
     def test_tally_counts_quoted_rows_once_per_table_row(self):
         paper, own, seen = {}, {}, set()
@@ -135,7 +136,7 @@ class ClaimsRecomputed(unittest.TestCase):
         for c in self.claims["claims"]:
             self.assertEqual(c["origin"] == "paper", c["quote"] is not None, c["id"])
 
-    # Item 3: the minimum of work as printed, per timed block (R update calls), over the scenes.
+    # The minimum of work as printed, per timed block (R update calls), over the scenes.
     def test_update_minimum_applies_per_timed_block(self):
         row = self.row("cpu_update_vs_strongest")
         self.assertIn("50 us per timed block", row["method"])
@@ -159,7 +160,7 @@ class ClaimsRecomputed(unittest.TestCase):
             self.assertNotIn(sid + " (", row["measured"] + row["verdictText"], "counted scene listed as left out")
         self.assertIn("over %d scenes" % len(counted), row["measured"] + row["method"] + row["verdictText"])
 
-    # Item 7: the scene-graph row times the hierarchy phase; no unconditional "under load".
+    # The scene-graph row times the hierarchy phase; no unconditional "under load".
     def test_scene_graph_update_is_the_hierarchy_phase(self):
         row = self.row("scene_graph_update")
         self.assertNotIn("under load", row["measured"])
@@ -173,7 +174,7 @@ class ClaimsRecomputed(unittest.TestCase):
         comp = self.row("composition")
         if "bench" in comp["measuredValue"]:
             self.assertNotIn("in-process timing", comp["measured"])
-    # Item 8 (the ops ranking line): tests/claims/test_ops_ranking_recomputed.py.
+    # The ops ranking line: tests/claims/test_ops_ranking_recomputed.py.
 
 
 if __name__ == "__main__":

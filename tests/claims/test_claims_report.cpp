@@ -1,7 +1,6 @@
-// `motorbench claims --report` reads what it is given (issue 26 items 2, 3, 4, 8, 9, 10; issue 25
-// item 2): a small hand-made report.json of four scenes timed at 128x96 on a CPU rasterizer, with
-// an ISA section, kernel pairs and scene statistics, and each row's text checked against the
-// fixture's numbers.
+// `motorbench claims --report` reads what it is given: a small hand-made report.json of four scenes
+// timed at 128x96 on a CPU rasterizer, with an ISA section, kernel pairs and scene statistics, and
+// each row's text checked against the fixture's numbers.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -75,7 +74,7 @@ json fixture() {
                                 {"pipelines", pipelines({{"matrix", 2.0}, {"affine", 2.0}, {"qtangent", 2.0}, {"motor", 2.0},
                                                          {"motor_q", 2.0}, {"hybrid", 2.0}}, tiny)}}}});
   scenes.push_back({{"id", "cow"}, {"spec", "/nonexistent/cow.glb"}, {"stats", stats("/nonexistent/cow.glb", 3000, cow)}});
-  // The uploads the report recorded (issue 35: claims reads them, renders nothing): hand values
+  // The uploads the report recorded (claims reads them, renders nothing): hand values
   // unlike any render's (motor 10 floats per transform with its scale, 3 more than without).
   const json matrixStats = {{"floatsPerVertex", 12.0}, {"floatsPerTransform", 32.0}, {"floatsPerTransformWithScale", 32.0},
                             {"vertexBytes", 4800}, {"vertices", 100}};
@@ -102,7 +101,7 @@ json fixture() {
   return {{"machine", {{"cpu", "Test CPU Model 9000"}, {"logicalCores", 3},
                        {"gl", {{"renderer", "llvmpipe (LLVM 15.0.6, 256 bits)"}, {"kind", "cpu-rasterizer"}}}}},
           {"settings", {{"timeWidth", 128}, {"timeHeight", 96}, {"width", 160}, {"height", 120}}},
-          // The compact pipelines' image summary (issue 29): motor_c worst 53.5 dB, matrix_c identical.
+          // The compact pipelines' image summary: motor_c worst 53.5 dB, matrix_c identical.
           {"summary", {{"images", {{"motor_c", {{"comparedFrames", 4}, {"identicalFrames", 1}, {"psnr", {{"min", 53.5}}}}},
                                    {"matrix_c", {{"comparedFrames", 4}, {"identicalFrames", 4}}}}}}},
           {"scenes", scenes}, {"isa", isa}, {"kernels", kernels}};
@@ -126,7 +125,7 @@ TEST(ClaimsReport, RowsReadTheReportTheyAreGiven) {
     EXPECT_EQ(c["verdictText"].get<std::string>().find("give --report"), std::string::npos) << c["id"];
     EXPECT_EQ(c["measured"].get<std::string>().find("512x512"), std::string::npos) << c["id"];
   }
-  // Speed, the paper's row: motor against the 4x4 matrix on the rigid vertex (issue 35 item 1):
+  // Speed, the paper's row: motor against the 4x4 matrix on the rigid vertex:
   // ISA motor 120 / matrix 60 = 2.0 instructions, waves 10 / 10 = 1.0 occupancy (VGPRs 24 vs 12
   // only quoted); the CPU kernel simd_motor against simd_matrix (100 / 125 = 0.8); llvmpipe puts
   // pipelines whose counted ops differ by more than 25 % within 1 %: unable to discriminate, not
@@ -153,7 +152,7 @@ TEST(ClaimsReport, RowsReadTheReportTheyAreGiven) {
   EXPECT_NE(frame["detail"].get<std::string>().find("CPU rasterizer (llvmpipe"), std::string::npos) << frame;
   EXPECT_EQ(speed["verdict"], "inconclusive") << speed["verdictText"];
   EXPECT_EQ(speed["verdictText"].get<std::string>().find("within 10 %"), std::string::npos) << speed["verdictText"];
-  // Timed "vs strongest" rows, the minimum of work per timed block as printed (issue 35 item 3):
+  // Timed "vs strongest" rows, the minimum of work per timed block as printed:
   // a 0.1 us update runs 1000 calls per block = 0.1 ms >= 50 us, so dense_torus counts beside
   // crowd (box draws 24 vertices: listed): motor median(1, 0.12 / 0.2) = 0.8, affine
   // median(1, 0.75) = 0.875.

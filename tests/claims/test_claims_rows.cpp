@@ -1,4 +1,4 @@
-// The claim rows of issue 18 (harness/claims), each measurement checked against an independent
+// The claim rows (harness/claims), each measurement checked against an independent
 // reference: hand-derived op counts, GLM products and rotations, the closed form of a normalised
 // linear blend against slerp, volumes of known solids, the paper's rule on frames worked by hand.
 #include <gtest/gtest.h>
@@ -67,7 +67,7 @@ TEST(ClaimsComposition, RowCountsEveryFormAndJudgesAgainstTheAffineProduct) {
   EXPECT_NE(c.verdictText.find("affine"), std::string::npos) << c.verdictText;
 }
 
-// vertex_frame_motor is judged on what the shader executes (issue 35 item 7): the paper's pieces
+// vertex_frame_motor is judged on what the shader executes: the paper's pieces
 // sw_mp 21/18 + gp_rr 16/12 + extractNormalTangent 9/8 = 46 mul, 38 add, and the handedness
 // sign(1/x) = 1 div + 1 sign where the paper counts 1 mul; so 1 mul short of the paper's 47,
 // not "reproduced" by adding the paper's multiplication.
@@ -83,8 +83,8 @@ TEST(ClaimsOps, VertexFrameMotorIsWhatTheShaderExecutes) {
 }
 
 // Uploads rendered here (no report): per-draw floats with each side's per-draw extra, hand-derived
-// from the uniforms: matrix 16 + 16; affine mat4x3 12 + mat3 9 + its mirror sign 1 = 22 (issue 35
-// item 7: counted like the motor's scale); motor 8 + u_Scale 1 = 9.
+// from the uniforms: matrix 16 + 16; affine mat4x3 12 + mat3 9 + its mirror sign 1 = 22
+// (counted like the motor's scale); motor 8 + u_Scale 1 = 9.
 TEST(ClaimsUploads, PerDrawFloatsCountEverySidesExtraFloat) {
   const claims::Uploads here;
   auto fptws = [&](const char* p) {
@@ -108,7 +108,7 @@ TEST(ClaimsSceneGraph, FastestMatrixSideAndHybridExcluded) {
                                    {"matrix", {{"items_per_second", 100.0}}},
                                    {"glm", {{"items_per_second", 300.0}}},
                                    {"motor", {{"items_per_second", 200.0}}}}});
-  // The update's hierarchy phase is the evidence (issue 35 item 7), not the whole update (which
+  // The update's hierarchy phase is the evidence, not the whole update (which
   // also builds the skin palette): motor 1.0 against affine's 1.5 (hybrid and motor_q are no
   // matrix side), whatever the whole updates say.
   auto update = [](double whole, double hierarchy) {

@@ -1,5 +1,5 @@
-"""`motorbench claims` given its JSON inputs opens no GL context, renders and times nothing
-(issue 35): run twice on results/'s inputs with GL made unavailable (MB_GL_BACKEND=none makes
+"""`motorbench claims` given its JSON inputs opens no GL context, renders and times nothing:
+run twice on results/'s inputs with GL made unavailable (MB_GL_BACKEND=none makes
 every GL context creation fail with a message naming it), it succeeds, writes byte-identical
 claims.json and claims.md, no row carries the GL failure, and the upload rows hold report.json's
 own figures (read here from report.json, not from motorbench's code).

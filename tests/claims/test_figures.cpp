@@ -1,4 +1,4 @@
-// The figures layer (issue 35): the statistics against hand-worked values, a figure's JSON form
+// The figures layer: the statistics against hand-worked values, a figure's JSON form
 // read back by name, and report.json's figures on a hand-made set of scenes, each recomputed
 // here from the scenes' own numbers.
 #include <gtest/gtest.h>
@@ -43,7 +43,7 @@ TEST(Figures, JsonFormIsReadBackByName) {
   f = figures::withQuartiles(f, figures::quartilesOf({0.9, 1.0, 1.1}));
   json run = {{"figures", json::object()}};
   figures::put(run["figures"], f);
-  EXPECT_TRUE(run["figures"][f.name].contains("disturbed"));  // room for issue 38's mark
+  EXPECT_TRUE(run["figures"][f.name].contains("disturbed"));  // room for the disturbance mark
   const auto back = figures::figureNamed(run, f.name);
   ASSERT_TRUE(back);
   EXPECT_DOUBLE_EQ(back->value, 1.0);

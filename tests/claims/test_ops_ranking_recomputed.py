@@ -1,4 +1,4 @@
-"""Issue 35 item 8: where counted ops, SPIR-V (probe) ops and AMD ISA instructions order the
+"""The ops ranking: where counted ops, SPIR-V (probe) ops and AMD ISA instructions order the
 pipelines differently, report.md and claims.md say so in one line, the same line, read from
 report.json's "opsRanking". Recomputed here from report.json's raw measures (the ops room's
 variants, the embedded isa JSON) by sorting the pipelines by each measure and comparing the
@@ -71,7 +71,7 @@ class OpsRankingRecomputed(unittest.TestCase):
         cls.claims_md = load("claims.md")
 
     def ranking(self, label):
-        self.assertIn("opsRanking", self.report, "report.json predates the ops ranking (issue 35 item 8): regenerate results/")
+        self.assertIn("opsRanking", self.report, "report.json predates the ops ranking: regenerate results/")
         return self.report["opsRanking"][label]
 
     def test_the_line_says_disagree_exactly_when_the_orders_differ(self):

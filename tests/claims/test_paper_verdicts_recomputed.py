@@ -1,7 +1,7 @@
 """Every paper verdict in results/claims.json recomputed from the row's own JSON values with the
-rule the row prints (issue 35 acceptance), never by calling motorbench's formula. The rows whose
-rules weigh several kinds of evidence are recomputed in test_claims_recomputed.py (items 1-3, 7)
-and test_ops_ranking_recomputed.py; this file covers the rest, and fails on a paper row that no
+rule the row prints, never by calling motorbench's formula. The rows whose rules weigh several
+kinds of evidence are recomputed in test_claims_recomputed.py (speed, tally, minimum of work,
+scene graph) and test_ops_ranking_recomputed.py; this file covers the rest, and fails on a paper row that no
 file recomputes (a new paper claim needs its recomputation).
 """
 import json

@@ -1,4 +1,4 @@
-"""report.json's figures against the scenes they come from (issue 35 items 4 and 5), recomputed
+"""report.json's figures against the scenes they come from, recomputed
 here from results/report.json's own per-scene numbers: one statistic for a frame-time ratio (the
 median over scenes of each scene's median of per-frame paired ratios, not a ratio of medians and
 not the upper of two middle values), and the compact pipelines' image figures from the frames that
@@ -100,7 +100,7 @@ class ReportFiguresRecomputed(unittest.TestCase):
             got = self.report["summary"]["vertexFormatImages"][p]
             if psnr:
                 self.assertAlmostEqual(got["psnr"]["min"], min(psnr), places=9, msg=p)
-                # The figure the README's and report's compact tables quote (issue 35 item 5).
+                # The figure the README's and report's compact tables quote.
                 figure = self.figure("image.worst_psnr_own_format.%s" % p)
                 self.assertAlmostEqual(figure["value"], min(psnr), places=9, msg=p)
                 self.assertEqual(figure["n"], len(psnr), p)
