@@ -1,4 +1,4 @@
-// Where the three kinds of op evidence order the pipelines differently (issue 35 item 8): counted
+// Where the three kinds of op evidence order the pipelines differently: counted
 // ops, SPIR-V (probe) ops and AMD ISA instructions of one vertex shader scope ("rigid vertex to
 // clip", "skinned vertex to clip"). Computed once into report.json "opsRanking" (with each
 // measure's definition and device) and the figures ops_ranking.<scope>.pairs_reversed;

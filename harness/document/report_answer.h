@@ -1,4 +1,4 @@
-// The answer block that opens report.md / report.html (issue 36): the paper's question in one
+// The answer block that opens report.md / report.html: the paper's question in one
 // line, one line per kind of evidence (bytes, ops, AMD ISA, time, image cost) with its verdict
 // and a link to its table, then the design-space figure. Every value is a figure of
 // report.json's "figures", quoted by name (report_answer_figures.h, report_figures.h).

@@ -75,7 +75,7 @@ void isaFigures(json& out, const json& r, const std::vector<std::string>& pipes)
     }
 }
 
-// The vertex format's own image cost (issue 35 item 5): the worst PSNR over the frames of
+// The vertex format's own image cost: the worst PSNR over the frames of
 // scenes where `p` uploads its mesh vertices (summary.vertexFormatImages: a scene of patches,
 // the teapot, draws none of them), so a compact format is not credited with another path's frame.
 void ownFormatFigure(json& out, const json& r, const std::string& p, const std::string& base,

@@ -1,4 +1,4 @@
-// The figures the report's answer block quotes beyond the figures layer's own (issue 36): the
+// The figures the report's answer block quotes beyond the figures layer's own: the
 // vertex fetch per pipeline (bytes per vertex, bytes per frame against the baseline), AMD ISA
 // instructions per pipeline and family, the worst image difference (PSNR, FLIP) per pipeline,
 // and which family each pipeline belongs to. (Frame time per pipeline is report_figures.h's.)

@@ -61,7 +61,7 @@ std::string isaText(const json& r, const std::string& p, const std::string& fami
   return s ? fmt((*s)["instructions"], 6) + " / " + fmt((*s)["vgprs"], 6) : "-";
 }
 
-// Where the frame is unpacked (issue 29, item 3): the varyings the rigid program passes, the
+// Where the frame is unpacked: the varyings the rigid program passes, the
 // counted frame per fragment and the fragment shader's ISA.
 void fragmentStageTable(Document& d, const json& r, const std::vector<std::string>& pipes,
                         const std::vector<std::string>& families) {
@@ -100,7 +100,7 @@ void compactSection(Document& d, const json& r) {
   const json& sum = r["summary"];
   std::vector<std::string> families;
   for (const json& f : at(r, {"isa", "families"})) families.push_back(f.value("id", "?"));
-  d.paragraph("Per glTF pipeline (issue 29: `matrix_c`, `motor_c` and `motor_cf` are the 16-byte vertices): bytes per vertex of "
+  d.paragraph("Per glTF pipeline (`matrix_c`, `motor_c` and `motor_cf` are the 16-byte vertices): bytes per vertex of "
               "the normal-mapped primitives from the uploads (median over scenes); image difference against " +
               pipes.front() +
               " over the frames where both should agree and the pipeline draws its own vertex format (skinning-method "

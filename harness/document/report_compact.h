@@ -1,4 +1,4 @@
-// The report's "bytes vs image cost vs unpack cost" table (issue 29): per glTF pipeline the
+// The report's "bytes vs image cost vs unpack cost" table: per glTF pipeline the
 // bytes per vertex measured from its uploads, its worst image difference against the baseline
 // (the frames where both should agree), the counted ops of its frame decoding and of its rigid
 // vertex, its frame-time ratios and, when report.json embeds `motorbench isa`, its rigid vertex

@@ -102,7 +102,7 @@ json imageSummary(const std::vector<json>& scenes, const std::string& p, const s
   return out;
 }
 
-// A curved scene's figures side by side (issue 15): its space's pipelines, floats per instance
+// A curved scene's figures side by side: its space's pipelines, floats per instance
 // as uploaded, ops per vertex, worst PSNR against the matrix side, frame-time ratios.
 json curvedRow(const json& s) {
   json row = {{"id", s.value("id", "")}, {"space", s.value("space", "")}, {"status", s.value("status", "")},
@@ -194,7 +194,7 @@ json assembleReport(json machine, json settings, std::vector<json> scenes, json 
     auto every = [](const json&) { return true; };
     summary["images"][p] = imageSummary(scenes, p, base, every, true);
     summary["skinningMethodImages"][p] = imageSummary(scenes, p, base, differ, false);
-    // The vertex format's own image cost (issue 35 item 5): frames of scenes where the pipeline
+    // The vertex format's own image cost: frames of scenes where the pipeline
     // uploads its mesh vertices (a scene of patches, the teapot, draws none of them).
     auto ownVertices = [&](const json& s) { return number(s, {"pipelines", p.c_str(), "memory", "bytesPerVertex"}) > 0; };
     summary["vertexFormatImages"][p] = imageSummary(scenes, p, base, ownVertices, true);
@@ -226,8 +226,8 @@ json assembleReport(json machine, json settings, std::vector<json> scenes, json 
     const figures::Quartiles q = figures::quartilesOf(perScene);
     summary["frameTimeRatio"]["min"] = q.min, summary["frameTimeRatio"]["max"] = q.max;
   }
-  // CPU kernels, fastest against fastest (issue 35 item 4: not the shim sources against each
-  // other), as a time ratio (< 1: motor faster, the report's one convention), with the sides, the
+  // CPU kernels, fastest against fastest (not the shim sources against each other), as a time
+  // ratio (< 1: motor faster, the report's one convention), with the sides, the
   // CPU and SIMD target they ran on, and the disturbance mark.
   json kr = json::object();
   for (const json& p : kernels.value("pairs", json::array()))

@@ -190,7 +190,7 @@ Figure sceneFrameTimeFigure(const std::string& name, const json& config, const s
   f.device = device;
   f.definition = "frame time motor / matrix (< 1: motor faster)";
   f.value = numberOrNaN(config.value("paired_ratio_motor_matrix", json()));
-  f.disturbed = config.value("disturbance", json());  // harness/timing/disturbance.h (null before issue 38)
+  f.disturbed = config.value("disturbance", json());  // harness/timing/disturbance.h (null: not assessed)
   const json& spread = config.value("paired_ratio_spread", json());
   if (spread.is_object() && spread.value("q1", json()).is_number()) {
     f.q1 = spread["q1"].get<double>(), f.q3 = spread["q3"].get<double>();

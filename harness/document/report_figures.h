@@ -1,4 +1,4 @@
-// report.json's "figures" (issue 35): every aggregate the report prints, computed once here
+// report.json's "figures": every aggregate the report prints, computed once here
 // from the scenes, op counts and kernel pairs it assembles, each with its definition
 // (harness/figures/figure.h). The report text, the plots, claims and the README tables read
 // them by name.

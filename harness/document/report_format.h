@@ -46,7 +46,7 @@ std::string html(const std::string& s);
 // Markdown table cell: "|" escaped and newlines folded.
 std::string cell(const std::string& s);
 
-// A figure of report.json quoted by name inside document text (issue 36): both writers print it
+// A figure of report.json quoted by name inside document text: both writers print it
 // as <span title="NAME">TEXT</span>, so a reader sees the figure's name on hover and
 // tests/document/test_documents_agree.py finds every value a document quotes, by name.
 std::string figureMark(const std::string& name, const std::string& text);

@@ -36,7 +36,7 @@ void gpuEvidenceSection(Document& d, const json& r) {
   }
   d.heading(2, "GPU-relevant evidence (measured on the mesh and layout, not timed)", kGpuEvidenceAnchor);
   if (rows.empty()) {
-    d.paragraph("Not in this report.json (made before issue 36, or no Euclidean scene drew).");
+    d.paragraph("Not in this report.json (made by an older motorbench, or no Euclidean scene drew).");
     return;
   }
   d.paragraph("What one frame makes a GPU's vertex stage read and run, from meshoptimizer's analyzers on each "

@@ -1,4 +1,4 @@
-// The report's GPU-relevant evidence (issue 36): per scene and pipeline, what the vertex stage of
+// The report's GPU-relevant evidence: per scene and pipeline, what the vertex stage of
 // a GPU fetches and transforms per frame for the pipeline's own vertex layout (report.json
 // scenes[].pipelines[p].vertexFetch and scenes[].overdraw, harness/report/vertex_fetch.h).
 // Measured on the mesh and the layout, not timed.

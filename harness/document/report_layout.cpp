@@ -180,7 +180,7 @@ void plots(Document& d, const json& r) {
 Document reportDocument(const json& r) {
   Document d;
   d.title = "motorbench report";
-  answerSection(d, r);  // the answer first (issue 36), then what was measured and how
+  answerSection(d, r);  // the answer first, then what was measured and how
   header(d, r);
   summary(d, r);
   plots(d, r);

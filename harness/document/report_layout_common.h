@@ -12,7 +12,8 @@ using json = nlohmann::json;
 
 // The run's pipelines (settings.pipelines).
 std::vector<std::string> pipelinesOf(const json& r);
-// The pipelines a scene was measured with (its space's; report.json before issue 15: the run's).
+// The pipelines a scene was measured with (its space's; a report.json without per-scene
+// pipelines: the run's).
 std::vector<std::string> pipelinesOf(const json& r, const json& scene);
 // The object at j[key] by reference (an empty object when absent): safe to iterate with
 // items(), unlike the temporary that json::value() returns.

@@ -134,7 +134,7 @@ void sceneSection(Document& d, const json& r, const json& s) {
   if (s.contains("workerExit")) d.paragraph("Note: the worker process ended with " + str(s["workerExit"]) + " after writing its result.");
   if (!isEuclidean(s)) d.paragraph("Curved space: " + str(s["space"]) + ", drawn by its own pipelines (see Curved space).");
   d.bullets(statsLines(s.value("stats", json())));
-  // Which compared pipelines blend skinned vertices differently from the baseline (issue 18).
+  // Which compared pipelines blend skinned vertices differently from the baseline.
   std::vector<std::string> methodDiffers;
   for (size_t i = 1; i < pipes.size(); ++i)
     if (skinningMethodsDiffer(s, pipes[i], pipes[0])) methodDiffers.push_back(pipes[i]);

@@ -34,7 +34,7 @@ void glossary(Document& d, const json& r) {
   }
 }
 
-// Curved space (issue 15): each curved scene with its own space's pipelines, one row per
+// Curved space: each curved scene with its own space's pipelines, one row per
 // pipeline, and the camera drift when the run measured it.
 void curvedSection(Document& d, const json& r) {
   const json& rows = at(r, {"summary", "curved"});
@@ -85,7 +85,7 @@ void curvedSection(Document& d, const json& r) {
 }
 
 
-// inspect's statistics apart for the generated built-in scenes and for real files (issue 18: a
+// inspect's statistics apart for the generated built-in scenes and for real files (a
 // fraction over "a corpus" must not count the built-ins, which exercise features on purpose).
 void statisticsSection(Document& d, const json& r) {
   const json& st = at(r, {"summary", "statistics"});
@@ -156,7 +156,7 @@ void kernelSection(Document& d, const json& r) {
     d.paragraph("Not available: " + k["error"].get<std::string>() + ".");
     return;
   }
-  // The machine the bench ran on (its JSON's context; a file written before issue 26 lacks it).
+  // The machine the bench ran on (its JSON's context; an older bench file lacks it).
   const json& ctx = k.value("context", json::object());
   d.paragraph("Measured on " +
               (ctx.contains("cpu_model")

@@ -1,4 +1,4 @@
-// What report.md / report.html mark as not measured or not right (issue 34): the scenes that
+// What report.md / report.html mark as not measured or not right: the scenes that
 // failed with their reasons, the frames whose drawn pixels say the two pipelines drew different
 // shapes (report.json frames[].drawnCheck, compare's check), and the motor family's exact
 // fallbacks per pipeline. Laid out from report.json only, as the rest of the document.

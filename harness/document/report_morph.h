@@ -1,4 +1,4 @@
-// The report's morph section (issue 37): per morph method (matrix; motor (a) frame, the motor
+// The report's morph section: per morph method (matrix; motor (a) frame, the motor
 // pipelines' default; motor (b) rotor deltas) its bytes per vertex and per target vertex, ops
 // (the method's counted kernel, the whole morphing shader's SPIR-V beside its rigid shader's),
 // AMD ISA instructions / VGPRs on two families (morphing vs rigid), and its image cost: worst

@@ -23,7 +23,7 @@ struct Figure {
   std::string tolerance;   // the tolerance that decides ties or counts, "" when none applies
   std::string definition;  // one sentence: how the value is computed, and which side is which
   std::string why;         // non-empty only when value is NaN: why it is missing
-  // Disturbance mark of a timed figure (issue 38: CPU vs real time, load); null: not assessed.
+  // Disturbance mark of a timed figure (CPU vs real time, load); null: not assessed.
   nlohmann::json disturbed;
 };
 

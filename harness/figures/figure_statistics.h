@@ -1,4 +1,4 @@
-// The statistics every figure uses, defined once (issue 35: one statistic per kind of figure).
+// The statistics every figure uses, defined once (one statistic per kind of figure).
 // Times: the median of per-frame paired ratios with their interquartile range; aggregates over
 // scenes: the median with the interquartile range over the scenes' own figures.
 #pragma once

@@ -1,4 +1,4 @@
-// `motorbench report --anim`: which animations of each scene the report shows (issue 18).
+// `motorbench report --anim`: which animations of each scene the report shows.
 // Items, comma-separated or repeated: NAME, INDEX or "all" for every scene that has it, or
 // SCENE:NAME|INDEX|all for one scene of the run (SCENE = its id or its spec as given). A scene
 // no item applies to shows its first animation, as without --anim.

@@ -1,5 +1,5 @@
 // The camera drift of the curved spaces (pipelines/curved/curved_drift.h) as JSON, shared by
-// `motorbench drift --json` and the report's curved-space section (issue 15).
+// `motorbench drift --json` and the report's curved-space section.
 #pragma once
 #include <cstdint>
 

@@ -199,7 +199,7 @@ int runReport(const Options& o) {
   }
   const fs::path work = tmpl;
   // Ids are made over the whole list, so every shard names a scene (and its image folder) alike.
-  // No scene named: every built-in scene, the curved ones (issue 15) last.
+  // No scene named: every built-in scene, the curved ones last.
   std::vector<std::string> named = o.scenes;
   if (named.empty()) {
     named = builtinSceneNames();

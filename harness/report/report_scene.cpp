@@ -48,7 +48,7 @@ json memoryJson(const PipelineStats& s) {
           {"skinBytesPerFrame", s.skinBytesPerFrame},
           {"bytesPerVertex", per(s.vertexBytes)},
           {"bytesPerVertexAll", per(s.vertexBytes + s.skinVertexBytes + s.extraVertexBytes)},
-          // Split by material (issue 18): the paper's 12-vs-9 floats is the normal-mapped case.
+          // Split by material: the paper's 12-vs-9 floats is the normal-mapped case.
           {"normalMappedVertices", s.normalMappedVertices},
           {"bytesPerVertexNormalMapped",
            s.normalMappedVertices ? json(double(s.normalMappedVertexBytes) / double(s.normalMappedVertices)) : json(nullptr)},
@@ -184,7 +184,7 @@ json vertexMix(const Scene& scene) {
       }
     }
   }
-  // Curved scenes (issue 15): every instance draws the shared triangle list.
+  // Curved scenes: every instance draws the shared triangle list.
   const long curved = long(scene.curved.positions.size()) * long(scene.curved.instances.size());
   json mix = {{"rigid", rigid}, {"skinned", skinned}, {"scaledFallback", scaled}, {"bezierPatch", patch},
               {"curvedInstance", curved}};

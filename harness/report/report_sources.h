@@ -1,5 +1,5 @@
 // What the report needs to know about where a scene and a pipeline come from, beyond what a
-// worker measures: a scene's origin (a generated built-in or a real file, issue 18: statistics
+// worker measures: a scene's origin (a generated built-in or a real file: statistics
 // over "a corpus" must not mix the two), and how a pipeline blends skinned vertices (so the
 // report labels the LBS-vs-motor difference as the methods' expected difference, not an error).
 #pragma once

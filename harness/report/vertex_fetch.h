@@ -1,4 +1,4 @@
-// GPU-relevant evidence without a GPU (issue 36): what one frame of a scene makes a GPU's
+// GPU-relevant evidence without a GPU: what one frame of a scene makes a GPU's
 // vertex stage fetch and transform, for a pipeline's own vertex layout, from meshoptimizer's
 // analyzers run on the scene's index buffers. Measured on the mesh and the layout, not timed.
 #pragma once

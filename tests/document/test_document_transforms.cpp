@@ -1,4 +1,4 @@
-// Issue 28 item 7: floats per transform on a scene whose every draw is skinned. There the
+// Floats per transform on a scene whose every draw is skinned. There the
 // pipelines with a world-space joint palette upload no node transform at all (report.json: null),
 // which the summary counts as "none" beside the spread instead of leaving it out silently (the
 // complaint: "matrix 32, every other pipeline 0, while the summary says 8 over 2 scenes").

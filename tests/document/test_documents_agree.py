@@ -1,5 +1,5 @@
 """README.md, results/report.md, results/claims.md and results/curved/README.md quote one value
-per figure (issue 36): every value a document quotes is read back by name (the
+per figure: every value a document quotes is read back by name (the
 <span title="NAME">TEXT</span> marks motorbench and scripts/document_figures.py write, and
 claims.md's rows by id as claims.<id>), and a name quoted twice, in one document or in two,
 must read the same; a figure of report.json must read as report.json's text. claims.md's
@@ -91,7 +91,7 @@ def disagreements(root):
                     problems.append(f"{name}: {sorted(set(docs))} quote '{v}', report.json '{fig['text']}'")
         elif len(values) > 1:
             problems.append(f"{name}: " + "; ".join(f"'{v}' in {sorted(set(d))}" for v, d in values.items()))
-    # The ops ranking line (issue 35 item 8): report.md and claims.md print report.json's line as it
+    # The ops ranking line: report.md and claims.md print report.json's line as it
     # is, wherever they print it: no start or end of it is left once its exact copies are taken out.
     for label, ranking in sorted((report.get("opsRanking") or {}).items()):
         line = ranking["line"]
@@ -166,7 +166,7 @@ class DocumentsAgree(unittest.TestCase):
         tmp = self.copy()
         with open(os.path.join(tmp, "results", "report.json"), encoding="utf-8") as f:
             ranking = json.load(f).get("opsRanking")
-        self.assertIsNotNone(ranking, "results/report.json predates the ops ranking (issue 35 item 8): regenerate results/")
+        self.assertIsNotNone(ranking, "results/report.json predates the ops ranking: regenerate results/")
         line = ranking["rigid"]["line"]
         self.edit(os.path.join(tmp, "results", "claims.md"), line, line.replace(" pipeline pairs", " pairs", 1))
         self.assertTrue(any(p.startswith("opsRanking.rigid: results/claims.md") for p in disagreements(tmp)),

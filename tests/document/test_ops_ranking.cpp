@@ -1,4 +1,4 @@
-// opsRanking (issue 35 item 8) on hand-made measures: three pipelines A, B, C whose orders are
+// opsRanking on hand-made measures: three pipelines A, B, C whose orders are
 // worked out by hand for each measure, so the pairs named and the word "disagree" are known.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-"""scripts/plot.py (issue 36 item 3): the frame-time bars are report.json's figures with their IQR
+"""scripts/plot.py: the frame-time bars are report.json's figures with their IQR
 as error bars, every ratio follows one convention (< 1: motor side cheaper, kernel plot included),
 identical frames are a short stub not a tall bar, the design space has one point per pipeline in
 two family colours. Read from index.json's "bars" (the data as drawn), never from pixels.

@@ -1,4 +1,4 @@
-// The answer block (issue 36, harness/document/report_answer.h): its lines quote report.json's
+// The answer block (harness/document/report_answer.h): its lines quote report.json's
 // figures by name, and each verdict follows from those figures as the line's rule says.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The report's morph section (issue 37) on a hand-made report.json: every cell is the figure,
+// The report's morph section on a hand-made report.json: every cell is the figure,
 // ops row or ISA row it names, the per-target ops are the delta floats (bytes / 4), the default
 // is marked, and a report without `morph` says how to get one.
 #include <gtest/gtest.h>
