@@ -42,7 +42,8 @@ void setThroughput(benchmark::State& state, size_t items, size_t bytes, Size siz
     state.counters["bw_fraction"] =
         benchmark::Counter(double(bytes) / probe, benchmark::Counter::kIsIterationInvariantRate);
     state.counters["probe_GBps"] = probe / 1e9;
-    // STREAM copy alone (issue 38's yardstick: >= 0.7 of it out of cache), same process and arrays.
+    // STREAM copy alone (the yardstick of a streaming kernel: >= 0.7 of it out of cache), same
+    // process and arrays.
     state.counters[kCopyFraction] =
         benchmark::Counter(double(bytes) / copy, benchmark::Counter::kIsIterationInvariantRate);
     state.counters["copy_GBps"] = copy / 1e9;

@@ -187,7 +187,7 @@ void registerHierarchy(const std::string& kernel, Hierarchy&& hierarchy) {
 
 }  // namespace
 
-// The real character of issue 38 (../shared/corpus-wide, Mixamo-style zombie: 81 nodes, 74
+// A real skinned character (../shared/corpus-wide, Mixamo-style zombie: 81 nodes, 74
 // joints), read relative to the working directory (the repository root, as reproduce.sh runs).
 const char* const kSkeletonFile = "../shared/corpus-wide/Mugen87+yuka/examples/fuzzy/model/zombie.glb";
 

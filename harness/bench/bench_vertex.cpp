@@ -1,7 +1,7 @@
 // vertex_frame and skinned vertices: a full vertex (position + frame) per item, over arrays in
 // cache and far out of cache. Matrix: matrixRigidVertex of matrix_transform.glsl (model + normal
 // mat4); motor: motorRigidVertex of motor_transform.glsl (one motor + uniform scale); glm: the
-// Sample Viewer's products with GLM. Skinning in matched configurations (issue 26), two pairs:
+// Sample Viewer's products with GLM. Skinning in matched configurations, two pairs:
 //   skinned_vertex            world palette on every side: joint world * inverse bind, no node
 //                             transform per vertex (matrixSkinnedVertexWorld, motorSkinnedVertex,
 //                             the simd sides); the motor pipelines' default

@@ -1,5 +1,5 @@
 // The machine a CPU figure was measured on: CPU model, logical cores and the Highway target the
-// SIMD kernels dispatch to. CPU kernel ratios change with the CPU (issue 26: a 16-core Xeon
+// SIMD kernels dispatch to. CPU kernel ratios change with the CPU (a 16-core Xeon
 // measured vertex_frame shim motor/matrix 0.32 where a 2-core EPYC measured 1.03), so every
 // CPU table (bench summary, report kernel and update tables) prints this line above it.
 #pragma once

@@ -17,7 +17,7 @@ struct FastestSides {
   // {side: reason} of every side whose figure was disturbed (report_bench's "disturbance").
   nlohmann::json disturbed = nlohmann::json::object();
   // motor time / fastest matrix time per item (< 1: motor faster); -1 when a side is missing or
-  // any side was disturbed (not a verdict input, issue 38).
+  // any side was disturbed (not a verdict input).
   double costRatio() const { return motor > 0 && matrix > 0 && disturbed.empty() ? matrix / motor : -1.0; }
 };
 

@@ -24,7 +24,7 @@ double unitSeconds(const std::string& unit) {
 
 // The figure's disturbance (harness/timing/disturbance.h) from its CPU and real time per
 // iteration and the load counters registerKernel samples; a figure without them (a JSON
-// written before issue 38) is not judged (null).
+// written without the load counters) is not judged (null).
 json disturbanceOf(const json& b, unsigned cores) {
   if (!b.contains(bench::kRunnableBefore) || !b.contains("cpu_time")) return nullptr;
   auto load = [&](const char* avg, const char* runnable) {
@@ -122,7 +122,7 @@ json kernelPairs(const json& bench) {
     const double sm = ips(bench::kSimdMatrix), smo = ips(bench::kSimdMotor);
     p["ratio_simd_motor_matrix"] = sm > 0 && smo > 0 ? json(smo / sm) : json(nullptr);
     // The fastest implementation on each side, whatever its source. A pair with a disturbed side
-    // keeps its ratios (printed with the mark) but is not a verdict input (issue 38):
+    // keeps its ratios (printed with the mark) but is not a verdict input:
     // fastestSides' costRatio is -1 for it, and "disturbed" names the sides and reasons.
     const bench::FastestSides f = bench::fastestSides(p);
     p["disturbed"] = !f.disturbed.empty();

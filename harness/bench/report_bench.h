@@ -28,7 +28,7 @@ Result<nlohmann::json> readBenchJson(const std::string& path);
 // ratio_simd_motor_matrix (simd_motor / simd_matrix), and fastest_matrix / fastest_motor (the
 // side with the most items/s of each kind) with ratio_motor_fastest_matrix (fastest motor /
 // fastest matrix).
-// Each pair also carries "machine" (issue 38: a CPU figure names its CPU and SIMD target):
+// Each pair also carries "machine" (a CPU figure names its CPU and SIMD target):
 // {"cpu", "logicalCores"} from the bench JSON's context and "simdTarget", the Highway target the
 // pair's SIMD sides ran on (their label; null for a pair without SIMD sides).
 nlohmann::json kernelPairs(const nlohmann::json& bench);

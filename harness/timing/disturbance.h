@@ -1,4 +1,4 @@
-// Whether a timed figure was taken while other work shared the cores (issue 38). Every timed
+// Whether a timed figure was taken while other work shared the cores. Every timed
 // figure (bench kernels, `motorbench time`, the report's and the claims' timings) records, over
 // the interval it measured, the CPU time its own threads got, the real time that passed and the
 // machine's load before and after; judgeDisturbance marks it `disturbed` with the reason, and a

@@ -1,4 +1,4 @@
-// Frame timing of every registered pipeline on a scene (issue 5, item 4), measured in one run
+// Frame timing of every registered pipeline on a scene, measured in one run
 // so that motor/matrix ratios cancel what the machine does meanwhile:
 //  - each frame: the CPU update (hierarchy, animation, skin palette: Pipeline::update) timed
 //    on its own (R back-to-back calls, R chosen in the warm-up so that a block lasts at least

@@ -1,4 +1,4 @@
-// The text `motorbench time` prints (issue 28 item 4): one block per scene and configuration,
+// The text `motorbench time` prints: one block per scene and configuration,
 // one row per pipeline (every pipeline of the scene's space), each ratio to the space's matrix
 // pipeline with its spread [q1-q3] over the per-frame ratios and "noise" where that spread
 // reaches both sides of 1. Scene names head their block, so long paths never shift columns.

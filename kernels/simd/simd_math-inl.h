@@ -22,7 +22,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 // the loop must vanish, so its arrays (uniforms, vertex planes, results) live in registers.
 // GCC at -O2 peels such loops only when that does not grow the code: the matrix vertex kept
 // three 3-trip row loops over stack arrays, reloading every uniform and input from the stack
-// and storing every result to it (issue 26; kernels/simd/README.md has the measurement).
+// and storing every result to it (kernels/simd/README.md has the measurement).
 #define MB_UNROLL _Pragma("GCC unroll 16")
 
 // Input planes are prefetched this many floats ahead (1 KiB per plane: enough to cover the
@@ -220,7 +220,7 @@ HWY_INLINE void gatherPlanes(D d, ConstPlanes palette, VI idx, hn::Vec<D> (&v)[C
   MB_UNROLL for (size_t c = 0; c < C; ++c) v[c] = hn::GatherIndex(d, palette[c], idx);
 }
 
-// The palette fetch of the skinned pair (issue 38): where the whole palette fits in at most
+// The palette fetch of the skinned pair: where the whole palette fits in at most
 // kMaxBlocks vectors per component (AVX-512: 64 joints, AVX2: 32, SSE4: 16), it is held in
 // registers (one vector of joints per block) and each lane's entry is a lane permutation per
 // block, the blocks chosen by the index's high bits; else, and for the one-lane tail, one

@@ -1,4 +1,4 @@
-// Ops of the motor family's two morph methods (issue 37, shaders/motor_transform.glsl),
+// Ops of the motor family's two morph methods (shaders/motor_transform.glsl),
 // counted through the shim, against hand-derived counts (the shim's rules: dot(vec4) 4 mul +
 // 3 add, normalize(vec3) 6 mul + 2 add + 1 inversesqrt, cross 6 / 3, comparisons free).
 #include <gtest/gtest.h>

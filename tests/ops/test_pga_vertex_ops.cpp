@@ -118,7 +118,7 @@ TEST(VertexOps, EveryVariantNamesCountedKernels) {
 
 namespace {
 
-// Issue 18: the skinned vertex in both configurations for both pipelines, and the matrix
+// Symmetric skinning: the skinned vertex in both configurations for both pipelines, and the matrix
 // vertex without a tangent, from hand-derived counts (mat4 * vec4 = 16/12, blend = 64/48).
 TEST(VertexOps, SymmetricSkinningAndNoTangentVariants) {
   auto c = countedByFunction();
@@ -153,7 +153,7 @@ TEST(VertexOps, BothSkinnedConfigurationsAreVariantsOfBothPipelines) {
     }
 }
 
-// Bezier patches (issue 14): the shared evaluation and each pipeline's frame, by hand.
+// Bezier patches: the shared evaluation and each pipeline's frame, by hand.
 TEST(VertexOps, PatchKernelsMatchHandDerivedCounts) {
   auto c = countedByFunction();
   // Bases 2 x (8/1) + 2 x (6/1); four rows 4 x (21/24); P and dP/du 2 x (12/9); dP/dv 9/15;
@@ -161,7 +161,7 @@ TEST(VertexOps, PatchKernelsMatchHandDerivedCounts) {
   expectCounts(c["bezierPatch"], {153, 137}, "bezierPatch");
   // cross 6/3 + three mat4 * vec4 48/36 + handedness 1/0.
   expectCounts(c["matrixPatchVertex"], {55, 39}, "matrixPatchVertex");
-  // affine_patch.vs (issue 26): cross 6/3 + mat4x3 point 9/9, mat3 normal 9/6, tangent 9/6, w 1/0.
+  // affine_patch.vs: cross 6/3 + mat4x3 point 9/9, mat3 normal 9/6, tangent 9/6, w 1/0.
   expectCounts(c["affinePatchVertex"], {6 + 28, 3 + 21}, "affinePatchVertex");
   // (a): sw_mp 21/18 after the scale 3/0, two sw_md 2 x (18/12), cross 6/3.
   expectCounts(c["motorPatchVertex"], {66, 45}, "motorPatchVertex");

@@ -83,7 +83,7 @@ TEST(PipelineOps, FiguresEqualHandDerivedSums) {
   expect("hybrid", 49 + 21, 160 + 21, 70 + matrixClip);
   // motor: sw_mp 21/18 + gp_rr 16/12 + extractNormalTangent 9/8 + scale 3/0 + handedness 1 div
   // 1 other = 89; skinned: + blend 44/33 + normalize_m 22/10 + 1 other; to clip: sw_mp 21/18 +
-  // the per-frame projection 3/1 (issue 26: both motor pipelines).
+  // the per-frame projection 3/1 (both motor pipelines).
   expect("motor", 89, 89 + 66 + 43 + 1, 89 + 21 + 18 + 3 + 1);
   expect("motor_q", 89, 89 + 66 + 43 + 1, 89 + 21 + 18 + 3 + 1);
   // Bezier patch to clip: the evaluation 153/137 + the frame + world to clip.

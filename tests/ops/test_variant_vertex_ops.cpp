@@ -40,7 +40,7 @@ TEST(VariantVertexOps, AffineKernelsMatchHandDerivedCounts) {
   expectCounts(c["qtangentFrame"], 12, 8, 1, "q.xyz * 2, nine products, two columns, sign(w)");
   expectCounts(c["qtangentRigidVertex"], 12 + 28, 8 + 21, 1, "decode + affine vertex");
   expectCounts(c["qtangentSkinnedVertex"], 12 + 94, 8 + 66, 1, "decode + skinned affine");
-  // Issue 26: the 8-float vertex without tangent, as matrix.vs's MB_NO_TANGENT.
+  // The 8-float vertex without tangent, as matrix.vs's MB_NO_TANGENT.
   expectCounts(c["affineVertexNoTangent"], 9 + 9, 9 + 6, 0, "position 9/9 + normal 9/6");
   expectCounts(c["affineSkinnedVertexNoTangent"], 48 + 18 + 18, 36 + 9 + 15, 0, "blend + cofactor + position, normal");
 }

@@ -1,4 +1,4 @@
-// shaders/pga_kappa.glsl against independent 4x4 matrices (issue 15): for S3 (kappa = +1)
+// shaders/pga_kappa.glsl against independent 4x4 matrices: for S3 (kappa = +1)
 // O(4) rotations, for H3 (kappa = -1) O(3,1) rotations and boosts, each built directly with
 // GLM in double precision from (coordinate plane, angle). Motors of the same elementary
 // isometries are written out by hand here (rotors by the glTF mapping, translators as

@@ -1,4 +1,4 @@
-// Issue 18: the paper's printed listings (shaders/paper_listings.glsl) counted through the
+// The paper's printed listings (shaders/paper_listings.glsl) counted through the
 // shim beside its table and our implementations (pga.glsl). Expected values are counted by
 // hand from the printed code (see the comments there); the listings must also compute what
 // ours compute where both follow the same math (normalize_m, sqrt_m, the skinning blend).

@@ -1,4 +1,4 @@
-// Issue 18: motorBlendJoints uses the reference's hemisphere rule (the paper's skinning
+// motorBlendJoints uses the reference's hemisphere rule (the paper's skinning
 // listing): each joint after the first is compared with the running sum of the weighted joints
 // before it, and negated when the rotor halves' dot product is <= 0. Checked against a plain
 // loop over 8-float arrays written from the listing, on the two cases where the earlier rule

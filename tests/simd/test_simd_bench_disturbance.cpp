@@ -1,4 +1,4 @@
-// report_bench's kernelPairs judges each bench figure's disturbance (issue 38) from the run's CPU
+// report_bench's kernelPairs judges each bench figure's disturbance from the run's CPU
 // and real time and the load counters registerKernel samples: a pair with a disturbed side keeps
 // its measured ratios but is not a verdict input (fastestSides' costRatio is -1).
 #include <gtest/gtest.h>
@@ -53,7 +53,7 @@ TEST(SimdBenchDisturbance, SharedCoresMarkThePairAndTakeItOutOfTheVerdicts) {
 }
 
 TEST(SimdBenchDisturbance, FiguresWithoutLoadCountersAreNotJudged) {
-  // A bench JSON written before issue 38: no load counters, no judgement, ratios as before.
+  // A bench JSON without load counters: no judgement, the ratios unchanged.
   const json bench = {{"benchmarks",
                        {{{"name", "compose/matrix"}, {"items_per_second", 10.0}, {"cpu_time", 1.0}, {"real_time", 9.0}},
                         {{"name", "compose/motor"}, {"items_per_second", 20.0}, {"cpu_time", 1.0}, {"real_time", 1.0}}}}};

@@ -1,4 +1,4 @@
-// report_bench's kernelPairs with the simd sides (issue 13): the fastest implementation of each
+// report_bench's kernelPairs with the simd sides: the fastest implementation of each
 // kind is named, whatever its source, and the motor is stated against the fastest matrix one.
 #include <gtest/gtest.h>
 
@@ -33,7 +33,7 @@ TEST(SimdBenchPairs, FastestOfEachKindIsNamedAndCompared) {
   EXPECT_TRUE(c["ratio_simd_motor_matrix"].is_null());  // no simd_matrix side
 }
 
-// Issue 38: a CPU figure names its CPU and the SIMD target it ran on, read from the bench JSON
+// A CPU figure names its CPU and the SIMD target it ran on, read from the bench JSON
 // (context and the SIMD sides' labels), never from the machine the report runs on.
 TEST(SimdBenchPairs, EachPairNamesItsCpuAndSimdTarget) {
   json simd = run("skinned_vertex/out_of_cache/simd_motor", 3);

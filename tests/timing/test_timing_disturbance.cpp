@@ -1,4 +1,4 @@
-// Disturbance detection (issue 38, harness/timing/disturbance.h): the judgement on hand-made
+// Disturbance detection (harness/timing/disturbance.h): the judgement on hand-made
 // samples, then live: a figure timed while a busy-loop child shares the measuring thread's core
 // is marked disturbed, and the same figure timed alone is not. No time is asserted, only the mark.
 #include <gtest/gtest.h>
@@ -23,7 +23,7 @@ TEST(Disturbance, JudgesCpuOverRealAndTheRunQueue) {
   const Disturbance alone = mb::timing::judgeDisturbance(0.95, 1.0, quiet, quiet, 2);
   EXPECT_FALSE(alone.disturbed) << alone.reason;
   EXPECT_TRUE(alone.reason.empty());
-  // 53 ms real for 15 ms CPU (the case of issue 38): 0.28 of the real time.
+  // 53 ms real for 15 ms CPU (a build sharing the cores): 0.28 of the real time.
   const Disturbance shared = mb::timing::judgeDisturbance(0.015, 0.053, quiet, quiet, 2);
   EXPECT_TRUE(shared.disturbed);
   EXPECT_NE(shared.reason.find("CPU/real 0.28 < 0.90"), std::string::npos) << shared.reason;
