@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The SIMD kernel pairs on the CPU's default Highway target and on AVX2 forced, back to back in
 # one run of this script, each `motorbench bench` process with its own STREAM probe, and one table
-# of both (issue 38's acceptance: every SIMD kernel <= its scalar GLM counterpart, out-of-cache
+# of both (the targets: every SIMD kernel <= its scalar GLM counterpart, out-of-cache
 # point, direction and vertex_frame >= 0.7 of STREAM copy, skinned_vertex >= 0.5 or explained).
 # Run it on a quiet machine: the CPU/real column shows where other work shared the cores.
 #

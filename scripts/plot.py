@@ -47,7 +47,7 @@ def num(x):
 
 
 def figure(report, name):
-    """The figure `name` of report.json's "figures" (issue 35) or None; plots quote figures,
+    """The figure `name` of report.json's "figures" or None; plots quote figures,
     never recompute them."""
     f = (report.get("figures") or {}).get(name)
     return f if isinstance(f, dict) and num(f.get("value")) is not None else None
@@ -186,8 +186,8 @@ def plot_ops_per_vertex(plt, report, outdir):
 
 def plot_kernel_ratios(plt, report, outdir):
     # Time per item, fastest motor implementation / fastest matrix implementation: report.json's
-    # summary.kernelRatios, the figure report.md and claims quote (issue 35 item 4: not the shim
-    # sources against each other); < 1 = motor side cheaper, as in every other plot. One Google
+    # summary.kernelRatios, the figure report.md and claims quote (not the shim sources
+    # against each other); < 1 = motor side cheaper, as in every other plot. One Google
     # Benchmark run per kernel: no spread to draw.
     ratios = (report.get("summary") or {}).get("kernelRatios") or {}
     pairs = [dict(p, time_ratio=ratios[p["pair"]]["motorOverMatrixTime"],

@@ -27,7 +27,7 @@ cd "$(dirname "$0")/.."
 # shellcheck source=scripts/build_fallback.sh
 . scripts/build_fallback.sh
 
-# Timed figures need quiet cores (issue 38): warn now when other work runs. The tools mark each
+# Timed figures need quiet cores: warn now when other work runs. The tools mark each
 # figure taken on shared cores (harness/timing/disturbance.h) and keep it out of the verdicts.
 read -r load1 _ _ runq _ < /proc/loadavg
 if [ "${runq%%/*}" -gt "$(nproc)" ] || awk -v l="$load1" -v n="$(nproc)" 'BEGIN { exit !(l > n) }'; then
@@ -46,7 +46,7 @@ SKIN_VOLUMES=$OUT/corpus/skin-volumes.json
 INPUTS=(python3 scripts/committed_inputs.py)
 JOBS=$(nproc)
 STEPS=(setup build untimed bench report corpus claims)
-# Seconds per step of a fresh clone on a shared 2-core Debian 12 machine (issue 39: the build
+# Seconds per step of a fresh clone on a shared 2-core Debian 12 machine (the build
 # still with debug information; ops, isa and inspect one after the other; the two reports as
 # one 425 s): the estimate until this machine has run the script once.
 declare -A EXPECT=([setup]=170 [build]=685 [untimed]=150 [bench]=55 [report]=300 [corpus]=125 [claims]=15)
@@ -110,7 +110,7 @@ step untimed "ops -> $OUT/ops.json, isa -> $OUT/isa.json, morph -> $OUT/morph.js
 declare -A UNTIMED=()
 "$MB" ops --json "$OUT/ops.json" > "$OUT/ops.txt" & UNTIMED[ops]=$!
 "$MB" isa --json "$OUT/isa.json" > "$OUT/isa.txt" & UNTIMED[isa]=$!
-# Morph methods' image and byte cost (issue 37): morph_torus measured now, with corpus-wide's
+# Morph methods' image and byte cost: morph_torus measured now, with corpus-wide's
 # morph files: measured into $MORPH_WIDE where that folder is, else its committed figures.
 # (Exit 1 of morph or inspect: some file failed, recorded in their JSON with the reason.)
 (
@@ -145,7 +145,7 @@ step bench "bench: kernel pairs in and out of cache, 3 repetitions -> $OUT/bench
 
 step report "report: built-in scenes -> $OUT/report.html (frame timing: alone)"
 # skinned_tube also shows candy_wrapper: the half turn where linear blend skinning collapses the
-# ring and motor blending keeps it (issue 18); every other scene its first animation.
+# ring and motor blending keeps it; every other scene its first animation.
 "$MB" report -o "$OUT" --bench-json "$OUT/bench.json" --isa-json "$OUT/isa.json" --morph-json "$OUT/morph.json" --jobs "$JOBS" \
   --anim skinned_tube:bend,skinned_tube:candy_wrapper
 

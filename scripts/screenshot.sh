@@ -1,5 +1,5 @@
 #!/bin/bash
-# Screenshots of the answer (issue 36) with headless Chromium at 1400x900, for a closing note or
+# Screenshots of the answer with headless Chromium at 1400x900, for a closing note or
 # a review: report.html's first screen, and claims.md's answer block (claims.md through Debian's
 # python3-markdown, tables on, into one page beside claims.md so its image paths resolve).
 #   scripts/screenshot.sh [RESULTS_DIR]   (default: results) -> RESULTS_DIR/screens/*.png
