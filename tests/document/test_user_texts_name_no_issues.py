@@ -26,10 +26,17 @@ ISSUE = re.compile(r"\b[Ii]ssues? #?[0-9]+")
 TEXT_SUFFIXES = (".md", ".txt", ".html")
 
 
+def around(text, match, width=70):
+    """The match with up to `width` characters either side, on one line."""
+    start, end = max(match.start() - width, 0), min(match.end() + width, len(text))
+    return ("..." if start else "") + text[start:end].strip() + ("..." if end < len(text) else "")
+
+
 def hits_in_lines(where, text):
-    """["WHERE:LINE: the line"] for every line of `text` that names an issue."""
-    return [f"{where}:{n}: {line.strip()[:160]}"
-            for n, line in enumerate(text.splitlines(), 1) if ISSUE.search(line)]
+    """["WHERE:LINE: ...the words around the reference..."] for every line of `text` that names an
+    issue."""
+    return [f"{where}:{n}: {around(line, m)}"
+            for n, line in enumerate(text.splitlines(), 1) for m in [ISSUE.search(line)] if m]
 
 
 def json_strings(value, path=""):
@@ -60,7 +67,8 @@ def hits_in_folder(folder):
             elif name == "index.json" and os.path.basename(root) == "plots":
                 with open(path, encoding="utf-8") as f:
                     index = json.load(f)
-                hits += [f"{shown}{p}: {s[:160]}" for p, s in json_strings(index) if ISSUE.search(s)]
+                hits += [f"{shown}{p}: {around(s, m)}"
+                         for p, s in json_strings(index) for m in [ISSUE.search(s)] if m]
                 read += 1
     return hits, read
 
