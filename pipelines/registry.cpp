@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "pipelines/affine/affine_pipeline.h"
+#include "pipelines/matrix/affine_pipeline.h"
 #include "pipelines/curved/curved_pipeline.h"
 #include "pipelines/hybrid/hybrid_pipeline.h"
 #include "pipelines/matrix/matrix_pipeline.h"

@@ -1,5 +1,5 @@
 #version 450 core
-// affine.vs: the vertex stage of the production matrix pipelines (pipelines/affine/:
+// affine.vs: the vertex stage of the production matrix pipelines (pipelines/matrix/:
 // `affine`, `qtangent`, `hybrid`). Per draw: the model as mat4x3 (12 floats), the normal matrix
 // as mat3 (9 floats) and the mirror factor sign(det(model)); per frame the view-projection
 // mat4. The transform itself is affine_transform.glsl's (what `motorbench ops` counts).

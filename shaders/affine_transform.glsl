@@ -1,5 +1,5 @@
 // affine_transform.glsl: the per-vertex transform of the production matrix pipelines
-// (pipelines/affine: `affine`, `qtangent`, `hybrid`), in the GLSL subset of shaders/shim/glsl.h
+// (pipelines/matrix: `affine`, `qtangent`, `hybrid`), in the GLSL subset of shaders/shim/glsl.h
 // so that shaders/affine.vs, `motorbench ops` and the CPU tests run the same source.
 // Transforms are affine: GLSL mat4x3 (4 columns of 3 rows, 12 floats); the rigid vertex is
 // matrix_transform.glsl's matrixAffineVertex (model mat4x3 + normal mat3 + mirror factor).

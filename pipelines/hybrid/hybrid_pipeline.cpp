@@ -1,6 +1,6 @@
 #include "pipelines/hybrid/hybrid_pipeline.h"
 
-#include "pipelines/affine/affine_pipeline.h"
+#include "pipelines/matrix/affine_pipeline.h"
 #include "pipelines/motor/companion.h"
 #include "pipelines/motor/linear_fallback.h"
 #include "pipelines/motor/motor_rig.h"

@@ -1,5 +1,5 @@
 // `hybrid`: motors on the CPU exactly as the motor pipeline, matrices (mat4x3) on the GPU with
-// pipelines/affine's QTangent vertex path.
+// pipelines/matrix's QTangent vertex path.
 #pragma once
 #include <memory>
 

@@ -1,5 +1,5 @@
-// The matrix family's pipelines (matrix, and affine, qtangent, matrix_c, hybrid in
-// pipelines/affine): one prepare, update and render over the shared draw path, the pipeline
+// The matrix family's pipelines (matrix, affine, qtangent, matrix_c, and hybrid in
+// pipelines/hybrid): one prepare, update and render over the shared draw path, the pipeline
 // (`Self`, CRTP so that no virtual call is made per draw or per instance) supplying what is its
 // own:
 //   kVertexShader, kPatchShader, kJointBlock, kBytesPerJoint, kInstanceLayout, frames(),

@@ -10,7 +10,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "harness/bench/bench_shaders.h"
-#include "pipelines/affine/qtangent_vertices.h"
+#include "pipelines/matrix/qtangent_vertices.h"
 #include "pipelines/motor/companion.h"
 #include "pipelines/motor/motor_kernels.h"
 #include "pipelines/motor/motor_q_vertices.h"

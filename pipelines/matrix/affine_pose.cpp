@@ -1,4 +1,4 @@
-#include "pipelines/affine/affine_pose.h"
+#include "pipelines/matrix/affine_pose.h"
 
 #include "pipelines/scene/drawn_skins.h"
 

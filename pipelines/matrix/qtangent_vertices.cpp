@@ -1,10 +1,10 @@
-#include "pipelines/affine/qtangent_vertices.h"
+#include "pipelines/matrix/qtangent_vertices.h"
 
 #include <cmath>
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "pipelines/affine/affine_vertices.h"
+#include "pipelines/matrix/affine_vertices.h"
 
 namespace mb::affine {
 

@@ -1,6 +1,6 @@
 // The registry entries of affine, qtangent and matrix_c: their traits and the programs
 // affine.vs and affine_patch.vs are linked as (affine_pipeline.cpp's defines()).
-#include "pipelines/affine/affine_pipeline.h"
+#include "pipelines/matrix/affine_pipeline.h"
 
 namespace mb {
 namespace {

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "pipelines/affine/affine_pose.h"
+#include "pipelines/matrix/affine_pose.h"
 #include "pipelines/pipeline.h"
 #include "pipelines/registry.h"
 

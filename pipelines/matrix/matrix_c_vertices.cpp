@@ -1,6 +1,6 @@
-#include "pipelines/affine/compact_vertices.h"
+#include "pipelines/matrix/matrix_c_vertices.h"
 
-#include "pipelines/affine/affine_vertices.h"
+#include "pipelines/matrix/affine_vertices.h"
 #include "pipelines/compact/compact_encoding.h"
 
 namespace mb::affine {

@@ -13,13 +13,13 @@
 // MB_MORPH variant of its program, the glTF deltas as matrix does (morph_buffers.h); qtangent,
 // hybrid and matrix_c decode their frame and add the deltas to it (affine.vs), and matrix_c's
 // morphing rigid draws dequantise per vertex instead of folding the cube into the model.
-#include "pipelines/affine/affine_pipeline.h"
+#include "pipelines/matrix/affine_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "pipelines/affine/compact_vertices.h"
-#include "pipelines/affine/qtangent_vertices.h"
+#include "pipelines/matrix/matrix_c_vertices.h"
+#include "pipelines/matrix/qtangent_vertices.h"
 #include "pipelines/compact/compact_encoding.h"
 #include "pipelines/gl/upload.h"
 #include "pipelines/matrix/matrix_family.h"

@@ -1,4 +1,4 @@
-#include "pipelines/affine/affine_vertices.h"
+#include "pipelines/matrix/affine_vertices.h"
 
 #include <cmath>
 
