@@ -1,4 +1,4 @@
-// libFuzzer target for image decoding alone (issue 20): PNG/JPEG bytes through exactly what the
+// libFuzzer target for image decoding alone: PNG/JPEG bytes through exactly what the
 // loader uses for an embedded or external image, pipelines/scene/image_decode.h (our header
 // checks, then OpenImageIO's PNG or JPEG reader from memory). What is checked:
 // tests/fuzz/fuzz_image_checks.h; a violation aborts. Seeds: tests/fuzz/seeds/images, findings

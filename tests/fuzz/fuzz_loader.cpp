@@ -1,6 +1,6 @@
-// libFuzzer target for the glTF loader and the scene conversion pipelines rely on (issue 7,
-// item 5): see tests/fuzz/fuzz_exercise.h for what each input goes through. A violation aborts,
-// which libFuzzer records as a crash. Build and run: scripts/fuzz.sh [SECONDS].
+// libFuzzer target for the glTF loader and the scene conversion pipelines rely on: see
+// tests/fuzz/fuzz_exercise.h for what each input goes through. A violation aborts, which libFuzzer
+// records as a crash. Build and run: scripts/fuzz.sh [SECONDS].
 #include <cstdio>
 #include <cstdlib>
 

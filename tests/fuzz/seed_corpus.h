@@ -1,4 +1,4 @@
-// The committed fuzz seed corpus (issue 20, item 3): helpers and the image seeds; the glTF seeds
+// The committed fuzz seed corpus: helpers and the image seeds; the glTF seeds
 // are in seed_corpus_scenes.cpp, the only file that includes this one (others: seed_files.h).
 //
 // The corpus: small, valid glTF/GLB files with real variety, built with the hostile builder (tests/hostile/gltf_builder.h, raw JSON + one buffer)

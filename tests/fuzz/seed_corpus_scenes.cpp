@@ -169,8 +169,8 @@ inline Doc everySlotDoc() {
 
 // KHR extensions on the root, a node, a material and a texture reference: the loader ignores
 // (lists as unsupported) KHR_materials_unlit, KHR_materials_clearcoat and KHR_lights_punctual;
-// KHR_texture_transform and KHR_materials_emissive_strength are drawn since issue 34. (Draco
-// primitives are decoded since issue 27; their malformed payloads are hostile cases, tests/hostile.)
+// KHR_texture_transform and KHR_materials_emissive_strength are drawn. (Draco primitives are
+// decoded; their malformed payloads are hostile cases, tests/hostile.)
 inline Doc ignoredExtensionsDoc() {
   Doc d;
   auto png = hostile::checkerPng();

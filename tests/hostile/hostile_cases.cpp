@@ -52,7 +52,7 @@ std::vector<Case> containerCases() {
   cs.push_back(fallback("bin_chunk_length_unaligned.glb", patched(L.binHeader, get32(good, L.binHeader) - 1), &LoadStats::binChunkUnaligned, 1,
                         "BIN chunk length not a multiple of 4 (as three.js and the Sample Viewer do: zero-padded, counted)"));
   {
-    // The JSON chunk unpadded (length 4k + 1..3), the BIN chunk right after it (issue 34).
+    // The JSON chunk unpadded (length 4k + 1..3), the BIN chunk right after it.
     std::string json(good.begin() + 20, good.begin() + long(L.jsonEnd));
     while (!json.empty() && json.back() == ' ') json.pop_back();
     if (json.size() % 4 == 0) json += ' ';
@@ -809,7 +809,7 @@ std::vector<Case> contentCases() {
   return cs;
 }
 
-// Valid glTF 2.0 that tinygltf 2.7 refuses (issue 17, item 5; pipelines/scene/conformance.h)
+// Valid glTF 2.0 that tinygltf 2.7 refuses (pipelines/scene/conformance.h)
 // and the URI cases that stay errors. tests/scene/test_scene_conformance.cpp checks each
 // against its plain equivalent; here they feed the hostile corpus and the fuzz seeds.
 std::vector<Case> conformanceCases() {
@@ -874,7 +874,7 @@ std::vector<Case> conformanceCases() {
   return cs;
 }
 
-// Compressed geometry and image formats (issue 27): payloads made by the real encoders
+// Compressed geometry and image formats: payloads made by the real encoders
 // (tests/support/compressed_gltf.h), then broken.
 std::vector<Case> compressionCases() {
   using namespace detail;
@@ -906,7 +906,7 @@ std::vector<Case> compressionCases() {
                      {"Draco data does not decode"}, "Draco bufferView cut to half the stream"));
   cs.push_back(fallback("draco_count_mismatch.glb", edited(draco, [](compressed::Glb& g) { g.json["accessors"][0]["count"] = 5; }),
                         &LoadStats::dracoCountMismatch, 1,
-                        "POSITION declares 5 vertices, the Draco stream holds 4 (issue 34: the decoded 4 drawn, as three.js does; counted)"));
+                        "POSITION declares 5 vertices, the Draco stream holds 4 (the decoded 4 drawn, as three.js does; counted)"));
   cs.push_back(error("draco_attribute_id_missing.glb", edited(draco, [](compressed::Glb& g) {
                        g.json["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]["attributes"]["NORMAL"] = 42;
                      }),

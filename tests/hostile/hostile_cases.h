@@ -1,4 +1,4 @@
-// The hostile-input catalogue (issue 7, item 4): malformed and extreme glTF/GLB files, built in
+// The hostile-input catalogue: malformed and extreme glTF/GLB files, built in
 // memory, each with what the loader must do with it:
 //   Error     load fails; the message names the file and contains one of `reasons`
 //   Fallback  load succeeds; LoadStats::*counter >= atLeast (the documented repair was counted)

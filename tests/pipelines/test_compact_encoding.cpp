@@ -1,4 +1,4 @@
-// The compact pipelines' encodings (issue 29, pipelines/compact/compact_encoding.h) against
+// The compact pipelines' encodings (pipelines/compact/compact_encoding.h) against
 // closed-form error bounds, decoded by the shader's own functions (shaders/compact_frame.glsl
 // through the shim): octahedral normal, diamond tangent, smallest-three rotor with its
 // reflection bit (rotor scalar exactly +-0 included, and normal_torus's such frames through

@@ -1,4 +1,4 @@
-// Drift of the curved camera (issue 15, pipelines/curved/curved_drift.h): the distances are
+// Drift of the curved camera (pipelines/curved/curved_drift.h): the distances are
 // right on hand-made cases, renormalisation keeps both sides on their group, and the counts
 // of one step and one renormalisation are the toolbox's.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The curved-space scenes and pipelines (issue 15): the scenes are what they claim (group
+// The curved-space scenes and pipelines: the scenes are what they claim (group
 // sizes, isometries of the right space, points on the quadric), matrix and motor images of
 // each space agree (PSNR >= 50 dB) and fill the view, uploads are 16 vs 8 floats per
 // instance, and each kind of pipeline refuses the other kind of scene by name.

@@ -1,4 +1,4 @@
-// motor_cf (issue 29): the tangent rotor carried to the fragment shader. The sign pass
+// motor_cf: the tangent rotor carried to the fragment shader. The sign pass
 // (pipelines/motor/rotor_signs.h) against a ring whose frames turn once (a rotor field that
 // comes back negated, so no sign per vertex can work), motor_cf's 16 bytes against the frames
 // they encode (normal_torus, its zero-scalar frames included), and forward.fs's two shading
@@ -79,7 +79,7 @@ std::vector<glm::vec4> paperRotors(const Primitive& p) {
 // with both signs. After the pass every triangle's rotors share a hemisphere, each vertex is a
 // copy of an input vertex with its rotor up to sign, and exactly the vertices a seam needs are
 // added (one column: 2 vertices) -- the hand-derived count. A copy carries its input vertex's
-// morph deltas (issue 37: motor_cf morphs its split vertices).
+// morph deltas (motor_cf morphs its split vertices).
 TEST(RotorSigns, RingWhoseFramesTurnOnceSplitsOneSeamAndEveryTriangleAgrees) {
   Primitive p = ring(24);
   MorphTarget target;  // deltas that name their vertex

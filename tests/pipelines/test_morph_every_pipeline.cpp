@@ -1,4 +1,4 @@
-// Morph targets in every glTF pipeline (issue 37), instanced draws included. The reference for a
+// Morph targets in every glTF pipeline, instanced draws included. The reference for a
 // pipeline P is P itself drawing the same shape with the morph baked into the mesh on the CPU
 // (each attribute plus its weighted deltas, in target order, as glTF 2.0 3.7.2.2 defines it):
 // that image carries P's own quantisation of the shape and nothing of the morph path. Against

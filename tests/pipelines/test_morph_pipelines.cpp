@@ -1,4 +1,4 @@
-// Morph targets in the pipelines (issue 37). The matrix pipeline against the Sample Viewer's
+// Morph targets in the pipelines. The matrix pipeline against the Sample Viewer's
 // morph done by hand on the CPU (base + sum of weighted deltas, in target order, then drawn
 // as an unmorphed mesh): the same pixels exactly. Every other pipeline against the matrix one
 // on the same morphed scene.

@@ -1,4 +1,4 @@
-// Where the motor family's rotor method (b) breaks (issue 37): one target turning the tangent
+// Where the motor family's rotor method (b) breaks: one target turning the tangent
 // about the normal by theta, at weight w. The matrix pipeline's frame (and method (a), which
 // re-forms the rotor from the morphed frame) turns by atan2(w sin theta, 1 - w + w cos theta);
 // a blend of rotors turns by 2 atan2(w sin(theta/2), 1 - w + w cos(theta/2)). Equal at w = 0,

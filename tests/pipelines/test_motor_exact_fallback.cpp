@@ -306,7 +306,7 @@ TEST(ExactFallbackRealFiles, MultiPrimitiveFilesInEveryPipeline) {
   if (tried == 0) GTEST_SKIP() << "../shared/corpus-wide not present";
 }
 
-// motor_cf (issue 34): a triangle whose corner frames turn by more than 180 degrees has no signs
+// motor_cf: a triangle whose corner frames turn by more than 180 degrees has no signs
 // that put its rotors in one hemisphere; its fragments interpolated a shortened rotor (a frame none
 // of its corners has). Such triangles are moved after the others and extract the frame per vertex
 // as motor_c does. A normal-mapped quad whose corner tangents turn 0, 120 and 240 degrees about the

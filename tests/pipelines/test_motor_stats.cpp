@@ -1,5 +1,5 @@
-// Motor vs matrix pipeline stats, read from what each pipeline actually uploaded (issue 4
-// acceptance): on the same primitive 36 against 48 bytes per vertex, 8 against 32 floats per
+// Motor vs matrix pipeline stats, read from what each pipeline actually uploaded: on the
+// same primitive 36 against 48 bytes per vertex, 8 against 32 floats per
 // transform and per joint; the motor pipeline's fallbacks are counted; it renders
 // deterministically. Image equivalence itself is tests/render/test_render_equivalence.cpp.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Issue 18, symmetric skinning: each pipeline draws a skinned mesh in two configurations,
+// Symmetric skinning: each pipeline draws a skinned mesh in two configurations,
 // "as the references do" (SkinSpace::Reference: palette relative to the mesh node, the node's
 // transform applied per vertex after the blend) and "world-space palette" (no per-vertex node
 // transform). Both are the same pose: the CPU palettes differ exactly by the node's world

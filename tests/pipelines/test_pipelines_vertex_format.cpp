@@ -1,4 +1,4 @@
-// Issue 18, vertex formats as the baseline does them: the matrix pipeline uploads a tangent
+// Vertex formats as the baseline does them: the matrix pipeline uploads a tangent
 // only where the glTF-Sample-Viewer has one (authored TANGENT, or generated for a normal map),
 // so a primitive without both is position + normal + uv = 32 bytes; dropping the tangent
 // changes no pixel (nothing reads it without a normal map); the stats split the shading bytes
@@ -104,7 +104,7 @@ TEST(MatrixVertexFormat, WithoutNormalMapOrTangentIs32BytesAndTheSameImage) {
     // The motor vertex keeps its 9 floats (the rotor carries the normal too).
     const Frame motor = render(bare, "motor", anim);
     EXPECT_EQ(motor.stats.vertexBytes, n * 36);
-    // Issue 26: affine uploads the same 8-float vertex (affine.vs MB_NO_TANGENT), 12 floats with
+    // Affine uploads the same 8-float vertex (affine.vs MB_NO_TANGENT), 12 floats with
     // an authored tangent, and the two draw bit-identical images.
     const Frame affineBare = render(bare, "affine", anim);
     const Frame affineAuthored = render(authored, "affine", anim);

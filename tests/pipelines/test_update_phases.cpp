@@ -1,4 +1,4 @@
-// Issue 13 item 4: the CPU update of every glTF pipeline poses into buffers reused from frame
+// The CPU update of every glTF pipeline poses into buffers reused from frame
 // to frame (a pose after another one equals the same pose computed fresh, bit for bit), its
 // phases are measured only on request, and the motor defaults are the identity motor.
 #include <gtest/gtest.h>

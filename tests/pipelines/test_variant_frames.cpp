@@ -1,4 +1,4 @@
-// Quantized vertex frames (issue 16): the paper's signed-zero handedness rule does not survive
+// Quantized vertex frames: the paper's signed-zero handedness rule does not survive
 // int16 SNORM storage, the bias rule (|scalar| >= 1/32767) does; QTangent and motor_q frames
 // decode, after quantisation, to the frame they encode. References: the input frames
 // themselves (normal, tangent, w) and GLM's quaternion -> matrix conversion.

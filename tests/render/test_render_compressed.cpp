@@ -1,4 +1,4 @@
-// Issue 27 acceptance: compressed and WebP-textured versions of built-in scenes, made by the
+// Compressed and WebP-textured versions of built-in scenes, made by the
 // codecs' encoders (tests/support/compressed_gltf.h), render in every glTF pipeline and match
 // the uncompressed scene's image from the same pipeline:
 //  - meshopt (no filters): the decoded Scene is the original's (a triangle's corners may be

@@ -1,4 +1,4 @@
-// Issue 34 items 2 and 4: the drawn-pixel check compare and the report share
+// The drawn-pixel check compare and the report share
 // (harness/render/drawn_check.h), on synthetic frames whose drawn pixels are set by hand: one
 // image empty fails with the reason, counts more than 1 % apart fail, the skinning-method note
 // only where the counts agree on a skinned frame. And the fallback lines and JSON render/compare

@@ -1,10 +1,9 @@
-// Every registered pipeline vs the matrix baseline of its space (matrix; s3_matrix / h3_matrix
-// for the curved scenes, issue 15) (issue 4 acceptance, issue 7 item 2): on
-// every rigid built-in scene and on the skinned scenes in their bind pose, PSNR >= 50 dB and at
-// most 0.1 % of the pixels differ by more than 2/255. The cases come from pipelineNames(), so
-// a new pipeline is covered by its registry line; placeholder pipelines are skipped. On a
-// failure both images and a diff heat map are written to a temporary folder named in the
-// message, to see where the images part.
+// Every registered pipeline vs the matrix baseline of its space (matrix; s3_matrix / h3_matrix for
+// the curved scenes): on every rigid built-in scene and on the skinned scenes in their bind pose,
+// PSNR >= 50 dB and at most 0.1 % of the pixels differ by more than 2/255. The cases come from
+// pipelineNames(), so a new pipeline is covered by its registry line; placeholder pipelines are
+// skipped. On a failure both images and a diff heat map are written to a temporary folder named in
+// the message, to see where the images part.
 #include <gtest/gtest.h>
 
 #include <unistd.h>

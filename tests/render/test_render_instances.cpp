@@ -16,7 +16,7 @@ using namespace mb;
 
 namespace {
 
-// matrix_c, motor_c and motor_cf (issue 29) compact the vertex, not the instance: as affine and
+// matrix_c, motor_c and motor_cf compact the vertex, not the instance: as affine and
 // motor (their dequantisation is a per-draw uniform).
 const std::map<std::string, uint64_t> kBytesPerInstance = {{"matrix", 128}, {"affine", 88}, {"qtangent", 88},
                                                            {"hybrid", 88},  {"matrix_c", 88}, {"motor", 36},

@@ -1,5 +1,5 @@
 // The morph-target files of ../shared/corpus-wide (MANIFEST.tsv features "morph-targets")
-// through matrix and the motor family's two morph methods (issue 37), weights animated: every
+// through matrix and the motor family's two morph methods, weights animated: every
 // animation at a quarter, half and three quarters of its duration, plus the rest pose. Prints
 // per method the worst PSNR vs matrix, its largest channel error and the frame where it
 // occurs; the frame method must reach 50 dB on every frame of the unskinned files (the skinned
@@ -92,7 +92,7 @@ TEST(MorphCorpus, MotorMethodsAgainstMatrixWithAnimatedWeights) {
   EXPECT_GT(morphedFrames, 0);
 }
 
-// Every pipeline draws the morph files as matrix does (issue 37): on every frame it morphs the
+// Every pipeline draws the morph files as matrix does: on every frame it morphs the
 // draws matrix morphs (at least as many: motor_cf may split one) and counts no node drawn in its
 // base shape. Prints each pipeline's worst PSNR vs matrix over the frames where matrix morphs.
 TEST(MorphCorpus, EveryPipelineMorphsWhatMatrixMorphs) {

@@ -1,4 +1,4 @@
-// KHR_texture_transform (issue 34) in forward.fs, through every pipeline, against images derived
+// KHR_texture_transform in forward.fs, through every pipeline, against images derived
 // by hand. The scene: the quad [-1, 1]^2 at z = 0 seen by a glTF camera at (0, 0, 2) with
 // yfov = 2 atan(1/2), so it fills a 64 x 64 frame exactly and pixel (x, y) (top row first) sees
 // uv = ((x + 0.5) / 64, (y + 0.5) / 64) (glTF uv: origin top left, v down). The texture is 2 x 2
@@ -8,8 +8,8 @@
 // coordinate below stays >= 0.1 away from a texel edge (multiples of 0.5).
 // The extension's matrix: uv' = T(offset) R(rotation) S(scale) (uv, 1), R turning the uvs
 // counter-clockwise in uv space, whose v axis points down: u' = cos u + sin v, v' = -sin u +
-// cos v (glTF issue 1563: three.js, Babylon.js, the Sample Viewer; the README's GLSL listing has
-// the other sign, which these tables tell apart).
+// cos v (github.com/KhronosGroup/glTF/issues/1563: three.js, Babylon.js, the Sample Viewer; the
+// README's GLSL listing has the other sign, which these tables tell apart).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Every registered pipeline against matrix on every glTF file of ../shared/corpus at the rest
-// pose (issue 16): PSNR >= 45 dB, the bound of the quantized-frame pipelines (qtangent,
+// pose: PSNR >= 45 dB, the bound of the quantized-frame pipelines (qtangent,
 // motor_q, hybrid), which the float pipelines clear too. barrel.glb is normal-mapped with
 // authored tangents, the case where an int16 frame could show.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Issue 27: compressed geometry decoded at load into the Scene the uncompressed file gives.
+// Compressed geometry decoded at load into the Scene the uncompressed file gives.
 // The compressed files are made here with the codecs' own encoders (tests/support/
 // compressed_gltf.h) from the built-in scenes' .glb bytes, with the bytes they no longer read
 // zeroed. Bounds, from the encoders' quantisation:
@@ -208,7 +208,7 @@ TEST(SceneCompression, MeshoptFiltersDecode) {
   EXPECT_EQ(s.compression.meshoptDecodedBytes, 48u + 16u + 24u);
 }
 
-// A declared count other than the decoded one loads since issue 34 (the decoded geometry, as
+// A declared count other than the decoded one loads (the decoded geometry, as
 // three.js draws it; tests/scene/test_scene_lenient.cpp); a component count that differs is
 // still an error naming the primitive.
 TEST(SceneCompression, DracoComponentMismatchNamesThePrimitive) {

@@ -1,4 +1,4 @@
-// Conformance (issue 17, item 5): valid glTF 2.0 files that tinygltf 2.7 refuses load and give
+// Conformance: valid glTF 2.0 files that tinygltf 2.7 refuses load and give
 // the Scene their plain equivalent gives (pipelines/scene/conformance.h); non-file URIs and
 // minVersion > 2.0 stay errors naming the file; invalid but drawable files load with a counted
 // repair (LoadStats). Each case is one generated file.

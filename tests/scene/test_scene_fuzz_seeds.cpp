@@ -1,4 +1,4 @@
-// The committed fuzz seed corpus, tests/fuzz/seeds (issue 20, item 3): it is what the generator
+// The committed fuzz seed corpus, tests/fuzz/seeds: it is what the generator
 // (tests/fuzz/seed_corpus_scenes.cpp) writes, every seed loads (images decoded) and passes what the
 // fuzzer checks, it covers the variety it claims -- read from the files themselves, not from the
 // generator -- and it stays small.

@@ -1,4 +1,4 @@
-// Hostile input (issue 7, item 4): every case of tests/hostile/hostile_cases.h, loaded from
+// Hostile input: every case of tests/hostile/hostile_cases.h, loaded from
 // memory and from disk, must give a clear error naming the file and the reason, or load with
 // its documented fallback counted in LoadStats -- never crash, hang or allocate without bound.
 //

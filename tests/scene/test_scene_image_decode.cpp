@@ -1,4 +1,4 @@
-// Image decoding (pipelines/scene/image_decode.h, issue 20): header checks against hand-built
+// Image decoding (pipelines/scene/image_decode.h): header checks against hand-built
 // headers, PNG pixels of every colour type and bit depth against values derived by hand from
 // the raw samples written, the same RGBA8 as the previous decoder (stb_image, compiled into
 // this test only, on the images the test generates), JPEG through libjpeg-turbo, and the
@@ -246,8 +246,8 @@ TEST(ImageDecode, HeadersAreCheckedBeforeAnyDecoding) {
   for (size_t n = 0; n < 20; ++n) EXPECT_FALSE(mb::readImageHeader(jpg.data(), n).ok()) << n;
 }
 
-// The fuzzer's finding of issue 20: a GLB with a 1x1 PNG (magenta) and a JPEG whose Huffman
-// table counts sum past 256. stb_image wrote past its table; libjpeg refuses the table.
+// A fuzzer finding (tests/fuzz/regressions/f12): a GLB with a 1x1 PNG (magenta) and a JPEG whose
+// Huffman table counts sum past 256. stb_image wrote past its table; libjpeg refuses the table.
 TEST(ImageDecode, JpegHuffmanFindingIsACountedFallback) {
   const auto path = std::filesystem::path(MB_SOURCE_DIR) / "tests" / "fuzz" / "regressions" / "f12_jpeg_huffman_counts_over_256.glb";
   std::ifstream in(path, std::ios::binary);

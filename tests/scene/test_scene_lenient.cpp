@@ -1,4 +1,4 @@
-// Issue 34, "Lenient where three.js and the Sample Viewer are": invalid files those viewers draw
+// Lenient where three.js and the Sample Viewer are: invalid files those viewers draw
 // load here too, each with its LoadStats counter, and their near relatives that are really broken
 // stay errors with a message that says what is wrong. Every file is written byte by byte here.
 //  - Draco: a declared accessor count other than the decoded one -> the decoded geometry, which

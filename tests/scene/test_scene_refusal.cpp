@@ -1,5 +1,5 @@
 // Files tinygltf 2.7 refuses without a message get the reason from the loader's own reading
-// of the glTF 2.0 schema's required properties (issue 17, item 4), naming the object.
+// of the glTF 2.0 schema's required properties, naming the object.
 #include <gtest/gtest.h>
 
 #include <string>

@@ -1,4 +1,4 @@
-// Helpers shared by the CLI tests of issue 19 (test_cli_options/messages/visibility/readme):
+// Helpers shared by the CLI tests (options, messages, visibility, readme):
 // the shared real-world corpus, byte comparison of image files, and a run that keeps the exit
 // status and the output together.
 #pragma once

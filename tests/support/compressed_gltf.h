@@ -1,4 +1,4 @@
-// Compressed versions of a GLB, made with the codecs' own encoders (issue 27): every triangle
+// Compressed versions of a GLB, made with the codecs' own encoders: every triangle
 // primitive through Draco's encoder (KHR_draco_mesh_compression), every vertex and index
 // bufferView through meshoptimizer's (EXT_meshopt_compression), or every image re-encoded as
 // lossless WebP by OpenImageIO (EXT_texture_webp, the texture naming it only in the extension). The bytes the compressed file no

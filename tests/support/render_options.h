@@ -1,4 +1,4 @@
-// renderFrame with PipelineOptions (e.g. the motor family's morph method, issue 37): create,
+// renderFrame with PipelineOptions (e.g. the motor family's morph method): create,
 // configure, prepare, update, render and read back as harness/render/render_frame.cpp does,
 // framed automatically at `anim`; several states through one prepared pipeline.
 #pragma once
