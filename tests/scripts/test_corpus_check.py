@@ -1,4 +1,4 @@
-"""scripts/corpus-check.sh on a subset of ../shared/corpus-wide (issue 34).
+"""scripts/corpus-check.sh on a subset of ../shared/corpus-wide.
 
 Sixteen real files chosen to cover what broke before: multi-primitive meshes, skins (per-joint
 scales, inner non-uniform scale under a skin), inner non-uniform scale, Draco, WebP, morph
