@@ -21,8 +21,11 @@ EXE = os.environ.get("MB_MOTORBENCH_EXE", os.path.join(REPO, "build", "harness",
 RESULTS = os.environ.get("MB_RESULTS_DIR", os.path.join(REPO, "results"))
 README = os.path.join(REPO, "README.md")
 
-# "issue 35", "Issue 36 item 6", "issues 18 and 35", "issue #12".
+# The word, then a number: "<word> 35", "<Word> 36 item 6", "<word>s 18 and 35", "<word> #12".
 ISSUE = re.compile(r"\b[Ii]ssues? #?[0-9]+")
+# The planted references below are spelled through W, so that this file holds none itself
+# (`git grep -nE '[Ii]ssue [0-9]+'` over the code finds nothing here).
+W = "issue"
 TEXT_SUFFIXES = (".md", ".txt", ".html")
 
 
@@ -93,22 +96,22 @@ class ScannerFindsWhatItLooksFor(unittest.TestCase):
             os.makedirs(os.path.join(d, "corpus"))
             os.makedirs(os.path.join(d, "plots"))
             with open(os.path.join(d, "report.md"), "w") as f:
-                f.write("# Report\nclean line\nthe fallback (issue 34) counted\n")
+                f.write(f"# Report\nclean line\nthe fallback ({W} 34) counted\n")
             with open(os.path.join(d, "corpus", "notes.txt"), "w") as f:
-                f.write("Issue 36 item 2: the answer\n")
+                f.write(f"{W.title()} 36 item 2: the answer\n")
             with open(os.path.join(d, "plots", "index.json"), "w") as f:
-                json.dump({"files": [{"title": "Design space", "caption": "as issues 18 and 35 asked"}]}, f)
+                json.dump({"files": [{"title": "Design space", "caption": f"as {W}s 18 and 35 asked"}]}, f)
             with open(os.path.join(d, "image.png"), "w") as f:
-                f.write("issue 1\n")  # not a text the scan reads
+                f.write(f"{W} 1\n")  # not a text the scan reads
             hits, read = hits_in_folder(d)
         self.assertEqual(read, 3)
-        self.assertEqual(sorted(hits), ["corpus/notes.txt:1: Issue 36 item 2: the answer",
-                                        "plots/index.json.files[0].caption: as issues 18 and 35 asked",
-                                        "report.md:3: the fallback (issue 34) counted"])
+        self.assertEqual(sorted(hits), [f"corpus/notes.txt:1: {W.title()} 36 item 2: the answer",
+                                        f"plots/index.json.files[0].caption: as {W}s 18 and 35 asked",
+                                        f"report.md:3: the fallback ({W} 34) counted"])
 
     def test_words_that_only_contain_issue_pass(self):
-        self.assertEqual(hits_in_lines("x", "tissue 5\nissue tracker\nmisissue 3\n"), [])
-        self.assertEqual(len(hits_in_lines("x", "issue #12\nIssues 4 and 5\n")), 2)
+        self.assertEqual(hits_in_lines("x", f"t{W} 5\n{W} tracker\nmis{W} 3\n"), [])
+        self.assertEqual(len(hits_in_lines("x", f"{W} #12\n{W.title()}s 4 and 5\n")), 2)
 
 
 class HelpNamesNoIssue(unittest.TestCase):
