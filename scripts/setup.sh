@@ -24,6 +24,7 @@ PACKAGES=(
   chromium                          # the report opened in a real browser (tests/cli/test_cli_browser.cpp)
   python3-markdown                  # scripts/screenshot.sh: claims.md's answer block as a page
   fonts-dejavu-core                 # the numbers on diff_legend.png (OpenImageIO's render_text)
+  python3-junitparser python3-xmlschema  # tests/cli: --junit files read by a real consumer and checked by a JUnit XSD
 )
 
 missing=()

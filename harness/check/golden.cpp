@@ -64,11 +64,11 @@ FrameSettings settingsFrom(const json& j) {
 
 }  // namespace
 
-std::vector<Pose> posesFor(const Scene& scene) {
+std::vector<Pose> posesFor(const Scene& scene, int maxAnimations) {
   std::vector<Pose> poses = {{"rest", AnimState{}}};
-  for (int a = 0; a < int(scene.animations.size()) && a < kMaxAnimations; ++a) {
+  for (int a = 0; a < int(scene.animations.size()) && a < maxAnimations; ++a) {
     const Animation& anim = scene.animations[size_t(a)];
-    for (double fraction : {0.35, 0.7}) {
+    for (double fraction : kPoseFractions) {
       float t = float(std::round(fraction * anim.duration * 1000.0) / 1000.0);
       char name[64];
       std::snprintf(name, sizeof name, "-t%.3f", double(t));
@@ -81,6 +81,8 @@ std::vector<Pose> posesFor(const Scene& scene) {
   }
   return poses;
 }
+
+std::string fileSceneName(const std::string& relativePath) { return safe(relativePath); }
 
 std::string fileName(const std::string& scene, const std::string& pose, const std::string& pipeline) {
   return safe(scene) + "." + pose + "." + safe(pipeline) + ".png";
@@ -116,6 +118,10 @@ Result<Manifest> readManifest(const std::string& path) {
     Manifest m;
     for (const auto& [scene, t] : j.at("thresholds").items())
       m.thresholds[scene] = {levelFrom(t.at("exact"), scene + " exact"), levelFrom(t.at("portable"), scene + " portable")};
+    const json sources = j.value("sources", json::object());  // kept alive for the loop
+    for (const auto& [scene, source] : sources.items())
+      m.sources[scene] = {source.at("path").get<std::string>(), source.at("sha256").get<std::string>(),
+                          source.value("resources", std::vector<std::string>{})};
     for (const json& e : j.at("images")) {
       Entry entry;
       entry.file = e.at("file").get<std::string>();
@@ -149,6 +155,15 @@ Status writeManifest(const std::string& path, const Manifest& m) {
   j["thresholds"] = json::object();
   for (const auto& [scene, t] : m.thresholds)
     j["thresholds"][scene] = {{"exact", toJson(t.exact)}, {"portable", toJson(t.portable)}};
+  // Only golden folders of users' files have sources: the built-ins' golden.json stays as it was.
+  if (!m.sources.empty()) {
+    j["sourcesRule"] = "sha256: SHA-256 of the file's bytes, then for each external resource it names (buffers[] "
+                       "and images[] uris, not data: URIs, in that order) a newline, the uri, a newline, its byte "
+                       "count, a newline and its bytes ('missing' for one that cannot be read); a file without any is `sha256sum FILE`. A file "
+                       "whose hash differs is reported as changed, not judged; `check --update` records it again.";
+    for (const auto& [scene, s] : m.sources)
+      j["sources"][scene] = {{"path", s.path}, {"sha256", s.sha256}, {"resources", s.resources}};
+  }
   j["images"] = json::array();
   for (const Entry& e : m.entries)
     j["images"].push_back({{"file", e.file}, {"scene", e.scene}, {"pipeline", e.pipeline},

@@ -33,8 +33,16 @@ struct Pose {
 // The plan: rest pose, plus each animation (the first kMaxAnimations) at 35 % and 70 % of its
 // duration, times rounded to milliseconds so the manifest holds them exactly. Every animation,
 // because built-in scenes add one per case they exist to show (e.g. the tube's candy wrapper).
+// A user's file (check FILE|DIR) keeps its first animation only: one file, rest and two poses.
 constexpr int kMaxAnimations = 4;
-std::vector<Pose> posesFor(const Scene& scene);
+constexpr int kMaxFileAnimations = 1;
+constexpr double kPoseFractions[2] = {0.35, 0.7};
+std::vector<Pose> posesFor(const Scene& scene, int maxAnimations = kMaxAnimations);
+
+// The scene name of a user's file in golden.json and in its image names: its path relative to
+// the folder argument (a file argument: its name) with every character but [A-Za-z0-9_-] as '_'
+// ("props/Fox.glb" -> "props_Fox_glb").
+std::string fileSceneName(const std::string& relativePath);
 
 // "<scene>.<pose>.<pipeline>.png"
 std::string fileName(const std::string& scene, const std::string& pose, const std::string& pipeline);
@@ -58,8 +66,17 @@ struct Entry {
   nlohmann::json view;  // where the camera was (informational)
 };
 
+// What the goldens of a user's file were made from (content_hash.h): a file whose hash differs
+// now is named as changed, not judged against them.
+struct Source {
+  std::string path;                    // relative to the folder argument, as the user sees it
+  std::string sha256;                  // contentHash() when the goldens were recorded
+  std::vector<std::string> resources;  // the external uris in the hash
+};
+
 struct Manifest {
   std::map<std::string, SceneThresholds> thresholds;  // by scene
+  std::map<std::string, Source> sources;              // by scene; files only (built-ins have none)
   std::vector<Entry> entries;
   const Entry* find(const std::string& file) const;
 };

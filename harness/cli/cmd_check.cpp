@@ -7,11 +7,13 @@
 // file). --update re-renders the selection into --golden and rewrites golden.json (keeping its
 // thresholds). --shader-dir runs against a modified copy of shaders/ (sets MB_SHADER_DIR).
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <set>
 
 #include "harness/options/args.h"
@@ -20,8 +22,11 @@
 #include "harness/check/check_report.h"
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
+#include "harness/check/check_inputs.h"
+#include "harness/check/content_hash.h"
 #include "harness/check/golden.h"
 #include "harness/check/golden_device.h"
+#include "harness/check/junit.h"
 #include "harness/render/flip.h"
 #include "harness/render/gpu_option.h"
 #include "harness/render/render_frame.h"
@@ -44,13 +49,15 @@ std::string joined(const std::vector<std::string>& v) {
 }
 
 struct Selection {
-  std::vector<std::string> scenes, pipelines;
-  std::string goldenDir, outDir;
+  std::vector<golden::CheckInput> inputs;  // built-in scenes and users' files (check_inputs.h)
+  std::vector<std::string> pipelines;
+  std::string goldenDir, outDir, junitPath;
+  bool quiet = false;  // only failures, errors, changed files and the summary line
   // The device's goldens (golden_device.h): which folder goldenDir is, and the llvmpipe one.
   golden::GoldenChoice goldens;
   std::string llvmpipeGoldenDir;
   std::string renderer, drawnOn;  // GL_RENDERER; the same with the device (describeGl)
-  Shard shard;  // --shard I/N: this run checks its part of `scenes` only
+  Shard shard;  // --shard I/N: this run checks its part of `inputs` only
 };
 
 // The selected pipelines that draw `scene`'s space (glTF pipelines for glTF scenes, s3_* for
@@ -61,6 +68,11 @@ std::vector<std::string> pipelinesFor(const Scene& scene, const Selection& sel) 
   for (const std::string& p : sel.pipelines)
     if (std::find(own.begin(), own.end(), p) != own.end()) out.push_back(p);
   return out;
+}
+
+// Built-ins keep every animation (each shows a case); a user's file its first one.
+std::vector<golden::Pose> posesOf(const Scene& scene, const golden::CheckInput& input) {
+  return golden::posesFor(scene, input.file ? golden::kMaxFileAnimations : golden::kMaxAnimations);
 }
 
 // Compares one planned golden; fills `item` (and writes its images into outDir unless clean).
@@ -127,6 +139,101 @@ void checkOne(const Scene& scene, const golden::Manifest& manifest,
     return error(f.error());
 }
 
+// A console line of the run: everything, or with --quiet only what fails the run.
+void printItem(const Selection& sel, const CheckItem& item) {
+  if (sel.quiet && (item.outcome == Outcome::Pass || item.outcome == Outcome::Warn)) return;
+  std::printf("%s\n", consoleLine(item).c_str());
+  std::fflush(stdout);
+}
+
+CheckItem planned(const golden::CheckInput& input, const std::string& pose, const std::string& pipeline) {
+  CheckItem item;
+  item.file = golden::fileName(input.scene, pose, pipeline);
+  item.scene = input.scene;
+  item.source = input.shown;
+  item.pipeline = pipeline;
+  item.pose = pose;
+  return item;
+}
+
+// A user's file whose bytes differ from those its goldens were made from: each of its goldens
+// (golden.json's, for the selected pipelines) is recorded as not judged. False when the file
+// is unchanged (or has no recorded hash: a folder of goldens made before hashes were kept).
+bool recordIfChanged(const golden::CheckInput& input, const golden::ContentHash& now, const golden::Manifest& manifest,
+                     const Selection& sel, CheckRun& run) {
+  const auto recorded = manifest.sources.find(input.scene);
+  if (recorded == manifest.sources.end() || recorded->second.sha256 == now.sha256) return false;
+  ChangedSource changed{input.scene, input.shown, recorded->second.sha256, now.sha256, 0};
+  for (const golden::Entry& e : manifest.entries) {
+    if (e.scene != input.scene || std::find(sel.pipelines.begin(), sel.pipelines.end(), e.pipeline) == sel.pipelines.end())
+      continue;
+    CheckItem item = planned(input, e.pose, e.pipeline);
+    item.outcome = Outcome::Changed;
+    item.reason = input.shown + " changed since its goldens were recorded: not judged (run check --update)";
+    run.items.push_back(std::move(item));
+    ++changed.images;
+  }
+  std::printf("%s\n", changedLine(changed).c_str());
+  run.changed.push_back(std::move(changed));
+  return true;
+}
+
+// Checks every planned golden of one input into `run`.
+void checkInput(const golden::CheckInput& input, const golden::Manifest& manifest, const Selection& sel, CheckRun& run,
+                std::set<std::string>& rendererNotes, std::set<std::string>& plannedFiles) {
+  golden::SceneThresholds thresholds = golden::defaultThresholds(input.scene);
+  if (auto t = manifest.thresholds.find(input.scene); t != manifest.thresholds.end()) thresholds = t->second;
+  else if (!input.file) run.notes.push_back(input.scene + ": no thresholds in golden.json, using the defaults");
+  auto errorItem = [&](const std::string& why) {
+    CheckItem item = planned(input, "", "");
+    item.file = input.scene;
+    item.outcome = Outcome::Error;
+    item.reason = why;
+    printItem(sel, item);
+    run.items.push_back(std::move(item));
+  };
+  if (input.file) {
+    auto hash = golden::contentHash(input.spec);
+    if (!hash) return errorItem(hash.error());
+    if (recordIfChanged(input, *hash, manifest, sel, run)) return;
+  }
+  auto scene = loadScene(input.spec);
+  if (!scene) return errorItem(scene.error());
+  for (const golden::Pose& pose : posesOf(*scene, input)) {
+    for (const std::string& pipeline : pipelinesFor(*scene, sel)) {
+      CheckItem item = planned(input, pose.name, pipeline);
+      plannedFiles.insert(item.file);
+      const auto start = std::chrono::steady_clock::now();
+      checkOne(*scene, manifest, thresholds, sel, run, rendererNotes, item);
+      item.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      printItem(sel, item);
+      run.items.push_back(std::move(item));
+    }
+  }
+}
+
+// Run-wide notes on what golden.json holds but this run did not plan.
+void noteUnplanned(const golden::Manifest& manifest, const std::vector<golden::CheckInput>& mine,
+                   const Selection& sel, const std::set<std::string>& plannedFiles, CheckRun& run) {
+  std::set<std::string> scenes, changed;
+  for (const golden::CheckInput& in : mine) scenes.insert(in.scene);
+  for (const ChangedSource& c : run.changed) changed.insert(c.scene);
+  std::set<std::string> pipelines(sel.pipelines.begin(), sel.pipelines.end());
+  for (const golden::Entry& e : manifest.entries)
+    if (scenes.count(e.scene) && !changed.count(e.scene) && pipelines.count(e.pipeline) && !plannedFiles.count(e.file))
+      run.notes.push_back(e.file + ": in golden.json but no longer planned (stale; --update removes it)");
+  const bool anyFile = std::any_of(sel.inputs.begin(), sel.inputs.end(), [](const auto& in) { return in.file; });
+  std::vector<std::string> absent;
+  std::set<std::string> selected;
+  for (const golden::CheckInput& in : sel.inputs) selected.insert(in.scene);
+  for (const auto& [scene, source] : manifest.sources)
+    if (!selected.count(scene)) absent.push_back(source.path);
+  if (anyFile && !absent.empty())
+    run.notes.push_back(std::to_string(absent.size()) + " file(s) with goldens in golden.json are not among the inputs "
+                        "(first: " + absent.front() + "); a file removed from the folder keeps its goldens until its "
+                        "entries are deleted or the folder is recorded into a fresh --golden folder");
+}
+
 int check(const Selection& sel) {
   const std::string manifestPath = (fs::path(sel.goldenDir) / golden::kManifest).string();
   auto manifest = golden::readManifest(manifestPath);
@@ -146,61 +253,79 @@ int check(const Selection& sel) {
   if (againstLlvmpipe)
     run.notes.push_back(golden::describeChoice(sel.goldens, sel.llvmpipeGoldenDir, sel.renderer, sel.drawnOn));
   run.shaderDir = gl::shaderDir();
-  run.shard = {{"index", sel.shard.index}, {"count", sel.shard.count}, {"inputs", sel.scenes}};
-  std::vector<std::string> mine;
-  for (size_t k : shardPositions(sel.scenes, sel.shard)) mine.push_back(sel.scenes[k]);
-  if (const std::string note = emptyShardNote(sel.shard, sel.scenes.size(), mine.size()); !note.empty())
+  std::vector<std::string> names;
+  for (const golden::CheckInput& in : sel.inputs) names.push_back(in.scene);
+  run.shard = {{"index", sel.shard.index}, {"count", sel.shard.count}, {"inputs", names}};
+  std::vector<golden::CheckInput> mine;
+  for (size_t k : shardPositions(names, sel.shard)) mine.push_back(sel.inputs[k]);
+  if (const std::string note = emptyShardNote(sel.shard, names.size(), mine.size()); !note.empty())
     commandNotes("check", {note});
-  std::set<std::string> rendererNotes, planned;
-  Progress progress("check", "scenes checked", mine.size(), false);
-  for (const std::string& name : mine) {
-    auto scene = loadScene(name);
-    golden::SceneThresholds thresholds = golden::defaultThresholds(name);
-    if (auto t = manifest->thresholds.find(name); t != manifest->thresholds.end()) thresholds = t->second;
-    else run.notes.push_back(name + ": no thresholds in golden.json, using the defaults");
-    if (!scene) {
-      run.items.push_back({name, name, "", "", Outcome::Error, "", false, {}, scene.error(), "", "", ""});
-      std::printf("%s\n", consoleLine(run.items.back()).c_str());
-      progress.done(name + ": error");
-      continue;
-    }
-    for (const golden::Pose& pose : golden::posesFor(*scene)) {
-      for (const std::string& pipeline : pipelinesFor(*scene, sel)) {
-        CheckItem item;
-        item.file = golden::fileName(name, pose.name, pipeline);
-        item.scene = name;
-        item.pipeline = pipeline;
-        item.pose = pose.name;
-        planned.insert(item.file);
-        checkOne(*scene, *manifest, thresholds, sel, run, rendererNotes, item);
-        std::printf("%s\n", consoleLine(item).c_str());
-        std::fflush(stdout);
-        run.items.push_back(std::move(item));
-      }
-    }
-    progress.done(name);
+  std::set<std::string> rendererNotes, plannedFiles;
+  std::optional<Progress> progress;
+  if (!sel.quiet) progress.emplace("check", "scenes checked", mine.size(), false);
+  for (const golden::CheckInput& input : mine) {
+    checkInput(input, *manifest, sel, run, rendererNotes, plannedFiles);
+    if (progress) progress->done(input.shown);
   }
-  std::set<std::string> scenes(mine.begin(), mine.end());
-  std::set<std::string> pipelines(sel.pipelines.begin(), sel.pipelines.end());
-  for (const golden::Entry& e : manifest->entries)
-    if (scenes.count(e.scene) && pipelines.count(e.pipeline) && !planned.count(e.file))
-      run.notes.push_back(e.file + ": in golden.json but no longer planned (stale; --update removes it)");
+  noteUnplanned(*manifest, mine, sel, plannedFiles, run);
 
   Status written = writeCheckReport(sel.outDir, run);
-  int counts[4] = {0, 0, 0, 0};
-  for (const CheckItem& it : run.items) ++counts[int(it.outcome)];
-  for (const std::string& n : run.notes) std::printf("warning: %s\n", n.c_str());
-  std::printf("check: %zu images: %d passed, %d warned, %d failed, %d errors\n", run.items.size(),
-              counts[0], counts[1], counts[2], counts[3]);
-  if (againstLlvmpipe && counts[2] > 0)
+  Status junit = sel.junitPath.empty() ? Status{} : writeJunit(sel.junitPath, "motorbench check", junitCases(run));
+  if (!sel.quiet)
+    for (const std::string& n : run.notes) std::printf("warning: %s\n", n.c_str());
+  std::printf("%s\n", summaryLine(run).c_str());
+  const int failedImages = int(std::count_if(run.items.begin(), run.items.end(),
+                                             [](const CheckItem& it) { return it.outcome == Outcome::Fail; }));
+  if (againstLlvmpipe && failedImages > 0 && !sel.quiet)
     std::printf("note: %d of %zu images exceed the device-tolerant thresholds against llvmpipe's goldens: a device "
                 "difference or a real regression; look at the diffs in summary.html, and where this device is right "
                 "keep its own goldens with `check --update` on it\n",
-                counts[2], run.items.size());
+                failedImages, run.items.size());
   if (!written) return commandError("check", written.error());
-  std::printf("report: %s\n", (fs::path(sel.outDir) / "summary.html").string().c_str());
-  if (counts[3] > 0) return 2;
-  return counts[2] > 0 ? 1 : 0;
+  if (!junit) return commandError("check", junit.error());
+  if (!sel.quiet) std::printf("report: %s\n", (fs::path(sel.outDir) / "summary.html").string().c_str());
+  return exitCode(run);
+}
+
+// Renders one input's goldens into `next` (and its source's hash, for a file).
+Status updateInput(const golden::CheckInput& input, const Selection& sel, golden::Manifest& next, int& changed,
+                   int& same) {
+  if (input.file) {
+    auto hash = golden::contentHash(input.spec);
+    if (!hash) return Status::fail(hash.error());
+    next.sources[input.scene] = {input.shown, hash->sha256, hash->resources};
+  }
+  auto scene = loadScene(input.spec);
+  if (!scene) return Status::fail(scene.error());
+  if (!next.thresholds.count(input.scene)) next.thresholds[input.scene] = golden::defaultThresholds(input.scene);
+  for (const golden::Pose& pose : posesOf(*scene, input)) {
+    for (const std::string& pipeline : pipelinesFor(*scene, sel)) {
+      golden::Entry e;
+      e.file = golden::fileName(input.scene, pose.name, pipeline);
+      e.scene = input.scene;
+      e.pipeline = pipeline;
+      e.pose = pose.name;
+      e.settings.anim = pose.anim;
+      e.settings.width = golden::kWidth;
+      e.settings.height = golden::kHeight;
+      auto frame = renderFrame(*scene, pipeline, e.settings);
+      if (!frame) return Status::fail(frame.error());
+      e.glRenderer = frame->glRenderer;
+      e.glVersion = frame->glVersion;
+      e.glBackend = frame->glBackend;
+      e.view = toJson(frame->view);
+      const std::string path = (fs::path(sel.goldenDir) / e.file).string();
+      auto before = fs::exists(path) ? readImage(path) : Result<RgbaImage>::fail("");
+      bool unchanged = before && before->width == frame->image.width &&
+                       before->height == frame->image.height && before->rgba == frame->image.rgba;
+      Status s = writeImage(path, frame->image);
+      if (!s) return s;
+      if (!sel.quiet) std::printf("%s  %s\n", unchanged ? "same   " : "written", path.c_str());
+      (unchanged ? same : changed)++;
+      next.entries.push_back(std::move(e));
+    }
+  }
+  return {};
 }
 
 int update(const Selection& sel) {
@@ -216,55 +341,31 @@ int update(const Selection& sel) {
     auto m = golden::readManifest(thresholdsFrom);
     if (!m) return fail(m.error() + " (fix or delete it; --update does not discard thresholds silently)");
     old = m.take();
-    if (thresholdsFrom != manifestPath) old.entries.clear();
+    if (thresholdsFrom != manifestPath) old.entries.clear(), old.sources.clear();
   }
   std::error_code ec;
   fs::create_directories(sel.goldenDir, ec);
   if (ec) return fail(sel.goldenDir + ": cannot create folder: " + ec.message());
-  std::set<std::string> scenes(sel.scenes.begin(), sel.scenes.end());
+  std::set<std::string> scenes;
+  for (const golden::CheckInput& in : sel.inputs) scenes.insert(in.scene);
   std::set<std::string> pipelines(sel.pipelines.begin(), sel.pipelines.end());
   golden::Manifest next;
   next.thresholds = old.thresholds;
+  next.sources = old.sources;
   for (const golden::Entry& e : old.entries)
     if (!scenes.count(e.scene) || !pipelines.count(e.pipeline)) next.entries.push_back(e);
   int changed = 0, same = 0;
-  for (const std::string& name : sel.scenes) {
-    auto scene = loadScene(name);
-    if (!scene) return fail(scene.error());
-    if (!next.thresholds.count(name)) next.thresholds[name] = golden::defaultThresholds(name);
-    for (const golden::Pose& pose : golden::posesFor(*scene)) {
-      for (const std::string& pipeline : pipelinesFor(*scene, sel)) {
-        golden::Entry e;
-        e.file = golden::fileName(name, pose.name, pipeline);
-        e.scene = name;
-        e.pipeline = pipeline;
-        e.pose = pose.name;
-        e.settings.anim = pose.anim;
-        e.settings.width = golden::kWidth;
-        e.settings.height = golden::kHeight;
-        auto frame = renderFrame(*scene, pipeline, e.settings);
-        if (!frame) return fail(frame.error());
-        e.glRenderer = frame->glRenderer;
-        e.glVersion = frame->glVersion;
-        e.glBackend = frame->glBackend;
-        e.view = toJson(frame->view);
-        const std::string path = (fs::path(sel.goldenDir) / e.file).string();
-        auto before = fs::exists(path) ? readImage(path) : Result<RgbaImage>::fail("");
-        bool unchanged = before && before->width == frame->image.width &&
-                         before->height == frame->image.height && before->rgba == frame->image.rgba;
-        Status s = writeImage(path, frame->image);
-        if (!s) return fail(s.error());
-        std::printf("%s  %s\n", unchanged ? "same   " : "written", path.c_str());
-        (unchanged ? same : changed)++;
-        next.entries.push_back(std::move(e));
-      }
-    }
+  std::optional<Progress> progress;
+  if (!sel.quiet) progress.emplace("check --update", "scenes recorded", sel.inputs.size(), false);
+  for (const golden::CheckInput& input : sel.inputs) {
+    if (Status s = updateInput(input, sel, next, changed, same); !s) return fail(s.error());
+    if (progress) progress->done(input.shown);
   }
   // Images of the selection that the plan no longer makes are stale: remove them.
   for (const golden::Entry& e : old.entries)
     if (scenes.count(e.scene) && pipelines.count(e.pipeline) && !next.find(e.file)) {
       fs::remove(fs::path(sel.goldenDir) / e.file, ec);
-      std::printf("removed  %s (no longer planned)\n", (fs::path(sel.goldenDir) / e.file).string().c_str());
+      if (!sel.quiet) std::printf("removed  %s (no longer planned)\n", (fs::path(sel.goldenDir) / e.file).string().c_str());
     }
   std::sort(next.entries.begin(), next.entries.end(),
             [](const golden::Entry& a, const golden::Entry& b) { return a.file < b.file; });
@@ -274,41 +375,88 @@ int update(const Selection& sel) {
   return 0;
 }
 
-int runCheck(const std::vector<std::string>& argv) {
-  Args args(argv, {{"golden", "scenes", "pipelines", "out", "o", "shader-dir", "shard", "gpu"}, {"update"}, {}});
-  auto fail = [](const std::string& message) { return commandError("check", message); };
-  if (!args.error().empty()) return fail(args.error());
-  if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
-  if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());
-  Selection sel;
-  sel.goldenDir = args.get("golden", "tests/golden");
-  sel.outDir = args.get("out", args.get("o", "out/check"));
-  if (auto dir = args.get("shader-dir")) {
-    if (!fs::is_directory(*dir)) return fail("--shader-dir " + *dir + ": not a folder");
-    // shaderDir() reads MB_SHADER_DIR on every load, so this redirects every pipeline.
-    ::setenv("MB_SHADER_DIR", fs::absolute(*dir).string().c_str(), 1);
-  }
-  std::vector<std::string> builtins = builtinSceneNames();  // glTF built-ins, golden-only ones, curved ones
+// The built-in scenes `check` runs without arguments: glTF built-ins, golden-only ones, curved ones.
+std::vector<std::string> defaultScenes() {
+  std::vector<std::string> builtins = builtinSceneNames();
   for (const std::string& g : goldenOnlySceneNames()) builtins.push_back(g);
   for (const std::string& c : curvedSceneNames()) builtins.push_back(c);
-  sel.scenes = args.has("scenes") ? splitList(args.get("scenes", "")) : builtins;
-  for (const std::string& s : sel.scenes)
-    if (!isBuiltinScene(s))
-      return fail("--scenes: '" + s + "' is not a built-in scene (" + joined(builtins) + ")");
-  // Each scene is drawn by the selected pipelines of its space (pipelinesFor).
+  return builtins;
+}
+
+// The registered, drawable pipelines of --pipelines (default: all); "" or the error.
+std::string selectPipelines(const Args& args, Selection& sel) {
   std::vector<std::string> requested =
       args.has("pipelines") ? splitList(args.get("pipelines", "")) : allPipelineNames();
   const std::vector<std::string> registered = allPipelineNames();
   for (const std::string& p : requested) {
     if (std::find(registered.begin(), registered.end(), p) == registered.end())
-      return fail("--pipelines: unknown pipeline '" + p + "' (registered: " + joined(registered) + ")");
+      return "--pipelines: unknown pipeline '" + p + "' (registered: " + joined(registered) + ")";
     if (!createPipeline(p)) {  // registered placeholder: nothing to render yet
-      std::printf("note: pipeline '%s' is a placeholder; skipped\n", p.c_str());
+      if (!sel.quiet) std::printf("note: pipeline '%s' is a placeholder; skipped\n", p.c_str());
       continue;
     }
     sel.pipelines.push_back(p);
   }
-  if (sel.scenes.empty() || sel.pipelines.empty()) return fail("nothing selected (no scenes or pipelines)");
+  return "";
+}
+
+// Where the goldens are, and whether that folder can be used: "" or the error.
+std::string goldenFolderError(const Args& args, const Selection& sel) {
+  const bool anyFile = std::any_of(sel.inputs.begin(), sel.inputs.end(), [](const auto& in) { return in.file; });
+  // A user's files never fall back to the project's own goldens: they are not there, and
+  // --update would write the user's images into motorbench's tests/golden.
+  if (anyFile && !args.has("golden"))
+    return "files and folders need --golden DIR: the folder that keeps their goldens (e.g. goldens/ in your "
+           "repository; record it once with --update). The default, tests/golden, holds motorbench's own scenes only";
+  // The default --golden is relative to the repository root. Elsewhere, point to --golden
+  // instead of letting --update create goldens in the wrong place (or suggesting it).
+  if (!args.has("golden") && !fs::exists(fs::path("tests/golden") / golden::kManifest))
+    return "tests/golden/" + std::string(golden::kManifest) + " not found under " + fs::current_path().string() +
+           ": run check from the repository root, or pass --golden DIR (the folder holding " + golden::kManifest +
+           ", e.g. --golden /path/to/motorbench/tests/golden)";
+  if (!args.has("golden") || args.has("update") || fs::exists(fs::path(sel.goldenDir) / golden::kManifest)) return "";
+  if (anyFile)
+    return "--golden " + sel.goldenDir + ": no " + golden::kManifest + " there: record the goldens of these files "
+           "first, with a build you trust: motorbench check FILE|DIR... --golden " + sel.goldenDir + " --update";
+  // A --golden folder without golden.json is the wrong folder: --update there would make a golden
+  // set of this renderer's own images, so the check would compare the renderer with itself.
+  return "--golden " + sel.goldenDir + ": not a golden folder (no " + golden::kManifest + " there). A golden folder holds " +
+         golden::kManifest + " (the thresholds and the list of images with the GL renderer that made them) and one PNG "
+         "per scene, pose and pipeline, e.g. tests/golden of the motorbench repository; pass that folder. Do not make "
+         "one here with --update: goldens rendered by the renderer under test would compare it with itself";
+}
+
+int runCheck(const std::vector<std::string>& argv) {
+  Args args(argv, {{"golden", "scenes", "pipelines", "out", "o", "shader-dir", "shard", "gpu", "junit"},
+                   {"update", "quiet"},
+                   {}});
+  auto fail = [](const std::string& message) { return commandError("check", message); };
+  if (!args.error().empty()) return fail(args.error());
+  if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());
+  Selection sel;
+  sel.quiet = args.has("quiet");
+  sel.goldenDir = args.get("golden", "tests/golden");
+  sel.outDir = args.get("out", args.get("o", "out/check"));
+  sel.junitPath = args.get("junit", "");
+  if (auto dir = args.get("shader-dir")) {
+    if (!fs::is_directory(*dir)) return fail("--shader-dir " + *dir + ": not a folder");
+    // shaderDir() reads MB_SHADER_DIR on every load, so this redirects every pipeline.
+    ::setenv("MB_SHADER_DIR", fs::absolute(*dir).string().c_str(), 1);
+  }
+  const std::vector<std::string> builtins = defaultScenes();
+  std::vector<std::string> named = args.positional();
+  for (const std::string& s : splitList(args.get("scenes", ""))) {
+    if (!isBuiltinScene(s))
+      return fail("--scenes: '" + s + "' is not a built-in scene (" + joined(builtins) +
+                  "); a file or folder goes without --scenes: motorbench check FILE|DIR --golden DIR");
+    named.push_back(s);
+  }
+  if (!args.has("scenes") && args.positional().empty()) named = builtins;
+  auto inputs = golden::checkInputs(named);
+  if (!inputs) return fail(inputs.error());
+  sel.inputs = inputs.take();
+  if (std::string e = selectPipelines(args, sel); !e.empty()) return fail(e);
+  if (sel.inputs.empty() || sel.pipelines.empty()) return fail("nothing selected (no scenes or pipelines)");
   if (auto text = args.get("shard")) {
     if (args.has("update")) return fail("--shard checks; --update writes every golden in one run");
     std::string error;
@@ -316,25 +464,14 @@ int runCheck(const std::vector<std::string>& argv) {
     if (!shard) return fail(error);
     sel.shard = *shard;
   }
-  // The default --golden is relative to the repository root. Elsewhere, point to --golden
-  // instead of letting --update create goldens in the wrong place (or suggesting it).
-  if (!args.has("golden") && !fs::exists(fs::path("tests/golden") / golden::kManifest))
-    return fail("tests/golden/" + std::string(golden::kManifest) + " not found under " + fs::current_path().string() +
-                ": run check from the repository root, or pass --golden DIR (the folder holding " +
-                golden::kManifest + ", e.g. --golden /path/to/motorbench/tests/golden)");
-  // A --golden folder without golden.json is the wrong folder: --update there would make a golden
-  // set of this renderer's own images, so the check would compare the renderer with itself.
-  if (args.has("golden") && !args.has("update") && !fs::exists(fs::path(sel.goldenDir) / golden::kManifest))
-    return fail("--golden " + sel.goldenDir + ": not a golden folder (no " + golden::kManifest +
-                " there). A golden folder holds " + golden::kManifest +
-                " (the thresholds and the list of images with the GL renderer that made them) and one PNG per "
-                "scene, pose and pipeline, e.g. tests/golden of the motorbench repository; pass that folder. "
-                "Do not make one here with --update: goldens rendered by the renderer under test would "
-                "compare it with itself");
-  // The output folder before the first render (checking writes there; --update does not).
+  if (std::string e = goldenFolderError(args, sel); !e.empty()) return fail(e);
+  // The outputs before the first render (checking writes there; --update does not).
   if (!args.has("update"))
     if (Status ok = prepareOutputFolder("--out", sel.outDir, "images of failures and warnings, summary.html, check.json"); !ok)
       return fail(ok.error());
+  if (args.has("junit") && args.has("update")) return fail("--junit reports a check; --update records goldens");
+  if (!sel.junitPath.empty())
+    if (Status ok = prepareOutputFile("--junit", sel.junitPath); !ok) return fail(ok.error());
   // Which goldens this device is checked against (or, updating, writes): golden_device.h.
   auto ctx = gl::sharedContext();
   if (!ctx) return fail(ctx.error());
@@ -345,7 +482,8 @@ int runCheck(const std::vector<std::string>& argv) {
       fs::exists(fs::path(golden::deviceGoldenDir(sel.goldenDir, sel.renderer)) / golden::kManifest);
   sel.goldens = golden::chooseGoldens(sel.goldenDir, sel.renderer, devicePresent, args.has("update"));
   sel.goldenDir = sel.goldens.dir;
-  std::printf("%s\n", golden::describeChoice(sel.goldens, sel.llvmpipeGoldenDir, sel.renderer, sel.drawnOn).c_str());
+  if (!sel.quiet)
+    std::printf("%s\n", golden::describeChoice(sel.goldens, sel.llvmpipeGoldenDir, sel.renderer, sel.drawnOn).c_str());
   return args.has("update") ? update(sel) : check(sel);
 }
 
@@ -353,17 +491,40 @@ int runCheck(const std::vector<std::string>& argv) {
 }  // namespace mb
 
 MB_COMMAND(check, "check",
-           "[--golden DIR] [--scenes a,b] [--pipelines p,q] [--out DIR] [--shader-dir DIR] [--update] [--shard I/N] "
-           "[--gpu auto|llvmpipe|N]",
-           "compare renders with the golden images (exit 1 on a threshold, 2 on a missing golden)",
+           "[FILE|DIR|SCENE ...] [--golden DIR] [--scenes a,b] [--pipelines p,q] [--out DIR] [--shader-dir DIR] "
+           "[--update] [--shard I/N] [--junit FILE] [--quiet] [--gpu auto|llvmpipe|N]",
+           "compare renders of built-in scenes or your own glTF files with their golden images (exit 0 pass, 1 a "
+           "threshold exceeded or a file changed, 2 an error)",
            mb::runCheck);
 MB_COMMAND_HELP(check, "check",
-               "  --golden DIR       the golden folder: golden.json + one PNG per scene, pose and pipeline\n"
-               "                     (default tests/golden from the repository root)\n"
-               "  --scenes a,b       only these scenes;  --pipelines p,q  only these pipelines\n"
-               "  --out DIR          actual, expected and diff images of failures, summary.html, check.json\n"
-               "  --update           re-render the selection into --golden and rewrite golden.json\n"
-               "  --shader-dir DIR   run against a modified copy of shaders/\n"
-               "  --shard I/N        only every N-th golden from the I-th\n"
-               MB_GPU_OPTION_HELP,
-                "motorbench check --scenes normal_torus --out out/check", true);
+               "  FILE|DIR|SCENE...  what to check: .gltf/.glb files, folders (their .gltf/.glb files, recursively,\n"
+               "                     sorted) and built-in scene names (default: every built-in scene). A file's\n"
+               "                     goldens are named by its path relative to the folder given (a file given\n"
+               "                     alone: its name), [A-Za-z0-9_-] kept and the rest as '_' (props/Fox.glb ->\n"
+               "                     props_Fox_glb.rest.motor.png); poses: rest, and the file's first animation at\n"
+               "                     35 % and 70 % of its duration (built-ins: their first 4 animations), each\n"
+               "                     pose's animation and time in golden.json; size 160x120\n"
+               "  --golden DIR       the golden folder: golden.json + one PNG per scene, pose and pipeline (default\n"
+               "                     tests/golden from the repository root, motorbench's own scenes; required for\n"
+               "                     files and folders: your goldens live in your folder). Per device: its\n"
+               "                     devices/<GL_RENDERER slug>/ subfolder when there is one\n"
+               "  --scenes a,b       built-in scenes, as the arguments (default: all of them when no argument)\n"
+               "  --pipelines p,q    only these pipelines (default: every pipeline of each scene's space)\n"
+               "  --out DIR          actual, expected, diff and FLIP images of failures and warnings, summary.html,\n"
+               "                     check.json (default out/check)\n"
+               "  --update           render the selection into --golden and rewrite golden.json (keeping its\n"
+               "                     thresholds; a file's content hash, SHA-256 of its bytes and its external\n"
+               "                     .bin/images, recorded with it)\n"
+               "  --shader-dir DIR   run against a modified copy of shaders/ (default: the build's shaders)\n"
+               "  --shard I/N        only every N-th scene from the I-th (default 1/1)\n"
+               "  --junit FILE       JUnit XML: one test case per scene, pose and pipeline; failures and errors\n"
+               "                     with their reason (default: none written)\n"
+               "  --quiet            print only failures, errors, changed files and the summary line\n"
+               MB_GPU_OPTION_HELP
+               "  Thresholds: golden.json's per scene; a file's default as a built-in's (exact: one 8-bit step;\n"
+               "  portable, on another GL: 0.02 on up to 1 % of pixels). A file whose content hash differs from\n"
+               "  the recorded one is named CHANGED and its images not judged.\n"
+               "  Exit 0 every image passed (warnings allowed), 1 an image exceeded its thresholds or a file changed\n"
+               "  since its goldens were recorded, 2 an error (a missing golden, a file that does not load, a bad\n"
+               "  option).\n",
+                "motorbench check assets/ --golden goldens/ --junit out/junit.xml --quiet", true);

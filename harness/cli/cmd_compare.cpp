@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "harness/check/junit.h"
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
 #include "harness/options/args.h"
@@ -152,10 +153,23 @@ json judgedJson(const PairVerdict& v) {
   return {{"applies", v.skinApplies}, {"byOwnMethod", v.byOwnMethod}, {"pipelines", pipelines}};
 }
 
+// "rest" or "anim 0 'Walk' t=0.500": the frame compared, for the JUnit case's name.
+std::string frameName(const Scene& scene, const FrameSettings& settings) {
+  if (settings.anim.anim < 0 || size_t(settings.anim.anim) >= scene.animations.size()) return "rest";
+  char b[64];
+  std::snprintf(b, sizeof b, "' t=%.3f", double(settings.anim.time));
+  return "anim " + std::to_string(settings.anim.anim) + " '" + scene.animations[size_t(settings.anim.anim)].name + b;
+}
+
 int runCompare(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("compare", message); };
-  Args args(argv, sceneCommandOptions({"pipelines", "fail", "failpercent", "hardfail"}));
+  Args args(argv, sceneCommandOptions({"pipelines", "fail", "failpercent", "hardfail", "junit"}, {"quiet"}));
   if (!args.error().empty()) return fail(args.error());
+  const bool quiet = args.has("quiet");
+  const std::string junitPath = args.get("junit", "");
+  auto notes = [quiet](const std::vector<std::string>& lines) {
+    if (!quiet) commandNotes("compare", lines);
+  };
   // Everything about the options is checked before the (slow) load and render.
   if (args.has("pipelines")) {
     const std::vector<std::string> given = splitList(args.get("pipelines", ""));
@@ -178,9 +192,26 @@ int runCompare(const std::vector<std::string>& argv) {
     if (!dir.empty())
       if (Status ok = prepareOutputFolder("-o", dir, "A.png, B.png, diff.png, diff_legend.png, flip.png, metrics.json"); !ok)
         return fail(ok.error());
+    if (!junitPath.empty())
+      if (Status ok = prepareOutputFile("--junit", junitPath); !ok) return fail(ok.error());
   }
+  // The JUnit file's one case: classname the scene, name "A vs B <frame>"; an error after the
+  // options is its error case.
+  JunitCase junit{"compare", "", 0, JunitCase::Kind::Error, "", ""};
+  if (!args.positional().empty()) junit.classname = args.positional()[0];
+  auto writeCase = [&]() {
+    if (Status w = junitPath.empty() ? Status{} : writeJunit(junitPath, "motorbench compare", {junit}); !w)
+      return fail(w.error());
+    return 0;
+  };
+  auto error = [&](const std::string& message) {
+    junit.kind = JunitCase::Kind::Error;
+    junit.message = message;
+    writeCase();
+    return fail(message);
+  };
   auto cmd = parseSceneCommand(args, "DIR");
-  if (!cmd) return fail(cmd.error());
+  if (!cmd) return error(cmd.error());
   const std::string& dir = cmd->output;
   const Scene& scene = cmd->scene;
   const FrameSettings& settings = cmd->settings;
@@ -189,27 +220,28 @@ int runCompare(const std::vector<std::string>& argv) {
   std::vector<std::string> pair = pipelineNames(scene.curved.space);
   pair.resize(2);
   std::vector<std::string> names = args.has("pipelines") ? splitList(args.get("pipelines", "")) : pair;
-  if (names.size() != 2) return fail("--pipelines needs exactly two names, e.g. matrix,motor");
-  commandNotes("compare", cmd->notes);
-  commandNotes("compare", loaderFallbackLines(scene));
-  commandNotes("compare", unsupportedLines(scene));
-  commandNotes("compare", describeFrame(scene, settings));
+  if (names.size() != 2) return error("--pipelines needs exactly two names, e.g. matrix,motor");
+  junit.name = names[0] + " vs " + names[1] + " " + frameName(scene, settings);
+  notes(cmd->notes);
+  notes(loaderFallbackLines(scene));
+  notes(unsupportedLines(scene));
+  notes(describeFrame(scene, settings));
 
   std::vector<Frame> frames;
   for (const std::string& name : names) {
     auto frame = renderFrame(scene, name, settings);
-    if (!frame) return fail(frame.error());
-    commandNotes("compare", pipelineFallbackLines(name, frame->stats));
+    if (!frame) return error(frame.error());
+    notes(pipelineFallbackLines(name, frame->stats));
     frames.push_back(frame.take());
   }
-  commandNotes("compare", {"drawn on " + describeGl(frames[0].gl) + " (both pipelines: one process, one device)"});
+  notes({"drawn on " + describeGl(frames[0].gl) + " (both pipelines: one process, one device)"});
   auto metrics = compareImages(frames[0].image, frames[1].image);
-  if (!metrics) return fail(metrics.error());
+  if (!metrics) return error(metrics.error());
   auto flip = computeFlip(frames[0].image, frames[1].image);  // the first pipeline is the reference
-  if (!flip) return fail(flip.error());
+  if (!flip) return error(flip.error());
   const int64_t drawn[2] = {drawnPixels(frames[0].image), drawnPixels(frames[1].image)};
   const PairVerdict verdict = judgePair(cmd->scene, settings, names, frames, thresholdsGiven ? &t : nullptr);
-  if (verdict.skinApplies && verdict.skin.empty()) return fail(verdict.reason);  // a reference frame's error
+  if (verdict.skinApplies && verdict.skin.empty()) return error(verdict.reason);  // a reference frame's error
   const DrawnCheck& shape = verdict.shape;
   const std::string skinning = skinningMethodNote(verdict, names[0], names[1]);
   const bool nothingDrawn = shape.kind == DrawnCheck::Kind::NothingDrawn;
@@ -223,20 +255,20 @@ int runCompare(const std::vector<std::string>& argv) {
 
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) return fail(dir + ": cannot create folder: " + ec.message());
+  if (ec) return error(dir + ": cannot create folder: " + ec.message());
   namespace fs = std::filesystem;
   for (size_t i = 0; i < 2; ++i) {
     Status s = writeImage((fs::path(dir) / (names[i] + ".png")).string(), frames[i].image);
-    if (!s) return fail(s.error());
+    if (!s) return error(s.error());
   }
   Status d = writeImage((fs::path(dir) / "diff.png").string(),
                         diffHeatmap(frames[0].image, frames[1].image));
-  if (!d) return fail(d.error());
+  if (!d) return error(d.error());
   std::string legendWarning;
   Status legend = writeImage((fs::path(dir) / "diff_legend.png").string(), heatLegend(&legendWarning));
-  if (!legend) return fail(legend.error());
-  if (!legendWarning.empty()) commandNotes("compare", {"warning: " + legendWarning});
-  if (Status f = writeImage((fs::path(dir) / "flip.png").string(), flipErrorImage(*flip)); !f) return fail(f.error());
+  if (!legend) return error(legend.error());
+  if (!legendWarning.empty()) notes({"warning: " + legendWarning});
+  if (Status f = writeImage((fs::path(dir) / "flip.png").string(), flipErrorImage(*flip)); !f) return error(f.error());
 
   nlohmann::json j = {
       {"scene", scene.source},
@@ -277,28 +309,36 @@ int runCompare(const std::vector<std::string>& argv) {
                               : failed || thresholdsGiven ? nlohmann::json(reason) : nlohmann::json(nullptr)}}},
       {"stats", {toJson(frames[0].stats), toJson(frames[1].stats)}}};  // in --pipelines order
   std::string jsonPath = (fs::path(dir) / "metrics.json").string();
-  if (Status w = writeTextFile(jsonPath, j.dump(2) + "\n"); !w) return fail(w.error());
-  // What was measured, one line each, then the verdict line.
-  std::printf("%s: %s vs %s, %dx%d\n", scene.source.c_str(), names[0].c_str(), names[1].c_str(), metrics->width,
-              metrics->height);
-  std::printf("  drawn pixels (not background): %s %lld, %s %lld of %lld\n", names[0].c_str(), (long long)drawn[0],
-              names[1].c_str(), (long long)drawn[1], (long long)metrics->width * metrics->height);
-  for (const std::string& line : differenceLines(*metrics)) std::printf("  %s\n", line.c_str());
-  std::printf("  %s (LDR-FLIP, 0..1, %.0f pixels per degree; map: flip.png)\n", flipText(*flip).c_str(),
-              flip->pixelsPerDegree);
-  if (!skinning.empty()) std::printf("  note: %s\n", skinning.c_str());
+  if (Status w = writeTextFile(jsonPath, j.dump(2) + "\n"); !w) return error(w.error());
+  // What was measured, one line each (not with --quiet), then the verdict line.
+  std::vector<std::string> measured;
+  char line[256];
+  std::snprintf(line, sizeof line, "drawn pixels (not background): %s %lld, %s %lld of %lld", names[0].c_str(),
+                (long long)drawn[0], names[1].c_str(), (long long)drawn[1], (long long)metrics->width * metrics->height);
+  measured.push_back(line);
+  for (const std::string& l : differenceLines(*metrics)) measured.push_back(l);
+  std::snprintf(line, sizeof line, "%s (LDR-FLIP, 0..1, %.0f pixels per degree; map: flip.png)", flipText(*flip).c_str(),
+                flip->pixelsPerDegree);
+  measured.push_back(line);
+  if (!skinning.empty()) measured.push_back("note: " + skinning);
   for (const SkinnedFrameJudgement& j : verdict.skin)
-    for (const std::string& line : judgementLines(j)) std::printf("  %s\n", line.c_str());
+    for (const std::string& l : judgementLines(j)) measured.push_back(l);
+  if (!quiet) {
+    std::printf("%s: %s vs %s, %dx%d\n", scene.source.c_str(), names[0].c_str(), names[1].c_str(), metrics->width,
+                metrics->height);
+    for (const std::string& l : measured) std::printf("  %s\n", l.c_str());
+  }
+  for (const std::string& l : measured) junit.detail += (junit.detail.empty() ? "" : "\n") + l;
   // Two background-only frames agree trivially: nothing was compared.
   if (nothingDrawn && !thresholdsGiven) {  // nothing judged, but said
-    commandNotes("compare", {"warning: neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are "
+    notes({"warning: neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are "
                              "background only): nothing was compared"});
   } else if (nothingDrawn) {
     std::printf("%s: %s vs %s -> NOT COMPARED\n", scene.source.c_str(), names[0].c_str(), names[1].c_str());
-    return fail("neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are background only: the " +
+    return error("neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are background only: the " +
                 "scene is off screen, empty or scaled to zero at this pose); nothing was compared, so it cannot pass");
   }
-  if (shape.failed) std::printf("  drawn-pixel check: FAIL: %s\n", drawnFailure(verdict).c_str());
+  if (shape.failed && !quiet) std::printf("  drawn-pixel check: FAIL: %s\n", drawnFailure(verdict).c_str());
   std::string judgedBy;  // "motor against the motor-blend reference"
   for (const SkinnedFrameJudgement& j : verdict.skin)
     if (verdict.byOwnMethod)
@@ -314,6 +354,9 @@ int runCompare(const std::vector<std::string>& argv) {
   else if (thresholdsGiven)
     verdictText = " -> PASS (" + (judgedBy.empty() ? std::string() : judgedBy + ": ") + "within the thresholds given)";
   std::printf("%s: %s vs %s%s\n", scene.source.c_str(), names[0].c_str(), names[1].c_str(), verdictText.c_str());
+  junit.kind = failed ? JunitCase::Kind::Fail : nothingDrawn ? JunitCase::Kind::Skipped : JunitCase::Kind::Pass;
+  junit.message = failed ? reason : nothingDrawn ? "neither image drew any pixel: nothing compared" : "";
+  if (writeCase() != 0) return 2;
   return failed ? 1 : 0;
 }
 
@@ -323,7 +366,7 @@ int runCompare(const std::vector<std::string>& argv) {
 MB_COMMAND(compare, "compare",
            "SCENE [--pipelines matrix,motor] [--anim A] [--time T] [--anim2 B --time2 T2 --blend W] "
            "[--camera C] [--size WxH] [--instances N] [--fail F(0..1)] [--failpercent P(0..100)] [--hardfail H(0..1)] "
-           "[--gpu auto|llvmpipe|N] -o DIR",
+           "[--gpu auto|llvmpipe|N] [--junit FILE] [--quiet] -o DIR",
            "render a scene with two pipelines; write both images, diff.png, diff_legend.png, flip.png and "
            "metrics.json (PSNR, LDR-FLIP); exit 1 when a threshold given is exceeded (F, H: channel difference / 255) or one image "
            "is empty or the drawn pixels differ by more than 1 % (skinned frames of two skinning methods: each pipeline against its "
@@ -340,6 +383,9 @@ MB_COMMAND_HELP(compare, "compare",
                "  --hardfail H       the largest channel difference allowed anywhere, as F (default none)\n"
                "  --anim A, --time T, --anim2 B, --time2 T2, --blend W, --camera C, --size WxH   as render\n"
                MB_INSTANCES_OPTION_HELP MB_GPU_OPTION_HELP
+               "  --junit FILE       JUnit XML: one test case (classname the scene, name 'A vs B <frame>'), its failure\n"
+               "                     or error with the reason (default: none written)\n"
+               "  --quiet            print only the verdict line (errors still on stderr)\n"
                "  Skinned frame, pipelines of two skinning methods: each judged against its own method's reference (a\n"
                "  motor-blend pipeline: the motor-blend reference, the pose skinned on the CPU by the motor blend and drawn\n"
                "  by matrix; a linear-blend one: matrix), with the same thresholds; its figures against matrix beside them.\n"

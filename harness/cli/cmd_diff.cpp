@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "harness/check/junit.h"
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
 #include "harness/options/args.h"
@@ -101,11 +102,18 @@ Status writeDiffFolder(const std::string& dir, const std::vector<DiffInput>& in,
   return writeTextFile(file("metrics.json"), metricsJson.dump(2) + "\n");
 }
 
+// The one JUnit case of a diff: classname "diff", name "A vs B".
+Status writeDiffJunit(const std::string& path, const std::string& a, const std::string& b, JunitCase::Kind kind,
+                      const std::string& message, const std::string& detail) {
+  if (path.empty()) return {};
+  return writeJunit(path, "motorbench diff", {{"diff", a + " vs " + b, 0, kind, message, detail}});
+}
+
 int runDiff(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("diff", message); };
   const Args args(argv, {{"fail", "failpercent", "hardfail", "warn", "warnpercent", "hardwarn", "flip-mean", "flip-max",
-                          "out"},
-                         {},
+                          "out", "junit"},
+                         {"quiet"},
                          {},
                          {}});
   if (!args.error().empty()) return fail(args.error());
@@ -113,18 +121,26 @@ int runDiff(const std::vector<std::string>& argv) {
   // Every option and the output folder before the images are read.
   const IdiffThresholds t = idiffThresholds(args);
   const FlipThresholds flipLimits = flipThresholds(args);
-  const std::string dir = args.get("out", "");
+  const bool quiet = args.has("quiet");
+  const std::string dir = args.get("out", ""), junitPath = args.get("junit", "");
   if (!dir.empty())
     if (Status ok = prepareOutputFolder("--out", dir, "diff.png, diff_legend.png, flip.png, metrics.json"); !ok)
       return fail(ok.error());
+  if (!junitPath.empty())
+    if (Status ok = prepareOutputFile("--junit", junitPath); !ok) return fail(ok.error());
   const std::string& a = args.positional()[0];
   const std::string& b = args.positional()[1];
+  // An error after the options is the JUnit file's error case as well.
+  auto error = [&](const std::string& message) {
+    if (Status j = writeDiffJunit(junitPath, a, b, JunitCase::Kind::Error, message, ""); !j) fail(j.error());
+    return fail(message);
+  };
   auto in = readDiffInputs(a, b);
-  if (!in) return fail(in.error());
+  if (!in) return error(in.error());
   auto metrics = compareImages((*in)[0].image, (*in)[1].image);
-  if (!metrics) return fail(metrics.error());
+  if (!metrics) return error(metrics.error());
   auto flip = computeFlip((*in)[0].image, (*in)[1].image);
-  if (!flip) return fail(flip.error());
+  if (!flip) return error(flip.error());
   const IdiffVerdict v = judgeIdiff((*in)[0].image, (*in)[1].image, t);
   const std::string flipReason = flipFailure(*flip, flipLimits);
   const bool failed = v.outcome == IdiffOutcome::Failure || !flipReason.empty();
@@ -150,13 +166,22 @@ int runDiff(const std::vector<std::string>& argv) {
                      {"reason", failed ? json(reason) : json(nullptr)},
                      {"warning", warned ? json(v.warn.reason) : json(nullptr)},
                      {"exit", failed ? 1 : 0}}}};
-    if (Status w = writeDiffFolder(dir, *in, *flip, j); !w) return fail(w.error());
+    if (Status w = writeDiffFolder(dir, *in, *flip, j); !w) return error(w.error());
   }
-  std::printf("%s vs %s, %dx%d\n", a.c_str(), b.c_str(), metrics->width, metrics->height);
-  for (const std::string& line : differenceLines(*metrics)) std::printf("  %s\n", line.c_str());
-  std::printf("  %s (LDR-FLIP, 0..1, %.0f pixels per degree%s)\n", flipText(*flip).c_str(), flip->pixelsPerDegree,
-              dir.empty() ? "" : "; map: flip.png");
-  std::printf("  %s\n", thresholdsLine(t, flipLimits).c_str());
+  std::vector<std::string> measured = differenceLines(*metrics);
+  char flipLine[256];
+  std::snprintf(flipLine, sizeof flipLine, "%s (LDR-FLIP, 0..1, %.0f pixels per degree%s)", flipText(*flip).c_str(),
+                flip->pixelsPerDegree, dir.empty() ? "" : "; map: flip.png");
+  measured.push_back(flipLine);
+  measured.push_back(thresholdsLine(t, flipLimits));
+  if (!quiet) {
+    std::printf("%s vs %s, %dx%d\n", a.c_str(), b.c_str(), metrics->width, metrics->height);
+    for (const std::string& line : measured) std::printf("  %s\n", line.c_str());
+  }
+  std::string detail;
+  for (const std::string& line : measured) detail += (detail.empty() ? "" : "\n") + line;
+  if (Status w = writeDiffJunit(junitPath, a, b, failed ? JunitCase::Kind::Fail : JunitCase::Kind::Pass, reason, detail); !w)
+    return fail(w.error());
   if (failed)
     std::printf("%s vs %s -> FAIL (%s)\n", a.c_str(), b.c_str(), reason.c_str());
   else if (warned)
@@ -172,7 +197,7 @@ int runDiff(const std::vector<std::string>& argv) {
 
 MB_COMMAND(diff, "diff",
            "A B [--fail F] [--failpercent P] [--hardfail H] [--warn W] [--warnpercent Q] [--hardwarn HW] "
-           "[--flip-mean M] [--flip-max X] [--out DIR]",
+           "[--flip-mean M] [--flip-max X] [--out DIR] [--junit FILE] [--quiet]",
            "one image against another with idiff's thresholds and defaults (any difference fails unless allowed) and "
            "LDR-FLIP's; exit 0 pass or warning, 1 a threshold exceeded, 2 an unreadable file or sizes that differ",
            mb::runDiff);
@@ -190,6 +215,9 @@ MB_COMMAND_HELP(diff, "diff",
                "  --flip-max X       FAIL when the largest pixel's LDR-FLIP exceeds X (0..1, default none)\n"
                "  --out DIR          a folder (created): diff.png, diff_legend.png, flip.png, metrics.json (default:\n"
                "                     nothing written)\n"
+               "  --junit FILE       JUnit XML: one test case (classname diff, name 'A vs B'), its failure or error with\n"
+               "                     the reason (default: none written)\n"
+               "  --quiet            print only the verdict line (errors still on stderr)\n"
                "  Exit, with idiff's code for the same case in brackets: 0 PASS [0], or WARNING printed [1]; 1 FAIL: a\n"
                "  fail or FLIP threshold exceeded [2]; 2 an error: a file that cannot be read [4] or is not 8-bit, sizes\n"
                "  or channel counts that differ [2: idiff compares them, counting what one image lacks as 0], a bad option.\n",

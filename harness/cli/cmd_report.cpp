@@ -3,6 +3,8 @@
 // frame timing, kernel ratios, conversion cost, fallbacks and statistics of every scene and
 // pipeline -> DIR/report.json, report.md, report.html, images/, plots/ (harness/report/, harness/document/).
 // The same command with --worker measures one scene for the parent run (report_workers.h).
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +15,7 @@
 #include "harness/cli/command.h"
 #include "harness/render/gpu_option.h"
 #include "harness/cli/output_paths.h"
+#include "harness/cli/report_junit.h"
 #include "harness/render/render_frame.h"
 #include "harness/render/scene_inputs.h"
 #include "harness/document/report_format.h"
@@ -78,12 +81,43 @@ int runWorker(const Args& args, const report::Options& o) {
   return w ? 0 : fail(w.error());
 }
 
+// After the run: the JUnit file (--junit) and, with --quiet, what the run printed kept in
+// DIR/report-log.txt and only its failures and summary line shown.
+int finishReport(int status, const report::Options& o, const std::string& junitPath, const std::string& log) {
+  namespace fs = std::filesystem;
+  std::ifstream in(fs::path(o.outDir) / "report.json");
+  const json report = json::parse(in, nullptr, false);
+  const bool written = status != 2 && report.is_object();
+  const std::vector<JunitCase> cases = written ? reportJunitCases(report) : std::vector<JunitCase>{};
+  if (!log.empty()) {
+    std::error_code ec;
+    const fs::path kept = fs::path(o.outDir) / "report-log.txt";
+    fs::copy_file(log, kept, fs::copy_options::overwrite_existing, ec);
+    std::ifstream lines(log);
+    for (std::string line; std::getline(lines, line);)
+      if (!written && (line.find("error") != std::string::npos || line.find("INTERRUPTED") != std::string::npos))
+        std::fprintf(stderr, "%s\n", line.c_str());  // why no report was written
+    fs::remove(log, ec);
+    if (written) {
+      for (const JunitCase& c : cases)
+        if (c.kind == JunitCase::Kind::Fail || c.kind == JunitCase::Kind::Error)
+          std::printf("%s  %s %s: %s\n", c.kind == JunitCase::Kind::Fail ? "FAIL " : "ERROR", c.classname.c_str(),
+                      c.name.c_str(), c.message.c_str());
+      std::printf("%s -> %s (log: %s)\n", reportSummaryLine(report, cases).c_str(),
+                  (fs::path(o.outDir) / "report.html").string().c_str(), kept.string().c_str());
+    }
+  }
+  if (!junitPath.empty() && written)
+    if (Status w = writeJunit(junitPath, "motorbench report", cases); !w) return fail(w.error());
+  return status;
+}
+
 int runReportCommand(const std::vector<std::string>& argv) {
   const Args args(argv, {{"o", "output", "jobs", "size", "frames", "bench-json", "bench-min-time", "pipelines",
                           "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
                           "worker-index", "worker-total", "shard", "anim", "worker-anims", "instances", "gpu",
-                          "isa-json", "morph-json"},
-                         {"no-bench", "bench", "no-isa", "no-plots"},
+                          "isa-json", "morph-json", "junit"},
+                         {"no-bench", "bench", "no-isa", "no-plots", "quiet"},
                          {},
                          {"anim"}});
   if (!args.error().empty()) return fail(args.error());
@@ -157,8 +191,21 @@ int runReportCommand(const std::vector<std::string>& argv) {
   }
   if (Status ok = prepareOutputFolder("-o", o.outDir, "report.json, report.md, report.html, images/, plots/"); !ok)
     return fail(ok.error());
-  for (const std::string& w : emptyInputWarnings(o.scenes)) std::fprintf(stderr, "motorbench report: warning: %s\n", w.c_str());
-  return report::runReport(o);
+  const std::string junitPath = args.get("junit", "");
+  if (!junitPath.empty())
+    if (Status ok = prepareOutputFile("--junit", junitPath); !ok) return fail(ok.error());
+  if (!args.has("quiet")) {
+    for (const std::string& w : emptyInputWarnings(o.scenes)) std::fprintf(stderr, "motorbench report: warning: %s\n", w.c_str());
+    return finishReport(report::runReport(o), o, junitPath, "");
+  }
+  // The report removes its folder's earlier files first: the log waits beside it until the end.
+  const std::string log = (std::filesystem::temp_directory_path() /
+                           ("motorbench-report-" + std::to_string(::getpid()) + ".log")).string();
+  OutputToFile quiet(log);
+  if (!quiet.ok()) return fail(log + ": cannot write the log of --quiet");
+  const int status = report::runReport(o);
+  quiet.restore();
+  return finishReport(status, o, junitPath, log);
 }
 
 }  // namespace
@@ -168,7 +215,7 @@ MB_COMMAND(report, "report",
            "[SCENE|FILE|DIR ...] -o DIR [--jobs N] [--size WxH] [--frames N] [--time-size WxH] [--bench | --no-bench | "
            "--bench-json FILE] [--bench-min-time S] [--pipelines a,b] [--anim [SCENE:]NAME|INDEX|all,...] "
            "[--instances N] [--no-plots] [--python P] [--plot-script FILE] [--timeout S] [--shard I/N] "
-           "[--gpu auto|llvmpipe|N] [--isa-json FILE | --no-isa] [--morph-json FILE]",
+           "[--gpu auto|llvmpipe|N] [--isa-json FILE | --no-isa] [--morph-json FILE] [--junit FILE] [--quiet]",
            "measure scenes with every pipeline of their space: images, diffs, memory, ops, timing, kernel "
            "ratios -> report.json/.md/.html",
            mb::runReportCommand);
@@ -196,5 +243,12 @@ MB_COMMAND_HELP(report, "report",
                "  --isa-json FILE    `motorbench isa --json` file: the ISA statistics per pipeline (default: measured\n"
                "                     now, each shader variant compiled once, kept in the cache: MB_CACHE_DIR)\n"
                "  --no-isa           no ISA statistics\n"
-               "  --morph-json FILE  `motorbench morph --json` file: the morph section (default: none)\n",
+               "  --morph-json FILE  `motorbench morph --json` file: the morph section (default: none)\n"
+               "  --junit FILE       JUnit XML: one test case per scene, frame and pipeline; an error where it could\n"
+               "                     not be measured, a failure where the drawn-pixel check failed (one image empty\n"
+               "                     or drawn pixels more than 1 % apart; no image thresholds) (default: none)\n"
+               "  --quiet            print only failed scenes and frames and the summary line; the whole output\n"
+               "                     goes to DIR/report-log.txt\n"
+               "  Exit 0 every scene measured, 1 the report written but a scene failed or is partial, 2 an error\n"
+               "  (a bad option, the report not written), 130 interrupted (the scenes done written, marked PARTIAL).\n",
                 "motorbench report textured_box --frames 0 --no-bench -o out/report", true);
