@@ -34,7 +34,7 @@ TIMING_NAMES = {"machine", "context", "date", "host_name", "cpu", "cpuOverReal",
 # frames, where a skin is thinnest) and counts of keyframe times.
 NOT_TIMING = {"time", "times", "lbsTime", "motorTime", "timeWidth", "timeHeight"}
 # Figures (report.json "figures", keyed by name) that are timings.
-TIMING_FIGURE = re.compile(r"^(frame_time|kernel_time)")
+TIMING_FIGURE = re.compile(r"(^|\.)(frame_time|kernel_time)")
 # A claim or answer line judged on a timing: its sentence, verdict and measured values move with
 # the machine's load (a timing marked disturbed leaves the verdict and drops its kind); its id,
 # origin, quote and method are still compared, and its non-timing inputs are compared where they
@@ -76,21 +76,23 @@ def timed_claims(value, found):
     return found
 
 
-def strip(value, key="", timed=frozenset()):
+def strip(value, key="", timed=frozenset(), under_timed=False):
     """value without its timing parts; `timed`: ids of claims judged on a timing in either run
-    (a timing marked disturbed in one run can leave a claim with no timed kind there)."""
+    (a timing marked disturbed in one run can leave a claim with no timed kind there);
+    `under_timed`: value is a part of such a claim or answer line (its kinds' texts move too)."""
     if isinstance(value, list):
         # plots/index.json: a plot of timings (frame_time_ratio, kernel_ratios) is left out whole.
-        return [strip(v, key, timed) for v in value
+        return [strip(v, key, timed, under_timed) for v in value
                 if not (key == "files" and isinstance(v, dict) and is_timing_key(str(v.get("name", ""))))]
     if not isinstance(value, dict) or key == "glossary":  # the glossary's meanings are text
         return value
+    under_timed = under_timed or judged_on_time(value) or value.get("id") in timed
     out = {}
     for k, v in value.items():
         if is_timing_key(k) or (key == "figures" and TIMING_FIGURE.search(k)):
             continue
-        out[k] = strip(v, k, timed)
-    if judged_on_time(value) or value.get("id") in timed:
+        out[k] = strip(v, k, timed, under_timed)
+    if under_timed:
         for k in JUDGED_TEXT:
             out.pop(k, None)
     return out

@@ -1,7 +1,7 @@
 // hierarchy: a scene-graph update (parents before children) in three shapes: `hierarchy` deep
 // (kNodes nodes, mostly chains, the depth in the hundreds), `hierarchy_wide` (kNodes nodes, a
-// bushy tree a few levels deep) and `hierarchy_skeleton` (a real character's node tree from
-// ../shared/corpus-wide, in its rest pose; only where that folder is). Per frame and node: the local transform from its animated TRS, composed
+// bushy tree a few levels deep) and `hierarchy_skeleton` (a character's node tree: the shape of
+// a humanoid rig with a face, generated here). Per frame and node: the local transform from its animated TRS, composed
 // with the parent's world transform.
 // Matrix: T R S as a mat4, parent * local with matrix_transform.glsl's matrixCompose (the full
 // mat4 product the Sample Viewer's GLM code does). Motor: T R as gp_tr of pga.glsl, uniform
@@ -22,17 +22,59 @@
 #include "harness/bench/bench_common.h"
 #include "harness/bench/bench_kernels.h"
 #include "kernels/simd/simd_kernels.h"
-#include "pipelines/scene/loader.h"
 
 namespace mb::bench {
 namespace {
 
 constexpr int kNodes = 1536;
 
-// The two shapes timed: deep (chains: three in four nodes continue the chain, the rest branch
-// off a recent node; depth in the hundreds) and wide (every node's parent drawn among the first
-// eighth of the nodes before it: a bushy tree a few levels deep, many siblings per parent).
-enum class Shape { Deep, Wide };
+// The shapes timed: deep (chains: three in four nodes continue the chain, the rest branch off a
+// recent node; depth in the hundreds), wide (every node's parent drawn among the first eighth of
+// the nodes before it: a bushy tree a few levels deep, many siblings per parent) and skeleton
+// (humanoidTree()).
+enum class Shape { Deep, Wide, Skeleton };
+
+// A humanoid character's node tree as a Mixamo-rigged file with a face rig carries it (81 nodes,
+// depth 11): camera, lamp and character roots; under the character (scale 0.01) its mesh node
+// and the hips; spine (3), neck (2) and head; under the head the eyes, 14 face joints and the jaw
+// with 7 of its own; from the upper spine two shoulders, each with arm, forearm, hand and five
+// fingers of three joints; from the hips two legs of four. Parents first, in breadth-first order
+// (as a loader walks a file's tree). Generated, so every clone times the same tree; each entry
+// the node's parent (-1: a root).
+std::vector<int> humanoidTree() {
+  std::vector<std::vector<int>> children(1);  // children[0]: the roots
+  auto add = [&](int parentSlot) {            // parentSlot: the parent's index + 1
+    children.emplace_back();
+    children[size_t(parentSlot)].push_back(int(children.size()) - 2);
+    return int(children.size()) - 1;
+  };
+  auto chain = [&](int from, int n) { for (int k = 0; k < n; ++k) from = add(from); return from; };
+  add(0);                                    // camera
+  const int character = add(0);
+  add(0);                                    // lamp
+  add(character);                            // the mesh node
+  const int hips = add(character);
+  const int upperSpine = chain(hips, 3);
+  const int head = chain(upperSpine, 3);     // neck, neck1, head
+  chain(head, 1), chain(head, 1);            // the eyes
+  const int jaw = add(head);
+  for (int k = 0; k < 7; ++k) add(jaw);      // tongue, lips, jaw end
+  for (int k = 0; k < 14; ++k) add(head);    // lips, nostrils, cheeks, eyelids, brows
+  for (int side = 0; side < 2; ++side) {
+    const int hand = chain(upperSpine, 4);   // shoulder, arm, forearm, hand
+    for (int finger = 0; finger < 5; ++finger) chain(hand, 3);
+  }
+  for (int side = 0; side < 2; ++side) chain(hips, 4);  // up leg, leg, foot, toe
+  std::vector<int> order = children[0], slot(children.size() - 1), parent;
+  for (size_t k = 0; k < order.size(); ++k)
+    for (int c : children[size_t(order[k]) + 1]) order.push_back(c);
+  for (size_t k = 0; k < order.size(); ++k) slot[size_t(order[k])] = int(k);
+  std::vector<int> parentOf(order.size(), -1);
+  for (size_t p = 1; p < children.size(); ++p)
+    for (int c : children[p]) parentOf[size_t(c)] = int(p) - 1;
+  for (int node : order) parent.push_back(parentOf[size_t(node)] < 0 ? -1 : slot[size_t(parentOf[size_t(node)])]);
+  return parent;
+}
 
 struct Hierarchy {
   std::vector<int> parent;
@@ -46,36 +88,18 @@ struct Hierarchy {
   std::vector<glm::mat4> glmWorld;
   explicit Hierarchy(Shape shape) {
     Rng r;
-    std::vector<int> d(kNodes, 0);
-    for (int i = 0; i < kNodes; ++i) {
-      if (shape == Shape::Wide) parent.push_back(i == 0 ? -1 : r.index(std::max(1, i / 8)));
+    const std::vector<int> skeleton = shape == Shape::Skeleton ? humanoidTree() : std::vector<int>();
+    const int n = shape == Shape::Skeleton ? int(skeleton.size()) : kNodes;
+    std::vector<int> d(size_t(n), 0);
+    for (int i = 0; i < n; ++i) {
+      if (shape == Shape::Skeleton) parent.push_back(skeleton[size_t(i)]);
+      else if (shape == Shape::Wide) parent.push_back(i == 0 ? -1 : r.index(std::max(1, i / 8)));
       else parent.push_back(i == 0 ? -1 : r.index(4) ? i - 1 : std::max(0, i - 1 - r.index(16)));
-      d[size_t(i)] = i == 0 ? 0 : d[size_t(parent.back())] + 1;
+      d[size_t(i)] = parent.back() < 0 ? 0 : d[size_t(parent.back())] + 1;
       depth = std::max(depth, d[size_t(i)]);
       q.push_back(randomQuat(r));
       t.push_back(PS::vec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)));
-      s.push_back(r.uniform(0.9f, 1.1f));
-    }
-    allocate();
-  }
-  // A real skeleton: the node tree of a glTF file in its rest pose, parents first (the uniform
-  // scale: the x scale; the rest poses of characters are uniform).
-  explicit Hierarchy(const Scene& scene) {
-    std::vector<int> order, slot(scene.nodes.size(), -1), d;
-    for (size_t i = 0; i < scene.nodes.size(); ++i)
-      if (scene.nodes[i].parent < 0) order.push_back(int(i));
-    for (size_t k = 0; k < order.size(); ++k)  // breadth first: parents before children
-      for (int c : scene.nodes[size_t(order[k])].children) order.push_back(c);
-    for (size_t k = 0; k < order.size(); ++k) slot[size_t(order[k])] = int(k);
-    for (int i : order) {
-      const Node& n = scene.nodes[size_t(i)];
-      parent.push_back(n.parent < 0 ? -1 : slot[size_t(n.parent)]);
-      d.push_back(parent.back() < 0 ? 0 : d[size_t(parent.back())] + 1);
-      depth = std::max(depth, d.back());
-      const glm::quat r = n.local.rotation;
-      q.push_back({r.x, r.y, r.z, r.w});
-      t.push_back(PS::vec3(n.local.translation.x, n.local.translation.y, n.local.translation.z));
-      s.push_back(n.local.scale.x);
+      s.push_back(shape == Shape::Skeleton ? 1.0f : r.uniform(0.9f, 1.1f));  // a rig's rest scales are 1
     }
     allocate();
   }
@@ -187,15 +211,10 @@ void registerHierarchy(const std::string& kernel, Hierarchy&& hierarchy) {
 
 }  // namespace
 
-// A real skinned character (../shared/corpus-wide, Mixamo-style zombie: 81 nodes, 74
-// joints), read relative to the working directory (the repository root, as reproduce.sh runs).
-const char* const kSkeletonFile = "../shared/corpus-wide/Mugen87+yuka/examples/fuzzy/model/zombie.glb";
-
 void registerHierarchyBenchmarks() {
   registerHierarchy("hierarchy", Hierarchy(Shape::Deep));
   registerHierarchy("hierarchy_wide", Hierarchy(Shape::Wide));
-  // Without the corpus (a fresh clone alone) the skeleton pair is not registered.
-  if (auto scene = loadGltfFile(kSkeletonFile)) registerHierarchy("hierarchy_skeleton", Hierarchy(*scene));
+  registerHierarchy("hierarchy_skeleton", Hierarchy(Shape::Skeleton));
 }
 
 }  // namespace mb::bench
