@@ -1,6 +1,6 @@
 // Image decoding (pipelines/scene/image_decode.h): header checks against hand-built
 // headers, PNG pixels of every colour type and bit depth against values derived by hand from
-// the raw samples written, the same RGBA8 as the previous decoder (stb_image, compiled into
+// the raw samples written, the same RGBA8 as stb_image, an independent decoder (compiled into
 // this test only, on the images the test generates), JPEG through libjpeg-turbo, and the
 // fuzzer's finding jpeg-huffman.glb as a counted fallback.
 #include <gtest/gtest.h>
@@ -17,8 +17,8 @@
 #include "pipelines/scene/loader.h"
 #include "tests/hostile/gltf_builder.h"
 
-// The previous decoder, as the reference for "same pixels as before". Only this test compiles
-// it, and only images the test itself generated reach it.
+// stb_image, an independent decoder as the reference for the decoded pixels. Only this test
+// compiles it, and only images the test itself generated reach it.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpedantic"
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -170,7 +170,7 @@ TEST(ImageDecode, JpegColourAndGreyThroughLibjpeg) {
     // Quality 100 of a smooth gradient: lossy, but within a few levels of the source.
     EXPECT_LE(maxDiff(d->rgba, expected), 6) << channels << " channels";
     for (int i = 0; i < w * h; ++i) EXPECT_EQ(d->rgba[size_t(i) * 4 + 3], 255);
-    // The previous decoder (stb_image) uses its own IDCT, upsampling and colour conversion:
+    // The reference decoder (stb_image) uses its own IDCT, upsampling and colour conversion:
     // JPEG pixels may differ from it by a level or two (no JPEG in the corpus or the built-in
     // scenes, so no golden changes). Printed, and bounded.
     int ow = 0, oh = 0;
