@@ -24,6 +24,7 @@
 #include "harness/cli/output_paths.h"
 #include "harness/check/check_inputs.h"
 #include "harness/check/content_hash.h"
+#include "harness/check/corpus_rules.h"
 #include "harness/check/golden.h"
 #include "harness/check/golden_device.h"
 #include "harness/check/junit.h"
@@ -427,6 +428,7 @@ std::string goldenFolderError(const Args& args, const Selection& sel) {
 }
 
 int runCheck(const std::vector<std::string>& argv) {
+  if (std::find(argv.begin(), argv.end(), "--rules") != argv.end()) return runCheckRules(argv);
   Args args(argv, {{"golden", "scenes", "pipelines", "out", "o", "shader-dir", "shard", "gpu", "junit"},
                    {"update", "quiet"},
                    {}});
@@ -492,7 +494,7 @@ int runCheck(const std::vector<std::string>& argv) {
 
 MB_COMMAND(check, "check",
            "[FILE|DIR|SCENE ...] [--golden DIR] [--scenes a,b] [--pipelines p,q] [--out DIR] [--shader-dir DIR] "
-           "[--update] [--shard I/N] [--junit FILE] [--quiet] [--gpu auto|llvmpipe|N]",
+           "[--update] [--shard I/N] [--junit FILE] [--quiet] [--gpu auto|llvmpipe|N]" MB_CHECK_RULES_USAGE,
            "compare renders of built-in scenes or your own glTF files with their golden images (exit 0 pass, 1 a "
            "threshold exceeded or a file changed, 2 an error)",
            mb::runCheck);
@@ -520,6 +522,7 @@ MB_COMMAND_HELP(check, "check",
                "  --junit FILE       JUnit XML: one test case per scene, pose and pipeline; failures and errors\n"
                "                     with their reason (default: none written)\n"
                "  --quiet            print only failures, errors, changed files and the summary line\n"
+               MB_CHECK_RULES_HELP
                MB_GPU_OPTION_HELP
                "  Thresholds: golden.json's per scene; a file's default as a built-in's (exact: one 8-bit step;\n"
                "  portable, on another GL: 0.02 on up to 1 % of pixels). A file whose content hash differs from\n"

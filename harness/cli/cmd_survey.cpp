@@ -7,8 +7,9 @@
 // position bound and their envelope test (in the geometry view, outside the pixels the baseline
 // draws differently with its positions moved within their int16 cells), skinned frames' figures
 // against their own skinning method's reference (skin_judgement.h: "skinJudgement", and the
-// motor-blend pipelines' "motorBlend"), and seconds. The worker of scripts/corpus-check.sh: it
-// decides nothing (the script applies the rules); exit 0 drawn or nothing to draw, 2 an error.
+// motor-blend pipelines' "motorBlend"), and seconds. The worker of `motorbench check --rules`
+// (harness/check/corpus_rules.h): it decides nothing (check applies the rules); exit 0 drawn or
+// nothing to draw, 2 an error.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -211,7 +212,7 @@ int runSurvey(const std::vector<std::string>& argv) {
           f["psnr"] = m->rmse == 0.0 ? json(nullptr) : json(m->psnr);
           f["maxError"] = m->maxError;
         }
-        if (skinned) {  // judged by its own skinning method (skin_judgement.h); the script applies the rule
+        if (skinned) {  // judged by its own skinning method (skin_judgement.h); check --rules applies the rule
           const RgbaImage* own = k < motorBlendBase.images.size() ? &motorBlendBase.images[k] : nullptr;
           if (auto j = judgeSkinnedFrame(name, frame->image, base[k], own, motorBlendBase.why, nullptr))
             f["skinJudgement"] = toJson(*j);
@@ -303,7 +304,7 @@ MB_COMMAND(survey, "survey",
            "SCENE [--size WxH (default 128x128)] [--pipelines A,B,...] [--gpu auto|llvmpipe|N] [--images DIR] [-o out.json]",
            "draw one file with every pipeline of its space at rest and two animation times; print one JSON "
            "document (drawn pixels, metrics against matrix, tie pixels, fallbacks, the 16-byte position bound, seconds): "
-           "the worker of scripts/corpus-check.sh",
+           "the worker of check --rules",
            mb::runSurvey);
 MB_COMMAND_HELP(survey, "survey",
                "  SCENE              a .gltf/.glb file or a built-in scene name\n"

@@ -15,12 +15,11 @@ import sys
 import tempfile
 import time
 import unittest
+import xml.etree.ElementTree as ET
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 CORPUS = os.path.join(REPO, "..", "shared", "corpus-wide")
 EXE = os.environ.get("MB_MOTORBENCH_EXE", os.path.join(REPO, "build", "harness", "motorbench"))
-sys.path.insert(0, os.path.join(REPO, "scripts"))
-import corpus_check  # noqa: E402  (the judging functions, on synthetic survey documents)
 
 PIPELINES = ["matrix", "motor", "affine", "qtangent", "motor_q", "hybrid", "matrix_c", "motor_c", "motor_cf"]
 
@@ -135,7 +134,7 @@ class CorpusCheckCrash(unittest.TestCase):
             os.chmod(fake, 0o755)
             files = [os.path.join(CORPUS, p) for p in SUBSET[:2]]
             run = subprocess.run([os.path.join(REPO, "scripts", "corpus-check.sh"), *files, "--out", tmp,
-                                  "--jobs", "2", "--size", "64x64", "--exe", fake],
+                                  "--jobs", "2", "--size", "64x64", "--exe", EXE, "--worker-exe", fake],
                                  capture_output=True, text=True, timeout=300)
             with open(os.path.join(tmp, "corpus-check.json"), encoding="utf-8") as f:
                 doc = json.load(f)
@@ -151,104 +150,6 @@ class CorpusCheckCrash(unittest.TestCase):
             self.assertEqual(sorted(rows), sorted(PIPELINES))
             self.assertEqual(rows["motor_cf"]["signal"], "SIGSEGV")
             self.assertTrue(all(r["drawn"] for n, r in rows.items() if n != "motor_cf"))
-
-
-def synthetic_result(motor=None, matrix_c=None, ties=16, int16_ties=9):
-    """file_result() of a made-up one-frame rigid survey: matrix plus the given pipelines' frames."""
-    frame = {"animation": None, "time": 0.0, "kind": "rigid",
-             "positionBound": {"worldUnits": 1e-5, "pixels": 0.01, "envelopeRadius": 1, "shadeTolerance": 4}}
-    if ties is not None:
-        frame["ties"] = {"pixels": ties, "renders": 2, "set": list(range(ties))}
-    if int16_ties is not None:
-        frame["int16Ties"] = {"pixels": int16_ties, "renders": 5, "set": list(range(int16_ties))}
-    pipelines = {"matrix": {"error": None, "frames": [{"drawnPixels": 5000}], "fallbacks": {}, "seconds": 0.1}}
-    for name, f in (("motor", motor), ("matrix_c", matrix_c)):
-        if f is not None:
-            pipelines[name] = {"error": None, "frames": [dict({"drawnPixels": 5000}, **f)], "fallbacks": {}, "seconds": 0.1}
-    doc = {"status": "ok", "baseline": "matrix", "pipelineOrder": list(pipelines), "frames": [frame],
-           "pipelines": pipelines, "scene": {}, "loaderFallbacks": {}}
-    rec = {"exit": 0, "signal": None, "timeout": False, "stderr": "", "doc": doc, "seconds": 1.0}
-    return corpus_check.file_result("x.glb", "x.glb", rec, "")
-
-
-def rule(rules, start):
-    return next((fails, ties) for name, fails, ties in rules if name.startswith(start))
-
-
-class TieRule(unittest.TestCase):
-    """The rigid and 16-byte rules judged outside the tie pixels (survey: pixels matrix itself draws
-    differently from jittered vertex positions), on synthetic survey documents."""
-
-    def test_a_frame_whose_failing_pixels_are_all_ties_passes_with_the_mark(self):
-        # court.glb's case: 42.4 dB, 16 differing pixels, every one a tie.
-        res = synthetic_result(motor={"identical": False, "psnr": 42.4, "differingPixels": 16, "differingNotTies": 0,
-                                      "identicalNotTies": True, "psnrNotTies": None})
-        rules = corpus_check.evaluate([res])
-        fails, ties = rule(rules, "rigid frames of motor")
-        self.assertEqual(fails, [])
-        self.assertEqual(len(ties), 1)
-        self.assertIn("x.glb [motor] rest: 42.40 dB; identical dB outside the 16 tie pixels", ties[0])
-        lines = "\n".join(corpus_check.rule_lines(rules))
-        self.assertIn("PASS: rigid frames of motor", lines)
-        self.assertIn("(1 frames pass on ties)", lines)
-        self.assertIn("PASS (ties: undetermined by the transform): x.glb [motor] rest", lines)
-        per = corpus_check.totals([res], ["matrix", "motor"])
-        self.assertEqual(per["motor"]["rigidTieFrames"], 1)
-        self.assertEqual(per["motor"]["rigidFilesFailing"], 0)
-        self.assertEqual(per["motor"]["rigidFilesBelow50dB"], 1)  # the raw figure stays visible
-
-    def test_rounding_outside_the_ties_that_the_50_dB_rule_allows_anyway_still_passes(self):
-        # motor on court.glb also differs by one byte in 8 non-tie pixels: 66 dB outside the ties.
-        res = synthetic_result(motor={"identical": False, "psnr": 42.4, "differingPixels": 37, "differingNotTies": 8,
-                                      "identicalNotTies": False, "psnrNotTies": 66.0})
-        fails, ties = rule(corpus_check.evaluate([res]), "rigid frames of motor")
-        self.assertEqual(fails, [])
-        self.assertIn("66.0 dB outside the 16 tie pixels (37 px differ, 8 of them not ties)", ties[0])
-
-    def test_a_frame_with_a_failing_pixel_outside_the_tie_set_still_fails(self):
-        res = synthetic_result(motor={"identical": False, "psnr": 42.0, "differingPixels": 17, "differingNotTies": 1,
-                                      "identicalNotTies": False, "psnrNotTies": 43.5})
-        rules = corpus_check.evaluate([res])
-        fails, ties = rule(rules, "rigid frames of motor")
-        self.assertEqual(ties, [])
-        self.assertEqual(fails, ["x.glb [motor]: 42.00 dB, 43.5 dB outside the tie pixels"])
-        self.assertIn("FAIL: rigid frames of motor", "\n".join(corpus_check.rule_lines(rules)))
-        self.assertEqual(corpus_check.totals([res], ["motor"])["motor"]["rigidFilesFailing"], 1)
-
-    def test_a_survey_without_tie_data_is_judged_on_every_pixel(self):
-        res = synthetic_result(motor={"identical": False, "psnr": 42.0}, ties=None)
-        fails, ties = rule(corpus_check.evaluate([res]), "rigid frames of motor")
-        self.assertEqual((len(fails), ties), (1, []))
-
-    def test_a_counted_morph_omission_is_listed_not_judged(self):
-        # qtangent draws a morphed node in its base shape and counts it (morphNotDrawnNodes): no
-        # image rule judges that frame; it is listed apart with its count and PSNR.
-        res = synthetic_result(motor={"identical": False, "psnr": 22.0, "fallbacks": {"morphNotDrawnNodes": 1}})
-        rules = corpus_check.evaluate([res])
-        fails, _ = rule(rules, "rigid frames of motor")
-        self.assertEqual(fails, [])
-        _, listed = rule(rules, "frames judged by no image rule")
-        self.assertEqual(listed, [("counted omission: motor does not morph (issue 37)",
-                                   "x.glb [motor] rest: 1 morphed node(s) drawn in their base shape, 22.0 dB against matrix")])
-        self.assertIn("- COUNTED: frames judged by no image rule: a feature the pipeline counts as not drawn (1)",
-                      corpus_check.rule_lines(rules))
-        # The same frame without the count is a failure.
-        fails, _ = rule(corpus_check.evaluate([synthetic_result(motor={"identical": False, "psnr": 22.0})]), "rigid frames of motor")
-        self.assertEqual(len(fails), 1)
-
-    def test_the_16_byte_rule_both_ways(self):
-        ok = synthetic_result(matrix_c={"identical": False, "psnr": 45.0, "outsideEnvelope": 2, "envelopeExcess": 90,
-                                        "outsideEnvelopeNotTies": 0, "envelopeExcessNotTies": 3})
-        fails, ties = rule(corpus_check.evaluate([ok]), "rigid frames of matrix_c")
-        self.assertEqual(fails, [])
-        self.assertEqual(ties, ["x.glb [matrix_c] rest: 2 px outside the envelope, every one of them an int16-cell tie pixel (9 in the frame)"])
-        self.assertEqual(corpus_check.totals([ok], ["matrix_c"])["matrix_c"]["compactTieFrames"], 1)
-        bad = synthetic_result(matrix_c={"identical": False, "psnr": 45.0, "outsideEnvelope": 3, "envelopeExcess": 90,
-                                         "outsideEnvelopeNotTies": 1, "envelopeExcessNotTies": 40})
-        fails, ties = rule(corpus_check.evaluate([bad]), "rigid frames of matrix_c")
-        self.assertEqual(ties, [])
-        self.assertEqual(len(fails), 1)
-        self.assertIn("3 px outside the envelope (1 not tie pixels)", fails[0])
 
 
 @unittest.skipUnless(os.access(EXE, os.X_OK), f"{EXE}: motorbench not built")
@@ -331,33 +232,42 @@ class SurveyTiePixels(unittest.TestCase):
             self.assertTrue(f["motorBlend"]["identical"] or f["motorBlend"]["psnr"] >= 60, (k, f["motorBlend"]))
 
 
-class SkinnedRule(unittest.TestCase):
-    """The skinned rule on synthetic surveys: each pipeline against its skinning method's reference."""
+@unittest.skipUnless(os.access(EXE, os.X_OK), f"{EXE}: motorbench not built")
+class CorpusCheckFailing(unittest.TestCase):
+    """Files that do not load: the rule fails naming each file and its reason, exit 1; the JUnit
+    file holds one failing case per file; --quiet prints the failing rule and one summary line."""
 
-    @staticmethod
-    def result(motor_drawn, reference_drawn, matrix_drawn=1000):
-        frame = {"animation": 0, "time": 0.5, "kind": "skinned", "motorBlendReference": {"drawnPixels": reference_drawn}}
-        pipelines = {"matrix": {"error": None, "frames": [{"drawnPixels": matrix_drawn}], "fallbacks": {}, "seconds": 0.1},
-                     "motor": {"error": None, "frames": [{"drawnPixels": motor_drawn, "psnr": 40.0,
-                                                          "motorBlend": {"identical": False, "psnr": 90.0}}],
-                               "fallbacks": {}, "seconds": 0.1}}
-        doc = {"status": "ok", "baseline": "matrix", "pipelineOrder": list(pipelines), "frames": [frame],
-               "pipelines": pipelines, "scene": {}, "loaderFallbacks": {},
-               "motorBlendReference": {"available": True, "why": None}}
-        rec = {"exit": 0, "signal": None, "timeout": False, "stderr": "", "doc": doc, "seconds": 1.0}
-        return corpus_check.file_result("s.glb", "s.glb", rec, "")
-
-    def test_motor_judged_against_the_motor_blend(self):
-        # 2 % from matrix but on its own method's reference: passes, listed as a method difference.
-        fails, marked = rule(corpus_check.evaluate([self.result(1020, 1020)]), "skinned frames")
-        self.assertEqual(fails, [])
-        self.assertEqual(len(marked), 1)
-        self.assertIn("s.glb [motor]: t=0.5 2.0 % apart from matrix; from its own method's reference t=0.5 0.0 %, 90.0 dB",
-                      marked[0])
-        # Within 1 % of matrix but 2 % from its own reference: a failure naming the reference.
-        fails, _ = rule(corpus_check.evaluate([self.result(1000, 1020)]), "skinned frames")
-        self.assertEqual(len(fails), 1)
-        self.assertIn("apart from motor blend (GLM dual quaternions, drawn by matrix) by t=0.5 2.0 %", fails[0])
+    def test_broken_files_fail_the_load_rule(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            folder = os.path.join(tmp, "assets")
+            os.makedirs(os.path.join(folder, "sub"))
+            with open(os.path.join(folder, "empty.glb"), "wb"):
+                pass
+            with open(os.path.join(folder, "sub", "broken.gltf"), "w", encoding="utf-8") as f:
+                f.write("{not json")
+            junit = os.path.join(tmp, "ci", "rules.xml")
+            cmd = [os.path.join(REPO, "scripts", "corpus-check.sh"), folder, "--out", os.path.join(tmp, "out"),
+                   "--jobs", "2", "--exe", EXE, "--junit", junit]
+            run = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+            quiet = subprocess.run(cmd + ["--quiet"], capture_output=True, text=True, timeout=120)
+            with open(os.path.join(tmp, "out", "corpus-check.json"), encoding="utf-8") as f:
+                doc = json.load(f)
+            suite = ET.parse(junit).getroot()
+        self.assertEqual(run.returncode, 1, run.stderr[-2000:])
+        self.assertIn("- FAIL: every file loads (files without data excepted) (2)\n", run.stdout)
+        self.assertRegex(run.stdout, r"\n  - empty\.glb: .*empty file \(0 bytes\)")
+        self.assertIn("  - sub/broken.gltf: ", run.stdout)
+        self.assertIn("- PASS: 0 crashes, signals or timeouts", run.stdout)
+        self.assertEqual((doc["summary"]["files"], doc["summary"]["loadFailed"], doc["rows"]), (2, 2, []))
+        cases = suite.findall(".//testcase")
+        self.assertEqual([c.get("classname") for c in cases], ["check.rules.empty.glb", "check.rules.sub/broken.gltf"])
+        self.assertTrue(all(c.find("failure") is not None for c in cases))
+        self.assertRegex(cases[0].find("failure").get("message"), r"^every file loads: .*empty file \(0 bytes\)")
+        self.assertEqual(quiet.returncode, 1)
+        self.assertEqual(quiet.stdout.splitlines()[0], "FAIL: every file loads (files without data excepted) (2)")
+        self.assertTrue(quiet.stdout.splitlines()[-1].startswith("check --rules: FAIL: 1 of 6 rules failed; 2 files"), quiet.stdout)
+        self.assertNotIn("PASS", quiet.stdout)
+        self.assertNotIn("check --rules: [", quiet.stderr)  # no progress lines
 
 
 if __name__ == "__main__":
