@@ -1,5 +1,6 @@
 #include "harness/check/golden.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -75,8 +76,10 @@ std::vector<Pose> posesFor(const Scene& scene, int maxAnimations) {
       AnimState state;
       state.anim = a;
       state.time = state.time2 = t;
-      poses.push_back({safe(anim.name.empty() ? "anim" + std::to_string(a) : anim.name) + name,
-                       state});
+      const std::string pose = safe(anim.name.empty() ? "anim" + std::to_string(a) : anim.name) + name;
+      // An animation without duration (or one too short for milliseconds) poses once.
+      if (std::none_of(poses.begin(), poses.end(), [&](const Pose& p) { return p.name == pose; }))
+        poses.push_back({pose, state});
     }
   }
   return poses;

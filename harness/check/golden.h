@@ -31,7 +31,8 @@ struct Pose {
 };
 
 // The plan: rest pose, plus each animation (the first kMaxAnimations) at 35 % and 70 % of its
-// duration, times rounded to milliseconds so the manifest holds them exactly. Every animation,
+// duration, times rounded to milliseconds so the manifest holds them exactly (a pose whose name
+// repeats, as both of an animation without duration, is kept once). Every animation,
 // because built-in scenes add one per case they exist to show (e.g. the tube's candy wrapper).
 // A user's file (check FILE|DIR) keeps its first animation only: one file, rest and two poses.
 constexpr int kMaxAnimations = 4;
