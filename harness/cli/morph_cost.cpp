@@ -133,7 +133,7 @@ void worstOf(const json& doc, const std::string& id, bool skinned, const std::st
             size + " px";
   f.device = doc["gl"].is_object() ? doc["gl"].value("renderer", "GL") : "GL";
   f.n = n;
-  f.tolerance = skinned ? "" : ">= 50 dB (issue 37's rigid rule)";
+  f.tolerance = skinned ? "" : ">= 50 dB (the rigid image rule of every pipeline against matrix)";
   f.definition = "PSNR of the method's image against " + against + " on the same frame; the lowest frame";
   f.value = std::isfinite(psnr) ? psnr : std::nan("");
   if (!n) f.why = "no frame of these scenes has a non-zero morph weight on a drawn node";

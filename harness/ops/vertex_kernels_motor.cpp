@@ -55,7 +55,7 @@ std::vector<VertexKernel> motorKernels() {
        "u_projection.x, u_projection.y, u_projection.z, u_projection.w);",
        motorIncl + "uniform vec4 u_camera[2]; uniform vec4 u_projection;\n"
                    "layout(location = 0) in vec3 a_world;\n",
-       "the paper listing's form, not drawn since issue 26: project() recomputes its per-draw "
+       "the paper listing's form, counted, not drawn (the pipelines take the constants once per frame): project() recomputes its per-draw "
        "constants (cot of half the fov, depth terms: 6 mul, 3 add, 4 div, 1 sin, 1 cos) per vertex; "
        "per vertex proper: sw_mp + 3 mul, 1 add"},
       {"motor, motor_q", "world to clip (per-frame constants)", "motorWorldToClipConstants",
