@@ -1,7 +1,8 @@
 // The interface every renderer implements, and the name -> factory registry.
 // A pipeline owns its GPU representation of a Scene: prepare() converts and uploads,
 // update() poses it for an animation state on the CPU, render() draws into the bound
-// framebuffer. Adding a variant = a new folder under pipelines/ and one line in registry.cpp.
+// framebuffer. Adding a variant = its class and its registry entry (registry.h), one line in
+// registry.cpp.
 #pragma once
 #include <cstdint>
 #include <memory>

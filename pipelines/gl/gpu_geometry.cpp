@@ -57,6 +57,23 @@ void SceneGeometry::upload(const Scene& scene, const Interleave& interleave,
 }
 
 void SceneGeometry::upload(const Scene& scene, const Format& format, PipelineStats& stats) {
+  uploadEach(scene, stats, [&](const Primitive& p, GpuPrimitive& g) {
+    VertexFormat f = format(p);
+    g.variant = f.variant;
+    g.vertices = createBuffer(GL_ARRAY_BUFFER, f.data, stats.vertexBytes);
+    GLsizei stride = 0;
+    for (const VertexAttribute& a : f.attributes) stride += GLsizei(a.size) * GLsizei(sizeof(float));
+    size_t offset = 0;
+    for (const VertexAttribute& a : f.attributes) {
+      glEnableVertexAttribArray(a.location);
+      glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, stride,
+                            reinterpret_cast<const void*>(offset * sizeof(float)));
+      offset += size_t(a.size);
+    }
+  });
+}
+
+void SceneGeometry::uploadEach(const Scene& scene, PipelineStats& stats, const Vertices& vertices) {
   release();
   // A mesh is drawn skinned when some node instancing it has a skin.
   std::vector<bool> skinnedMesh(scene.meshes.size(), false);
@@ -69,19 +86,8 @@ void SceneGeometry::upload(const Scene& scene, const Format& format, PipelineSta
       GpuPrimitive g;
       glGenVertexArrays(1, &g.vao);
       glBindVertexArray(g.vao);
-      VertexFormat f = format(p);
-      g.variant = f.variant;
       const uint64_t before = stats.vertexBytes;
-      g.vertices = createBuffer(GL_ARRAY_BUFFER, f.data, stats.vertexBytes);
-      GLsizei stride = 0;
-      for (const VertexAttribute& a : f.attributes) stride += GLsizei(a.size) * GLsizei(sizeof(float));
-      size_t offset = 0;
-      for (const VertexAttribute& a : f.attributes) {
-        glEnableVertexAttribArray(a.location);
-        glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, stride,
-                              reinterpret_cast<const void*>(offset * sizeof(float)));
-        offset += size_t(a.size);
-      }
+      vertices(p, g);
       countNormalMappedShare(scene, p, stats.vertexBytes - before, stats);
       g.extra.upload(p, stats.extraVertexBytes, stats.skinVertexBytes);
       g.skinned = skinnedMesh[m] && g.extra.joints != 0;

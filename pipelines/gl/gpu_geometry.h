@@ -73,6 +73,12 @@ public:
   void release();
 
 private:
+  // Both uploads: per primitive of every mesh a bound vertex array for vertices(p, g) to give its
+  // vertex buffer and attributes (the bytes counted in stats.vertexBytes), then the normal-mapped
+  // share, ExtraStreams, indices and counts.
+  using Vertices = std::function<void(const Primitive&, GpuPrimitive&)>;
+  void uploadEach(const Scene& scene, PipelineStats& stats, const Vertices& vertices);
+
   std::vector<std::vector<GpuPrimitive>> meshes_;  // [mesh][primitive]
 };
 
