@@ -232,6 +232,19 @@ class SurveyTiePixels(unittest.TestCase):
             self.assertTrue(f["motorBlend"]["identical"] or f["motorBlend"]["psnr"] >= 60, (k, f["motorBlend"]))
 
 
+SYSTEM_PYTHON = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
+# Validates argv[2] against the schema argv[1], prints junitparser's tests, failures and errors.
+JUNIT_READER = """import sys
+try:
+    import xmlschema, junitparser
+except ImportError as e:
+    print('SKIP', e); sys.exit(0)
+xmlschema.XMLSchema(sys.argv[1]).validate(sys.argv[2])
+x = junitparser.JUnitXml.fromfile(sys.argv[2])
+print(x.tests, x.failures, x.errors)
+"""
+
+
 @unittest.skipUnless(os.access(EXE, os.X_OK), f"{EXE}: motorbench not built")
 class CorpusCheckFailing(unittest.TestCase):
     """Files that do not load: the rule fails naming each file and its reason, exit 1; the JUnit
@@ -248,11 +261,18 @@ class CorpusCheckFailing(unittest.TestCase):
             junit = os.path.join(tmp, "ci", "rules.xml")
             cmd = [os.path.join(REPO, "scripts", "corpus-check.sh"), folder, "--out", os.path.join(tmp, "out"),
                    "--jobs", "2", "--exe", EXE, "--junit", junit]
+            # --quiet on the empty file alone, beside the full run (one survey worker more).
+            quiet = subprocess.Popen([cmd[0], os.path.join(folder, "empty.glb"), "--out", os.path.join(tmp, "quiet"),
+                                      "--exe", EXE, "--quiet"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
             run = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
-            quiet = subprocess.run(cmd + ["--quiet"], capture_output=True, text=True, timeout=120)
+            quiet.stdout_text, quiet.stderr_text = quiet.communicate(timeout=120)
             with open(os.path.join(tmp, "out", "corpus-check.json"), encoding="utf-8") as f:
                 doc = json.load(f)
             suite = ET.parse(junit).getroot()
+            # As CI reads it: the project's JUnit schema (tests/cli/junit_schema.xsd) and junitparser,
+            # from the system python that setup.sh installs them for.
+            read = subprocess.run([SYSTEM_PYTHON, "-c", JUNIT_READER, os.path.join(REPO, "tests", "cli", "junit_schema.xsd"),
+                                   junit], capture_output=True, text=True, timeout=60)
         self.assertEqual(run.returncode, 1, run.stderr[-2000:])
         self.assertIn("- FAIL: every file loads (files without data excepted) (2)\n", run.stdout)
         self.assertRegex(run.stdout, r"\n  - empty\.glb: .*empty file \(0 bytes\)")
@@ -263,11 +283,15 @@ class CorpusCheckFailing(unittest.TestCase):
         self.assertEqual([c.get("classname") for c in cases], ["check.rules.empty.glb", "check.rules.sub/broken.gltf"])
         self.assertTrue(all(c.find("failure") is not None for c in cases))
         self.assertRegex(cases[0].find("failure").get("message"), r"^every file loads: .*empty file \(0 bytes\)")
+        if not read.stdout.startswith("SKIP"):
+            self.assertEqual(read.stdout.split(), ["2", "2", "0"], read.stdout + read.stderr)
         self.assertEqual(quiet.returncode, 1)
-        self.assertEqual(quiet.stdout.splitlines()[0], "FAIL: every file loads (files without data excepted) (2)")
-        self.assertTrue(quiet.stdout.splitlines()[-1].startswith("check --rules: FAIL: 1 of 6 rules failed; 2 files"), quiet.stdout)
-        self.assertNotIn("PASS", quiet.stdout)
-        self.assertNotIn("check --rules: [", quiet.stderr)  # no progress lines
+        lines = quiet.stdout_text.splitlines()
+        self.assertEqual(lines[0], "FAIL: every file loads (files without data excepted) (1)")
+        self.assertRegex(lines[1], r"^  - empty\.glb: .*empty file \(0 bytes\)")
+        self.assertEqual(len(lines), 3, quiet.stdout_text)
+        self.assertTrue(lines[-1].startswith("check --rules: FAIL: 1 of 6 rules failed; 1 files"), quiet.stdout_text)
+        self.assertNotIn("check --rules: [", quiet.stderr_text)  # no progress lines
 
 
 if __name__ == "__main__":
