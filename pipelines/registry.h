@@ -26,7 +26,8 @@ struct ShaderVariant {
   std::string fragment = "forward.fs";  // the fragment stage it is linked with
 };
 
-// Which side of the paper's comparison a pipeline is on.
+// Which side of the paper's comparison a pipeline is on: what it transforms with on the CPU
+// (hybrid poses with motors and hands matrices to the GPU: Motor).
 enum class PipelineFamily { Matrix, Motor };
 
 // How a vertex stores its tangent frame and where it is unpacked.

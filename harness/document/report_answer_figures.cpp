@@ -9,6 +9,7 @@
 #include "harness/document/report_isa.h"
 #include "harness/document/report_kind_figures.h"
 #include "harness/figures/figure.h"
+#include "pipelines/registry.h"
 
 namespace mb::report {
 namespace {
@@ -180,7 +181,9 @@ void imageFigures(json& out, const json& r, const std::vector<std::string>& pipe
 }  // namespace
 
 std::string pipelineFamily(const std::string& p) {
-  return p.find("motor") != std::string::npos || p == "hybrid" ? "motor" : "matrix";
+  const PipelineEntry* e = findPipeline(p);
+  if (!e) return p.find("motor") != std::string::npos ? "motor" : "matrix";  // a name this build lacks
+  return e->family == PipelineFamily::Motor ? "motor" : "matrix";
 }
 
 void addAnswerFigures(json& r) {

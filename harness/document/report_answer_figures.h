@@ -11,8 +11,8 @@
 
 namespace mb::report {
 
-// "motor" for the pipelines that transform with motors (motor, motor_q, motor_c, motor_cf,
-// hybrid), "matrix" for the others (matrix, affine, qtangent, matrix_c).
+// "motor" for the pipelines that transform with motors (their registry family: motor, motor_q,
+// motor_c, motor_cf, hybrid), "matrix" for the others (matrix, affine, qtangent, matrix_c).
 std::string pipelineFamily(const std::string& pipeline);
 
 // Adds to report["figures"]: vertex_fetch.bytes_per_vertex.<p>,

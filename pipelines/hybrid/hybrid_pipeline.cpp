@@ -86,7 +86,7 @@ namespace mb {
 // Drawn exactly as qtangent: the same vertex and programs.
 PipelineEntry hybridEntry() {
   return {.name = "hybrid", .make = makeHybridPipeline, .space = Space::Euclidean, .skin = SkinMethod::LinearBlend,
-          .family = PipelineFamily::Matrix, .vertexBytes = 28, .frame = {.decodeKernel = "qtangentFrame"},
+          .family = PipelineFamily::Motor, .vertexBytes = 28, .frame = {.decodeKernel = "qtangentFrame"},
           .variants = affine::qtangentVariants("; the GPU side of qtangent")};
 }
 

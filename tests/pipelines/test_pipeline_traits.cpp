@@ -2,11 +2,13 @@
 // report's and claims' tables read instead of pipeline names, against what the pipeline does:
 // the vertex bytes against the bytes its uploads count on the normal-mapped torus, the frame
 // decoder against the kernels harness/ops counts, the per-fragment rotor against the defines
-// of its variants, the family against its skinning method.
+// of its variants, the family against its skinning method, and the report's family of each.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 
+#include "harness/document/report_answer_figures.h"
 #include "harness/ops/vertex_kernels.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/registry.h"
@@ -50,9 +52,18 @@ TEST(PipelineTraits, FrameDecodersAreCountedKernelsAndTheRotorPassesWhereDeclare
           << e.name << ": " << e.frame.decodeKernel;
     EXPECT_EQ(e.frame.perFragment, definesAny(e, "MB_FRAGMENT_ROTOR")) << e.name;
     perFragment += e.frame.perFragment;
-    EXPECT_EQ(e.family == PipelineFamily::Motor, e.skin == SkinMethod::MotorBlend) << e.name;
+    // Blending motors is the motor side's; hybrid poses with motors and blends matrices.
+    if (e.skin == SkinMethod::MotorBlend) EXPECT_EQ(e.family, PipelineFamily::Motor) << e.name;
+    if (e.family == PipelineFamily::Matrix) EXPECT_EQ(e.skin, SkinMethod::LinearBlend) << e.name;
   }
   EXPECT_EQ(perFragment, 1);  // motor_cf
+}
+
+// The report groups pipelines by the family they declare: matrices on the CPU or motors.
+TEST(PipelineTraits, TheReportsFamilyIsTheDeclaredOne) {
+  const std::set<std::string> matrices = {"matrix", "affine", "qtangent", "matrix_c", "s3_matrix", "h3_matrix"};
+  for (const PipelineEntry& e : registeredPipelines())
+    EXPECT_EQ(report::pipelineFamily(e.name), matrices.count(e.name) ? "matrix" : "motor") << e.name;
 }
 
 }  // namespace
