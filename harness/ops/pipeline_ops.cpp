@@ -66,7 +66,9 @@ std::vector<PipelineOps> pipelineOps(const VertexOps& ops) {
     need(row.rigid, "rigid");
     need(row.toClip, "to clip");
     if (skins) need(row.skinned, "skinned");
-    if (!missing.empty()) row.problem = "no counted ops (" + missing + "): shader_variants.h lacks its kernels";
+    if (!missing.empty())
+      row.problem = "no counted ops (" + missing + "): its registry entry declares no such variant, or "
+                    "its kernels are not counted";
     rows.push_back(row);
   }
   return rows;
