@@ -173,8 +173,8 @@ AnswerLine imageLine(const json& r, const std::string& m, const std::string& M) 
   l.text = M + " vs " + m + ", each frame against its own reference: worst PSNR " +
            (psnr ? marked(*psnr) : "- (none differs)") + ", " +
            (same ? fmt(same->value, 6) + " of " + std::to_string(same->n) : std::string("-")) + " frames identical" +
-           (own ? " (of them " + marked(*own) + " skinned, judged against " + M +
-                      "'s own skinning method's reference, the motor-blend reference, not " + m + ")"
+           (own ? " (of them " + marked(*own) + " skinned, against the motor-blend reference: " + M +
+                      "'s own skinning method, not " + m + "'s)"
                 : std::string()) +
            "; worst frame mean FLIP " + (flip ? figureMark(flip->name, fmt(flip->value, 3)) : std::string("not measured")) +
            (notJudged ? "; " + marked(*notJudged) + " not judged (" + firstNotJudged(r, M) + ")" : std::string());

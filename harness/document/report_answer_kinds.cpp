@@ -94,8 +94,14 @@ std::string kindText(KindQuote& q, KindAnswer& k, const std::string& evidence, c
   return imageText(q, k, M);
 }
 
-std::string shareText(const KindAnswer& k) {
-  return k.label + (std::isfinite(k.shareVertices) ? " (" + fmt(k.shareVertices, 3) + " % of vertices)" : "");
+// "normal-mapped 40 %, skinned 60 %, ...": each kind of `l` the content draws, with its share of the
+// drawn vertices (the headline names the kinds by label after it).
+std::string sharesText(const AnswerLine& l) {
+  std::string out;
+  for (const KindAnswer& k : l.kinds)
+    if (isShare(k.kind) && std::isfinite(k.shareVertices))
+      out += (out.empty() ? "" : ", ") + k.label + " " + fmt(k.shareVertices, 3) + " %";
+  return out;
 }
 
 const KindAnswer* kindOf(const AnswerLine& l, const std::string& id) {
@@ -113,16 +119,16 @@ void kindsVerdictOf(AnswerLine& l) {
   const bool timeOrImage = l.evidence.rfind("time", 0) == 0 || l.evidence.rfind("image", 0) == 0;
   const KindAnswer* all = kindOf(l, "all");
   if (timeOrImage || !all || !std::isfinite(all->ratio)) return;
-  const std::string what = l.evidence.rfind("bytes", 0) == 0 ? "it fetches fewer bytes"
-                           : l.evidence.rfind("ops", 0) == 0 ? "it runs fewer arithmetic ops"
+  const std::string what = l.evidence.rfind("bytes", 0) == 0 ? "fewer bytes fetched"
+                           : l.evidence.rfind("ops", 0) == 0 ? "fewer arithmetic ops"
                                                               : "fewer ISA instructions";
-  const std::string before = l.verdict;
-  l.verdict = sideOf(all->ratio, what) + " on this content as a whole (weighted by drawn vertices; by kind: the "
-              "headline above)";
+  const std::string before = l.verdict.substr(0, l.verdict.find(':'));  // "matrix side cheaper", ...
+  l.verdict = sideOf(all->ratio, what) + ", weighted by drawn vertices (by kind: above";
   if (const KindAnswer* b = kindOf(l, "built_in"); b && std::isfinite(b->ratio))
     l.verdict += "; built-in scenes: " + std::string(b->ratio < 1 ? "motor" : b->ratio > 1 ? "matrix" : "neither") +
                  " side cheaper";
-  if (l.evidence.rfind("ops", 0) == 0) l.verdict += " (the rigid kernel alone: " + before + ")";
+  if (l.evidence.rfind("ops", 0) == 0) l.verdict += "; rigid kernel alone: " + before;
+  l.verdict += ")";
 }
 
 }  // namespace
@@ -169,7 +175,7 @@ void answerKindsTable(Document& d, const std::vector<AnswerLine>& lines, const j
 
 std::string answerHeadline(const std::vector<AnswerLine>& lines, const json& r) {
   if (!kindsRecorded(r)) return "";
-  std::string out;
+  std::string out, shares;
   const std::pair<const char*, const char*> verbs[] = {{"bytes", "fetches %s bytes"}, {"ops", "runs %s arithmetic ops"},
                                                        {"AMD ISA", "compiles to %s ISA instructions"}};
   for (const auto& [evidence, verb] : verbs)
@@ -179,7 +185,7 @@ std::string answerHeadline(const std::vector<AnswerLine>& lines, const json& r) 
       for (const KindAnswer& k : l.kinds) {
         if (!isShare(k.kind) || !std::isfinite(k.ratio) || k.ratio == 1) continue;
         std::string& list = k.ratio < 1 ? fewer : more;
-        list += (list.empty() ? "" : ", ") + shareText(k);
+        list += (list.empty() ? "" : ", ") + k.label;
       }
       if (fewer.empty() && more.empty()) continue;
       auto with = [&](const char* word) {
@@ -187,14 +193,15 @@ std::string answerHeadline(const std::vector<AnswerLine>& lines, const json& r) 
         std::snprintf(buf, sizeof buf, verb, word);
         return std::string(buf);
       };
-      std::string clause = "motor " + (fewer.empty() ? "" : with("fewer") + " on " + fewer);
+      if (shares.empty()) shares = sharesText(l);
+      std::string clause = fewer.empty() ? "" : with("fewer") + " on " + fewer;
       if (!more.empty()) clause += (fewer.empty() ? with("more") : ", more") + " on " + more;
       if (const KindAnswer* b = kindOf(l, "built_in"); b && std::isfinite(b->ratio) && b->ratio != 1)
-        clause += std::string(" (on the built-in scenes ") + (b->ratio < 1 ? "fewer" : "more") + ")";
-      out += (out.empty() ? "" : "; ") + clause;
+        clause += std::string(" (built-in scenes: ") + (b->ratio < 1 ? "fewer" : "more") + ")";
+      out += (out.empty() ? "motor " : "; ") + clause;
     }
   if (out.empty()) return "";
-  return "The content decides the verdict: " + out + ".";
+  return "The content decides the verdict (drawn vertices: " + shares + "): " + out + ".";
 }
 
 }  // namespace mb::report

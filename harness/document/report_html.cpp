@@ -24,7 +24,8 @@ pre { background: #f5f5f5; padding: 0.6em; overflow-x: auto; font-size: 12px; }
 .card { width: 200px; font-size: 12px; } .card img { display: block; width: 200px; height: auto; image-rendering: pixelated; }
 .card b { display: block; }
 #answer-table { font-size: 13px; } #answer-table td:first-child { white-space: nowrap; }
-#design-space { margin: 0.4em 0; } #design-space img { max-width: 600px; }
+#answer-table td:last-child { width: 30%; }
+#design-space { margin: 0.4em 0; } #design-space img { max-width: 480px; }
 )";
 
 // Once the page has loaded, the <body> says how many images it shows and how many failed to

@@ -74,8 +74,7 @@ TEST(CliReportAnim, SeveralAnimationsByNameAndIndexCommaOrRepeated) {
   EXPECT_EQ(r["figures"]["image.frames_not_judged.motor"]["value"], 0);
   const std::string md = readText(dir / "report.md");
   EXPECT_NE(md.find("frames identical (of them <span title=\"image.skinned_frames_own_reference.motor\">6 frames</span> "
-                    "skinned, judged against motor's own skinning method's reference, the motor-blend reference, not "
-                    "matrix)"), std::string::npos) << md.substr(0, 3000);
+                    "skinned, against the motor-blend reference: motor's own skinning method, not matrix's)"), std::string::npos) << md.substr(0, 3000);
   EXPECT_NE(md.find("candy_wrapper, t = 0.667 s"), std::string::npos);
   EXPECT_NE(md.find("the methods' expected difference"), std::string::npos);
   EXPECT_NE(md.find("| motor (skinning method difference) | "), std::string::npos);

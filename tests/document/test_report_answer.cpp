@@ -132,8 +132,8 @@ TEST(ReportAnswer, SkinnedFramesAreJudgedByTheirOwnMethodAndCounted) {
   EXPECT_NE(notJudged->definition.find("made before skinned frames were judged so"), std::string::npos);
   EXPECT_DOUBLE_EQ(figures::figureNamed(r, "image.flip_mean_worst.motor")->value, 0.01);
   const AnswerLine image = line(answerLines(r), "image");
-  EXPECT_NE(image.text.find("1 of 4 frames identical (of them 1 frames skinned, judged against motor's own skinning "
-                            "method's reference, the motor-blend reference, not matrix)"), std::string::npos) << image.text;
+  EXPECT_NE(image.text.find("1 of 4 frames identical (of them 1 frames skinned, against the motor-blend reference: "
+                            "motor's own skinning method, not matrix's)"), std::string::npos) << image.text;
   EXPECT_NE(image.text.find("; 2 frames not judged (first: tube t=1: not judged against the motor-blend reference: a "
                             "skinned mesh drawn by more than one node)"), std::string::npos) << image.text;
   EXPECT_EQ(image.verdict, "equivalent (every differing frame >= 50 dB); 2 frames not judged");
