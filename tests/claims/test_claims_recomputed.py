@@ -88,7 +88,12 @@ class ClaimsRecomputed(unittest.TestCase):
         for key, value in expected.items():
             found = [k for k in kinds if key in k]
             self.assertEqual(len(found), 1, key)
-            self.assertAlmostEqual(kinds[found[0]]["costRatio"], value, places=9, msg=key)
+            kind = kinds[found[0]]
+            if kind["costRatio"] is None:  # a timing taken while other work shared the cores: no ratio, no vote
+                self.assertFalse(kind["usable"], key)
+                self.assertIn("disturbed", kind.get("caveat", ""), key)
+                continue
+            self.assertAlmostEqual(kind["costRatio"], value, places=9, msg=key)
         # The verdict by the printed rule over the usable kinds.
         self.assertIn("at most 10 % more", row["measuredValue"]["rule"])
         usable = [k["costRatio"] for k in kinds.values() if k["usable"]]
