@@ -23,7 +23,7 @@ int fail(const std::string& message) {
 }
 
 CheckItem::Outcome outcomeFromName(const std::string& name) {
-  for (auto o : {CheckItem::Outcome::Pass, CheckItem::Outcome::Warn, CheckItem::Outcome::Fail})
+  for (auto o : {CheckItem::Outcome::Pass, CheckItem::Outcome::Warn, CheckItem::Outcome::Fail, CheckItem::Outcome::Changed})
     if (name == outcomeName(o)) return o;
   return CheckItem::Outcome::Error;
 }
@@ -48,6 +48,7 @@ CheckItem itemFromJson(const json& e) {
   CheckItem it;
   it.file = e.value("file", ""), it.scene = e.value("scene", ""), it.pipeline = e.value("pipeline", "");
   it.pose = e.value("pose", ""), it.level = e.value("level", ""), it.reason = e.value("reason", "");
+  it.source = e.value("source", "");
   it.outcome = outcomeFromName(e.value("outcome", ""));
   it.compared = e.contains("metrics");
   if (it.compared) it.metrics = metricsFromJson(e["metrics"]);
@@ -90,6 +91,9 @@ int mergeCheckRuns(const std::vector<std::string>& dirs, const std::string& outD
   std::map<std::string, std::vector<std::pair<json, std::string>>> byScene;
   for (size_t i = 0; i < runs.size(); ++i) {
     for (const json& e : runs[i]["images"]) byScene[e.value("scene", "")].push_back({e, dirs[i]});
+    for (const json& c : runs[i].value("changedFiles", json::array()))
+      run.changed.push_back({c.value("scene", ""), c.value("path", ""), c.value("recordedSha256", ""),
+                             c.value("sha256", ""), c.value("images", 0)});
     for (const json& n : runs[i]["notes"])
       if (std::find(run.notes.begin(), run.notes.end(), n.get<std::string>()) == run.notes.end())
         run.notes.push_back(n.get<std::string>());
@@ -101,13 +105,13 @@ int mergeCheckRuns(const std::vector<std::string>& dirs, const std::string& outD
       for (const std::string* f : {&it.expected, &it.actual, &it.diff, &it.flipMap})
         if (!f->empty()) fs::copy_file(fs::path(dir) / *f, fs::path(outDir) / *f, fs::copy_options::overwrite_existing, ec);
     }
-  int counts[4] = {0, 0, 0, 0};
-  for (const CheckItem& it : run.items) ++counts[int(it.outcome)];
   if (Status s = writeCheckReport(outDir, run); !s) return fail(s.error());
-  std::printf("merge: %d shard(s): %zu images: %d passed, %d warned, %d failed, %d errors -> %s\n",
-              parts[0].count, run.items.size(), counts[0], counts[1], counts[2], counts[3],
+  // check's summary line ("check: N images: ...") with merge's shard count in front.
+  std::string line = summaryLine(run);
+  line = line.substr(line.find(':') + 2);
+  std::printf("merge: %d shard(s): %s -> %s\n", parts[0].count, line.c_str(),
               (fs::path(outDir) / "summary.html").string().c_str());
-  return counts[3] > 0 ? 2 : counts[2] > 0 ? 1 : 0;
+  return exitCode(run);
 }
 
 }  // namespace mb

@@ -142,6 +142,14 @@ TEST(CliCheckFiles, GoldensOfAFolderPassThenAShaderChangeFailsAndAFileChangeIsNa
   ASSERT_FALSE(changed.is_discarded());
   EXPECT_EQ(changed["counts"]["changed"], 6);
   EXPECT_EQ(changed["changedFiles"][0]["path"], "props/slide.glb");
+  // Shards of the same check merge to the same verdict, the changed file kept.
+  for (const char* shard : {"1/2", "2/2"})
+    EXPECT_EQ(runMb(check + "--quiet --shard " + shard + " --out " + quoted(root / ("s" + std::string(1, shard[0])))).rc,
+              shard[0] == '1' ? 1 : 0);  // by scene name: 1/2 props_slide_glb (changed), 2/2 still_gltf
+  r = runMb("merge " + quoted(root / "s1") + " " + quoted(root / "s2") + " -o " + quoted(root / "merged"));
+  EXPECT_EQ(r.rc, 1) << r.out;
+  EXPECT_TRUE(contains(r.out, "merge: 2 shard(s): 8 images: 2 passed, 0 warned, 0 failed, 0 errors; 1 file changed"))
+      << r.out;
 
   // The three JUnit files against the schema, read by junitparser: check.json's counts.
   const auto counts = junitCounts({root / "pass" / "junit.xml", root / "dim" / "junit.xml", root / "changed" / "junit.xml"});
