@@ -207,6 +207,192 @@ std::string lastStep(const std::string& stepFile) {
   return line;
 }
 
+namespace {
+
+// One image time of one animation shown (anim -1: the rest pose).
+struct Shot {
+  int anim;
+  float time;
+};
+
+// The animations shown (--anim's choice, else the first; none: the rest pose, anim -1) and
+// their image times, written into `out` ("animation", "animations", "times").
+struct ShownTimes {
+  std::vector<int> anims;
+  bool chosen = false;  // --anim chose them
+  std::vector<Shot> shots;
+};
+ShownTimes shownTimes(const SceneJob& job, const Scene& scene, json& out) {
+  ShownTimes st;
+  st.anims = job.animations;
+  st.chosen = !st.anims.empty();
+  if (st.anims.empty()) st.anims.push_back(scene.animations.empty() ? -1 : 0);
+  json animations = json::array();
+  for (int a : st.anims) {
+    for (float t : imageTimes(scene, a)) st.shots.push_back({a, t});
+    if (a < 0) continue;
+    const Animation& an = scene.animations[size_t(a)];
+    animations.push_back({{"index", a}, {"name", an.name}, {"duration", an.duration}, {"times", imageTimes(scene, a)}});
+  }
+  out["animation"] = animations.empty() ? json(nullptr) : json{{"index", animations[0]["index"]},
+                                                               {"name", animations[0]["name"]},
+                                                               {"duration", animations[0]["duration"]}};
+  out["animations"] = animations;
+  out["times"] = st.anims.front() < 0 ? json::array({0.0}) : animations[0]["times"];
+  return st;
+}
+
+// What the frames of a scene add up to per pipeline: conversion times, the first error, and
+// the renders tried and written.
+struct FrameTally {
+  std::map<std::string, std::vector<double>> conversion;
+  std::map<std::string, std::string> pipelineError;
+  int framesOk = 0, framesTried = 0;
+};
+
+// A pipeline's records that do not depend on the time (uploads, vertex fetch, fallbacks, stats,
+// draws, skin blend, and the scene's GL device), kept from its first frame; then each fallback
+// counter raised to its largest over the frames (they may depend on the pose).
+void keepPipelineRecords(const Scene& scene, const std::string& p, const Frame& f, json& out) {
+  json& pj = out["pipelines"][p];
+  if (!pj.contains("memory")) {  // the uploads do not depend on the time; keep the first
+    pj["memory"] = memoryJson(f.stats);
+    if (scene.curved.space == Space::Euclidean)  // the GPU vertex stage, not timed
+      pj["vertexFetch"] = vertexFetchJson(scene, f.stats);
+    pj["fallbacks"] = fallbacksJson(f.stats);
+    pj["stats"] = toJson(f.stats);
+    pj["draws"] = f.stats.draws;
+    pj["skinBlend"] = skinBlendOf(p);
+    if (!out.contains("gl"))
+      out["gl"] = toJson(f.gl);  // the device record (render_frame.h)
+  }
+  // Fallbacks counted per render may depend on the pose: keep each counter's largest.
+  // (a named json: items() of a temporary would iterate a destroyed object)
+  const json fallbacks = fallbacksJson(f.stats);
+  for (const auto& [k, v] : fallbacks.items())
+    if (v.is_number() && v.get<double>() > pj["fallbacks"].value(k, 0.0)) pj["fallbacks"][k] = v;
+}
+
+// Frame k drawn by every pipeline in order, each image written to <rel>t<k>_<p>.png and named in
+// `frame` (or its error there and in the tally); returns the images drawn, by pipeline.
+std::map<std::string, RgbaImage> renderPipelines(const SceneJob& job, Scene& scene, const FrameSettings& settings,
+                                                 const std::string& rel, size_t k, const std::string& when,
+                                                 json& frame, json& out, FrameTally& tally) {
+  std::map<std::string, RgbaImage> images;
+  for (const std::string& p : job.pipelines) {
+    ++tally.framesTried;
+    progress(job, "rendering " + p + " t=" + when);
+    auto f = renderFrame(scene, p, settings);
+    if (!f) {
+      frame["errors"][p] = f.error();
+      tally.pipelineError.emplace(p, f.error());
+      progress(job, "FAILED " + p + ": " + f.error());
+      continue;
+    }
+    const std::string file = rel + "t" + std::to_string(k) + "_" + p + ".png";
+    Status written = writeImage((fs::path(job.outDir) / file).string(), f->image);
+    if (!written) {
+      frame["errors"][p] = written.error();
+      tally.pipelineError.emplace(p, written.error());
+      continue;
+    }
+    ++tally.framesOk;
+    frame["images"][p] = file;
+    frame["drawnPixels"][p] = drawnPixels(f->image);  // 0: background only
+    tally.conversion[p].push_back(f->stats.conversionMs);
+    keepPipelineRecords(scene, p, *f, out);
+    images.emplace(p, std::move(f->image));
+  }
+  return images;
+}
+
+// Pipeline p's image of frame k against the baseline's: metrics (with FLIP), the diff heat map
+// and FLIP map written beside the images, and compare's drawn-pixel check (a skinned frame of
+// another skinning method judged against its own method's reference); all into `frame`.
+void compareWithBase(const SceneJob& job, const std::string& p, const std::string& rel, size_t k, bool skinned,
+                     std::map<std::string, RgbaImage>& images, OwnMethodJudge& own, json& frame) {
+  const std::string& base = job.pipelines.front();
+  auto m = compareImages(images[base], images[p]);
+  if (!m) {
+    frame["errors"]["diff_" + p] = m.error();
+    return;
+  }
+  const std::string file = rel + "t" + std::to_string(k) + "_diff_" + p + ".png";
+  Status written = writeImage((fs::path(job.outDir) / file).string(),
+                              diffHeatmap(images[base], images[p]));
+  if (written) frame["diffs"][p] = file;
+  else frame["errors"]["diff_" + p] = written.error();
+  auto flip = computeFlip(images[base], images[p]);  // the baseline is FLIP's reference
+  if (!flip) {
+    frame["errors"]["flip_" + p] = flip.error();
+    frame["metrics"][p] = toJson(*m);
+  } else {
+    frame["metrics"][p] = toJson(*m, *flip);  // the compare command's metrics, FLIP beside PSNR
+    const std::string flipFile = rel + "t" + std::to_string(k) + "_flip_" + p + ".png";
+    if (Status f = writeImage((fs::path(job.outDir) / flipFile).string(), flipErrorImage(*flip)); f)
+      frame["flipMaps"][p] = flipFile;  // beside the diff image
+    else
+      frame["errors"]["flip_" + p] = f.error();
+  }
+  // compare's drawn-pixel check: an empty image or counts > 1 % apart marks the frame failed.
+  // A skinned frame of another skinning method than the baseline's is judged against its
+  // own method's reference instead (skin_judgement.h), as compare judges it.
+  const bool methods = skinned && skinMethodsDiffer(base, p);
+  DrawnCheck check = checkDrawn(base, images[base], p, images[p], skinned, methods);
+  const SkinnedFrameJudgement* j = methods ? own.judge(p, frame) : nullptr;
+  if (j && j->judged) {
+    check = j->vsReference.drawn;
+    check.reason = j->reason;
+    check.skinningMethodNote = !check.failed;
+  }
+  json checkJson = toJson(check);
+  checkJson["against"] = j && j->judged ? j->reference : base;  // the image the counts were checked against
+  frame["drawnCheck"][p] = checkJson;
+}
+
+// Frame k of the shots: its settings (a zero-length animation drawn as the rest pose unless
+// --anim chose it), every pipeline's image, and each compared pipeline against the baseline.
+json measureFrame(const SceneJob& job, Scene& scene, const ShownTimes& st, size_t k, bool skinned,
+                  const std::string& rel, json& out, FrameTally& tally) {
+  FrameSettings settings;
+  settings.width = job.width, settings.height = job.height;
+  // A zero-length animation is drawn as the rest pose unless --anim chose it.
+  const int a = st.shots[k].anim;
+  if (a >= 0 && (st.chosen || scene.animations[size_t(a)].duration > 0.0f)) settings.anim.anim = a;
+  settings.anim.time = st.shots[k].time;
+  const std::string when = timeText(st.shots[k].time) + (a >= 0 && (st.chosen || st.anims.size() > 1)
+                                                           ? " (" + scene.animations[size_t(a)].name + ")" : "");
+  json frame = {{"time", st.shots[k].time}, {"animation", a >= 0 ? json(a) : json(nullptr)},
+                {"images", json::object()}, {"diffs", json::object()},
+                {"metrics", json::object()}, {"drawnPixels", json::object()}, {"drawnCheck", json::object()},
+                {"errors", json::object()}};
+  std::map<std::string, RgbaImage> images = renderPipelines(job, scene, settings, rel, k, when, frame, out, tally);
+  const std::string& base = job.pipelines.front();
+  OwnMethodJudge own(scene, settings, images, [&](const std::string& what) { progress(job, what + " t=" + when); });
+  for (size_t i = 1; i < job.pipelines.size() && images.count(base); ++i) {
+    const std::string& p = job.pipelines[i];
+    if (!images.count(p)) continue;
+    compareWithBase(job, p, rel, k, skinned, images, own, frame);
+  }
+  return frame;
+}
+
+// Each pipeline's first error (null when none) and its conversion times (median, min, samples).
+void pipelineSummaries(const SceneJob& job, FrameTally& tally, json& out) {
+  for (const std::string& p : job.pipelines) {
+    json& pj = out["pipelines"][p];
+    pj["error"] = tally.pipelineError.count(p) ? json(tally.pipelineError[p]) : json(nullptr);
+    if (tally.conversion.count(p)) {
+      const auto& c = tally.conversion[p];
+      pj["conversionMs"] = {{"median", median(c)},
+                            {"min", *std::min_element(c.begin(), c.end())},
+                            {"samples", c}};
+    }
+  }
+}
+
+}  // namespace
+
 json measureScene(const SceneJob& job) {
   json out = {{"id", job.input.id}, {"spec", job.input.spec}, {"origin", sceneOrigin(job.input.spec)}, {"status", "failed"},
               {"error", nullptr}, {"frames", json::array()}, {"pipelines", json::object()}};
@@ -230,27 +416,7 @@ json measureScene(const SceneJob& job) {
   out["vertexMix"] = vertexMix(*scene);
   out["contentKinds"] = contentKindsJson(*scene);  // the answer's split by kind of content
   if (scene->curved.space == Space::Euclidean) out["overdraw"] = overdrawJson(*scene);  // the mesh alone
-  // The animations shown: --anim's choice, else the first (none: the rest pose, anim -1).
-  std::vector<int> anims = job.animations;
-  const bool chosen = !anims.empty();
-  if (anims.empty()) anims.push_back(scene->animations.empty() ? -1 : 0);
-  struct Shot {
-    int anim;
-    float time;
-  };
-  std::vector<Shot> shots;
-  json animations = json::array();
-  for (int a : anims) {
-    for (float t : imageTimes(*scene, a)) shots.push_back({a, t});
-    if (a < 0) continue;
-    const Animation& an = scene->animations[size_t(a)];
-    animations.push_back({{"index", a}, {"name", an.name}, {"duration", an.duration}, {"times", imageTimes(*scene, a)}});
-  }
-  out["animation"] = animations.empty() ? json(nullptr) : json{{"index", animations[0]["index"]},
-                                                               {"name", animations[0]["name"]},
-                                                               {"duration", animations[0]["duration"]}};
-  out["animations"] = animations;
-  out["times"] = anims.front() < 0 ? json::array({0.0}) : animations[0]["times"];
+  const ShownTimes st = shownTimes(job, *scene, out);
   out["space"] = spaceName(scene->curved.space);
   out["pipelineOrder"] = job.pipelines;
 
@@ -261,124 +427,19 @@ json measureScene(const SceneJob& job) {
     out["error"] = job.outDir + "/" + rel + ": cannot create folder: " + ec.message();
     return out;
   }
-  std::map<std::string, std::vector<double>> conversion;
-  std::map<std::string, std::string> pipelineError;
-  int framesOk = 0, framesTried = 0;
+  FrameTally tally;
   const bool skinned = drawsSkinned(*scene);
-  for (size_t k = 0; k < shots.size(); ++k) {
-    FrameSettings settings;
-    settings.width = job.width, settings.height = job.height;
-    // A zero-length animation is drawn as the rest pose unless --anim chose it.
-    const int a = shots[k].anim;
-    if (a >= 0 && (chosen || scene->animations[size_t(a)].duration > 0.0f)) settings.anim.anim = a;
-    settings.anim.time = shots[k].time;
-    const std::string when = timeText(shots[k].time) + (a >= 0 && (chosen || anims.size() > 1)
-                                                             ? " (" + scene->animations[size_t(a)].name + ")" : "");
-    json frame = {{"time", shots[k].time}, {"animation", a >= 0 ? json(a) : json(nullptr)},
-                  {"images", json::object()}, {"diffs", json::object()},
-                  {"metrics", json::object()}, {"drawnPixels", json::object()}, {"drawnCheck", json::object()},
-                  {"errors", json::object()}};
-    std::map<std::string, RgbaImage> images;
-    for (const std::string& p : job.pipelines) {
-      ++framesTried;
-      progress(job, "rendering " + p + " t=" + when);
-      auto f = renderFrame(*scene, p, settings);
-      if (!f) {
-        frame["errors"][p] = f.error();
-        pipelineError.emplace(p, f.error());
-        progress(job, "FAILED " + p + ": " + f.error());
-        continue;
-      }
-      const std::string file = rel + "t" + std::to_string(k) + "_" + p + ".png";
-      Status written = writeImage((fs::path(job.outDir) / file).string(), f->image);
-      if (!written) {
-        frame["errors"][p] = written.error();
-        pipelineError.emplace(p, written.error());
-        continue;
-      }
-      ++framesOk;
-      frame["images"][p] = file;
-      frame["drawnPixels"][p] = drawnPixels(f->image);  // 0: background only
-      conversion[p].push_back(f->stats.conversionMs);
-      json& pj = out["pipelines"][p];
-      if (!pj.contains("memory")) {  // the uploads do not depend on the time; keep the first
-        pj["memory"] = memoryJson(f->stats);
-        if (scene->curved.space == Space::Euclidean)  // the GPU vertex stage, not timed
-          pj["vertexFetch"] = vertexFetchJson(*scene, f->stats);
-        pj["fallbacks"] = fallbacksJson(f->stats);
-        pj["stats"] = toJson(f->stats);
-        pj["draws"] = f->stats.draws;
-        pj["skinBlend"] = skinBlendOf(p);
-        if (!out.contains("gl"))
-          out["gl"] = toJson(f->gl);  // the device record (render_frame.h)
-      }
-      // Fallbacks counted per render may depend on the pose: keep each counter's largest.
-      // (a named json: items() of a temporary would iterate a destroyed object)
-      const json fallbacks = fallbacksJson(f->stats);
-      for (const auto& [k, v] : fallbacks.items())
-        if (v.is_number() && v.get<double>() > pj["fallbacks"].value(k, 0.0)) pj["fallbacks"][k] = v;
-      images.emplace(p, std::move(f->image));
-    }
-    const std::string& base = job.pipelines.front();
-    OwnMethodJudge own(*scene, settings, images, [&](const std::string& what) { progress(job, what + " t=" + when); });
-    for (size_t i = 1; i < job.pipelines.size() && images.count(base); ++i) {
-      const std::string& p = job.pipelines[i];
-      if (!images.count(p)) continue;
-      auto m = compareImages(images[base], images[p]);
-      if (!m) {
-        frame["errors"]["diff_" + p] = m.error();
-        continue;
-      }
-      const std::string file = rel + "t" + std::to_string(k) + "_diff_" + p + ".png";
-      Status written = writeImage((fs::path(job.outDir) / file).string(),
-                                  diffHeatmap(images[base], images[p]));
-      if (written) frame["diffs"][p] = file;
-      else frame["errors"]["diff_" + p] = written.error();
-      auto flip = computeFlip(images[base], images[p]);  // the baseline is FLIP's reference
-      if (!flip) {
-        frame["errors"]["flip_" + p] = flip.error();
-        frame["metrics"][p] = toJson(*m);
-      } else {
-        frame["metrics"][p] = toJson(*m, *flip);  // the compare command's metrics, FLIP beside PSNR
-        const std::string flipFile = rel + "t" + std::to_string(k) + "_flip_" + p + ".png";
-        if (Status f = writeImage((fs::path(job.outDir) / flipFile).string(), flipErrorImage(*flip)); f)
-          frame["flipMaps"][p] = flipFile;  // beside the diff image
-        else
-          frame["errors"]["flip_" + p] = f.error();
-      }
-      // compare's drawn-pixel check: an empty image or counts > 1 % apart marks the frame failed.
-      // A skinned frame of another skinning method than the baseline's is judged against its
-      // own method's reference instead (skin_judgement.h), as compare judges it.
-      const bool methods = skinned && skinMethodsDiffer(base, p);
-      DrawnCheck check = checkDrawn(base, images[base], p, images[p], skinned, methods);
-      const SkinnedFrameJudgement* j = methods ? own.judge(p, frame) : nullptr;
-      if (j && j->judged) {
-        check = j->vsReference.drawn;
-        check.reason = j->reason;
-        check.skinningMethodNote = !check.failed;
-      }
-      json checkJson = toJson(check);
-      checkJson["against"] = j && j->judged ? j->reference : base;  // the image the counts were checked against
-      frame["drawnCheck"][p] = checkJson;
-    }
-    out["frames"].push_back(frame);
+  for (size_t k = 0; k < st.shots.size(); ++k) {
+    json frame = measureFrame(job, *scene, st, k, skinned, rel, out, tally);
+    out["frames"].push_back(std::move(frame));
   }
-  for (const std::string& p : job.pipelines) {
-    json& pj = out["pipelines"][p];
-    pj["error"] = pipelineError.count(p) ? json(pipelineError[p]) : json(nullptr);
-    if (conversion.count(p)) {
-      const auto& c = conversion[p];
-      pj["conversionMs"] = {{"median", median(c)},
-                            {"min", *std::min_element(c.begin(), c.end())},
-                            {"samples", c}};
-    }
-  }
+  pipelineSummaries(job, tally, out);
   // One loop per animation shown; "animated" keeps the first's (the schema before --anim).
   for (json& an : out["animations"]) an["animated"] = animatedComparisons(*scene, job, rel, an["index"].get<int>());
   out["animated"] = out["animations"].empty() ? json(nullptr) : out["animations"][0]["animated"];
-  out["status"] = framesOk == framesTried ? "ok" : framesOk > 0 ? "partial" : "failed";
-  if (framesOk < framesTried && !pipelineError.empty())
-    out["error"] = pipelineError.begin()->second;
+  out["status"] = tally.framesOk == tally.framesTried ? "ok" : tally.framesOk > 0 ? "partial" : "failed";
+  if (tally.framesOk < tally.framesTried && !tally.pipelineError.empty())
+    out["error"] = tally.pipelineError.begin()->second;
   progress(job, std::string("done (") + out["status"].get<std::string>() + ")");
   return out;
 }
