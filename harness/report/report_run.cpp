@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "harness/bench/report_bench.h"
 #include "harness/document/ops_ranking.h"
@@ -173,151 +174,159 @@ std::vector<std::string> runPipelines(const Options& o) {
   return o.pipelines.empty() ? pipelineNames() : o.pipelines;
 }
 
-int runReport(const Options& o) {
-  catchInterrupts();  // Ctrl-C / kill: the workers are stopped and the folder says it is partial
+namespace {
+
+// The report folder cleared of an older report, created and marked partial, and a temporary
+// folder for the workers' results; nullopt (the error printed) when one of them fails.
+std::optional<fs::path> prepareFolders(const Options& o) {
   std::error_code ec;
   if (Status clear = clearOldReport(o.outDir, {o.benchJson, o.isaJson, o.morphJson}); !clear) {
     std::fprintf(stderr, "motorbench report: error: %s\n", clear.error().c_str());
-    return 2;
+    return std::nullopt;
   }
   fs::create_directories(o.outDir, ec);
   if (ec) {
     std::fprintf(stderr, "motorbench report: error: %s: cannot create folder: %s\n", o.outDir.c_str(),
                  ec.message().c_str());
-    return 2;
+    return std::nullopt;
   }
   if (Status m = markPartial(o.outDir, "motorbench report: this folder holds no complete report: the run is still "
                                        "going, or was stopped before it finished (this file goes when it completes)");
       !m) {
     std::fprintf(stderr, "motorbench report: error: %s\n", m.error().c_str());
-    return 2;
+    return std::nullopt;
   }
   std::string tmpl = (fs::temp_directory_path() / "motorbench-report-XXXXXX").string();
   if (!mkdtemp(tmpl.data())) {
     std::fprintf(stderr, "motorbench report: error: cannot create a temporary folder\n");
-    return 2;
+    return std::nullopt;
   }
-  const fs::path work = tmpl;
-  // Ids are made over the whole list, so every shard names a scene (and its image folder) alike.
-  // No scene named: every built-in scene, the curved ones last.
+  return fs::path(tmpl);
+}
+
+// The scenes of the run: the whole list named (ids made over all of it, so every shard names a
+// scene and its image folder alike), this shard's part of it with each scene's --anim indices,
+// and the shard's record.
+struct RunInputs {
+  std::vector<Input> all, inputs;
+  std::vector<std::vector<int>> anims;
+  json shard;
+};
+
+// The run's scenes (no scene named: every built-in scene, the curved ones last), --anim
+// checked against the whole list (so every shard decides alike) before anything is measured;
+// an error (a typo in --anim) stops the run.
+Result<RunInputs> runInputs(const Options& o) {
+  RunInputs r;
   std::vector<std::string> named = o.scenes;
   if (named.empty()) {
     named = builtinSceneNames();
     named.insert(named.end(), curvedSceneNames().begin(), curvedSceneNames().end());
   }
-  const std::vector<Input> all = expandInputs(named);
+  r.all = expandInputs(named);
   std::vector<std::string> specs;
-  for (const Input& in : all) specs.push_back(in.spec);
-  std::vector<Input> inputs;
-  json shard = {{"index", o.shard.index}, {"count", o.shard.count}, {"inputs", json::array()}};
-  for (const Input& in : all) shard["inputs"].push_back({{"spec", in.spec}, {"id", in.id}});
-  // --anim is checked against the whole list (so every shard decides alike) before anything is
-  // measured: a typo stops the run.
-  std::vector<std::vector<int>> allAnims(all.size());
+  for (const Input& in : r.all) specs.push_back(in.spec);
+  r.shard = {{"index", o.shard.index}, {"count", o.shard.count}, {"inputs", json::array()}};
+  for (const Input& in : r.all) r.shard["inputs"].push_back({{"spec", in.spec}, {"id", in.id}});
+  std::vector<std::vector<int>> allAnims(r.all.size());
   if (!o.anim.empty()) {
-    auto resolved = resolveAnimations(o.anim, all);
-    if (!resolved) {
-      std::fprintf(stderr, "motorbench report: error: %s\n", resolved.error().c_str());
-      fs::remove_all(work, ec);
-      return 2;
-    }
+    auto resolved = resolveAnimations(o.anim, r.all);
+    if (!resolved) return Result<RunInputs>::fail(resolved.error());
     allAnims = *resolved;
   }
-  std::vector<std::vector<int>> anims;
   for (size_t k : shardPositions(specs, o.shard)) {
-    inputs.push_back(all[k]);
-    anims.push_back(allAnims[k]);
+    r.inputs.push_back(r.all[k]);
+    r.anims.push_back(allAnims[k]);
   }
-  const int total = int(inputs.size());
+  return r;
+}
+
+// The run's opening lines on stderr: the shard's part, a warning for an empty shard, and what
+// is measured with what.
+void announceRun(const Options& o, const RunInputs& in) {
+  const int total = int(in.inputs.size());
   if (o.shard.count > 1)
     say("shard " + std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count) + ": " +
-        std::to_string(total) + " of " + std::to_string(all.size()) + " scene(s)");
-  if (const std::string note = emptyShardNote(o.shard, all.size(), inputs.size()); !note.empty())
+        std::to_string(total) + " of " + std::to_string(in.all.size()) + " scene(s)");
+  if (const std::string note = emptyShardNote(o.shard, in.all.size(), in.inputs.size()); !note.empty())
     say("warning: " + note);
   say(std::to_string(total) + " scene(s), pipelines " + joined(runPipelines(o)) + ", " +
       std::to_string(o.jobs) + " job(s), images " + std::to_string(o.width) + "x" +
       std::to_string(o.height) + " -> " + o.outDir);
+}
 
-  // Phase 1: images, metrics, memory, statistics (parallel).
+// Phase 1: images, metrics, memory, statistics, --jobs workers side by side; one result per
+// scene, a dead worker's with the step it was on.
+std::vector<json> renderPhase(const Options& o, const RunInputs& in, const fs::path& work) {
+  const int total = int(in.inputs.size());
   std::vector<WorkerTask> tasks;
   for (int i = 0; i < total; ++i) {
-    const std::string result = (work / (inputs[size_t(i)].id + ".render.json")).string();
-    tasks.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "render", result, anims[size_t(i)]), result,
-                     {{"id", inputs[size_t(i)].id}, {"spec", inputs[size_t(i)].spec}}});
+    const std::string result = (work / (in.inputs[size_t(i)].id + ".render.json")).string();
+    tasks.push_back({workerArgs(o, in.inputs[size_t(i)], i + 1, total, "render", result, in.anims[size_t(i)]), result,
+                     {{"id", in.inputs[size_t(i)].id}, {"spec", in.inputs[size_t(i)].spec}}});
   }
   std::vector<json> scenes = runWorkers(tasks, o.jobs, o.timeoutS, "measured");
   for (size_t i = 0; i < scenes.size(); ++i) addLastStep(scenes[i], tasks[i].resultPath);
+  return scenes;
+}
 
-  // Phase 2: frame timing, one scene at a time.
-  if (o.frames > 0 && interruptSignal() == 0) {
-    std::vector<WorkerTask> timing;
-    std::vector<size_t> which;
-    for (int i = 0; i < total; ++i) {
-      if (scenes[size_t(i)].value("status", "failed") == "failed") continue;
-      const std::string result = (work / (inputs[size_t(i)].id + ".time.json")).string();
-      timing.push_back({workerArgs(o, inputs[size_t(i)], i + 1, total, "time", result, anims[size_t(i)]), result,
-                        {{"id", inputs[size_t(i)].id}}});
-      which.push_back(size_t(i));
-    }
-    std::vector<json> times = runWorkers(timing, 1, o.timeoutS, "timed");
-    for (size_t t = 0; t < times.size(); ++t) addLastStep(times[t], timing[t].resultPath);
-    for (size_t t = 0; t < times.size(); ++t) scenes[which[t]]["timing"] = times[t];
+// Phase 2: frame timing, one scene at a time (the scenes not failed), into each scene's
+// "timing"; skipped with --frames 0 or once interrupted.
+void timingPhase(const Options& o, const RunInputs& in, const fs::path& work, std::vector<json>& scenes) {
+  if (o.frames <= 0 || interruptSignal() != 0) return;
+  const int total = int(in.inputs.size());
+  std::vector<WorkerTask> timing;
+  std::vector<size_t> which;
+  for (int i = 0; i < total; ++i) {
+    if (scenes[size_t(i)].value("status", "failed") == "failed") continue;
+    const std::string result = (work / (in.inputs[size_t(i)].id + ".time.json")).string();
+    timing.push_back({workerArgs(o, in.inputs[size_t(i)], i + 1, total, "time", result, in.anims[size_t(i)]), result,
+                      {{"id", in.inputs[size_t(i)].id}}});
+    which.push_back(size_t(i));
   }
+  std::vector<json> times = runWorkers(timing, 1, o.timeoutS, "timed");
+  for (size_t t = 0; t < times.size(); ++t) addLastStep(times[t], timing[t].resultPath);
+  for (size_t t = 0; t < times.size(); ++t) scenes[which[t]]["timing"] = times[t];
+}
 
-  // Phase 3: ops per vertex (shared by every scene, weighted by each scene's vertices).
-  say("counting ops per vertex (shim and SPIR-V)");
-  json ops = measureOpsPerVertex();
-  for (json& s : scenes)
-    s["opsPerVertex"] = sceneOpsPerVertex(ops, s.value("vertexMix", json()), s.value("pipelines", json()));
-
-  // Phase 3b: the curved spaces' camera drift (about a second), when the run has a curved scene.
-  json curvedExtra = json::object();
-  bool anyCurved = false;
-  for (const Input& in : inputs) anyCurved = anyCurved || curvedSceneSpace(in.spec) != Space::Euclidean;
-  if (anyCurved && interruptSignal() == 0) {
-    say("measuring the curved camera drift (" + std::to_string(kReportDriftSteps) + " steps per space)");
-    curvedExtra["drift"] = driftJson(kReportDriftSteps);
-  }
-
-  // Phase 4: kernel throughput.
-  json kernelJson = interruptSignal() == 0 ? kernels(o)
-                                            : json{{"source", "skipped"}, {"error", "not measured (interrupted)"}, {"file", nullptr}};
-
-  json curved = json::object();  // the curved scenes' pipelines per space (whole list: alike in every shard)
+// The report's settings record: pipelines (the curved scenes' per space, over the whole list:
+// alike in every shard), sizes, frames, instances, jobs, arguments and the shard.
+json settingsJson(const Options& o, const RunInputs& in) {
+  json curved = json::object();
   if (o.pipelines.empty())
-    for (const Input& in : all)
-      if (Space sp = curvedSceneSpace(in.spec); sp != Space::Euclidean) curved[spaceName(sp)] = pipelineNames(sp);
+    for (const Input& i : in.all)
+      if (Space sp = curvedSceneSpace(i.spec); sp != Space::Euclidean) curved[spaceName(sp)] = pipelineNames(sp);
   const std::vector<std::string> pipelines = runPipelines(o);
-  json settings = {{"pipelines", pipelines}, {"baseline", pipelines.front()}, {"curvedPipelines", curved},
-                   {"anim", o.anim.empty() ? json(nullptr) : json(o.anim)},
-                   {"width", o.width}, {"height", o.height}, {"frames", o.frames},
-                   {"timeWidth", o.timeWidth}, {"timeHeight", o.timeHeight},
-                   {"instances", o.instances}, {"jobs", o.jobs}, {"arguments", o.scenes}, {"shard", shard}};
-  json report = assembleReport(machineJson(), settings, std::move(scenes), std::move(ops),
-                               std::move(kernelJson));
-  report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files
-  if (anyCurved) report["curved"] = curvedExtra;
-  if (interruptSignal() == 0) attachIsa(report, o);
-  else report["isa"] = {{"error", "not measured (interrupted)"}};
-  if (!o.morphJson.empty()) {  // checked by the command before the run (schema motorbench-morph/1)
-    std::ifstream in(o.morphJson);
-    report["morph"] = json::parse(in, nullptr, false);
-  }
+  return {{"pipelines", pipelines}, {"baseline", pipelines.front()}, {"curvedPipelines", curved},
+          {"anim", o.anim.empty() ? json(nullptr) : json(o.anim)},
+          {"width", o.width}, {"height", o.height}, {"frames", o.frames},
+          {"timeWidth", o.timeWidth}, {"timeHeight", o.timeHeight},
+          {"instances", o.instances}, {"jobs", o.jobs}, {"arguments", o.scenes}, {"shard", in.shard}};
+}
+
+// An interrupted run: the report marked partial (before its documents are written, and kept),
+// written without plots; exit 130.
+int finishInterrupted(json report, const Options& o, const fs::path& work, int total) {
+  std::error_code ec;
   const int measured = scenesMeasured(report["scenes"].get<std::vector<json>>());
-  if (const int sig = interruptSignal(); sig != 0) {
-    report["interrupted"] = {{"signal", interruptName()}, {"measured", measured}, {"scenes", total}};
-    const std::string line = "INTERRUPTED (" + std::string(interruptName()) + "): " + std::to_string(measured) +
-                             " of " + std::to_string(total) + " scenes measured; this report is partial";
-    // The marker says it before the documents are written, and stays.
-    markPartial(o.outDir, line);
-    Options partial = o;
-    partial.plots = false;
-    writeReportFolder(std::move(report), partial);
-    fs::remove_all(work, ec);
-    std::fprintf(stderr, "motorbench report: %s (folder %s, marked %s); exit 130\n", line.c_str(), o.outDir.c_str(),
-                 kPartialMarker);
-    return 130;
-  }
+  report["interrupted"] = {{"signal", interruptName()}, {"measured", measured}, {"scenes", total}};
+  const std::string line = "INTERRUPTED (" + std::string(interruptName()) + "): " + std::to_string(measured) +
+                           " of " + std::to_string(total) + " scenes measured; this report is partial";
+  // The marker says it before the documents are written, and stays.
+  markPartial(o.outDir, line);
+  Options partial = o;
+  partial.plots = false;
+  writeReportFolder(std::move(report), partial);
+  fs::remove_all(work, ec);
+  std::fprintf(stderr, "motorbench report: %s (folder %s, marked %s); exit 130\n", line.c_str(), o.outDir.c_str(),
+               kPartialMarker);
+  return 130;
+}
+
+// A complete run: the folder written, its partial mark cleared and the answer printed; exit 0,
+// 1 when a scene was not measured fully (listed on stderr), or the writer's error status.
+int finishComplete(json report, const Options& o, const fs::path& work) {
+  std::error_code ec;
   const std::vector<std::string> failures = failedSceneLines(report);  // as report.md lists them
   std::vector<std::string> answer;
   const int status = writeReportFolder(std::move(report), o, &answer);
@@ -334,6 +343,56 @@ int runReport(const Options& o) {
   say(std::to_string(failures.size()) + " scene(s) not measured fully (exit 1):");
   for (const std::string& f : failures) say("  " + f);
   return 1;
+}
+
+}  // namespace
+
+int runReport(const Options& o) {
+  catchInterrupts();  // Ctrl-C / kill: the workers are stopped and the folder says it is partial
+  std::error_code ec;
+  const std::optional<fs::path> folder = prepareFolders(o);
+  if (!folder) return 2;
+  const fs::path work = *folder;
+  auto in = runInputs(o);
+  if (!in) {
+    std::fprintf(stderr, "motorbench report: error: %s\n", in.error().c_str());
+    fs::remove_all(work, ec);
+    return 2;
+  }
+  announceRun(o, *in);
+  std::vector<json> scenes = renderPhase(o, *in, work);
+  timingPhase(o, *in, work, scenes);
+
+  // Phase 3: ops per vertex (shared by every scene, weighted by each scene's vertices).
+  say("counting ops per vertex (shim and SPIR-V)");
+  json ops = measureOpsPerVertex();
+  for (json& s : scenes)
+    s["opsPerVertex"] = sceneOpsPerVertex(ops, s.value("vertexMix", json()), s.value("pipelines", json()));
+
+  // Phase 3b: the curved spaces' camera drift (about a second), when the run has a curved scene.
+  json curvedExtra = json::object();
+  bool anyCurved = false;
+  for (const Input& i : in->inputs) anyCurved = anyCurved || curvedSceneSpace(i.spec) != Space::Euclidean;
+  if (anyCurved && interruptSignal() == 0) {
+    say("measuring the curved camera drift (" + std::to_string(kReportDriftSteps) + " steps per space)");
+    curvedExtra["drift"] = driftJson(kReportDriftSteps);
+  }
+
+  // Phase 4: kernel throughput.
+  json kernelJson = interruptSignal() == 0 ? kernels(o)
+                                            : json{{"source", "skipped"}, {"error", "not measured (interrupted)"}, {"file", nullptr}};
+  json report = assembleReport(machineJson(), settingsJson(o, *in), std::move(scenes), std::move(ops),
+                               std::move(kernelJson));
+  report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files
+  if (anyCurved) report["curved"] = curvedExtra;
+  if (interruptSignal() == 0) attachIsa(report, o);
+  else report["isa"] = {{"error", "not measured (interrupted)"}};
+  if (!o.morphJson.empty()) {  // checked by the command before the run (schema motorbench-morph/1)
+    std::ifstream morph(o.morphJson);
+    report["morph"] = json::parse(morph, nullptr, false);
+  }
+  if (interruptSignal() != 0) return finishInterrupted(std::move(report), o, work, int(in->inputs.size()));
+  return finishComplete(std::move(report), o, work);
 }
 
 int writeReportFolder(json report, const Options& o, std::vector<std::string>* answer) {
