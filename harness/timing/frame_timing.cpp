@@ -112,20 +112,17 @@ bool drawsVertexBoundAt(const Scene& scene, int width, int height) {
   return pixels > 0 && computeFileStats(scene).drawnVertices >= kVertexBoundVerticesPerPixel * pixels;
 }
 
-Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
-                               const Settings& settings) {
-  using R = Result<ConfigTiming>;
-  auto machine = machineInfo();
-  if (!machine) return R::fail(machine.error());
-  auto fb = gl::Framebuffer::create(settings.width, settings.height);
-  if (!fb) return R::fail(sceneName + ": " + fb.error());
+namespace {
 
-  ConfigTiming out;
-  out.scene = sceneName, out.config = settings.config;
-  out.width = settings.width, out.height = settings.height;
-  out.patchLevel = computeFileStats(scene).patches > 0 ? scene.patchLevel : 0;
+// The pipelines that time: each of the scene's space (only those --pipelines names) created,
+// configured and prepared; every one gets a PipelineTiming in out.pipelines (with its error
+// when it cannot run), the running ones a slot in `live`.
+struct LivePipelines {
   std::vector<std::unique_ptr<Pipeline>> live;  // parallel to `slots`
   std::vector<size_t> slots;                    // index into out.pipelines
+};
+LivePipelines preparePipelines(const Scene& scene, const Settings& settings, ConfigTiming& out) {
+  LivePipelines l;
   for (const std::string& name : pipelineNames(scene.curved.space)) {  // the scene's space's pair
     if (!settings.pipelines.empty() &&
         std::find(settings.pipelines.begin(), settings.pipelines.end(), name) == settings.pipelines.end())
@@ -140,11 +137,151 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
       if (Status s = p->prepare(scene); !s) t.error = s.error();
     }
     if (t.error.empty()) {
-      live.push_back(std::move(p));
-      slots.push_back(out.pipelines.size());
+      l.live.push_back(std::move(p));
+      l.slots.push_back(out.pipelines.size());
     }
     out.pipelines.push_back(std::move(t));
   }
+  return l;
+}
+
+// Update: the fastest of bestOf blocks of `repeats` back-to-back calls, per call (ms).
+double timeUpdate(Pipeline& p, const AnimState& st, int repeats, int bestOf) {
+  double updateMs = 0;
+  for (int rep = 0; rep < std::max(1, bestOf); ++rep) {
+    const auto t0 = Clock::now();
+    for (int r = 0; r < repeats; ++r) p.update(st);
+    const double u = ms(t0, Clock::now()) / repeats;
+    updateMs = rep ? std::min(updateMs, u) : u;
+  }
+  return updateMs;
+}
+
+// The phases: bestOf more blocks of `repeats` calls with the phase clock on, summed per phase
+// over the block (not yet per call); the block with the smallest total counts, by the same
+// rule as the whole update (a single block let one disturbed block show phases several times
+// the whole update).
+void timeUpdatePhases(Pipeline& p, const AnimState& st, int repeats, int bestOf, double phases[kUpdatePhaseCount]) {
+  p.timeUpdatePhases(true);
+  for (int rep = 0; rep < std::max(1, bestOf); ++rep) {
+    double block[kUpdatePhaseCount] = {};
+    for (int r = 0; r < repeats; ++r) {
+      p.update(st);
+      const UpdatePhases ph = p.stats().updatePhases;
+      for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) block[k2] += ph.*kUpdatePhases[k2].field;
+    }
+    double total = 0, best = 0;
+    for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) total += block[k2], best += phases[k2];
+    if (rep == 0 || total < best) std::copy(block, block + kUpdatePhaseCount, phases);
+  }
+  p.timeUpdatePhases(false);
+}
+
+// One frame's draw times (ms), each the smallest of bestOf clears + renders + glFinish: wall
+// clock, process CPU, and the GPU timer where `query` is one.
+struct RenderSample {
+  double wallMs = 0, cpuMs = 0, gpuMs = 0;
+};
+
+// The draw timed bestOf times into `sample`; "" or the error (a timer result missing after
+// glFinish).
+std::string timeRender(Pipeline& p, const View& view, gl::Framebuffer& fb, GLuint query, int bestOf,
+                       const std::string& sceneName, RenderSample& sample) {
+  double wallMs = 0, cpuMs = 0, gpuMs = 0;
+  for (int rep = 0; rep < std::max(1, bestOf); ++rep) {
+    const auto r0 = Clock::now();
+    const double c0 = processCpuMs();
+    if (query) glBeginQuery(GL_TIME_ELAPSED, query);
+    fb.clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
+    p.render(view);
+    if (query) glEndQuery(GL_TIME_ELAPSED);
+    glFinish();
+    const double wall = ms(r0, Clock::now()), cpu = processCpuMs() - c0;
+    double gpu = 0;
+    if (query) {  // after glFinish the result is there: reading it waits for nothing
+      GLint available = 0;
+      glGetQueryObjectiv(query, GL_QUERY_RESULT_AVAILABLE, &available);
+      if (!available) return sceneName + ": GL_TIME_ELAPSED result not available after glFinish";
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+      gpu = double(ns) * 1e-6;
+    }
+    wallMs = rep ? std::min(wallMs, wall) : wall;
+    cpuMs = rep ? std::min(cpuMs, cpu) : cpu;
+    gpuMs = rep ? std::min(gpuMs, gpu) : gpu;
+  }
+  sample = {wallMs, cpuMs, gpuMs};
+  return "";
+}
+
+// One pipeline's figures of frame i: on a warm-up frame the update repeats calibrated (enough
+// calls for a block of kMinUpdateBlockMs), on a timed frame every sample kept.
+void recordFrame(PipelineTiming& t, const Pipeline& p, bool warmup, bool gpuTimer, double updateMs,
+                 const double phases[kUpdatePhaseCount], const RenderSample& r) {
+  if (warmup) {
+    // Calibrate R on the warm-up: enough calls for a block of kMinUpdateBlockMs.
+    if (updateMs > 0)
+      t.updateRepeats = std::clamp(int(std::ceil(kMinUpdateBlockMs / updateMs)), 1, 1000);
+    return;
+  }
+  t.fallbacks.add(p.stats());
+  t.updateMs.push_back(updateMs);
+  for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) t.phaseMs[k2].push_back(phases[k2] / t.updateRepeats);
+  t.frameMs.push_back(gpuTimer ? r.gpuMs : r.wallMs);
+  t.wallMs.push_back(r.wallMs);
+  t.cpuMs.push_back(r.cpuMs);
+  if (gpuTimer) t.gpuMs.push_back(r.gpuMs);  // the warm-up frames above absorb first-use costs
+}
+
+// Each running pipeline's spreads of its samples and its last stats.
+void summarise(const LivePipelines& l, ConfigTiming& out) {
+  for (size_t k = 0; k < l.live.size(); ++k) {
+    PipelineTiming& t = out.pipelines[l.slots[k]];
+    t.frame = spreadOf(t.frameMs), t.update = spreadOf(t.updateMs), t.gpu = spreadOf(t.gpuMs);
+    t.wall = spreadOf(t.wallMs);
+    t.cpu = spreadOf(t.cpuMs);
+    for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) t.phases[k2] = spreadOf(t.phaseMs[k2]);
+    t.stats = l.live[k]->stats();
+  }
+}
+
+// The motor / matrix ratios of the scene's space's pair (matrix / motor, s3_matrix / s3_motor,
+// h3_matrix / h3_motor): of the median frames, and the medians of the per-frame paired ratios
+// of frame, process CPU and update times; left as they are when the pair did not both run.
+void pairRatios(ConfigTiming& out) {
+  const PipelineTiming* matrix = nullptr;
+  const PipelineTiming* motor = nullptr;
+  for (const PipelineTiming& t : out.pipelines) {
+    if (!t.error.empty()) continue;
+    // The pair of the scene's space: matrix / motor, s3_matrix / s3_motor, h3_matrix / h3_motor.
+    if (t.pipeline == "matrix" || t.pipeline.ends_with("_matrix")) matrix = &t;
+    if (t.pipeline == "motor" || t.pipeline.ends_with("_motor")) motor = &t;
+  }
+  if (!matrix || !motor) return;
+  out.frameRatio = ratioOf(motor->frame.median, matrix->frame.median);
+  auto pairedMedian = [](const std::vector<double>& r) { return r.empty() ? -1 : spreadOf(r).median; };
+  const std::vector<double> frames = pairedRatios(matrix->frameMs, motor->frameMs);
+  out.pairedFrame = spreadOf(frames);
+  out.pairedFrameRatio = pairedMedian(frames);
+  out.pairedCpuRatio = pairedMedian(pairedRatios(matrix->cpuMs, motor->cpuMs));
+  out.updateRatio = pairedMedian(pairedRatios(matrix->updateMs, motor->updateMs));
+}
+
+}  // namespace
+
+Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
+                               const Settings& settings) {
+  using R = Result<ConfigTiming>;
+  auto machine = machineInfo();
+  if (!machine) return R::fail(machine.error());
+  auto fb = gl::Framebuffer::create(settings.width, settings.height);
+  if (!fb) return R::fail(sceneName + ": " + fb.error());
+
+  ConfigTiming out;
+  out.scene = sceneName, out.config = settings.config;
+  out.width = settings.width, out.height = settings.height;
+  out.patchLevel = computeFileStats(scene).patches > 0 ? scene.patchLevel : 0;
+  const LivePipelines l = preparePipelines(scene, settings, out);
 
   // A fixed camera (the rest pose's framing): the same view for every frame and pipeline.
   const View view = frameScene(scene, stateForFrame(scene, 0, settings.animation),
@@ -158,105 +295,26 @@ Result<ConfigTiming> timeScene(const Scene& scene, const std::string& sceneName,
   const DisturbanceWatch watch(CpuClock::Process);
   for (int i = 0; i < total; ++i) {
     const AnimState st = stateForFrame(scene, i, settings.animation);
-    for (size_t k = 0; k < live.size(); ++k) {
+    for (size_t k = 0; k < l.live.size(); ++k) {
       // Alternate the order every frame: A B, B A, A B ...
-      const size_t idx = i % 2 ? live.size() - 1 - k : k;
-      Pipeline& p = *live[idx];
-      PipelineTiming& t = out.pipelines[slots[idx]];
+      const size_t idx = i % 2 ? l.live.size() - 1 - k : k;
+      Pipeline& p = *l.live[idx];
+      PipelineTiming& t = out.pipelines[l.slots[idx]];
       glFinish();  // nothing of the previous pipeline is left in flight
-      // Update: the fastest of bestOf blocks of R back-to-back calls, per call.
-      double updateMs = 0;
-      for (int rep = 0; rep < std::max(1, settings.bestOf); ++rep) {
-        const auto t0 = Clock::now();
-        for (int r = 0; r < t.updateRepeats; ++r) p.update(st);
-        const double u = ms(t0, Clock::now()) / t.updateRepeats;
-        updateMs = rep ? std::min(updateMs, u) : u;
-      }
-      // The phases: bestOf more blocks of R calls with the phase clock on, per call; the block
-      // with the smallest total counts, by the same rule as the whole update (a single block
-      // let one disturbed block show phases several times the whole update).
+      const double updateMs = timeUpdate(p, st, t.updateRepeats, settings.bestOf);
       double phases[kUpdatePhaseCount] = {};
-      p.timeUpdatePhases(true);
-      for (int rep = 0; rep < std::max(1, settings.bestOf); ++rep) {
-        double block[kUpdatePhaseCount] = {};
-        for (int r = 0; r < t.updateRepeats; ++r) {
-          p.update(st);
-          const UpdatePhases ph = p.stats().updatePhases;
-          for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) block[k2] += ph.*kUpdatePhases[k2].field;
-        }
-        double total = 0, best = 0;
-        for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) total += block[k2], best += phases[k2];
-        if (rep == 0 || total < best) std::copy(block, block + kUpdatePhaseCount, phases);
-      }
-      p.timeUpdatePhases(false);
-      double wallMs = 0, cpuMs = 0, gpuMs = 0;
-      for (int rep = 0; rep < std::max(1, settings.bestOf); ++rep) {
-        const auto r0 = Clock::now();
-        const double c0 = processCpuMs();
-        if (query) glBeginQuery(GL_TIME_ELAPSED, query);
-        (*fb)->clear(kBackground[0], kBackground[1], kBackground[2], kBackground[3]);
-        p.render(view);
-        if (query) glEndQuery(GL_TIME_ELAPSED);
-        glFinish();
-        const double wall = ms(r0, Clock::now()), cpu = processCpuMs() - c0;
-        double gpu = 0;
-        if (query) {  // after glFinish the result is there: reading it waits for nothing
-          GLint available = 0;
-          glGetQueryObjectiv(query, GL_QUERY_RESULT_AVAILABLE, &available);
-          if (!available) return R::fail(sceneName + ": GL_TIME_ELAPSED result not available after glFinish");
-          GLuint64 ns = 0;
-          glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
-          gpu = double(ns) * 1e-6;
-        }
-        wallMs = rep ? std::min(wallMs, wall) : wall;
-        cpuMs = rep ? std::min(cpuMs, cpu) : cpu;
-        gpuMs = rep ? std::min(gpuMs, gpu) : gpu;
-      }
-      if (i < settings.warmup) {
-        // Calibrate R on the warm-up: enough calls for a block of kMinUpdateBlockMs.
-        if (updateMs > 0)
-          t.updateRepeats = std::clamp(int(std::ceil(kMinUpdateBlockMs / updateMs)), 1, 1000);
-        continue;
-      }
-      t.fallbacks.add(p.stats());
-      t.updateMs.push_back(updateMs);
-      for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) t.phaseMs[k2].push_back(phases[k2] / t.updateRepeats);
-      t.frameMs.push_back(query ? gpuMs : wallMs);
-      t.wallMs.push_back(wallMs);
-      t.cpuMs.push_back(cpuMs);
-      if (query) t.gpuMs.push_back(gpuMs);  // the warm-up frames above absorb first-use costs
+      timeUpdatePhases(p, st, t.updateRepeats, settings.bestOf, phases);
+      RenderSample r;
+      if (auto e = timeRender(p, view, **fb, query, settings.bestOf, sceneName, r); !e.empty()) return R::fail(e);
+      recordFrame(t, p, i < settings.warmup, query != 0, updateMs, phases, r);
     }
   }
   out.disturbance = watch.finish();
   if (query) glDeleteQueries(1, &query);
   if (GLenum err = glGetError(); err != GL_NO_ERROR)
     return R::fail(sceneName + ": GL error while timing: " + gl::errorName(err));
-
-  for (size_t k = 0; k < live.size(); ++k) {
-    PipelineTiming& t = out.pipelines[slots[k]];
-    t.frame = spreadOf(t.frameMs), t.update = spreadOf(t.updateMs), t.gpu = spreadOf(t.gpuMs);
-    t.wall = spreadOf(t.wallMs);
-    t.cpu = spreadOf(t.cpuMs);
-    for (int k2 = 0; k2 < kUpdatePhaseCount; ++k2) t.phases[k2] = spreadOf(t.phaseMs[k2]);
-    t.stats = live[k]->stats();
-  }
-  const PipelineTiming* matrix = nullptr;
-  const PipelineTiming* motor = nullptr;
-  for (const PipelineTiming& t : out.pipelines) {
-    if (!t.error.empty()) continue;
-    // The pair of the scene's space: matrix / motor, s3_matrix / s3_motor, h3_matrix / h3_motor.
-    if (t.pipeline == "matrix" || t.pipeline.ends_with("_matrix")) matrix = &t;
-    if (t.pipeline == "motor" || t.pipeline.ends_with("_motor")) motor = &t;
-  }
-  if (matrix && motor) {
-    out.frameRatio = ratioOf(motor->frame.median, matrix->frame.median);
-    auto pairedMedian = [](const std::vector<double>& r) { return r.empty() ? -1 : spreadOf(r).median; };
-    const std::vector<double> frames = pairedRatios(matrix->frameMs, motor->frameMs);
-    out.pairedFrame = spreadOf(frames);
-    out.pairedFrameRatio = pairedMedian(frames);
-    out.pairedCpuRatio = pairedMedian(pairedRatios(matrix->cpuMs, motor->cpuMs));
-    out.updateRatio = pairedMedian(pairedRatios(matrix->updateMs, motor->updateMs));
-  }
+  summarise(l, out);
+  pairRatios(out);
   return out;
 }
 
