@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The README's figure tables and results/curved/README.md, written from the run's figures.
+"""The figure tables of README.md and pipelines/compact/README.md and results/curved/README.md,
+written from the run's figures.
 
 Every value is a figure of report.json ("figures", quoted by name as its "text") or the
 "measured" text of a claims.json row (quoted as claims.<id>), never typed by hand. Each value
@@ -8,7 +9,7 @@ tests/document/test_documents_agree.py can read every document's values back by 
 
   scripts/document_figures.py [--results DIR] [--readme FILE] [--check]
 
-rewrites the README's regions between "<!-- figures: TABLE -->" and "<!-- /figures -->" and the
+rewrites the regions of the README (--readme) and of pipelines/compact/README.md between "<!-- figures: TABLE -->" and "<!-- /figures -->" and the
 generated part of DIR/curved/README.md; --check writes nothing and exits 1 when a document
 differs from what the figures give (a hand edit, or figures regenerated without the documents).
 """
@@ -191,7 +192,8 @@ def main(argv=None):
     F = Figures(report, claims)
     curved = os.path.join(a.results, "curved", "README.md")
     stale = []
-    for path, template in ((a.readme, None), (curved, CURVED_README)):
+    compact = os.path.join(REPO, "pipelines", "compact", "README.md")
+    for path, template in ((a.readme, None), (compact, None), (curved, CURVED_README)):
         old = ""
         if os.path.exists(path):
             with open(path, encoding="utf-8") as f:

@@ -1,4 +1,4 @@
-// Issue 19, "Why" bullet 7: README.md's "Everyday use" section. Every example in its ```sh
+// harness/cli/README.md's "Everyday use" section, the command reference. Every example in its ```sh
 // blocks runs here exactly as written from the repository root, with only the binary path
 // (build/harness/motorbench -> the built one) and the output folder (out/ -> a scratch
 // folder) substituted; the section names the binary's place, the built-in scenes, every
@@ -20,9 +20,9 @@ namespace fs = std::filesystem;
 using mb::cli_test::contains;
 using mb::cli_test::quoted;
 
-// The text of README.md from "## Everyday use" to the next "## " heading.
+// The text of harness/cli/README.md from "## Everyday use" to the next "## " heading.
 std::string everydaySection() {
-  const std::string readme = mb::cli_test::readText(fs::path(MB_SOURCE_DIR) / "README.md");
+  const std::string readme = mb::cli_test::readText(fs::path(MB_SOURCE_DIR) / "harness" / "cli" / "README.md");
   const size_t start = readme.find("\n## Everyday use\n");
   if (start == std::string::npos) return "";
   const size_t end = readme.find("\n## ", start + 1);
@@ -51,7 +51,7 @@ std::string replaceAll(std::string s, const std::string& from, const std::string
 
 TEST(CliReadme, EverydayUseSectionExists) {
   const std::string section = everydaySection();
-  ASSERT_FALSE(section.empty()) << "README.md has no '## Everyday use' section";
+  ASSERT_FALSE(section.empty()) << "harness/cli/README.md has no '## Everyday use' section";
   EXPECT_TRUE(contains(section, "build/harness/motorbench")) << "where the binary is";
   for (const std::string& name : mb::builtinSceneNames()) EXPECT_TRUE(contains(section, "`" + name + "`")) << name;
   for (const char* c : {"render", "compare", "inspect", "check", "time"})

@@ -1,4 +1,4 @@
-"""README.md, results/report.md, results/claims.md and results/curved/README.md quote one value
+"""README.md, pipelines/compact/README.md, results/report.md, results/claims.md and results/curved/README.md quote one value
 per figure: every value a document quotes is read back by name (the
 <span title="NAME">TEXT</span> marks motorbench and scripts/document_figures.py write, and
 claims.md's rows by id as claims.<id>), and a name quoted twice, in one document or in two,
@@ -15,7 +15,7 @@ import tempfile
 import unittest
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-DOCS = ("README.md", "results/report.md", "results/claims.md", "results/curved/README.md")
+DOCS = ("README.md", "pipelines/compact/README.md", "results/report.md", "results/claims.md", "results/curved/README.md")
 SPAN = re.compile(r'<span title="([^"]+)">([^<]*)</span>')
 
 

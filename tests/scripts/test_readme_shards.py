@@ -1,4 +1,4 @@
-"""README.md "Sharded runs": the three recipes are real.
+"""harness/report/README.md "Sharded runs": the three recipes are real.
 
 The GNU parallel recipe is run as written (with the built motorbench and a scratch folder for
 out/), and its merged report must hold every scene once; the Slurm script must pass `bash -n`
@@ -20,10 +20,11 @@ EXE = os.environ.get("MB_MOTORBENCH_EXE", os.path.join(REPO, "build", "harness",
 
 
 def section_blocks():
-    with open(os.path.join(REPO, "README.md"), encoding="utf-8") as f:
+    with open(os.path.join(REPO, "harness", "report", "README.md"), encoding="utf-8") as f:
         text = f.read()
     start = text.index("## Sharded runs")
-    end = text.index("\n## ", start + 1)
+    end = text.find("\n## ", start + 1)
+    end = len(text) if end < 0 else end
     return re.findall(r"```(\w+)\n(.*?)```", text[start:end], re.S)
 
 
