@@ -67,8 +67,9 @@ std::string summaryLine(const CheckRun& run) {
                 n[1], n[2], n[3]);
   std::string line = b;
   if (!run.changed.empty())
-    line += "; " + std::to_string(run.changed.size()) + (run.changed.size() == 1 ? " file" : " files") +
-            " changed since its goldens were recorded (" + std::to_string(n[4]) + " images not judged)";
+    line += "; " + std::to_string(run.changed.size()) +
+            (run.changed.size() == 1 ? " file changed since its goldens were" : " files changed since their goldens were") +
+            " recorded (" + std::to_string(n[4]) + " images not judged)";
   return line;
 }
 
