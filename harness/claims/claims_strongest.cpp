@@ -210,15 +210,10 @@ Claim kernelClaim(const std::string& kernel, const json& pairs, const std::strin
   return c;
 }
 
-}  // namespace
-
-std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource,
-                                           const nlohmann::json& kernelPairs, const std::string& kernelSource,
-                                           const nlohmann::json& sceneStats, const nlohmann::json& timingMachine,
-                                           const Uploads& uploads) {
-  std::vector<Claim> out;
-  for (const char* k : {"vertex_frame", "skinned_vertex"}) out.push_back(kernelClaim(k, kernelPairs, kernelSource));
-  // ---- memory, from the uploads -----------------------------------------------------------
+// ---- memory, from the uploads -----------------------------------------------------------
+// Bytes per vertex and floats per transform on normal_torus, floats per joint on skinned_tube,
+// every pipeline, each judged.
+void memoryFigures(const Uploads& uploads, std::vector<Claim>& out) {
   std::string rigidMissing, skinMissing;
   const auto rigid = statsOn(uploads, "normal_torus", rigidMissing);
   const auto skinned = statsOn(uploads, "skinned_tube", skinMissing);
@@ -244,129 +239,170 @@ std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const 
   out.push_back(judge(bpv));
   out.push_back(judge(fpt));
   out.push_back(judge(fpj));
+}
 
-  // ---- ops per vertex, counted and SPIR-V --------------------------------------------------
+// ---- ops per vertex, counted and SPIR-V --------------------------------------------------
+// The op-count row of pipeline p's variant `label` (nullptr when none).
+const opsv::VariantRow* variantRow(const opsv::VertexOps& ops, const std::string& p, const std::string& label) {
+  for (const auto& v : ops.variants)
+    if (v.variant.pipeline == p && v.variant.label == label) return &v;
+  return nullptr;
+}
+
+// The op-count row of the kernel function `fn` (nullptr when none).
+const opsv::KernelRow* kernelRow(const opsv::VertexOps& ops, const std::string& fn) {
+  for (const auto& k : ops.kernels)
+    if (k.kernel.function == fn) return &k;
+  return nullptr;
+}
+
+struct OpsFigure { const char* id; const char* label; bool withClip; const char* statement; const char* paper; };
+const OpsFigure kOpsFigures[] = {
+    {"ops_rigid_vs_strongest", "rigid", false, "ops per rigid vertex with frame (transform only)",
+     "motor 47/38 vs matrix 48/36 mul/add: as cheap"},
+    {"ops_skinned_vs_strongest", "skinned", false, "ops per skinned vertex (4 joints, transform only)",
+     "(not claimed)"},
+    {"ops_clip_vs_strongest", "rigid", true, "ops per rigid vertex with frame, object to clip",
+     "(not claimed)"},
+};
+
+// One ops figure, counted or SPIR-V: every pipeline's total ops per vertex (a pipeline with 0,
+// its kernels not joined, left out and named).
+Figure opsFigure(const opsv::VertexOps& ops, const OpsFigure& of, bool spirvSide) {
+  Figure f{std::string(of.id) + (spirvSide ? "_spirv" : ""), std::string(of.statement) + (spirvSide ? ", SPIR-V" : ", counted"),
+           "ops (mul + add + div + sqrt + other)", "", of.paper};
+  f.method = spirvSide
+                 ? "the optimised SPIR-V (glslangValidator + spirv-opt -O) of the functions the pipeline's vertex "
+                   "shader calls, vector ops expanded to scalar ops" +
+                       std::string(of.withClip ? " (transform + world to clip)" : " (the transform function)")
+                 : "the functions the pipeline's vertex shader calls, executed on mb::Counted" +
+                       std::string(of.withClip ? " (transform + world to clip)" : " (the transform function)");
+  std::string zero, unused;
+  // Counted, object to clip: each variant's kernels counted by function name (the join of
+  // claims_vertex_ops.h), the same numbers as the speed row.
+  const std::map<std::string, double> countedClip =
+      of.withClip && !spirvSide ? opsPerPipeline(of.label, false, unused) : std::map<std::string, double>{};
+  for (const std::string& p : pipelineNames()) {
+    const opsv::VariantRow* v = variantRow(ops, p, of.label);
+    if (!v || v->variant.kernels.empty()) continue;
+    double total = -1;
+    if (of.withClip) {
+      if (!spirvSide) total = countedClip.count(p) ? countedClip.at(p) : 0.0;
+      else if (v->probes) total = opsTotal(*v->probes);
+    } else if (const opsv::KernelRow* k = kernelRow(ops, v->variant.kernels.front())) {
+      if (!spirvSide) total = opsTotal(k->counted);
+      else if (k->optimised) total = opsTotal(*k->optimised);
+    }
+    // No vertex shader transforms for free: 0 means the pipeline's kernels were not joined
+    // (harness/ops), never a strongest baseline.
+    if (total > 0) f.values[p] = total;
+    else if (total == 0) zero += (zero.empty() ? "" : ", ") + p;
+  }
+  if (!zero.empty()) f.missing = "0 ops counted for " + zero + " (its kernels are not joined; left out)";
+  if (spirvSide && !ops.toolsProblem.empty()) f.missing += (f.missing.empty() ? "" : "; ") + ops.toolsProblem;
+  return f;
+}
+
+// The matrix pipeline skins as the Sample Viewer does (palette relative to the mesh node), the
+// motor pipeline with a world palette: the skinned verdict adds the same configuration on both
+// sides as well, where all four kernels were counted.
+void addMatchedSkinning(const opsv::VertexOps& ops, bool spirvSide, Claim& judged) {
+  auto total = [&](const char* fn) -> double {
+    const opsv::KernelRow* k = kernelRow(ops, fn);
+    if (!k) return 0;
+    return spirvSide ? (k->optimised ? opsTotal(*k->optimised) : 0) : opsTotal(k->counted);
+  };
+  const double refM = total("matrixSkinnedVertex"), refQ = total("motorSkinnedVertexReference");
+  const double worldM = total("matrixSkinnedVertexWorld"), worldQ = total("motorSkinnedVertex");
+  if (refM > 0 && refQ > 0 && worldM > 0 && worldQ > 0)
+    judged.verdictText += "; matched configurations, motor vs matrix: palette relative to the mesh node " +
+                          num(refQ) + " vs " + num(refM) + " (" + pct(refQ, refM) + "), world palette " +
+                          num(worldQ) + " vs " + num(worldM) + " (" + pct(worldQ, worldM) + ")";
+}
+
+// Every ops figure, counted then SPIR-V, judged; returns the counted ops per rigid vertex,
+// object to clip, of every pipeline (the frame-time rows' check).
+std::map<std::string, double> opsFigures(std::vector<Claim>& out) {
   const opsv::VertexOps& ops = vertexOps();
-  auto variant = [&](const std::string& p, const std::string& label) -> const opsv::VariantRow* {
-    for (const auto& v : ops.variants)
-      if (v.variant.pipeline == p && v.variant.label == label) return &v;
-    return nullptr;
-  };
-  auto kernel = [&](const std::string& fn) -> const opsv::KernelRow* {
-    for (const auto& k : ops.kernels)
-      if (k.kernel.function == fn) return &k;
-    return nullptr;
-  };
-  struct OpsFigure { const char* id; const char* label; bool withClip; const char* statement; const char* paper; };
-  const OpsFigure opsFigures[] = {
-      {"ops_rigid_vs_strongest", "rigid", false, "ops per rigid vertex with frame (transform only)",
-       "motor 47/38 vs matrix 48/36 mul/add: as cheap"},
-      {"ops_skinned_vs_strongest", "skinned", false, "ops per skinned vertex (4 joints, transform only)",
-       "(not claimed)"},
-      {"ops_clip_vs_strongest", "rigid", true, "ops per rigid vertex with frame, object to clip",
-       "(not claimed)"},
-  };
   std::map<std::string, double> clipOps;  // counted ops per rigid vertex, object to clip (the timing check)
-  for (const OpsFigure& of : opsFigures)
+  for (const OpsFigure& of : kOpsFigures)
     for (const bool spirvSide : {false, true}) {
-      Figure f{std::string(of.id) + (spirvSide ? "_spirv" : ""), std::string(of.statement) + (spirvSide ? ", SPIR-V" : ", counted"),
-               "ops (mul + add + div + sqrt + other)", "", of.paper};
-      f.method = spirvSide
-                     ? "the optimised SPIR-V (glslangValidator + spirv-opt -O) of the functions the pipeline's vertex "
-                       "shader calls, vector ops expanded to scalar ops" +
-                           std::string(of.withClip ? " (transform + world to clip)" : " (the transform function)")
-                     : "the functions the pipeline's vertex shader calls, executed on mb::Counted" +
-                           std::string(of.withClip ? " (transform + world to clip)" : " (the transform function)");
-      std::string zero, unused;
-      // Counted, object to clip: each variant's kernels counted by function name (the join of
-      // claims_vertex_ops.h), the same numbers as the speed row.
-      const std::map<std::string, double> countedClip =
-          of.withClip && !spirvSide ? opsPerPipeline(of.label, false, unused) : std::map<std::string, double>{};
-      for (const std::string& p : pipelineNames()) {
-        const opsv::VariantRow* v = variant(p, of.label);
-        if (!v || v->variant.kernels.empty()) continue;
-        double total = -1;
-        if (of.withClip) {
-          if (!spirvSide) total = countedClip.count(p) ? countedClip.at(p) : 0.0;
-          else if (v->probes) total = opsTotal(*v->probes);
-        } else if (const opsv::KernelRow* k = kernel(v->variant.kernels.front())) {
-          if (!spirvSide) total = opsTotal(k->counted);
-          else if (k->optimised) total = opsTotal(*k->optimised);
-        }
-        // No vertex shader transforms for free: 0 means the pipeline's kernels were not joined
-        // (harness/ops), never a strongest baseline.
-        if (total > 0) f.values[p] = total;
-        else if (total == 0) zero += (zero.empty() ? "" : ", ") + p;
-      }
-      if (!zero.empty()) f.missing = "0 ops counted for " + zero + " (its kernels are not joined; left out)";
-      if (spirvSide && !ops.toolsProblem.empty()) f.missing += (f.missing.empty() ? "" : "; ") + ops.toolsProblem;
+      const Figure f = opsFigure(ops, of, spirvSide);
       if (of.withClip && !spirvSide) clipOps = f.values;
       Claim judged = judge(f);
-      // The matrix pipeline skins as the Sample Viewer does (palette relative to the mesh node),
-      // the motor pipeline with a world palette: the same configuration on both sides as well.
-      if (std::string(of.label) == "skinned" && judged.verdict != Verdict::NotMeasurable) {
-        auto total = [&](const char* fn) -> double {
-          const opsv::KernelRow* k = kernel(fn);
-          if (!k) return 0;
-          return spirvSide ? (k->optimised ? opsTotal(*k->optimised) : 0) : opsTotal(k->counted);
-        };
-        const double refM = total("matrixSkinnedVertex"), refQ = total("motorSkinnedVertexReference");
-        const double worldM = total("matrixSkinnedVertexWorld"), worldQ = total("motorSkinnedVertex");
-        if (refM > 0 && refQ > 0 && worldM > 0 && worldQ > 0)
-          judged.verdictText += "; matched configurations, motor vs matrix: palette relative to the mesh node " +
-                                num(refQ) + " vs " + num(refM) + " (" + pct(refQ, refM) + "), world palette " +
-                                num(worldQ) + " vs " + num(worldM) + " (" + pct(worldQ, worldM) + ")";
-      }
+      if (std::string(of.label) == "skinned" && judged.verdict != Verdict::NotMeasurable)
+        addMatchedSkinning(ops, spirvSide, judged);
       out.push_back(judged);
     }
+  return clipOps;
+}
 
-  // ---- time: frame time per scene, vertex-bound, CPU update -------------------------------
-  struct TimeFigure { const char* id; const char* path; const char* key; const char* statement; bool cpu; };
-  const TimeFigure timeFigures[] = {
-      {"frame_time_vs_strongest", "", "medianMs", "frame time (median over scenes of time / matrix's time)", false},
-      {"frame_time_vertex_bound_vs_strongest", "vertexBound", "medianMs",
-       "frame time, vertex-bound viewport (median over scenes of time / matrix's time)", false},
-      {"cpu_update_vs_strongest", "", "updateMedianMs",
-       "CPU update: hierarchy, animation, skin palette, and the matrix forms' node normal matrices (median over "
-       "scenes of time / matrix's time)", true},
-  };
-  const TimingDevice device = timingDevice(timingMachine);
-  for (const TimeFigure& tf : timeFigures) {
-    int scenes = 0;
-    std::string skipped;
-    Figure f{tf.id, tf.statement, "x matrix", "", "as fast as matrices"};
-    f.values = timings.is_object() ? timeRatios(timings, tf.path, tf.key, "matrix", scenes, sceneStats, skipped)
-                                   : std::map<std::string, double>{};
-    f.excludeHybrid = true;  // its CPU side is the motor pipeline's
-    f.tolerance = kTimeTolerance;
-    f.method = std::string("median over ") + std::to_string(scenes) + " scenes of each pipeline's median " + tf.key +
-               " / matrix's (" + (tf.cpu ? std::string("ratio of medians; CPU wall clock")
-                                          : "the median of per-frame paired ratios where recorded, else the ratio of "
-                                            "medians; " + device.label()) + "); " + minimumRule() +
-               (skipped.empty() ? "" : " (not counted: " + skipped + ")") + "; source: " + timingSource +
-               "; hybrid is listed but not taken as the matrix baseline" +
-               (tf.cpu ? std::string(": its update is the motor work plus the conversion to mat4x3")
-                       : std::string(": it draws exactly as qtangent (frame time: clear + draws + glFinish)"));
-    if (f.values.empty())
-      f.missing = timings.is_object() && !skipped.empty() ? "no scene with the minimum of work (" + skipped + ")"
-                                                           : "no timing (give --report with timing, or drop --no-run)";
-    Claim c = judge(f);
-    if (!tf.cpu && c.verdict != Verdict::NotMeasurable) {
-      c.verdictText += "; device: " + device.label();
-      // A CPU rasterizer's frame time cannot tell pipelines apart whose arithmetic differs by
-      // more than 25 % when it times them within the noise: any two timed pipelines
-      // (not only motor and the strongest) that show it make every ratio of this timing moot.
-      if (device.cpuRasterizer)
-        if (const auto alike = timedAlike(f.values, clipOps)) {
-          c.verdict = Verdict::Inconclusive;
-          c.verdictText = "unable to discriminate on a CPU rasterizer: " + alike->dearer + " and " + alike->cheaper +
-                          " differ by " + pct(alike->opsRatio, 1.0) + " in counted ops per vertex but take the same "
-                          "time within " + std::to_string(int(kTimeTolerance * 100)) + " % (" +
-                          pct(alike->timeRatio, 1.0) + "); device: " + device.label();
-        }
-    }
-    out.push_back(c);
+// ---- time: frame time per scene, vertex-bound, CPU update -------------------------------
+struct TimeFigure { const char* id; const char* path; const char* key; const char* statement; bool cpu; };
+const TimeFigure kTimeFigures[] = {
+    {"frame_time_vs_strongest", "", "medianMs", "frame time (median over scenes of time / matrix's time)", false},
+    {"frame_time_vertex_bound_vs_strongest", "vertexBound", "medianMs",
+     "frame time, vertex-bound viewport (median over scenes of time / matrix's time)", false},
+    {"cpu_update_vs_strongest", "", "updateMedianMs",
+     "CPU update: hierarchy, animation, skin palette, and the matrix forms' node normal matrices (median over "
+     "scenes of time / matrix's time)", true},
+};
+
+// One time figure judged: each pipeline's median ratio to matrix over the scenes with the
+// minimum of work (hybrid listed, not taken as the baseline), within kTimeTolerance; a frame
+// time on a CPU rasterizer that times pipelines of different op counts alike is inconclusive.
+Claim timeClaim(const TimeFigure& tf, const nlohmann::json& timings, const std::string& timingSource,
+                const nlohmann::json& sceneStats, const TimingDevice& device,
+                const std::map<std::string, double>& clipOps) {
+  int scenes = 0;
+  std::string skipped;
+  Figure f{tf.id, tf.statement, "x matrix", "", "as fast as matrices"};
+  f.values = timings.is_object() ? timeRatios(timings, tf.path, tf.key, "matrix", scenes, sceneStats, skipped)
+                                 : std::map<std::string, double>{};
+  f.excludeHybrid = true;  // its CPU side is the motor pipeline's
+  f.tolerance = kTimeTolerance;
+  f.method = std::string("median over ") + std::to_string(scenes) + " scenes of each pipeline's median " + tf.key +
+             " / matrix's (" + (tf.cpu ? std::string("ratio of medians; CPU wall clock")
+                                        : "the median of per-frame paired ratios where recorded, else the ratio of "
+                                          "medians; " + device.label()) + "); " + minimumRule() +
+             (skipped.empty() ? "" : " (not counted: " + skipped + ")") + "; source: " + timingSource +
+             "; hybrid is listed but not taken as the matrix baseline" +
+             (tf.cpu ? std::string(": its update is the motor work plus the conversion to mat4x3")
+                     : std::string(": it draws exactly as qtangent (frame time: clear + draws + glFinish)"));
+  if (f.values.empty())
+    f.missing = timings.is_object() && !skipped.empty() ? "no scene with the minimum of work (" + skipped + ")"
+                                                         : "no timing (give --report with timing, or drop --no-run)";
+  Claim c = judge(f);
+  if (!tf.cpu && c.verdict != Verdict::NotMeasurable) {
+    c.verdictText += "; device: " + device.label();
+    // A CPU rasterizer's frame time cannot tell pipelines apart whose arithmetic differs by
+    // more than 25 % when it times them within the noise: any two timed pipelines
+    // (not only motor and the strongest) that show it make every ratio of this timing moot.
+    if (device.cpuRasterizer)
+      if (const auto alike = timedAlike(f.values, clipOps)) {
+        c.verdict = Verdict::Inconclusive;
+        c.verdictText = "unable to discriminate on a CPU rasterizer: " + alike->dearer + " and " + alike->cheaper +
+                        " differ by " + pct(alike->opsRatio, 1.0) + " in counted ops per vertex but take the same "
+                        "time within " + std::to_string(int(kTimeTolerance * 100)) + " % (" +
+                        pct(alike->timeRatio, 1.0) + "); device: " + device.label();
+      }
   }
+  return c;
+}
+
+}  // namespace
+
+std::vector<Claim> strongestBaselineClaims(const nlohmann::json& timings, const std::string& timingSource,
+                                           const nlohmann::json& kernelPairs, const std::string& kernelSource,
+                                           const nlohmann::json& sceneStats, const nlohmann::json& timingMachine,
+                                           const Uploads& uploads) {
+  std::vector<Claim> out;
+  for (const char* k : {"vertex_frame", "skinned_vertex"}) out.push_back(kernelClaim(k, kernelPairs, kernelSource));
+  memoryFigures(uploads, out);
+  const std::map<std::string, double> clipOps = opsFigures(out);
+  const TimingDevice device = timingDevice(timingMachine);
+  for (const TimeFigure& tf : kTimeFigures)
+    out.push_back(timeClaim(tf, timings, timingSource, sceneStats, device, clipOps));
   return out;
 }
 
