@@ -98,30 +98,41 @@ struct Counts {
         innerBeyondPercent(a.value("filesWithInnerNonUniformScaleBeyond1Percent", 0)) {}
 };
 
-}  // namespace
+// The verdict's models: every one but the test fixtures and the built-in scenes.
+json judgedOf(const json& files) {
+  json out = json::array();
+  const std::vector<std::string> fileKind = fileKinds(files);
+  for (size_t i = 0; i < fileKind.size(); ++i)
+    if (fileKind[i] != "test" && !isBuiltin(files[i].value("file", ""))) out.push_back(files[i]);
+  return out;
+}
 
-std::vector<Claim> corpusClaims(const CorpusInputs& in) {
-  const Sample sample = sampleOf(in);
+// What both rows are judged on: the distinct models of the sample (the first file of each
+// duplicate group), the judged ones among them, their counts, and the texts both rows share.
+struct CorpusView {
+  DistinctModels models;
+  json kinds, judged;
+  size_t judgedFiles = 0;  // before duplicates are counted once
+  Counts a, r;             // all distinct models; the judged ones
+  std::string allWhat, judgedCount, judgedWhat, rule, sampleText;
+  json modelsValue, kindsValue;
+};
+
+// The view of the sample: models, kinds, counts and the shared texts (the sample, its kinds,
+// the tolerance rule).
+CorpusView corpusView(const Sample& sample) {
   // Every statistic below counts distinct models: the first file of each duplicate group.
-  const DistinctModels models = distinctModels(sample.files);
+  DistinctModels models = distinctModels(sample.files);
   const json distinct = representativeFiles(sample.files, models);
   const json kinds = aggregateByKind(distinct);
-  // The verdict's models: every one but the test fixtures and the built-in scenes.
-  const auto judgedOf = [](const json& files) {
-    json out = json::array();
-    const std::vector<std::string> fileKind = fileKinds(files);
-    for (size_t i = 0; i < fileKind.size(); ++i)
-      if (fileKind[i] != "test" && !isBuiltin(files[i].value("file", ""))) out.push_back(files[i]);
-    return out;
-  };
   const json judged = judgedOf(distinct);
   const size_t judgedFiles = judgedOf(sample.files).size();  // before duplicates are counted once
   const json all = aggregateFileJson(distinct), real = aggregateFileJson(judged);
-  const Counts a(all), r(real);
+  CorpusView v{std::move(models), kinds, judged, judgedFiles, Counts(all), Counts(real)};
   const int failed = all.value("failed", 0);
-  const std::string allWhat = "all " + filesAndModels(models), judgedCount =
-      std::to_string(judgedFiles) + " files, " + std::to_string(judged.size()) + " distinct models";
-  const json modelsValue = toJson(models);
+  v.allWhat = "all " + filesAndModels(v.models);
+  v.judgedCount = std::to_string(judgedFiles) + " files, " + std::to_string(judged.size()) + " distinct models";
+  v.modelsValue = toJson(v.models);
   std::string byKind;
   if (kinds.is_object())
     for (const auto& [kind, agg] : kinds.items()) {
@@ -130,39 +141,46 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
                 std::to_string(k.channel) + ", changing " + std::to_string(k.changing) + " (non-uniformly " +
                 std::to_string(k.changingNonUniform) + "), inner non-uniform " + std::to_string(k.inner);
     }
-  const std::string judgedWhat = kinds.is_object() ? "without the test fixtures (manifest kind test) and built-in scenes"
-                                                   : "without the built-in scenes";
+  v.judgedWhat = kinds.is_object() ? "without the test fixtures (manifest kind test) and built-in scenes"
+                                   : "without the built-in scenes";
   // One relative tolerance for every scale statistic (pipelines/scene/scale_analysis.h): the
   // paper's loader uses 1e-4 for a matrix's column scales; for animation keys it states none.
-  const std::string rule = "1e-4 relative";
-  const std::string sampleText = sample.what + (failed ? "; " + std::to_string(failed) + " failed to load" : "") +
-                                 (byKind.empty() ? "" : "; by kind: " + byKind) +
-                                 ". Counted over distinct models (" + allWhat + "): " + kSameModelDefinition;
-  json kindsValue = kinds.is_object() ? kinds : json(nullptr);
+  v.rule = "1e-4 relative";
+  v.sampleText = sample.what + (failed ? "; " + std::to_string(failed) + " failed to load" : "") +
+                 (byKind.empty() ? "" : "; by kind: " + byKind) +
+                 ". Counted over distinct models (" + v.allWhat + "): " + kSameModelDefinition;
+  v.kindsValue = kinds.is_object() ? kinds : json(nullptr);
+  return v;
+}
 
+// "less than 0.5 % of ~400 glTF files animate scale": the models whose scale keys change the
+// scale, judged on the real models (not measurable under 200 of them).
+Claim animatedScaleClaim(const CorpusView& v) {
+  const Counts& a = v.a;
+  const Counts& r = v.r;
   Claim c{"animated_scale_corpus", "Scene statistics", "less than 0.5 % of ~400 glTF files animate scale"};
   c.paper = "< 0.5 % of ~400 files";
   c.paperValue = {{"fraction", 0.005}, {"files", 400}};
-  c.measured = allWhat + ": a scale channel in " + pct(a.channel, a.files) +
-               ", keys changing the scale (beyond " + rule + ") in " + pct(a.changing, a.files) +
+  c.measured = v.allWhat + ": a scale channel in " + pct(a.channel, a.files) +
+               ", keys changing the scale (beyond " + v.rule + ") in " + pct(a.changing, a.files) +
                ", changing it non-uniformly in " + std::to_string(a.changingNonUniform) + ", only constant scale channels "
-               "(keys that never change, reported apart) in " + std::to_string(a.constantOnly) + "; " + judgedWhat + " (" +
-               judgedCount + "): " + pct(r.changing, r.files) + " change the scale (" + pct(r.channel, r.files) + " have a channel, " +
+               "(keys that never change, reported apart) in " + std::to_string(a.constantOnly) + "; " + v.judgedWhat + " (" +
+               v.judgedCount + "): " + pct(r.changing, r.files) + " change the scale (" + pct(r.channel, r.files) + " have a channel, " +
                std::to_string(r.constantOnly) + " only constant ones)";
-  c.measuredValue = {{"files", models.files}, {"distinctModels", models.representatives.size()},
+  c.measuredValue = {{"files", v.models.files}, {"distinctModels", v.models.representatives.size()},
                      {"countedOver", "distinct models (first file of each duplicate group; failed loads apart)"},
-                     {"models", modelsValue}, {"judgedFiles", judgedFiles}, {"judgedModels", r.files},
+                     {"models", v.modelsValue}, {"judgedFiles", v.judgedFiles}, {"judgedModels", r.files},
                      {"withScaleChannel", a.channel}, {"withChangingScale", a.changing},
                      {"withNonUniformChangingScale", a.changingNonUniform},
                      {"judgedWithChangingScale", r.changing}, {"judgedWithScaleChannel", r.channel},
                      {"judgedFraction", r.files ? double(r.changing) / r.files : 0.0}, {"tolerance", kSimilarityTolerance},
                      {"withOnlyConstantScaleChannels", a.constantOnly}, {"judgedWithOnlyConstantScaleChannels", r.constantOnly},
-                     {"byKind", kindsValue}};
-  c.method = "motorbench inspect's scale statistics (pipelines/scene/scale_analysis.h) over " + sampleText +
+                     {"byKind", v.kindsValue}};
+  c.method = "motorbench inspect's scale statistics (pipelines/scene/scale_analysis.h) over " + v.sampleText +
              ". A file animates its scale when a scale channel's keys change over time: a key differs from the "
              "channel's first key by more than 1e-4 relative in some component (our tolerance: the paper states none "
              "for keys). A channel of constant keys (all 1, or a fixed scale other than the rest scale) sets a scale "
-             "and animates nothing: such models are counted apart; the verdict counts the distinct models " + judgedWhat;
+             "and animates nothing: such models are counted apart; the verdict counts the distinct models " + v.judgedWhat;
   if (r.files < 200) {
     char smallest[32];
     std::snprintf(smallest, sizeof smallest, "%.1f %%", r.files ? 100.0 / r.files : 100.0);
@@ -172,14 +190,16 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
   } else {
     const double f = double(r.changing) / r.files;
     c.verdict = f < 0.005 ? Verdict::Reproduced : Verdict::Differs;
-    c.verdictText = std::string(f < 0.005 ? "reproduced: " : "differs: ") + pct(r.changing, r.files) + " " + judgedWhat +
+    c.verdictText = std::string(f < 0.005 ? "reproduced: " : "differs: ") + pct(r.changing, r.files) + " " + v.judgedWhat +
                     " have scale keys that change the scale (paper: < 0.5 %); " + pct(r.channel, r.files) +
                     " have a scale channel at all";
   }
+  return c;
+}
 
-  Claim l{"nonuniform_scale_leaves", "Scene statistics", "non-uniform scale is found only on leaf nodes"};
-  l.paper = "all files with non-uniform scale: only on leaves";
-  l.paperValue = {{"fractionOnlyOnLeaves", 1.0}};
+// Up to three judged files with non-uniform scale on an inner node, named with the node and its
+// scale ("..." after them when there are more).
+std::string innerNonUniformExamples(const json& judged) {
   std::string examples;
   int listed = 0;
   for (const json& f : judged) {
@@ -194,54 +214,81 @@ std::vector<Claim> corpusClaims(const CorpusInputs& in) {
                 ex.value("name", std::string("?")) + b;
   }
   if (listed > 3) examples += ", ...";
-  l.measured = allWhat + ": non-uniform scale (beyond " + rule + ") on an inner node in " + pct(a.inner, a.files) +
-               "; " + judgedWhat + " (" + judgedCount + "): " + pct(r.inner, r.files) + ", " +
-               std::to_string(r.innerBeyondPercent) + " of them beyond 1 %" + (examples.empty() ? "" : " (" + examples + ")");
-  // What the motor family's exact fallback takes on the same files, at rest, as inspect
-  // counted it (motorFallbacks in its JSON; absent from an inspect run older than the fallback).
+  return examples;
+}
+
+// What the motor family's exact fallback takes on the judged files, at rest, as inspect counted
+// it (motorFallbacks in its JSON; absent from an inspect run older than the fallback).
+struct FallbackCensus {
   int censused = 0, generalFiles = 0, skinFiles = 0, linearDraws = 0, skinDraws = 0;
+};
+FallbackCensus fallbackCensus(const json& judged) {
+  FallbackCensus n;
   for (const json& f : judged) {
     const json& m = f.value("motorFallbacks", json());
     if (!m.is_object()) continue;
-    ++censused;
-    generalFiles += m.value("generalNodes", 0) > 0;
-    skinFiles += m.value("skinFallbackDraws", 0) > 0;
-    linearDraws += m.value("linearFallbackDraws", 0);
-    skinDraws += m.value("skinFallbackDraws", 0);
+    ++n.censused;
+    n.generalFiles += m.value("generalNodes", 0) > 0;
+    n.skinFiles += m.value("skinFallbackDraws", 0) > 0;
+    n.linearDraws += m.value("linearFallbackDraws", 0);
+    n.skinDraws += m.value("skinFallbackDraws", 0);
   }
-  if (censused > 0)
+  return n;
+}
+
+// "non-uniform scale is found only on leaf nodes": the judged models with non-uniform scale on
+// an inner node, with examples and what the motor pipelines' exact fallback takes on them.
+Claim leafScaleClaim(const CorpusView& v) {
+  const Counts& a = v.a;
+  const Counts& r = v.r;
+  Claim l{"nonuniform_scale_leaves", "Scene statistics", "non-uniform scale is found only on leaf nodes"};
+  l.paper = "all files with non-uniform scale: only on leaves";
+  l.paperValue = {{"fractionOnlyOnLeaves", 1.0}};
+  const std::string examples = innerNonUniformExamples(v.judged);
+  l.measured = v.allWhat + ": non-uniform scale (beyond " + v.rule + ") on an inner node in " + pct(a.inner, a.files) +
+               "; " + v.judgedWhat + " (" + v.judgedCount + "): " + pct(r.inner, r.files) + ", " +
+               std::to_string(r.innerBeyondPercent) + " of them beyond 1 %" + (examples.empty() ? "" : " (" + examples + ")");
+  const FallbackCensus n = fallbackCensus(v.judged);
+  if (n.censused > 0)
     l.measured += "; the motor pipelines' exact fallback (pipelines/motor/linear_fallback.h) takes " +
-                  pct(generalFiles, censused) + " for nodes whose world is not a similarity (" +
-                  std::to_string(linearDraws) + " rigid draws at rest) and " + pct(skinFiles, censused) +
-                  " for skins whose joints are not one uniform scale (" + std::to_string(skinDraws) + " skinned draws)";
-  l.measuredValue = {{"files", models.files}, {"distinctModels", models.representatives.size()},
+                  pct(n.generalFiles, n.censused) + " for nodes whose world is not a similarity (" +
+                  std::to_string(n.linearDraws) + " rigid draws at rest) and " + pct(n.skinFiles, n.censused) +
+                  " for skins whose joints are not one uniform scale (" + std::to_string(n.skinDraws) + " skinned draws)";
+  l.measuredValue = {{"files", v.models.files}, {"distinctModels", v.models.representatives.size()},
                      {"countedOver", "distinct models (first file of each duplicate group; failed loads apart)"},
-                     {"models", modelsValue}, {"judgedFiles", judgedFiles}, {"judgedModels", r.files},
+                     {"models", v.modelsValue}, {"judgedFiles", v.judgedFiles}, {"judgedModels", r.files},
                      {"withInnerNonUniform", a.inner},
                      {"judgedWithInnerNonUniform", r.inner}, {"judgedBeyond1Percent", r.innerBeyondPercent},
-                     {"tolerance", kSimilarityTolerance}, {"byKind", kindsValue},
-                     {"motorFallback", censused ? json{{"files", censused}, {"withGeneralNodes", generalFiles},
-                                                       {"withSkinFallback", skinFiles}, {"linearFallbackDrawsAtRest", linearDraws},
-                                                       {"skinFallbackDrawsAtRest", skinDraws}}
-                                                : json(nullptr)}};
-  l.method = "motorbench inspect's scale statistics over " + sampleText +
+                     {"tolerance", kSimilarityTolerance}, {"byKind", v.kindsValue},
+                     {"motorFallback", n.censused ? json{{"files", n.censused}, {"withGeneralNodes", n.generalFiles},
+                                                         {"withSkinFallback", n.skinFiles}, {"linearFallbackDrawsAtRest", n.linearDraws},
+                                                         {"skinFallbackDrawsAtRest", n.skinDraws}}
+                                                  : json(nullptr)}};
+  l.method = "motorbench inspect's scale statistics over " + v.sampleText +
              ". A node is inner when it has children; its scale is non-uniform when |s0/s1 - 1| or |s1/s2 - 1| exceeds "
              "1e-4 (the tolerance the paper's loader applies to a matrix's column scales; every scale statistic uses it) at rest or "
              "in any scale key (an authored matrix with shear counts); the "
-             "verdict counts the distinct models " + judgedWhat;
+             "verdict counts the distinct models " + v.judgedWhat;
   if (r.files == 0) {
     l.verdict = Verdict::NotMeasurable;
     l.verdictText = "not measurable here: no real model in the sample";
   } else if (r.inner == 0) {
     l.verdict = Verdict::Reproduced;
-    l.verdictText = "reproduced: none of " + std::to_string(r.files) + " distinct models " + judgedWhat +
+    l.verdictText = "reproduced: none of " + std::to_string(r.files) + " distinct models " + v.judgedWhat +
                     " has non-uniform scale beyond 1e-4 on an inner node";
   } else {
     l.verdict = Verdict::Differs;
-    l.verdictText = "differs: " + pct(r.inner, r.files) + " " + judgedWhat + " have non-uniform scale beyond 1e-4 on an "
+    l.verdictText = "differs: " + pct(r.inner, r.files) + " " + v.judgedWhat + " have non-uniform scale beyond 1e-4 on an "
                     "inner node (" + std::to_string(r.innerBeyondPercent) + " beyond 1 %)";
   }
-  return {c, l};
+  return l;
+}
+
+}  // namespace
+
+std::vector<Claim> corpusClaims(const CorpusInputs& in) {
+  const CorpusView v = corpusView(sampleOf(in));
+  return {animatedScaleClaim(v), leafScaleClaim(v)};
 }
 
 }  // namespace mb::claims
