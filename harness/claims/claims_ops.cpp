@@ -52,41 +52,65 @@ const char* kListing =
     "the paper's printed listing transcribed expression for expression in shaders/paper_listings.glsl and "
     "counted the same way";
 
-}  // namespace
-
-std::vector<Claim> opClaims() {
-  const std::map<std::string, ops::Kernel> k = kernels();
-  auto kernel = [&](const std::string& name) -> const ops::Kernel& {
-    auto it = k.find(name);
-    if (it == k.end()) throw std::runtime_error("op_kernels.h has no kernel " + name);
+// The rows being written, with the kernels they count: each row judged as it is added.
+class OpRows {
+public:
+  // The kernel `name` of op_kernels.h (throws when there is none).
+  const ops::Kernel& kernel(const std::string& name) const {
+    auto it = k_.find(name);
+    if (it == k_.end()) throw std::runtime_error("op_kernels.h has no kernel " + name);
     return it->second;
-  };
-  auto get = [&](const std::string& name) { return countOps(kernel(name).run); };
-  std::vector<Claim> out;
-  auto add = [&](const std::string& id, const std::string& section, const std::string& statement,
-                 PaperOps paper, const OpCounts& measured, const std::string& method) {
+  }
+  // The counted ops of one execution of kernel `name`.
+  OpCounts get(const std::string& name) const { return countOps(kernel(name).run); }
+  // A row judged against the paper's counts.
+  void add(const std::string& id, const std::string& section, const std::string& statement, PaperOps paper,
+           const OpCounts& measured, const std::string& method) {
     Claim c{id, section, statement};
     c.method = method;
     judgeOps(c, paper, measured);
     out.push_back(c);
-  };
-  const OpCounts mm = get("mat4*mat4"), mv = get("mat4*vec4");
+  }
+  // A row judged three ways: the paper's counts, its printed listing counted, and ours.
+  void three(const std::string& id, const std::string& statement, PaperOps paper, const OpCounts& printed,
+             const OpCounts& ours, const std::string& method, const std::string& why) {
+    Claim c{id, kToolbox, statement};
+    c.method = method;
+    judgeOpsThree(c, paper, printed, ours, why);
+    out.push_back(c);
+  }
+  static constexpr const char* kToolbox = "Normalisation, square root, exp and log";
+  std::vector<Claim> out;
+
+private:
+  const std::map<std::string, ops::Kernel> k_ = kernels();
+};
+
+// Composition (table 1): mat4 * mat4 and every geometric product of motors, rotors and
+// translators.
+void compositionRows(OpRows& rows) {
+  const OpCounts mm = rows.get("mat4*mat4");
   const std::string vsMat4 = " (mat4*mat4 measured the same way: " + opsText(mm) + ")";
   const std::string composition = "Composition (table 1)";
-  add("mat4_mul_mat4", composition, "4x4 matrix product", {64, 48}, mm,
-      std::string("GLSL mat4 * mat4 through the shim, ") + kCounted);
+  rows.add("mat4_mul_mat4", composition, "4x4 matrix product", {64, 48}, mm,
+           std::string("GLSL mat4 * mat4 through the shim, ") + kCounted);
   struct Row { const char* id; const char* what; int mul, add; };
   for (const Row& r : {Row{"gp_mm", "motor * motor", 48, 40}, Row{"gp_rr", "rotor * rotor", 16, 12},
                        Row{"gp_tt", "translator * translator", 0, 3}, Row{"gp_rt", "rotor * translator", 12, 8},
                        Row{"gp_tr", "translator * rotor", 12, 8}, Row{"gp_rm", "rotor * motor", 32, 24},
                        Row{"gp_mr", "motor * rotor", 32, 24}, Row{"gp_tm", "translator * motor", 12, 12},
                        Row{"gp_mt", "motor * translator", 12, 12}})
-    add(r.id, composition, std::string(r.id) + ": " + r.what + ", against mat4*mat4 64/48", {r.mul, r.add}, get(r.id),
-        std::string(r.id) + " of shaders/pga.glsl " + kCounted + vsMat4);
+    rows.add(r.id, composition, std::string(r.id) + ": " + r.what + ", against mat4*mat4 64/48", {r.mul, r.add},
+             rows.get(r.id), std::string(r.id) + " of shaders/pga.glsl " + kCounted + vsMat4);
+}
 
+// Sandwich products: mat4 * vec4 and the point, direction and basis-direction sandwiches (the
+// naive point sandwich inconclusive: the paper does not define its expansion).
+void sandwichRows(OpRows& rows) {
+  const OpCounts mv = rows.get("mat4*vec4");
   const std::string sandwich = "Sandwich products";
-  add("mat4_mul_vec4", sandwich, "matrix * point (the reference for the sandwiches)", {16, 12}, mv,
-      std::string("GLSL mat4 * vec4 through the shim, ") + kCounted);
+  rows.add("mat4_mul_vec4", sandwich, "matrix * point (the reference for the sandwiches)", {16, 12}, mv,
+           std::string("GLSL mat4 * vec4 through the shim, ") + kCounted);
   const std::string vsMv = " (mat4*vec4 measured: " + opsText(mv) + ")";
   {
     // The paper prints no naive expansion: its 33/29 counts some order of the two products that
@@ -97,44 +121,40 @@ std::vector<Claim> opClaims() {
                            "T = s p + p x A - Ad), then the trivector part of (M p) ~M = s T + T x A + x0 A "
                            "- s Ad + A x Ad - e0123 A (A = rotor bivector, Ad = dual bivector), ") +
                kCounted + vsMv;
-    judgeOps(c, {33, 29}, get("sw_mp_naive"));
+    judgeOps(c, {33, 29}, rows.get("sw_mp_naive"));
     const std::string against = c.verdictText;
     c.verdict = Verdict::Inconclusive;
     c.verdictText = "inconclusive: the paper does not print or define the expansion behind its 33/29; ours "
                     "(defined in the method) " + against.substr(0, against.find(';')) +
                     ", and another grouping of the same two products counts differently";
-    out.push_back(c);
+    rows.out.push_back(c);
   }
-  add("sw_mp", sandwich, "optimised point sandwich (uses M~M = 1), vs mat4*vec4 16/12", {21, 18}, get("sw_mp"),
-      std::string("sw_mp of shaders/pga.glsl ") + kCounted + vsMv);
-  add("sw_md", sandwich, "direction sandwich", {18, 12}, get("sw_md"),
-      std::string("sw_md of shaders/pga.glsl ") + kCounted);
-  add("sw_mx", sandwich, "basis-direction sandwich (x axis, output scaled by 1/2)", {6, 4}, get("sw_mx"),
-      std::string("sw_mx of shaders/pga.glsl ") + kCounted + "; y and z axes measured: sw_my " +
-          opsText(get("sw_my")) + ", sw_mz " + opsText(get("sw_mz")));
+  rows.add("sw_mp", sandwich, "optimised point sandwich (uses M~M = 1), vs mat4*vec4 16/12", {21, 18}, rows.get("sw_mp"),
+           std::string("sw_mp of shaders/pga.glsl ") + kCounted + vsMv);
+  rows.add("sw_md", sandwich, "direction sandwich", {18, 12}, rows.get("sw_md"),
+           std::string("sw_md of shaders/pga.glsl ") + kCounted);
+  rows.add("sw_mx", sandwich, "basis-direction sandwich (x axis, output scaled by 1/2)", {6, 4}, rows.get("sw_mx"),
+           std::string("sw_mx of shaders/pga.glsl ") + kCounted + "; y and z axes measured: sw_my " +
+               opsText(rows.get("sw_my")) + ", sw_mz " + opsText(rows.get("sw_mz")));
+}
 
-  const std::string toolbox = "Normalisation, square root, exp and log";
+// Normalisation, square root, exp and log: ours and the paper's printed listings, each against
+// the paper's counts (and the relation sqrt_m = normalize_m + 1 add on both).
+void toolboxRows(OpRows& rows) {
   const Listings listing = countListings();
-  auto three = [&](const std::string& id, const std::string& statement, PaperOps paper, const OpCounts& printed,
-                   const OpCounts& ours, const std::string& method, const std::string& why) {
-    Claim c{id, toolbox, statement};
-    c.method = method;
-    judgeOpsThree(c, paper, printed, ours, why);
-    out.push_back(c);
-  };
-  const OpCounts normOurs = get("normalize_m"), sqrtOurs = get("sqrt_m");
-  three("normalize_m", "motor normalisation (Study-number inverse square root)", {21, 5}, listing.normalize,
-        normOurs,
-        std::string("ours: normalize_m of shaders/pga.glsl on a non-unit motor; listing: ") + kListing + "; " +
-            kCounted,
-        "ours takes inversesqrt and scales the dual correction once");
+  const OpCounts normOurs = rows.get("normalize_m"), sqrtOurs = rows.get("sqrt_m");
+  rows.three("normalize_m", "motor normalisation (Study-number inverse square root)", {21, 5}, listing.normalize,
+             normOurs,
+             std::string("ours: normalize_m of shaders/pga.glsl on a non-unit motor; listing: ") + kListing + "; " +
+                 kCounted,
+             "ours takes inversesqrt and scales the dual correction once");
   {
-    three("sqrt_m", "motor square root = normalize(1 + M): the cost of normalize_m plus one addition", {21, 6},
-          listing.sqrt, sqrtOurs,
-          std::string("ours: sqrt_m of shaders/pga.glsl; listing: ") + kListing + "; " + kCounted,
-          "ours is our normalize_m + 1 add");
+    rows.three("sqrt_m", "motor square root = normalize(1 + M): the cost of normalize_m plus one addition", {21, 6},
+               listing.sqrt, sqrtOurs,
+               std::string("ours: sqrt_m of shaders/pga.glsl; listing: ") + kListing + "; " + kCounted,
+               "ours is our normalize_m + 1 add");
     // The paper's relation itself, checked on both codes.
-    Claim& c = out.back();
+    Claim& c = rows.out.back();
     const bool oursRel = sqrtOurs.mul == normOurs.mul && sqrtOurs.add == normOurs.add + 1;
     const bool listRel = listing.sqrt.mul == listing.normalize.mul && listing.sqrt.add == listing.normalize.add + 1;
     c.verdictText += std::string("; the relation sqrt_m = normalize_m + 1 add: ") +
@@ -142,19 +162,24 @@ std::vector<Claim> opClaims() {
                                          : oursRel ? "reproduced by ours only" : listRel ? "reproduced by the listing only"
                                                                                          : "not reproduced");
   }
-  three("exp_b", "exponential of a line (bivector) -> motor", {17, 8, 2, 1, 2, "1 cos, 1 sin"}, listing.exp, get("exp_b"),
-        std::string("ours: exp_b of shaders/pga.glsl on a general bivector (non-zero, so the closed form runs); "
-                    "listing: ") + kListing + "; " + kCounted,
-        "");
-  three("log_m", "logarithm of a motor -> line", {14, 5, 1, 1, 1, "1 acos"}, listing.log, get("log_m"),
-        std::string("ours: log_m of shaders/pga.glsl on a general motor (scalar part != 1); listing: ") + kListing +
-            "; " + kCounted,
-        "our accuracy rewrite of 1 - s^2 as (1 - s)(1 + s) (exact near s = 1, small rotations, in float) costs "
-        "one addition");
+  rows.three("exp_b", "exponential of a line (bivector) -> motor", {17, 8, 2, 1, 2, "1 cos, 1 sin"}, listing.exp,
+             rows.get("exp_b"),
+             std::string("ours: exp_b of shaders/pga.glsl on a general bivector (non-zero, so the closed form runs); "
+                         "listing: ") + kListing + "; " + kCounted,
+             "");
+  rows.three("log_m", "logarithm of a motor -> line", {14, 5, 1, 1, 1, "1 acos"}, listing.log, rows.get("log_m"),
+             std::string("ours: log_m of shaders/pga.glsl on a general motor (scalar part != 1); listing: ") + kListing +
+                 "; " + kCounted,
+             "our accuracy rewrite of 1 - s^2 as (1 - s)(1 + s) (exact near s = 1, small rotations, in float) costs "
+             "one addition");
+}
 
+// Vertex with tangent frame: the frame extraction, the paper's 47/38 motor vertex (its pieces
+// counted together as the shader executes them) and the 48/36 matrix vertex.
+void vertexRows(OpRows& rows) {
   const std::string vertex = "Vertex with tangent frame";
-  add("extractNormalTangent", vertex, "world normal + tangent from the frame rotor", {9, 8},
-      get("extractNormalTangent"), std::string("extractNormalTangent of shaders/pga.glsl ") + kCounted);
+  rows.add("extractNormalTangent", vertex, "world normal + tangent from the frame rotor", {9, 8},
+           rows.get("extractNormalTangent"), std::string("extractNormalTangent of shaders/pga.glsl ") + kCounted);
 
   // The paper's 47/38: sw_mp + gp_rr + extractNormalTangent + 1 for the handedness, counted
   // as one execution of the four pieces.
@@ -162,35 +187,45 @@ std::vector<Claim> opClaims() {
   const auto handedness = [] { P.motorHandedness(MotorShader<Counted>::vec4(-0.5, 0.5, -0.5, 0.5)); };
   const OpCounts hand = countOps(handedness);
   const OpCounts pieces = countOps([&] {
-    kernel("sw_mp").run();
-    kernel("gp_rr").run();
-    kernel("extractNormalTangent").run();
+    rows.kernel("sw_mp").run();
+    rows.kernel("gp_rr").run();
+    rows.kernel("extractNormalTangent").run();
     handedness();
   });
   const OpCounts motorVertex = vertexFunction("motorRigidVertex");
   // Judged on what the shader executes, never on the paper's 1 mul added to
   // our count: the paper counts its handedness as 1 multiplication; its listing and our shader
   // compute it as sign(1/x), which keeps the sign of a zero scalar part.
-  add("vertex_frame_motor", vertex,
-      "motor vertex with full tangent frame to world space: 16 + 9 + 21 + 1 = 47 mul, 12 + 8 + 18 = 38 add",
-      {47, 38}, pieces,
-      "the pieces the paper names, executed once each and counted together as the shader executes them: sw_mp " +
-          opsText(get("sw_mp")) + " + gp_rr " + opsText(get("gp_rr")) + " + extractNormalTangent " +
-          opsText(get("extractNormalTangent")) + " + the handedness sign(1/x) " + opsText(hand) +
-          " (the paper counts it as 1 mul). Rule: every op column executed against the paper's (mul, add; columns the "
-          "paper does not state listed); reproduced only when each stated column is equal. The pipeline's whole "
-          "function motorRigidVertex (shaders/motor_transform.glsl, incl. the uniform scale applied in the shader) "
-          "counts " + opsText(motorVertex));
-  out.back().verdictText += "; the paper's 47th mul is its handedness, which the shader executes as sign(1/x) (" +
-                            opsText(hand) + "): executed " + opsText(pieces) + " beside the paper's 47 mul, 38 add";
+  rows.add("vertex_frame_motor", vertex,
+           "motor vertex with full tangent frame to world space: 16 + 9 + 21 + 1 = 47 mul, 12 + 8 + 18 = 38 add",
+           {47, 38}, pieces,
+           "the pieces the paper names, executed once each and counted together as the shader executes them: sw_mp " +
+               opsText(rows.get("sw_mp")) + " + gp_rr " + opsText(rows.get("gp_rr")) + " + extractNormalTangent " +
+               opsText(rows.get("extractNormalTangent")) + " + the handedness sign(1/x) " + opsText(hand) +
+               " (the paper counts it as 1 mul). Rule: every op column executed against the paper's (mul, add; columns the "
+               "paper does not state listed); reproduced only when each stated column is equal. The pipeline's whole "
+               "function motorRigidVertex (shaders/motor_transform.glsl, incl. the uniform scale applied in the shader) "
+               "counts " + opsText(motorVertex));
+  rows.out.back().verdictText += "; the paper's 47th mul is its handedness, which the shader executes as sign(1/x) (" +
+                                 opsText(hand) + "): executed " + opsText(pieces) + " beside the paper's 47 mul, 38 add";
   const OpCounts matrixFrame = vertexFunction("matrixRigidVertex");
-  add("vertex_frame_matrix", vertex,
-      "matrix vertex with normal and tangent: three mat4*vec4 = 48 mul, 36 add", {48, 36},
-      countOps([&] { for (int i = 0; i < 3; ++i) kernel("mat4*vec4").run(); }),
-      "three counted mat4*vec4 (position and tangent by the model matrix, normal by the normal matrix). "
-      "The pipeline's whole function matrixRigidVertex (shaders/matrix_transform.glsl, as the glTF "
-      "Sample Viewer, incl. the handedness sign from the normal matrix) counts " + opsText(matrixFrame));
-  return out;
+  rows.add("vertex_frame_matrix", vertex,
+           "matrix vertex with normal and tangent: three mat4*vec4 = 48 mul, 36 add", {48, 36},
+           countOps([&] { for (int i = 0; i < 3; ++i) rows.kernel("mat4*vec4").run(); }),
+           "three counted mat4*vec4 (position and tangent by the model matrix, normal by the normal matrix). "
+           "The pipeline's whole function matrixRigidVertex (shaders/matrix_transform.glsl, as the glTF "
+           "Sample Viewer, incl. the handedness sign from the normal matrix) counts " + opsText(matrixFrame));
+}
+
+}  // namespace
+
+std::vector<Claim> opClaims() {
+  OpRows rows;
+  compositionRows(rows);
+  sandwichRows(rows);
+  toolboxRows(rows);
+  vertexRows(rows);
+  return std::move(rows.out);
 }
 
 }  // namespace mb::claims
