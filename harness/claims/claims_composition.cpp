@@ -108,41 +108,42 @@ std::vector<Claim> compositionClaims(const json& kernelPairs) {
   return {c};
 }
 
-std::vector<Claim> sceneGraphClaims(const json& kernelPairs, const json& timings, const std::string& timingSource,
-                                    const json& sceneStats) {
-  Claim c{"scene_graph_update", "Composition (table 1)",
-          "updating the scene-graph hierarchy with motors is a substantial gain over matrices"};
-  c.paper = "\"a substantial optimization ... the gain of switching to motors is obvious\" (no figure)";
-  c.paperValue = nullptr;
-  struct Evidence { std::string what; double cost = -1; std::string detail; };
-  std::vector<Evidence> ev;
-  std::string sameClass;  // a note: the kernel's same-class ratio when the fastest side is another class
-  // The hierarchy kernel: motor items/s against the fastest other side.
-  {
-    Evidence e{"hierarchy kernel (motorbench bench pair hierarchy)"};
-    if (kernelPairs.is_array())
-      for (const json& p : kernelPairs) {
-        if (p.value("kernel", "") != "hierarchy") continue;
-        const bench::FastestSides f = bench::fastestSides(p);
-        if (f.costRatio() > 0) {
-          e.cost = f.costRatio();
-          e.detail = "fastest motor side " + f.motorSide + ", fastest matrix side " + f.matrixSide + " (nodes/s: " + f.all +
-                     ") on " + report::pairMachineText(p);
-          // The same implementation class on both sides: the shader sources through the shim.
-          const double m = p.contains("matrix") ? p["matrix"].value("items_per_second", 0.0) : 0.0;
-          const double q = p.contains("motor") ? p["motor"].value("items_per_second", 0.0) : 0.0;
-          if (m > 0 && q > 0 && f.matrixSide != "matrix")
-            sameClass = "the hierarchy kernel with both sides the scalar shim source (motor / matrix) is " + fmt("%.2fx", m / q) +
-                        ": the gap to " + f.matrixSide + " is its implementation, not the algebra";
-        }
+namespace {
+
+// One measurement of the scene-graph update: motor time / the fastest matrix-side time (< 0:
+// not measured, `detail` says why).
+struct Evidence { std::string what; double cost = -1; std::string detail; };
+
+// The hierarchy kernel: motor items/s against the fastest other side; `sameClass` gets the
+// kernel's same-class ratio when the fastest side is another implementation class.
+Evidence hierarchyKernelEvidence(const json& kernelPairs, std::string& sameClass) {
+  Evidence e{"hierarchy kernel (motorbench bench pair hierarchy)"};
+  if (kernelPairs.is_array())
+    for (const json& p : kernelPairs) {
+      if (p.value("kernel", "") != "hierarchy") continue;
+      const bench::FastestSides f = bench::fastestSides(p);
+      if (f.costRatio() > 0) {
+        e.cost = f.costRatio();
+        e.detail = "fastest motor side " + f.motorSide + ", fastest matrix side " + f.matrixSide + " (nodes/s: " + f.all +
+                   ") on " + report::pairMachineText(p);
+        // The same implementation class on both sides: the shader sources through the shim.
+        const double m = p.contains("matrix") ? p["matrix"].value("items_per_second", 0.0) : 0.0;
+        const double q = p.contains("motor") ? p["motor"].value("items_per_second", 0.0) : 0.0;
+        if (m > 0 && q > 0 && f.matrixSide != "matrix")
+          sameClass = "the hierarchy kernel with both sides the scalar shim source (motor / matrix) is " + fmt("%.2fx", m / q) +
+                      ": the gap to " + f.matrixSide + " is its implementation, not the algebra";
       }
-    if (e.cost < 0) e.detail = "no hierarchy bench pair in this run's kernel data";
-    ev.push_back(e);
-  }
-  // Pipeline::update per scene: motor against the fastest matrix-side pipeline (hybrid's CPU
-  // side is the motor pipeline's, so it is not a matrix baseline).
+    }
+  if (e.cost < 0) e.detail = "no hierarchy bench pair in this run's kernel data";
+  return e;
+}
+
+// Pipeline::update per scene: the hierarchy phase of motor against the fastest matrix-side
+// pipeline (hybrid's CPU side is the motor pipeline's, so it is not a matrix baseline), one
+// Evidence per scene with the minimum of work; the others named in `belowWork`.
+void hierarchyPhaseEvidence(const json& timings, const std::string& timingSource, const json& sceneStats,
+                            std::vector<Evidence>& ev, std::string& belowWork) {
   json perScene = json::object();
-  std::string belowWork;  // scenes listed but not counted (claims_work.h)
   if (timings.is_object())
     for (const auto& [scene, t] : timings.items()) {
       if (!t.is_object() || !t.contains("pipelines")) continue;
@@ -181,6 +182,44 @@ std::vector<Claim> sceneGraphClaims(const json& kernelPairs, const json& timings
     ev.push_back({"hierarchy phase of Pipeline::update per scene", -1,
                   belowWork.empty() ? "no frame timing in this run (" + timingSource + ")"
                                     : "no scene with the minimum of work"});
+}
+
+// The verdict over the evidence: reproduced when every measurement shows a gain (< kGain),
+// differs when none does, inconclusive otherwise; what was not measured and the same-class note
+// added.
+void judgeEvidence(const std::string& gain, const std::string& loss, const std::string& tie, const std::string& missing,
+                   const std::string& sameClass, Claim& c) {
+  if (gain.empty() && loss.empty() && tie.empty()) {
+    c.verdict = Verdict::NotMeasurable;
+    c.verdictText = "not measurable here: " + missing;
+  } else if (loss.empty() && tie.empty()) {
+    c.verdict = Verdict::Reproduced;
+    c.verdictText = "reproduced: the motor update is faster in every measurement (" + gain + ")";
+  } else if (gain.empty()) {
+    c.verdict = Verdict::Differs;
+    c.verdictText = "differs: no measurement shows a gain (" + (loss.empty() ? "" : "slower: " + loss) +
+                    (loss.empty() || tie.empty() ? "" : "; ") + (tie.empty() ? "" : "within 5 %: " + tie) + ")";
+  } else {
+    c.verdict = Verdict::Inconclusive;
+    c.verdictText = "inconclusive: gain in " + gain + "; no gain in " + loss + (loss.empty() || tie.empty() ? "" : ", ") + tie;
+  }
+  if (!missing.empty() && c.verdict != Verdict::NotMeasurable) c.verdictText += "; not measured: " + missing;
+  if (!sameClass.empty() && c.verdict != Verdict::NotMeasurable) c.verdictText += "; note: " + sameClass;
+}
+
+}  // namespace
+
+std::vector<Claim> sceneGraphClaims(const json& kernelPairs, const json& timings, const std::string& timingSource,
+                                    const json& sceneStats) {
+  Claim c{"scene_graph_update", "Composition (table 1)",
+          "updating the scene-graph hierarchy with motors is a substantial gain over matrices"};
+  c.paper = "\"a substantial optimization ... the gain of switching to motors is obvious\" (no figure)";
+  c.paperValue = nullptr;
+  std::vector<Evidence> ev;
+  std::string sameClass;  // a note: the kernel's same-class ratio when the fastest side is another class
+  ev.push_back(hierarchyKernelEvidence(kernelPairs, sameClass));
+  std::string belowWork;  // scenes listed but not counted (claims_work.h)
+  hierarchyPhaseEvidence(timings, timingSource, sceneStats, ev, belowWork);
   json value = json::object();
   if (!belowWork.empty()) value["notCounted"] = belowWork;
   std::string text, gain, loss, tie, missing;
@@ -204,22 +243,7 @@ std::vector<Claim> sceneGraphClaims(const json& kernelPairs, const json& timings
              "motor pipeline's plus a conversion, so it is no matrix baseline); " + minimumRule() + "; source: " + timingSource +
              ". Verdict: reproduced when every measurement shows a gain (< 0.95x), differs when none does, "
              "inconclusive otherwise.";
-  if (gain.empty() && loss.empty() && tie.empty()) {
-    c.verdict = Verdict::NotMeasurable;
-    c.verdictText = "not measurable here: " + missing;
-  } else if (loss.empty() && tie.empty()) {
-    c.verdict = Verdict::Reproduced;
-    c.verdictText = "reproduced: the motor update is faster in every measurement (" + gain + ")";
-  } else if (gain.empty()) {
-    c.verdict = Verdict::Differs;
-    c.verdictText = "differs: no measurement shows a gain (" + (loss.empty() ? "" : "slower: " + loss) +
-                    (loss.empty() || tie.empty() ? "" : "; ") + (tie.empty() ? "" : "within 5 %: " + tie) + ")";
-  } else {
-    c.verdict = Verdict::Inconclusive;
-    c.verdictText = "inconclusive: gain in " + gain + "; no gain in " + loss + (loss.empty() || tie.empty() ? "" : ", ") + tie;
-  }
-  if (!missing.empty() && c.verdict != Verdict::NotMeasurable) c.verdictText += "; not measured: " + missing;
-  if (!sameClass.empty() && c.verdict != Verdict::NotMeasurable) c.verdictText += "; note: " + sameClass;
+  judgeEvidence(gain, loss, tie, missing, sameClass, c);
   return {c};
 }
 
