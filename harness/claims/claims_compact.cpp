@@ -199,12 +199,12 @@ Claim fragmentRotorClaim(const nlohmann::json& isa, const std::vector<std::strin
   return c;
 }
 
-}  // namespace
+// The built-in scenes the image row renders when there is no report.
+const std::vector<std::string> kCompactScenes = {"normal_torus", "textured_box", "skinned_tube", "dense_torus", "crowd"};
 
-std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& isaSource,
-                                 const nlohmann::json& report, const std::string& reportSource) {
-  const Uploads uploads = report.is_object() ? Uploads(report.value("scenes", nlohmann::json()), reportSource) : Uploads();
-  std::vector<Claim> out;
+// Bytes per normal-mapped vertex of motor_c and matrix_c on normal_torus, beside motor and
+// matrix (a baseline row).
+Claim compactBytesRow(const Uploads& uploads) {
   Claim bytes = row("compact_bytes_per_vertex",
                     "the smallest motor vertex vs the smallest matrix vertex: bytes per normal-mapped vertex",
                     "PipelineStats.normalMappedVertexBytes / normalMappedVertices of motor_c and matrix_c on the "
@@ -221,19 +221,22 @@ std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& i
   }
   if (!error.empty()) {
     notMeasurable(bytes, error);
-  } else {
-    bytes.measured = fmt("%g", b[0]) + " vs " + fmt("%g", b[1]) + " bytes/vertex (motor " + fmt("%g", b[2]) +
-                     ", matrix " + fmt("%g", b[3]) + ")";
-    bytes.measuredValue = {{kMotor, b[0]}, {kMatrix, b[1]}, {kMotorBase, b[2]}, {kMatrixBase, b[3]}};
-    bytes.verdict = Verdict::Baseline;
-    bytes.verdictText = b[0] == b[1] ? "baseline: at their smallest both sides need the same bytes; only the frame's "
-                                       "encoding and its unpacking differ"
-                                     : std::string("baseline: the ") + (b[0] < b[1] ? "motor" : "matrix") +
-                                           " vertex is smaller";
+    return bytes;
   }
-  out.push_back(bytes);
+  bytes.measured = fmt("%g", b[0]) + " vs " + fmt("%g", b[1]) + " bytes/vertex (motor " + fmt("%g", b[2]) +
+                   ", matrix " + fmt("%g", b[3]) + ")";
+  bytes.measuredValue = {{kMotor, b[0]}, {kMatrix, b[1]}, {kMotorBase, b[2]}, {kMatrixBase, b[3]}};
+  bytes.verdict = Verdict::Baseline;
+  bytes.verdictText = b[0] == b[1] ? "baseline: at their smallest both sides need the same bytes; only the frame's "
+                                     "encoding and its unpacking differ"
+                                   : std::string("baseline: the ") + (b[0] < b[1] ? "motor" : "matrix") +
+                                         " vertex is smaller";
+  return bytes;
+}
 
-  const std::vector<std::string> scenes = {"normal_torus", "textured_box", "skinned_tube", "dense_torus", "crowd"};
+// The worst PSNR against matrix of motor_c and matrix_c: from the report's summary, else (no
+// report) rendered here over kCompactScenes (a baseline row).
+Claim compactImageRow(const nlohmann::json& report, const std::string& reportSource) {
   Claim image = row("compact_image_cost", "image cost of the smallest vertices: worst PSNR against matrix",
                     "renders at rest (skinned meshes in their bind pose: no skinning-method difference) of the "
                     "built-in normal_torus, textured_box, skinned_tube, dense_torus and crowd at 128x128, "
@@ -245,23 +248,27 @@ std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& i
                    std::to_string(report["settings"].value("width", 0)) + "x" +
                    std::to_string(report["settings"].value("height", 0)) + ", its scenes";
   } else if (!report.is_object()) {  // a report without both: not rendered here
-    w = worstPsnr(scenes, kMatrixBase, {kMotor, kMatrix});
+    w = worstPsnr(kCompactScenes, kMatrixBase, {kMotor, kMatrix});
   }
   if (!w) {
     notMeasurable(image, w.error());
-  } else {
-    const double motorPsnr = (*w)[0], matrixPsnr = (*w)[1];
-    image.measured = psnrText(motorPsnr) + " vs " + psnrText(matrixPsnr);
-    image.measuredValue = {{kMotor, motorPsnr > 1e299 ? nlohmann::json() : nlohmann::json(motorPsnr)},
-                           {kMatrix, matrixPsnr > 1e299 ? nlohmann::json() : nlohmann::json(matrixPsnr)}};
-    image.verdict = Verdict::Baseline;
-    image.verdictText = std::string("baseline: ") +
-                        (std::abs(motorPsnr - matrixPsnr) < 1.0 ? "within 1 dB of each other"
-                         : motorPsnr > matrixPsnr                ? "the 4-byte rotor costs less image"
-                                                               : "the octahedral frame costs less image");
+    return image;
   }
-  out.push_back(image);
+  const double motorPsnr = (*w)[0], matrixPsnr = (*w)[1];
+  image.measured = psnrText(motorPsnr) + " vs " + psnrText(matrixPsnr);
+  image.measuredValue = {{kMotor, motorPsnr > 1e299 ? nlohmann::json() : nlohmann::json(motorPsnr)},
+                         {kMatrix, matrixPsnr > 1e299 ? nlohmann::json() : nlohmann::json(matrixPsnr)}};
+  image.verdict = Verdict::Baseline;
+  image.verdictText = std::string("baseline: ") +
+                      (std::abs(motorPsnr - matrixPsnr) < 1.0 ? "within 1 dB of each other"
+                       : motorPsnr > matrixPsnr                ? "the 4-byte rotor costs less image"
+                                                             : "the octahedral frame costs less image");
+  return image;
+}
 
+// Counted ops of the frame decode and of the rigid vertex to clip, motor_c vs matrix_c (a
+// baseline row).
+Claim compactOpsRow() {
   Claim ops = row("compact_ops", "ops per vertex of the smallest vertices: frame decode and rigid vertex to clip",
                   "counted through the shim (shaders/compact_frame.glsl, motor_transform.glsl, affine_transform.glsl): "
                   "compactRotor vs compactMatrixFrame, and the rigid shader variant object to clip");
@@ -270,41 +277,57 @@ std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& i
   const std::map<std::string, double> rigid = opsPerPipeline("rigid", false, zero);
   if (!rigid.count(kMotor) || !rigid.count(kMatrix)) {
     notMeasurable(ops, "no counted rigid variant" + (zero.empty() ? "" : " (" + zero + ")"));
-  } else {
-    ops.measured = "decode " + opsText(decode[0]) + " vs " + opsText(decode[1]) + "; rigid to clip " +
-                   fmt("%g", rigid.at(kMotor)) + " vs " + fmt("%g", rigid.at(kMatrix)) + " ops/vertex";
-    ops.measuredValue = {{"decode", {{kMotor, opsJson(decode[0])}, {kMatrix, opsJson(decode[1])}}},
-                         {"rigidToClip", {{kMotor, rigid.at(kMotor)}, {kMatrix, rigid.at(kMatrix)}}}};
-    const uint64_t dm = opsv::total(decode[0]), dx = opsv::total(decode[1]);
-    ops.verdict = Verdict::Baseline;
-    ops.verdictText = "baseline: the frame decode costs " + fmt("%g", double(dm)) + " vs " + fmt("%g", double(dx)) +
-                      " ops; the whole rigid vertex to clip is " +
-                      (rigid.at(kMotor) < rigid.at(kMatrix) ? "cheaper" : "dearer") + " on the motor side";
+    return ops;
   }
-  out.push_back(ops);
+  ops.measured = "decode " + opsText(decode[0]) + " vs " + opsText(decode[1]) + "; rigid to clip " +
+                 fmt("%g", rigid.at(kMotor)) + " vs " + fmt("%g", rigid.at(kMatrix)) + " ops/vertex";
+  ops.measuredValue = {{"decode", {{kMotor, opsJson(decode[0])}, {kMatrix, opsJson(decode[1])}}},
+                       {"rigidToClip", {{kMotor, rigid.at(kMotor)}, {kMatrix, rigid.at(kMatrix)}}}};
+  const uint64_t dm = opsv::total(decode[0]), dx = opsv::total(decode[1]);
+  ops.verdict = Verdict::Baseline;
+  ops.verdictText = "baseline: the frame decode costs " + fmt("%g", double(dm)) + " vs " + fmt("%g", double(dx)) +
+                    " ops; the whole rigid vertex to clip is " +
+                    (rigid.at(kMotor) < rigid.at(kMatrix) ? "cheaper" : "dearer") + " on the motor side";
+  return ops;
+}
 
+// The AMD ISA of the rigid vertex shaders of motor_c and matrix_c per family (a baseline row;
+// not measurable without an isa JSON).
+Claim compactIsaRow(const nlohmann::json& isa, const std::string& isaSource) {
   Claim isaRow = row("compact_isa", "AMD ISA of the smallest vertices' rigid vertex shader: instructions / VGPRs",
                      "`motorbench isa` (RADV/ACO on its null device) of the rigid variants of motor_c and matrix_c, "
                      "per family; the vertex fetch's format conversion is not in these (the typed fetch does it)");
   if (!isa.is_object()) {
     notMeasurable(isaRow, "no isa JSON (claims --isa FILE, or a report with --isa-json)");
-  } else {
-    std::string text;
-    nlohmann::json values = nlohmann::json::object();
-    for (const nlohmann::json& f : isa.value("families", nlohmann::json::array())) {
-      const std::string id = f.value("id", "");
-      const std::string m = isaCell(isa, kMotor, id), x = isaCell(isa, kMatrix, id);
-      text += (text.empty() ? "" : "; ") + id + " " + m + " vs " + x;
-      values[id] = {{kMotor, m}, {kMatrix, x}};
-    }
-    isaRow.measured = text.empty() ? "-" : text;
-    isaRow.measuredValue = values;
-    isaRow.method += " (" + isaSource + ")";
-    isaRow.verdict = Verdict::Baseline;
-    isaRow.verdictText = "baseline: motor_c vs matrix_c per family";
+    return isaRow;
   }
-  out.push_back(isaRow);
-  out.push_back(fragmentRotorClaim(isa, scenes, report, reportSource));
+  std::string text;
+  nlohmann::json values = nlohmann::json::object();
+  for (const nlohmann::json& f : isa.value("families", nlohmann::json::array())) {
+    const std::string id = f.value("id", "");
+    const std::string m = isaCell(isa, kMotor, id), x = isaCell(isa, kMatrix, id);
+    text += (text.empty() ? "" : "; ") + id + " " + m + " vs " + x;
+    values[id] = {{kMotor, m}, {kMatrix, x}};
+  }
+  isaRow.measured = text.empty() ? "-" : text;
+  isaRow.measuredValue = values;
+  isaRow.method += " (" + isaSource + ")";
+  isaRow.verdict = Verdict::Baseline;
+  isaRow.verdictText = "baseline: motor_c vs matrix_c per family";
+  return isaRow;
+}
+
+}  // namespace
+
+std::vector<Claim> compactClaims(const nlohmann::json& isa, const std::string& isaSource,
+                                 const nlohmann::json& report, const std::string& reportSource) {
+  const Uploads uploads = report.is_object() ? Uploads(report.value("scenes", nlohmann::json()), reportSource) : Uploads();
+  std::vector<Claim> out;
+  out.push_back(compactBytesRow(uploads));
+  out.push_back(compactImageRow(report, reportSource));
+  out.push_back(compactOpsRow());
+  out.push_back(compactIsaRow(isa, isaSource));
+  out.push_back(fragmentRotorClaim(isa, kCompactScenes, report, reportSource));
   return out;
 }
 
