@@ -80,33 +80,41 @@ Claim pairClaim(Claim c, double paperMatrix, double paperMotor, double matrix, d
   return c;
 }
 
-}  // namespace
+const char* kMemorySection = "Memory";
+using StatsOf = std::map<std::string, Result<PipelineStats>>;
 
-std::vector<Claim> memoryClaims(const Uploads& uploads) {
-  std::map<std::string, Result<PipelineStats>> rigid, skinned, plain;
+// The uploads of matrix and motor the rows read: the normal-mapped rigid scene, the skinned
+// scene, and vertices without a normal map (the report's, or the rigid scene stripped of its
+// normal map and tangents), with the name of the latter.
+struct MemoryUploads {
+  StatsOf rigid, skinned, plain;
   std::string plainScene = std::string("the built-in ") + kRigidScene + " with its normal map and tangents removed";
+};
+MemoryUploads memoryUploads(const Uploads& uploads) {
+  MemoryUploads u;
   for (const char* p : {"matrix", "motor"}) {
-    rigid.emplace(p, uploads.of(kRigidScene, p));
-    skinned.emplace(p, uploads.of(kSkinnedScene, p));
+    u.rigid.emplace(p, uploads.of(kRigidScene, p));
+    u.skinned.emplace(p, uploads.of(kSkinnedScene, p));
     if (!uploads.fromReport()) {
-      plain.emplace(p, plainUploads(kRigidScene, p));
+      u.plain.emplace(p, plainUploads(kRigidScene, p));
       continue;
     }
     auto r = plainFromReport(uploads, p, std::string(p) == "matrix" ? "motor" : "matrix");
-    if (r) plainScene = "the report's scene " + r->first + " (its vertices without a normal map)";
-    plain.emplace(p, r ? Result<PipelineStats>(r->second) : Result<PipelineStats>::fail(r.error()));
+    if (r) u.plainScene = "the report's scene " + r->first + " (its vertices without a normal map)";
+    u.plain.emplace(p, r ? Result<PipelineStats>(r->second) : Result<PipelineStats>::fail(r.error()));
   }
-  const std::string section = "Memory";
-  std::vector<Claim> out;
+  return u;
+}
+
+// The rows of the normal-mapped rigid scene, appended to `out`: floats per vertex, per
+// transform, per transform with the scale (our design, a baseline) and the extra vertices in
+// the same storage; all not measurable when an upload is missing.
+void rigidRows(const Uploads& uploads, const StatsOf& rigid, std::vector<Claim>& out) {
+  const std::string section = kMemorySection;
   Claim fpv{"floats_per_vertex", section, "vertex with tangent-space normal mapping: 12 floats (3 position, 3 normal, "
             "4 tangent, 2 uv) vs 9 (3 position, 4 tangent rotor, 2 uv)"};
   fpv.method = std::string("PipelineStats.floatsPerVertex (shading-attribute bytes uploaded / vertices / 4) of "
                            "each pipeline on the built-in ") + kRigidScene + " (normal-mapped, tangents generated); uploads: " + uploads.source();
-  Claim fpvPlain{"floats_per_vertex_not_normal_mapped", section, "(not claimed by the paper) vertex without normal map "
-                 "or TANGENT: the Sample Viewer uploads 8 floats (3 position, 3 normal, 2 uv), the motor pipeline still 9"};
-  fpvPlain.method = "PipelineStats.floatsPerVertex of each pipeline on " + plainScene +
-                    " (as a file with neither), the matrix pipeline "
-                    "uploading a tangent only where the Sample Viewer would";
   Claim fpt{"floats_per_transform", section, "floats per transform: 4x4 model matrix (+ normal matrix) vs 8-float motor"};
   fpt.method = std::string("PipelineStats.floatsPerTransform (per-draw transform uniforms uploaded, in floats) on ") +
                kRigidScene + "; the paper's table counts one 4x4 matrix per transform (16 + 16 with the "
@@ -122,66 +130,88 @@ std::vector<Claim> memoryClaims(const Uploads& uploads) {
   fpts.origin = "our design";
   Claim vps{"vertices_per_storage", section, "conclusion: an extra 33 % vertices in the same storage"};
   vps.method = "matrix bytes per vertex / motor bytes per vertex - 1, from the same uploads as floats_per_vertex";
-  Claim fpj{"floats_per_joint", section, "(not claimed by the paper) floats per skin joint uploaded per frame"};
-  fpj.method = std::string("PipelineStats.floatsPerJoint on the built-in ") + kSkinnedScene +
-               " (joint palette bytes of one frame / joints / 4); uploads: " + uploads.source();
   if (!rigid.at("matrix") || !rigid.at("motor")) {
     const std::string why = !rigid.at("matrix") ? rigid.at("matrix").error() : rigid.at("motor").error();
     out = {notMeasurable(fpv, why), notMeasurable(fpt, why), notMeasurable(fpts, why), notMeasurable(vps, why)};
-  } else {
-    const PipelineStats &m = *rigid.at("matrix"), &q = *rigid.at("motor");
-    out.push_back(pairClaim(fpv, 12, 9, m.floatsPerVertex, q.floatsPerVertex, "floats/vertex"));
-    // The paper: 32 for the matrix side (model + normal matrix in the Sample Viewer), 8 for a motor.
-    out.push_back(pairClaim(fpt, 32, 8, m.floatsPerTransform, q.floatsPerTransform, "floats/transform"));
-    out.back().verdictText += " (the motor alone; with its per-draw scale float see floats_per_transform_with_scale)";
-    out.push_back(pairClaim(fpts, 32, 8, m.floatsPerTransformWithScale, q.floatsPerTransformWithScale, "floats/transform"));
-    // Not the paper's claim: a baseline of our design beside the paper's 32 vs 8 (floats_per_transform).
-    out.back().paper = "32 vs 8 floats/transform, the scale a per-frame global (not per draw)";
-    out.back().verdict = Verdict::Baseline;
-    out.back().verdictText = "baseline (our design): the motor path uploads " + num(q.floatsPerTransformWithScale) +
-                             " floats per transform with its per-draw scale against the matrix's " +
-                             num(m.floatsPerTransformWithScale) + "; the paper's 32 vs 8 is floats_per_transform";
-    const double bm = m.vertices ? double(m.vertexBytes) / double(m.vertices) : 0;
-    const double bq = q.vertices ? double(q.vertexBytes) / double(q.vertices) : 0;
-    vps.paper = "+33 %";
-    vps.paperValue = 1.0 / 3.0;
-    if (bq > 0) {
-      const double extra = bm / bq - 1.0;
-      vps.measured = num(std::round(1000.0 * extra) / 10.0) + " % (" + num(bm) + " vs " + num(bq) + " bytes/vertex)";
-      vps.measuredValue = extra;
-      const bool same = std::fabs(extra - 1.0 / 3.0) < 0.005;
-      vps.verdict = same ? Verdict::Reproduced : Verdict::Differs;
-      vps.verdictText = same ? "reproduced" : "differs: +" + num(std::round(1000.0 * extra) / 10.0) + " % instead of +33 %";
-      out.push_back(vps);
-    } else {
-      out.push_back(notMeasurable(vps, "no vertices uploaded"));
-    }
+    return;
   }
-  if (plain.at("matrix") && plain.at("motor")) {
-    const double a = plain.at("matrix")->floatsPerVertex, b = plain.at("motor")->floatsPerVertex;
-    fpvPlain.paper = "-";
-    fpvPlain.measured = num(a) + " vs " + num(b) + " floats/vertex";
-    if (a > 0) fpvPlain.measured += " (" + num(std::round(1000.0 * (b - a) / a) / 10.0) + " %)";
-    fpvPlain.measuredValue = {{"matrix", a}, {"motor", b}};
-    fpvPlain.verdict = Verdict::Baseline;
-    fpvPlain.verdictText = std::string("baseline: without a normal map the motor vertex is ") +
-                           (b > a ? "larger" : b < a ? "smaller" : "the same size") +
-                           "; the paper's 12-vs-9 (floats_per_vertex) holds for normal-mapped primitives only";
-    out.push_back(fpvPlain);
-  } else {
-    out.push_back(notMeasurable(fpvPlain, !plain.at("matrix") ? plain.at("matrix").error() : plain.at("motor").error()));
+  const PipelineStats &m = *rigid.at("matrix"), &q = *rigid.at("motor");
+  out.push_back(pairClaim(fpv, 12, 9, m.floatsPerVertex, q.floatsPerVertex, "floats/vertex"));
+  // The paper: 32 for the matrix side (model + normal matrix in the Sample Viewer), 8 for a motor.
+  out.push_back(pairClaim(fpt, 32, 8, m.floatsPerTransform, q.floatsPerTransform, "floats/transform"));
+  out.back().verdictText += " (the motor alone; with its per-draw scale float see floats_per_transform_with_scale)";
+  out.push_back(pairClaim(fpts, 32, 8, m.floatsPerTransformWithScale, q.floatsPerTransformWithScale, "floats/transform"));
+  // Not the paper's claim: a baseline of our design beside the paper's 32 vs 8 (floats_per_transform).
+  out.back().paper = "32 vs 8 floats/transform, the scale a per-frame global (not per draw)";
+  out.back().verdict = Verdict::Baseline;
+  out.back().verdictText = "baseline (our design): the motor path uploads " + num(q.floatsPerTransformWithScale) +
+                           " floats per transform with its per-draw scale against the matrix's " +
+                           num(m.floatsPerTransformWithScale) + "; the paper's 32 vs 8 is floats_per_transform";
+  const double bm = m.vertices ? double(m.vertexBytes) / double(m.vertices) : 0;
+  const double bq = q.vertices ? double(q.vertexBytes) / double(q.vertices) : 0;
+  vps.paper = "+33 %";
+  vps.paperValue = 1.0 / 3.0;
+  if (!(bq > 0)) {
+    out.push_back(notMeasurable(vps, "no vertices uploaded"));
+    return;
   }
-  if (skinned.at("matrix") && skinned.at("motor")) {
-    const double a = skinned.at("matrix")->floatsPerJoint, b = skinned.at("motor")->floatsPerJoint;
-    fpj.paper = "-";
-    fpj.measured = num(a) + " vs " + num(b) + " floats/joint";
-    fpj.measuredValue = {{"matrix", a}, {"motor", b}};
-    fpj.verdict = Verdict::Baseline;
-    fpj.verdictText = "baseline: the motor palette is " + num(a > 0 ? std::round(100.0 * b / a) : 0) + " % of the matrix palette";
-    out.push_back(fpj);
-  } else {
-    out.push_back(notMeasurable(fpj, !skinned.at("matrix") ? skinned.at("matrix").error() : skinned.at("motor").error()));
-  }
+  const double extra = bm / bq - 1.0;
+  vps.measured = num(std::round(1000.0 * extra) / 10.0) + " % (" + num(bm) + " vs " + num(bq) + " bytes/vertex)";
+  vps.measuredValue = extra;
+  const bool same = std::fabs(extra - 1.0 / 3.0) < 0.005;
+  vps.verdict = same ? Verdict::Reproduced : Verdict::Differs;
+  vps.verdictText = same ? "reproduced" : "differs: +" + num(std::round(1000.0 * extra) / 10.0) + " % instead of +33 %";
+  out.push_back(vps);
+}
+
+// Floats per vertex without a normal map or TANGENT, matrix vs motor (not the paper's claim:
+// a baseline row).
+Claim plainVertexRow(const MemoryUploads& u) {
+  Claim fpvPlain{"floats_per_vertex_not_normal_mapped", kMemorySection, "(not claimed by the paper) vertex without normal map "
+                 "or TANGENT: the Sample Viewer uploads 8 floats (3 position, 3 normal, 2 uv), the motor pipeline still 9"};
+  fpvPlain.method = "PipelineStats.floatsPerVertex of each pipeline on " + u.plainScene +
+                    " (as a file with neither), the matrix pipeline "
+                    "uploading a tangent only where the Sample Viewer would";
+  const StatsOf& plain = u.plain;
+  if (!plain.at("matrix") || !plain.at("motor"))
+    return notMeasurable(fpvPlain, !plain.at("matrix") ? plain.at("matrix").error() : plain.at("motor").error());
+  const double a = plain.at("matrix")->floatsPerVertex, b = plain.at("motor")->floatsPerVertex;
+  fpvPlain.paper = "-";
+  fpvPlain.measured = num(a) + " vs " + num(b) + " floats/vertex";
+  if (a > 0) fpvPlain.measured += " (" + num(std::round(1000.0 * (b - a) / a) / 10.0) + " %)";
+  fpvPlain.measuredValue = {{"matrix", a}, {"motor", b}};
+  fpvPlain.verdict = Verdict::Baseline;
+  fpvPlain.verdictText = std::string("baseline: without a normal map the motor vertex is ") +
+                         (b > a ? "larger" : b < a ? "smaller" : "the same size") +
+                         "; the paper's 12-vs-9 (floats_per_vertex) holds for normal-mapped primitives only";
+  return fpvPlain;
+}
+
+// Floats per skin joint uploaded per frame, matrix vs motor (not the paper's claim: a baseline
+// row).
+Claim jointRow(const Uploads& uploads, const StatsOf& skinned) {
+  Claim fpj{"floats_per_joint", kMemorySection, "(not claimed by the paper) floats per skin joint uploaded per frame"};
+  fpj.method = std::string("PipelineStats.floatsPerJoint on the built-in ") + kSkinnedScene +
+               " (joint palette bytes of one frame / joints / 4); uploads: " + uploads.source();
+  if (!skinned.at("matrix") || !skinned.at("motor"))
+    return notMeasurable(fpj, !skinned.at("matrix") ? skinned.at("matrix").error() : skinned.at("motor").error());
+  const double a = skinned.at("matrix")->floatsPerJoint, b = skinned.at("motor")->floatsPerJoint;
+  fpj.paper = "-";
+  fpj.measured = num(a) + " vs " + num(b) + " floats/joint";
+  fpj.measuredValue = {{"matrix", a}, {"motor", b}};
+  fpj.verdict = Verdict::Baseline;
+  fpj.verdictText = "baseline: the motor palette is " + num(a > 0 ? std::round(100.0 * b / a) : 0) + " % of the matrix palette";
+  return fpj;
+}
+
+}  // namespace
+
+std::vector<Claim> memoryClaims(const Uploads& uploads) {
+  const MemoryUploads u = memoryUploads(uploads);
+  std::vector<Claim> out;
+  rigidRows(uploads, u.rigid, out);
+  out.push_back(plainVertexRow(u));
+  out.push_back(jointRow(uploads, u.skinned));
   return out;
 }
 
