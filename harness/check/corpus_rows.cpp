@@ -8,6 +8,7 @@
 #include "harness/render/drawn_check.h"
 #include "harness/render/skin_judgement.h"
 #include "pipelines/pipeline.h"
+#include "pipelines/registry.h"
 #include "pipelines/skin_method.h"
 
 namespace mb::rules {
@@ -274,7 +275,10 @@ bool RuleSet::isFullPrecision(const std::string& p) const { return contains(full
 bool RuleSet::isCompact(const std::string& p) const { return contains(compact, p); }
 bool RuleSet::blendsMotors(const std::string& p) const { return contains(motorBlend, p); }
 
-bool isSixteenBytePipeline(const std::string& p) { return p == "matrix_c" || p == "motor_c" || p == "motor_cf"; }
+bool isSixteenBytePipeline(const std::string& p) {
+  const PipelineEntry* e = findPipeline(p);  // the vertex bytes each pipeline declares
+  return e && e->vertexBytes == 16;
+}
 
 RuleSet defaultRuleSet(const std::vector<std::string>& only) {
   RuleSet set;

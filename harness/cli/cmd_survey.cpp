@@ -31,6 +31,7 @@
 #include "pipelines/gl/context.h"
 #include "pipelines/gl/framebuffer.h"
 #include "pipelines/pipeline.h"
+#include "pipelines/registry.h"
 #include "pipelines/scene/animation.h"
 #include "pipelines/scene/camera_rule.h"
 #include "pipelines/scene/drawable.h"
@@ -49,7 +50,10 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // The pipelines whose positions are int16 in each primitive's bounding cube (pipelines/compact).
-bool isCompact(const std::string& p) { return p == "matrix_c" || p == "motor_c" || p == "motor_cf"; }
+bool isCompact(const std::string& p) {
+  const PipelineEntry* e = findPipeline(p);  // the vertex bytes each pipeline declares
+  return e && e->vertexBytes == 16;
+}
 
 json fallbackJson(const PipelineStats& s) {
   return {{"nonUniformScaleNodes", s.nonUniformScaleNodes}, {"negativeScaleNodes", s.negativeScaleNodes},
