@@ -37,7 +37,7 @@ struct PipelineStats {
   int morphDraws = 0;                 // draws of the last render() that morphed (a non-zero weight)
   // Set by the harness after a render (harness/render/render_frame.cpp), not by the pipeline:
   // the drawn nodes with a non-zero morph weight when the pipeline morphed no draw, i.e. drew
-  // them in their base shape (every glTF pipeline morphs since issue 37: 0 unless one regresses).
+  // them in their base shape (every glTF pipeline morphs: 0 unless one regresses).
   int morphNotDrawnNodes = 0;
   // Instanced draws (Node::instances, pipelines/gl/instance_stream.h): the per-instance
   // transforms of the last render() (each pipeline's per-draw transform, node world composed
@@ -83,7 +83,7 @@ struct PipelineStats {
   uint64_t skinFallbackVertices = 0;  // of fallbackVertices, those of the skinned draws
 };
 
-// Where a skinned vertex reaches world space (issue 18: compare both pipelines in the same
+// Where a skinned vertex reaches world space (timing compares both pipelines in the same
 // configuration). Reference: as the references do it, the joint palette relative to the mesh
 // node and the node's world transform applied per vertex after the blend (glTF-Sample-Viewer:
 // u_ModelMatrix after the skin; the paper's shader: gp(toWorld, blend)). WorldPalette: the
@@ -92,7 +92,7 @@ struct PipelineStats {
 // Reference, motor: WorldPalette; the goldens were made so), see Pipeline::skinSpace().
 enum class SkinSpace { PipelineDefault, Reference, WorldPalette };
 
-// How the motor family morphs its tangent rotor (issue 37, shaders/motor_transform.glsl):
+// How the motor family morphs its tangent rotor (shaders/motor_transform.glsl):
 // Frame (a): the rotor's normal and tangent plus the glTF deltas, re-formed into a rotor per
 // vertex (the default: exact); Rotor (b): rotor deltas made at load, blended and renormalised.
 enum class MorphMethod { PipelineDefault, Frame, Rotor };
@@ -125,7 +125,7 @@ public:
   virtual PipelineStats stats() const = 0;
 };
 
-// The glTF pipelines' guard in prepare(): a curved-space scene (Scene::curved, issue 15) is
+// The glTF pipelines' guard in prepare(): a curved-space scene (Scene::curved) is
 // refused with a message naming the scene, its space and the pipelines that draw it.
 inline Status refuseCurvedScene(const Scene& scene, const std::string& pipeline) {
   if (scene.curved.space == Space::Euclidean) return {};

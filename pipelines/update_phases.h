@@ -1,4 +1,4 @@
-// Where Pipeline::update spends its time, phase by phase (issue 13 item 4): measured only when
+// Where Pipeline::update spends its time, phase by phase: measured only when
 // the caller asks (Pipeline::timeUpdatePhases), so that the update timed as a whole carries no
 // clock reads. A PhaseClock reads std::chrono::steady_clock once per lap and adds the time
 // since the previous lap to one phase; every phase is summed over the update.

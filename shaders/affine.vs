@@ -10,7 +10,7 @@
 //                cofactor of the blended matrix
 //   MB_QTANGENT  the vertex frame is one quaternion (int16x4 SNORM, read as a vec4 in
 //                -1..1) instead of normal + tangent: 28-byte vertices
-//   MB_COMPACT   matrix_c (issue 29): position int16x4 SNORM, the frame in one 2_10_10_10
+//   MB_COMPACT   matrix_c: position int16x4 SNORM, the frame in one 2_10_10_10
 //                word read as integers (compactMatrixFrame), uv half2: 16-byte vertices.
 //                Rigid draws get the mesh's dequantisation folded into u_ModelMatrix;
 //                skinned and instanced draws apply u_Dequant per vertex (compactPosition)

@@ -1,5 +1,5 @@
-// compact_frame.glsl: decoding the 16-byte vertices of the compact pipelines (issue 29:
-// `matrix_c`, `motor_c`), in the GLSL subset of shaders/shim/glsl.h so that the shaders, the
+// compact_frame.glsl: decoding the 16-byte vertices of the compact pipelines
+// (`matrix_c`, `motor_c`), in the GLSL subset of shaders/shim/glsl.h so that the shaders, the
 // CPU tests (which pair it with pipelines/gl/compact_encoding.h's encoders) and `motorbench
 // ops` run the same source. No dependencies.
 //
@@ -78,7 +78,7 @@ mat2x4 compactRotor(vec4 f) {
   return mat2x4(r, 1.0 - 2.0 * mirrored, 0.0, 0.0, 0.0);
 }
 
-// motor_cf's frame (issue 29): the same word with the bit that motor_c spends on the
+// motor_cf's frame: the same word with the bit that motor_c spends on the
 // reflection saying "negate": the rotor keeps the sign the mesh pass chose for interpolation
 // (pipelines/motor/rotor_signs.h); the handedness travels in the position's w instead.
 // counted: 12 mul, 8 add, 1 sqrt, 1 other (compactRotor + the sign)

@@ -1,4 +1,4 @@
-// curved_transform.glsl: the per-vertex transforms of the curved-space pipelines (issue 15),
+// curved_transform.glsl: the per-vertex transforms of the curved-space pipelines,
 // shared by shaders/curved_matrix.vs, shaders/curved_motor.vs and the CPU op counter
 // (shaders/shim/pga_kappa.h). MB_KAPPA = +1 (S3) or -1 (H3). Each side in its cheapest
 // arrangement for two vectors (position and normal) per vertex.

@@ -8,7 +8,7 @@
 //   v_worldTangent   vec4   xyz tangent, w = handedness (+1/-1): bitangent = w * cross(n, t)
 //   v_uv0, v_uv1     vec2   TEXCOORD_0/1 (uv1 = uv0 or zero when absent)
 //   v_color          vec4   COLOR_0 (1,1,1,1 when absent)
-// With MB_FRAGMENT_ROTOR (motor_cf, issue 29) v_worldNormal and v_worldTangent are replaced by
+// With MB_FRAGMENT_ROTOR (motor_cf) v_worldNormal and v_worldTangent are replaced by
 //   v_worldRotor     vec4   the world tangent rotor (s, e23, e31, e12), signed so that a
 //                           triangle's three rotors lie in one hemisphere (rotor_signs.h)
 //   v_handedness     float  +1 / -1 (the bitangent's sign), sent as v_worldPositionHandedness.w

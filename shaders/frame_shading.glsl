@@ -3,7 +3,7 @@
 //   tbnShadingNormal    every pipeline's default: the vertex stage extracted a world normal
 //                       and tangent, interpolated separately; re-orthogonalised here
 //                       (Gram-Schmidt) into a TBN matrix, as the glTF-Sample-Viewer does.
-//   rotorShadingNormal  motor_cf (issue 29): the vertex stage passes the world tangent rotor
+//   rotorShadingNormal  motor_cf: the vertex stage passes the world tangent rotor
 //                       itself (the paper's "pass the tangentRotor to the fragment shader");
 //                       normalised and unpacked here. Its frame is orthonormal by
 //                       construction: no Gram-Schmidt, no degenerate-tangent test.

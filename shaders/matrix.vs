@@ -10,8 +10,8 @@
 //   MB_NO_TANGENT     no tangent attribute (the primitive has no TANGENT and no normal map;
 //                     the Sample Viewer's HAS_TANGENT_VEC4 unset): position + normal + uv
 //   MB_WORLD_PALETTE  with SKINNED: the joint matrices are in world space (joint world *
-//                     inverse bind) and no model matrix is applied per vertex (issue 18's
-//                     symmetric configuration; the Sample Viewer applies it)
+//                     inverse bind) and no model matrix is applied per vertex (the motor
+//                     default, so both time alike; the Sample Viewer applies it)
 //   MB_INSTANCED      model and normal matrix per instance (vertex attributes, divisor 1)
 //                     instead of per draw: EXT_mesh_gpu_instancing / --instances
 //   MB_MORPH          morph targets (morph.glsl): position, normal and tangent deltas added in

@@ -1,4 +1,4 @@
-// morph.glsl: glTF morph targets in the vertex shader (issue 37), included by every glTF
+// morph.glsl: glTF morph targets in the vertex shader, included by every glTF
 // vertex shader built with MB_MORPH. The deltas are a storage buffer read by gl_VertexID
 // (pipelines/gl/morph_buffers.h says why not vertex attributes), laid out
 // float[targets][vertices][u_MorphStride]; the node's weights are a uniform array of

@@ -10,14 +10,14 @@
 //   MB_SKINNED        motor skinning: 4 joints per vertex, one motor (8 floats) per joint
 //   MB_SCALE_FALLBACK the draw's scale is non-uniform or negative (motorScaledVertex)
 //   MB_SKIN_REFERENCE with MB_SKINNED: the paper's form, joint motors relative to the mesh
-//                     node and toWorld = gp(u_World, blend) per vertex (issue 18; the default
+//                     node and toWorld = gp(u_World, blend) per vertex (the default
 //                     palette is in world space and u_World is not used)
-//   MB_COMPACT        motor_c (issue 29): position int16x4 SNORM, the tangent rotor in one
+//   MB_COMPACT        motor_c: position int16x4 SNORM, the tangent rotor in one
 //                     2_10_10_10 word read as integers (compactRotor: smallest three and an
 //                     explicit reflection bit), uv half2: 16-byte vertices. Rigid draws get
 //                     the mesh's dequantisation folded into u_World and u_Scale; skinned and
 //                     instanced draws apply u_Dequant per vertex (compactPosition)
-//   MB_SIGNED_ROTOR   with MB_COMPACT, motor_cf's vertex (issue 29): the frame word's extra bit
+//   MB_SIGNED_ROTOR   with MB_COMPACT, motor_cf's vertex: the frame word's extra bit
 //                     negates the rotor (compactSignedRotor: the sign the mesh pass chose,
 //                     pipelines/motor/rotor_signs.h) and the handedness is the position's w
 //   MB_FRAGMENT_ROTOR with MB_SIGNED_ROTOR: the world tangent rotor is the varying, unpacked

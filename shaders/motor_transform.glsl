@@ -115,7 +115,7 @@ mat3x4 motorSkinnedVertexReference(motor toWorld, motor j0, motor j1, motor j2, 
                           position, tangentRotor);
 }
 
-// ---- morph targets (issue 37; the delta sums themselves are morph.glsl's) -------------------
+// ---- morph targets (the delta sums themselves are morph.glsl's) -------------------
 // glTF's deltas are normal and tangent deltas; the motor vertex carries a tangent rotor. Two
 // ways to morph it, both in object space before the skin or the motor:
 //  (a) frame: the rotor's unit normal and tangent (rotorFrame), plus the weighted deltas, back

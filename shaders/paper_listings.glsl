@@ -1,7 +1,7 @@
 // paper_listings.glsl: the paper's printed GLSL listings for the kernels whose op-count rows
 // differ from its table, transcribed expression for expression (names prefixed paper_) so
 // that `motorbench claims` and tests/test_pga_paper_listings.cpp can count what the printed
-// code does, beside the table's number and our own implementation (issue 18). Counting only:
+// code does, beside the table's number and our own implementation. Counting only:
 // nothing renders with these, and pga.glsl's own functions are derived from the algebra.
 // Needs pga.glsl (motor, line) included before it. The swizzles are as printed (log_m's
 // c * M[0].wzy and exp_b's t * B[0].zyx differ from pga.glsl's derivation; the counts do not

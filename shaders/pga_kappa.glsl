@@ -1,4 +1,4 @@
-// pga_kappa.glsl: the curvature-generic PGA products (issue 15). The algebra of pga.glsl with
+// pga_kappa.glsl: the curvature-generic PGA products. The algebra of pga.glsl with
 // e0^2 = MB_KAPPA instead of 0: MB_KAPPA = 0 Euclidean (these functions ARE pga.glsl's, same
 // counts), +1 elliptic (spherical space S3, motors = Spin(4)), -1 hyperbolic (H3, Spin(3,1)).
 // MB_KAPPA must be #defined to 0, 1 or -1 before inclusion: it is a compile-time constant per

@@ -7,7 +7,7 @@
 // pairs, frame timings, device, uploads and ISA statistics) or a bench JSON when given, else from
 // a short bench run (vertex and compose kernels only) and frame timing of four built-in scenes in
 // this process; --no-run skips those runs (and the curved frame timing). Given a report, claims
-// opens no GL context, renders and times nothing (issue 35): a figure the report lacks is "not
+// opens no GL context, renders and times nothing: a figure the report lacks is "not
 // measurable here" with the reason. Scene
 // statistics come from the report's scenes (else the built-in scenes) plus --corpus, or from
 // the scene-graph corpus of --scene-graphs. The skinned real-file volumes are measured over
@@ -73,7 +73,7 @@ json frameRow(const std::string& scene, const json& timing) {
   return row;
 }
 
-// Frame-time ratios of report.json's Euclidean scenes (the curved ones, issue 15, have their
+// Frame-time ratios of report.json's Euclidean scenes (the curved ones have their
 // own pipelines and their own claims rows).
 bool euclidean(const json& scene) { return scene.value("space", "Euclidean") == "Euclidean"; }
 
@@ -82,7 +82,7 @@ json frameTimesOf(const json& report) {
   for (const json& s : report.value("scenes", json::array())) {
     if (!euclidean(s)) continue;
     if (json row = frameRow(s.value("id", ""), s.value("timing", json())); !row.is_null()) {
-      // report.json before issue 18 timed each pipeline in its default skinning configuration.
+      // A report.json without timing.skinSpace timed each pipeline in its default skinning configuration.
       const json mix = s.value("vertexMix", json::object());
       const bool skinned = mix.is_object() && mix.value("skinned", 0.0) > 0.0;
       const json& timing = s.value("timing", json::object());
@@ -149,7 +149,7 @@ claims::SpeedInputs speedInputs(const Args& args, const json& report, json& sour
     if (j) in.kernelPairs = report::kernelPairs(*j)["pairs"], in.kernelSource = *b;
     else missing += j.error() + "; ";
   }
-  // Beside a report nothing is run: its figures are the ones it measured (issue 35).
+  // Beside a report nothing is run: its figures are the ones it measured.
   const bool run = !args.has("no-run") && !report.is_object();
   if (in.kernelPairs.is_null() && run) {
     const std::string tmp = (fs::temp_directory_path() / ("motorbench-claims-bench-" + std::to_string(getpid()) + ".json")).string();

@@ -39,7 +39,7 @@ json timeWorker(const report::SceneJob& job, const report::Options& o) {
   auto scene = loadScene(job.input.spec);
   if (scene && scene->curved.space == Space::Euclidean) addGridInstances(*scene, o.instances);
   // Skinned scenes are timed with every pipeline in the same skinning configuration (as the
-  // references do it), so the ratio compares like with like (issue 18); images keep each
+  // references do it), so the ratio compares like with like; images keep each
   // pipeline's default.
   PipelineOptions options;
   if (scene && !scene->skins.empty()) options.skinSpace = SkinSpace::Reference;

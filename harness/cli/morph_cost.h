@@ -1,4 +1,4 @@
-// The image and byte cost of each morph method (issue 37), measured for `motorbench morph`:
+// The image and byte cost of each morph method, measured for `motorbench morph`:
 // matrix (glTF's position, normal and tangent deltas added, then transformed) beside the motor
 // pipeline with its two rotor methods, (a) frame (PipelineOptions MorphMethod::Frame, the
 // default) and (b) rotor deltas (MorphMethod::Rotor), on every frame of each scene: the rest

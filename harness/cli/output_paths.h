@@ -1,4 +1,4 @@
-// Output paths checked before the work (issue 28 item 3): every command that writes a file or a
+// Output paths checked before the work: every command that writes a file or a
 // folder creates missing parent folders (as render does) and refuses, naming the option and the
 // path, a folder where a file goes, a file name where a folder goes, and a place it cannot write
 // to, before it measures anything.

@@ -1,4 +1,4 @@
-// harness/ops/op_kernels_curved.h: the curved-space rows of `motorbench ops` (issue 15):
+// harness/ops/op_kernels_curved.h: the curved-space rows of `motorbench ops`:
 // shaders/pga_kappa.glsl per curvature, executed on mb::Counted, beside the 4x4 matrix rows.
 // kappa = 0 rows claim pga.glsl's counts (the kappa-generic source reproduces them); kappa = +-1
 // rows have no claim (no paper figure). Header-only, like op_kernels.h.

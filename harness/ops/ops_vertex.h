@@ -1,4 +1,4 @@
-// harness/ops/ops_vertex.h: ops per vertex of each pipeline, measured two ways (issue 5):
+// harness/ops/ops_vertex.h: ops per vertex of each pipeline, measured two ways:
 //  (a) counted: the per-vertex GLSL functions (vertex_kernels.h) executed once on mb::Counted
 //      through the shim;
 //  (b) SPIR-V: the same function called from a small probe vertex shader, and every real

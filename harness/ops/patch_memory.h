@@ -1,4 +1,4 @@
-// Bytes a Bezier patch scene costs each pipeline (issue 14): what the instanced tessellation
+// Bytes a Bezier patch scene costs each pipeline: what the instanced tessellation
 // uploads (the control points + one refinement pattern) against the same surface
 // pre-tessellated into an ordinary vertex buffer at the same level. Both sides are measured:
 // each pipeline prepares the scene as it is and a copy whose patch primitives were tessellated

@@ -3,7 +3,7 @@
 // the same versions as glslang-tools' and spirv-tools' commands). A command costs ~0.25 s of CPU
 // per shader before it compiles anything (glslang builds its built-in symbol tables at every
 // start); here they are built once per process, so a cold SPIR-V cache fills in seconds instead
-// of minutes (issue 39: `motorbench ops` with an empty cache 102 s -> see README).
+// of minutes (`motorbench ops` with an empty cache took 102 s with one command per shader).
 // Each function sets exactly what its command sets for the flags it takes, so the output is the
 // commands' byte for byte (tests/ops/test_spirv_compile.cpp compares them when the commands are
 // installed).

@@ -30,7 +30,7 @@ struct VertexInputs {
   MC::vec4 tangent, weights, world;
   PC::motor toWorld, camera, joints[4];
   PC::vec4 rotor;
-  // Compact (issue 29): 2_10_10_10 words as the shader reads them (integer-valued floats) and
+  // Compact: 2_10_10_10 words as the shader reads them (integer-valued floats) and
   // a mesh cube; generic codes: tangent and rotor on their second branch, handedness -1.
   MC::vec4 compactMatrixFrame{700.0, 300.0, 900.0, 1.0}, compactRotor{700.0, 300.0, 900.0, 1.0};
   MC::vec4 dequant{0.1, -0.2, 0.3, 2.5};

@@ -1,4 +1,4 @@
-// The counted per-vertex kernels of the curved-space pipelines (issue 15):
+// The counted per-vertex kernels of the curved-space pipelines:
 // shaders/curved_transform.glsl, position and normal, for S3 (kappa = 1) and H3 (kappa = -1).
 #include "harness/ops/vertex_inputs.h"
 #include "harness/ops/vertex_kernels.h"

@@ -1,6 +1,6 @@
 // The counted per-fragment kernels of forward.fs: the shading normal from the interpolated
 // frame (shaders/frame_shading.glsl), the TBN path every pipeline but motor_cf runs and the
-// rotor path of motor_cf (issue 29). Listed with the vertex kernels (one table, one counter);
+// rotor path of motor_cf. Listed with the vertex kernels (one table, one counter);
 // their probe is a vertex shader calling the same function, which SPIR-V counts alike.
 #include "harness/ops/vertex_inputs.h"
 #include "harness/ops/vertex_kernels.h"

@@ -146,7 +146,7 @@ std::vector<VertexKernel> motorKernels() {
        "a_tangentRotor, a_weights.x);" + store,
        motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n",
        "motorScaledVertex with the handedness given (motor_cf: the position's w)"},
-      // The exact fallback (issue 34, pipelines/motor/linear_fallback.h): draws and skins whose
+      // The exact fallback (pipelines/motor/linear_fallback.h): draws and skins whose
       // transforms are not similarities; every motor-family pipeline (MB_LINEAR_FALLBACK).
       {"motor, motor_q, motor_c, motor_cf", "linear vertex (exact fallback)", "motorLinearRotorVertex",
        [&] {
@@ -166,7 +166,7 @@ std::vector<VertexKernel> motorKernels() {
        "o_0 = vec4(l[0], l[1].x); o_1 = vec4(l[1].yz, l[2].xy); o_2 = vec4(l[2].z);",
        motorIncl + kMotorAttribs + "uniform mat3 u_l[4];\n",
        "per skinned vertex on the fallback, twice (linear part and normal matrix) beside motorBlendJoints"},
-      // Morph targets (issue 37): the rotor's own part of each method, per morphing vertex; the
+      // Morph targets: the rotor's own part of each method, per morphing vertex; the
       // delta sums come on top (morph.glsl: per target with a non-zero weight, 1 mul + 1 add per
       // float: 9 per target for the frame method's position + normal + tangent, 7 for the
       // rotor method's position + rotor). shaders/motor_transform.glsl explains both.

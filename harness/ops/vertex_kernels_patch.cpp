@@ -1,4 +1,4 @@
-// The counted Bezier patch kernels (issue 14): the evaluation both patch shaders share, then each
+// The counted Bezier patch kernels: the evaluation both patch shaders share, then each
 // pipeline's frame.
 #include "harness/ops/vertex_inputs.h"
 #include "harness/ops/vertex_kernels.h"

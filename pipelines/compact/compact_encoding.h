@@ -1,4 +1,4 @@
-// The 16-byte vertex of the compact pipelines (issue 29): position int16x4 SNORM in the mesh's
+// The 16-byte vertex of the compact pipelines: position int16x4 SNORM in the mesh's
 // cube, the frame in one 2_10_10_10 word, uv0 half2. Pure functions; the decoders are the
 // shader's (shaders/compact_frame.glsl through shaders/shim/compact.h).
 #pragma once

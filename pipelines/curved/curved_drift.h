@@ -1,4 +1,4 @@
-// Numerical drift of the curved camera (issue 15): a camera accumulated over many small steps
+// Numerical drift of the curved camera: a camera accumulated over many small steps
 // (view = step * view) in float, as an interactive renderer does it, by the matrix side (4x4
 // products) and by the motor side (S3: quaternion-pair products, H3: motor products), without
 // renormalisation and with each side's cheapest renormalisation after every step.

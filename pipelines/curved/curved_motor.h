@@ -1,4 +1,4 @@
-// CPU companion of the curved motor pipelines (issue 15): motors of curved-space isometries,
+// CPU companion of the curved motor pipelines: motors of curved-space isometries,
 // computed in double with shaders/pga_kappa.glsl (through the shim) and rounded once.
 #pragma once
 #include <array>

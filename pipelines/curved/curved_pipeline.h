@@ -1,4 +1,4 @@
-// The curved-space pipelines (issue 15), one class for four registered names:
+// The curved-space pipelines, one class for four registered names:
 //   s3_matrix / h3_matrix: one O(4) / O(3,1) mat4 per instance (16 floats), as
 //     non-euclidean-rendering.txt does (shaders/curved_matrix.vs);
 //   s3_motor / h3_motor: 8 floats per instance (S3: the quaternion pair, H3: the motor),

@@ -1,4 +1,4 @@
-// The float-frame vertex of the matrix forms (`matrix`, and `affine` since issue 26), per
+// The float-frame vertex of the matrix forms (`matrix` and `affine`), per
 // primitive as the glTF-Sample-Viewer feeds its matrix shaders: position, normal, [tangent (xyz + handedness w),] TEXCOORD_0 interleaved.
 // The Sample Viewer has a tangent attribute only where the file authors TANGENT or the
 // material is normal-mapped (then it generates one); elsewhere its shader has no tangent

@@ -1,4 +1,4 @@
-// Morph targets on the GPU, shared by every glTF pipeline (issue 37): each primitive with
+// Morph targets on the GPU, shared by every glTF pipeline: each primitive with
 // targets gets one shader storage buffer of deltas, read in the vertex shader by gl_VertexID
 // (shaders/morph.glsl), and each draw the node's weights as a uniform float array.
 //

@@ -1,4 +1,4 @@
-// The production matrix pipelines (issue 16): `affine` (the matrix pipeline's 48-byte vertex,
+// The production matrix pipelines: `affine` (the matrix pipeline's 48-byte vertex,
 // mat4x3 + mat3 per draw, mat4x3 per joint) and `qtangent` (the same with the frame as an
 // int16x4 quaternion, 28 bytes per vertex). The class is shared with pipelines/hybrid, which
 // supplies its own Poser (motors on the CPU, converted to mat4x3).

@@ -1,4 +1,4 @@
-// matrix_c's vertex (issue 29): 16 bytes, pipelines/compact/compact_encoding.h's layout with
+// matrix_c's vertex: 16 bytes, pipelines/compact/compact_encoding.h's layout with
 // the frame as an octahedral normal, a diamond-coded tangent and the handedness bit (4 bytes).
 #pragma once
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The motor family's exact fallback for transforms that are not similarities (issue 34): a
+// The motor family's exact fallback for transforms that are not similarities: a
 // world transform or joint palette entry A (any affine map, e.g. a non-uniform scale inherited
 // from an inner node, a sheared matrix, or joints whose scales differ) is kept as
 //

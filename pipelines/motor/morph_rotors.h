@@ -1,4 +1,4 @@
-// Morph deltas of the motor family (issue 37): which method a pipeline draws with and the
+// Morph deltas of the motor family: which method a pipeline draws with and the
 // deltas it uploads (pipelines/gl/morph_buffers.h), beside shaders/motor_transform.glsl's
 // morph kernels.
 #pragma once

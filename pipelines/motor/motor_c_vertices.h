@@ -1,4 +1,4 @@
-// motor_c's vertex (issue 29): 16 bytes, pipelines/compact/compact_encoding.h's layout with
+// motor_c's vertex: 16 bytes, pipelines/compact/compact_encoding.h's layout with
 // the frame as the 4-byte tangent rotor (smallest three and an explicit reflection bit).
 #pragma once
 #include <cstdint>
@@ -21,7 +21,7 @@ CompactStream interleaveCompact(const Primitive& p);
 
 namespace mb::motor {
 
-// motor_cf's vertices (issue 29): motor_c's 16-byte layout with the rotor's sign chosen per
+// motor_cf's vertices: motor_c's 16-byte layout with the rotor's sign chosen per
 // triangle for interpolation (signRotorsForInterpolation, which may split vertices: the
 // primitive to upload comes with its bytes), the frame word's extra bit negating the rotor
 // and the handedness in the position's w.

@@ -1,7 +1,7 @@
 // The motor pipelines' vertices and morph deltas in each variant's form, uploaded once by
 // prepare(): the paper's 9 floats (motor), the int16 rotor (motor_q), the 16-byte vertex
 // (motor_c) or motor_c's bytes with the rotors signed per triangle (motor_cf, whose vertices
-// may split: rotor_signs.h). Morph deltas (issue 37, gl/morph_buffers.h) follow the uploaded
+// may split: rotor_signs.h). Morph deltas (gl/morph_buffers.h) follow the uploaded
 // vertices (motor_cf: its split ones): frame deltas (method (a)) or rotor deltas (method (b),
 // float and int16 rotors only).
 #pragma once

@@ -7,7 +7,7 @@
 
 namespace mb {
 
-// What distinguishes the motor pipelines (issue 16): `motor` is the paper's form.
+// What distinguishes the motor pipelines: `motor` is the paper's form.
 struct MotorVariant {
   std::string name = "motor";
   bool quantizedFrame = false;  // tangent rotor as int16x4 SNORM (motor_q_vertices.h)

@@ -1,4 +1,4 @@
-// Signs for tangent rotors that the rasteriser interpolates (motor_cf, issue 29). R and -R are
+// Signs for tangent rotors that the rasteriser interpolates (motor_cf). R and -R are
 // the same frame, but a triangle whose vertex rotors lie in opposite hemispheres interpolates
 // through zero and shades a frame that is none of its corners'. No rule per vertex can avoid
 // that: a frame turning once around a torus' tube comes back as -R. So this is a mesh pass:

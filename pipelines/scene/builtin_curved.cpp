@@ -1,4 +1,4 @@
-// The built-in curved-space scenes (issue 15):
+// The built-in curved-space scenes:
 //   s3_tiling: non-euclidean-rendering.txt's spherical example: one triangle, 14,400
 //     instances x -> q1 x q2 for the 120 x 120 pairs of the binary icosahedral group, the
 //     reference's three lights; a camera path flies forward and turns.

@@ -1,4 +1,4 @@
-// "morph_torus" (issue 37): a normal-mapped torus with two morph targets and animated weights.
+// "morph_torus": a normal-mapped torus with two morph targets and animated weights.
 // Target 0 "pinch" varies the tube radius around the ring (r (1 + 0.5 cos 2 phi)); target 1
 // "wave" lifts the ring (y + 0.35 sin 3 phi) and turns the tube about its centre line
 // (theta + 0.8 sin phi), so its frames turn well away from the base ones. Each target's normal

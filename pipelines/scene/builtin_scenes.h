@@ -13,8 +13,8 @@ namespace mb {
 // "normal_torus", "textured_box", "skinned_tube", "scaled_hierarchy", "crowd", "teapot".
 const std::vector<std::string>& builtinSceneNames();
 // Built-in scenes loadable by name that builtinSceneNames() (the report's, claims' and time's
-// default list) leaves out but `check` draws against goldens by default: "morph_torus" (issue
-// 37; it would add about 13 s to the report, measured, over the 10 s its budget allows).
+// default list) leaves out but `check` draws against goldens by default: "morph_torus" (it
+// would add about 13 s to the report, measured, over the 10 s its budget allows).
 const std::vector<std::string>& goldenOnlySceneNames();
 // True for those and for the curved-space scenes (curved_space.h: curvedSceneNames()), which
 // loadScene builds in code; builtinSceneGlb refuses those (glTF has no curved space).

@@ -2,7 +2,7 @@
 // tangents have w = -1), with analytic TANGENT and a procedural normal map.
 // "dense_torus": the same torus with 256 x 192 segments (49,794 vertices): a rigid,
 // normal-mapped, vertex-bound scene (>= 10 vertices per pixel at a 64x64 viewport) for the
-// speed claim (issue 18), beside the skinned crowd.
+// speed claim, beside the skinned crowd.
 #include <cmath>
 
 #include "pipelines/scene/builtin_internal.h"

@@ -1,5 +1,5 @@
-// Valid glTF 2.0 that tinygltf 2.7 refuses, rewritten into an equivalent document it reads
-// (issue 17, item 5). preflightGltf runs these on the document it has parsed; the loader hands
+// Valid glTF 2.0 that tinygltf 2.7 refuses, rewritten into an equivalent document it reads.
+// preflightGltf runs these on the document it has parsed; the loader hands
 // tinygltf ConformedGltf::bytes and then puts back what the rewrite had to take out.
 //   - whole numbers written as floats ("byteLength": 4.0) where the schema wants an integer
 //   - data: URIs tinygltf does not recognise (RFC 2397: percent-encoded instead of base64,

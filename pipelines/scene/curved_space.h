@@ -1,4 +1,4 @@
-// Curved-space helpers shared by the curved scenes and the curved matrix pipeline (issue 15):
+// Curved-space helpers shared by the curved scenes and the curved matrix pipeline:
 // the 4x4 matrix of an elementary isometry, the camera path, the built-in curved scenes.
 #pragma once
 #include <string>

@@ -79,7 +79,7 @@ int replaceAccessor(tinygltf::Model& m, int index, int view, bool integer, size_
 // Attribute `name` (accessor `index`) from Draco attribute `att`, per point, as the declared
 // accessor's values: floats (normalized integers mapped as glTF says) or exact unsigned integers.
 // One value per decoded point, whatever count the accessor declares: three.js draws the decoded
-// geometry too (issue 34); only a different component count is an error.
+// geometry too; only a different component count is an error.
 Result<std::vector<unsigned char>> attributeValues(const tinygltf::Model& m, const draco::Mesh& mesh,
                                                    const draco::PointAttribute& att, int index,
                                                    const std::string& name) {

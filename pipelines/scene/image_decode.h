@@ -1,6 +1,6 @@
 // Decoding glTF images (PNG, JPEG, and WebP for EXT_texture_webp) from untrusted bytes: our own
-// header checks first, then OpenImageIO (libpng, libjpeg-turbo, libwebp). stb_image is not used for decoding (issue 20: it wrote
-// past a table on a JPEG whose Huffman counts sum past 256).
+// header checks first, then OpenImageIO (libpng, libjpeg-turbo, libwebp). stb_image is not used for decoding: it wrote
+// past a table on a JPEG whose Huffman counts sum past 256 (tests/fuzz/regressions/f12_*).
 #pragma once
 #include <cstddef>
 #include <cstdint>

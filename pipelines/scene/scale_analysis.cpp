@@ -78,7 +78,7 @@ ScaleReport analyzeScale(const Scene& scene) {
         const double nu = scaleNonUniformity(s);
         if (nu > ns.nonUniformity) ns.nonUniformity = nu, ns.leastUniform = s;
         keyNonUniform |= nu > kSimilarityTolerance;
-        // Animating scale = the keys change over time (issue 35 item 6): a key differs from the
+        // Animating scale = the keys change over time: a key differs from the
         // first. Constant keys (all 1, or a fixed scale other than the rest scale) are counted
         // apart: they set a scale, they do not animate it.
         changes |= scaleChange(keys.front(), s) > kSimilarityTolerance;

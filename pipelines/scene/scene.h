@@ -81,7 +81,7 @@ inline size_t morphTargetCount(const Mesh& m) {
 
 // KHR_texture_transform on a textureInfo: uv' = T(offset) * R(rotation) * S(scale) * (uv, 1).
 // R turns the uvs counter-clockwise as seen in uv space, whose v axis points down: u' = cos u +
-// sin v, v' = -sin u + cos v (glTF issue 1563; three.js, Babylon.js and the Sample Viewer; the
+// sin v, v' = -sin u + cos v (https://github.com/KhronosGroup/glTF/issues/1563; three.js, Babylon.js and the Sample Viewer; the
 // GLSL listing of the extension's README has the opposite sign).
 struct UvTransform {
   glm::vec2 offset{0.0f};
@@ -197,7 +197,7 @@ struct LoadStats {
   int camerasRepaired = 0;            // cameras with zfar <= znear, bad znear or yfov (Camera)
   int binChunkUnaligned = 0;          // GLB BIN chunk length not a multiple of 4 (padded with zeros)
   int basisuTexturesNotDecoded = 0;   // KHR_texture_basisu sources (no decoder): fallback image or white
-  // Invalid files three.js and the Khronos Sample Viewer draw (issue 34), drawn as they do.
+  // Invalid files three.js and the Khronos Sample Viewer draw, drawn as they do.
   int dracoCountMismatch = 0;         // Draco primitives whose decoded count differs from an accessor's (decoded used)
   int jsonChunkUnpadded = 0;          // GLB JSON chunk length not a multiple of 4 (read as three.js reads it)
   int unusedTexturesWithoutImage = 0; // textures no material uses whose source image does not exist (kept without)
@@ -230,7 +230,7 @@ struct SkippedPrimitive {
   std::string reason;
 };
 
-// Curved space (issue 15): spherical S3 and hyperbolic H3 scenes, built in code (glTF has no
+// Curved space: spherical S3 and hyperbolic H3 scenes, built in code (glTF has no
 // curved space). Points are vec4 (x, y, z, w) on the quadric x^2+y^2+z^2 + kappa w^2 = kappa
 // (kappa = +1: S3, -1: H3, origin (0,0,0,1)); normals are tangent vectors there. Isometries
 // are 4x4 matrices (O(4) / O(3,1)) as the scene's generator made them, in double; each
