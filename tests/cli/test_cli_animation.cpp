@@ -1,4 +1,4 @@
-// Animated comparisons in the report (issue 17, item 3): an animated scene gets one looping GIF
+// Animated comparisons in the report: an animated scene gets one looping GIF
 // per compared pipeline, 24 frames of [baseline | pipeline | diff] side by side over one loop of
 // its first animation; a scene without animation gets none.
 #include <gtest/gtest.h>

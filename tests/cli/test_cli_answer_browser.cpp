@@ -1,4 +1,4 @@
-// The answer above the fold (issue 36): report.html opened in headless Chromium at 1400x900; the
+// The answer above the fold: report.html opened in headless Chromium at 1400x900; the
 // page's inline script (report_html.cpp) writes on <body> where the answer heading, its table and
 // the design-space figure end (data-layout "id:bottom ...", page coordinates) and how wide the
 // page is (data-scroll-width). The block and the figure must end within the first 900 px.

@@ -1,5 +1,5 @@
 // `motorbench bench`, `motorbench time` and the per-vertex section of `motorbench ops`, end to
-// end (issue 5). Never asserts timings: only that the commands run, write what they promise
+// end. Never asserts timings: only that the commands run, write what they promise
 // (JSON with items_per_second, a printed ratio) and reject bad input.
 #include <gtest/gtest.h>
 
@@ -52,7 +52,7 @@ TEST(CliBench, OneCheapKernelWritesJsonWithItemsPerSecond) {
     if (b["name"].get<std::string>().find("simd_") != std::string::npos) EXPECT_FALSE(b.value("label", "").empty()) << b.dump();
   EXPECT_NE(log.find("motor/matrix"), std::string::npos) << log;
   EXPECT_NE(log.find("best motor / fastest matrix"), std::string::npos) << log;
-  // Issue 26: the machine above the summary and in the JSON's context: /proc/cpuinfo's model
+  // The machine above the summary and in the JSON's context: /proc/cpuinfo's model
   // name, the logical cores, the Highway target the simd sides' labels name.
   std::string model;
   std::ifstream cpuinfo("/proc/cpuinfo");
@@ -70,8 +70,8 @@ TEST(CliBench, OneCheapKernelWritesJsonWithItemsPerSecond) {
   fs::remove(out);
 }
 
-// --benchmark_color=false reaches the console reporter: no escape codes (issue 13; the
-// reporter motorbench passes used to keep colour on whatever the flag said).
+// --benchmark_color=false reaches the console reporter: no escape codes (the
+// reporter motorbench passes must obey the flag, not keep colour whatever it says).
 TEST(CliBench, ColorFalseWritesNoEscapeCodes) {
   std::string log;
   ASSERT_EQ(runCommand(exe() + "bench --benchmark_filter='^compose/motor$' --benchmark_min_time=0.01 "
@@ -205,7 +205,7 @@ TEST(CliOps, PerVertexSectionHasBothWaysForEveryPipeline) {
   std::string log;
   ASSERT_EQ(runCommand(exe() + "ops --json '" + json.string() + "'", &log), 0) << log;
   EXPECT_NE(log.find("Ops per vertex"), std::string::npos) << log;
-  // ops says where it is (issue 36's trap; checked here to run the whole of ops once).
+  // ops says where it is (a silent run of a minute looks hung; checked here to run the whole of ops once).
   for (const char* step : {"ops: 1/4 steps done (kernels counted", "ops: 2/4 steps done (per-vertex",
                            "ops: 3/4 steps done (per-pipeline", "ops: 4/4 steps done ("})
     EXPECT_NE(log.find(step), std::string::npos) << step << "\n" << log;

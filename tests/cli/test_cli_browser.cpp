@@ -1,4 +1,4 @@
-// The report in a real browser (issue 17, item 2): a report folder made by `motorbench report`
+// The report in a real browser: a report folder made by `motorbench report`
 // is opened from disk by headless Chromium. The page's own inline script writes on <body> how
 // many images it shows and how many failed to decode (report_html.cpp); --dump-dom reads that
 // back. Every image must decode, a screenshot must not be blank, and deleting one image file must

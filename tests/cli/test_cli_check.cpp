@@ -1,4 +1,4 @@
-// `motorbench check` end to end (issue 7, item 1 and its acceptance): the committed goldens
+// `motorbench check` end to end: the committed goldens
 // pass; a deliberate shader change (tangent handedness flipped in a temporary copy of shaders/)
 // fails with a report; a one-step change only warns; a missing golden is an error naming the
 // file; --update writes goldens that then pass and keeps hand-tuned thresholds.

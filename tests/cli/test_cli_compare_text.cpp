@@ -1,6 +1,6 @@
-// Issue 28 items 2, 5, 7 (compare's metrics.json) and 10 (identical): what compare prints and
-// writes is measured and says what it means. Drawn pixels are checked against an independent
-// count of the PNGs compare wrote.
+// What compare prints and writes (its console lines, metrics.json, identical images) is
+// measured and says what it means. Drawn pixels are checked against an independent count of
+// the PNGs compare wrote.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Issue 27 through the command: inspect reports the decode of a Draco and a meshopt file (text
+// Compressed files through the command: inspect reports the decode of a Draco and a meshopt file (text
 // and --json: compressed and decoded bytes), and render, compare and time refuse a file whose
 // every primitive is skipped (exit 2, with the reason) instead of writing a blank image.
 #include <gtest/gtest.h>

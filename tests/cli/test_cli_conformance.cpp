@@ -1,4 +1,4 @@
-// `motorbench inspect` on the conformance cases (issue 17, item 5; tests/hostile/README.md):
+// `motorbench inspect` on the conformance cases (tests/hostile/README.md):
 // valid files tinygltf 2.7 refuses load (exit 0), a network buffer URI and minVersion 2.1 fail
 // naming the file (exit 1, the others still reported), and each invalid-but-drawable file lists
 // its repair on its "fallbacks" line and in the JSON.

@@ -1,4 +1,4 @@
-// The curved-space commands end to end (issue 15 acceptance): `motorbench compare s3_tiling`
+// The curved-space commands end to end: `motorbench compare s3_tiling`
 // and `compare h3_tiling` pick their space's pair and reach PSNR >= 50 dB, a glTF pipeline on a
 // curved scene (and the other way round) is an error naming both, `drift` writes its JSON.
 #include <gtest/gtest.h>

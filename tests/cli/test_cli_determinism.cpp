@@ -1,4 +1,4 @@
-// Determinism (issue 7, item 3; DESIGN idea 6): the same frame rendered twice in one process,
+// Determinism (DESIGN idea 6): the same frame rendered twice in one process,
 // and by two separate `motorbench render` processes (one of them on a single llvmpipe thread),
 // is bit-identical, for every built-in scene and registered pipeline, at rest and at an
 // animation time. Goldens rely on this. The process pair renders every pipeline of a scene's

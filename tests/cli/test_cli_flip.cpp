@@ -1,4 +1,4 @@
-// LDR-FLIP beside PSNR (issue 36 item 2) in check (console line, check.json, summary.html, the
+// LDR-FLIP beside PSNR in check (console line, check.json, summary.html, the
 // failure's FLIP map) and in report.json (each compared frame's metrics, the map beside the
 // diff): the figures are those of harness/render/flip.h on the very images written.
 #include <gtest/gtest.h>

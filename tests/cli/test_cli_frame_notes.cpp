@@ -1,4 +1,4 @@
-// Issue 34 items 4 and 6: render and compare say what they do not draw — one line per feature
+// Render and compare say what they do not draw — one line per feature
 // `inspect` lists as unsupported (checked against inspect --json's own list of the same file)
 // and one line per non-zero fallback counter of each pipeline (checked against the counter in
 // compare's metrics.json).
@@ -49,7 +49,7 @@ TEST(CliFrameNotes, RenderAndCompareListWhatInspectListsAsUnsupported) {
   ASSERT_FALSE(j.is_discarded()) << inspect.out;
   const nlohmann::json& list = j["files"][0]["unsupported"];
   ASSERT_TRUE(list.is_array()) << j.dump(1);
-  // The node extension (the morph target is drawn since issue 37, so it is not listed).
+  // The node extension (the morph target is drawn, so it is not listed).
   bool extension = false;
   for (const auto& u : list) extension = extension || contains(u.get<std::string>(), "EXT_motorbench_test_unknown");
   ASSERT_TRUE(extension) << list.dump();

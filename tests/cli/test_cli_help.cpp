@@ -1,4 +1,4 @@
-// Issue 28 items 6 and 10: `motorbench help CMD` and `CMD --help` print the command's options,
+// `motorbench help CMD` and `CMD --help` print the command's options,
 // the pipeline names it accepts and one example; a pipeline name is checked before the scene is
 // loaded and framed.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Mixed corpus run (issue 7, item 4): a directory holding good files (the built-in scenes, the
+// Mixed corpus run: a directory holding good files (the built-in scenes, the
 // shared real-world corpus) and bad ones (the hostile catalogue and a truncation series) is
 // given to `motorbench inspect DIR --json`. The run must finish with exit 0 and report every
 // file exactly once: good ones loaded with statistics, bad ones with an error naming them.
@@ -115,7 +115,7 @@ TEST(CliHostileCorpus, InspectReportsEveryFileAndFinishes) {
   const int rc = run("timeout 600 " + quoted(MB_MOTORBENCH_EXE) + " inspect " + quoted(dir.string()) + " --json " +
                          quoted(json.string()),
                      &out);
-  // Issue 19: inspect exits 1 when any input failed (the bad files here), after reporting all.
+  // inspect exits 1 when any input failed (the bad files here), after reporting all.
   if (rc != 1) {
     // The error (if any) is what the command wrote last to stderr, among the per-file lines.
     std::string errors;

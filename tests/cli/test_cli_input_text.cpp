@@ -1,4 +1,4 @@
-// Issue 28 items 8 and 10: messages about inputs say what is wrong and never advise harm: a wrong
+// Messages about inputs say what is wrong and never advise harm: a wrong
 // --golden folder is named with what a golden folder holds (not "check --update"); inspect of
 // files that all failed prints no "0/0 files (0.0 %)"; an empty shard says so; the built-in list
 // names the curved scenes.

@@ -1,4 +1,4 @@
-// `motorbench inspect` on the fuzzer's finding of issue 20 (tests/fuzz/regressions/
+// `motorbench inspect` on a fuzzer finding (tests/fuzz/regressions/
 // f12_jpeg_huffman_counts_over_256.glb): a JPEG whose Huffman counts sum past 256 is a counted
 // fallback, not a crash: exit 0, `imagesNotDecoded 1`, the decoder's reason listed; the JSON
 // report says the same.

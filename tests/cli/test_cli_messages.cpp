@@ -1,5 +1,5 @@
-// Issue 19, "Why" bullets 3, 4 and 6 (part): messages a user can act on. Each test runs the
-// command the issue quotes and asserts the new message and exit status.
+// Messages a user can act on. Each test runs a command as a user typed it and asserts the
+// message and the exit status.
 #include <gtest/gtest.h>
 
 #include <string>

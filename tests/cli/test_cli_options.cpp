@@ -1,6 +1,6 @@
-// Issue 19, "Why" bullets 1 and 2: the option parser every command shares (harness/options)
-// and the frame options of render/compare. Each test runs the command the issue quotes and
-// asserts the new behaviour; the Args tests run the parser in-process.
+// The option parser every command shares (harness/options)
+// and the frame options of render/compare. Each test runs a command as a user typed it and
+// asserts the behaviour; the Args tests run the parser in-process.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -95,7 +95,7 @@ TEST(CliArgs, OneSizeRuleWxHBothPositive) {
     EXPECT_FALSE(mb::parseSize(bad)) << bad;
 }
 
-// --- the commands quoted in the issue ---------------------------------------------------------
+// --- commands as users typed them ------------------------------------------------------------
 
 // "`time BoxAnimated.gltf --frames abc` prints `error: stod`."
 TEST(CliOptions, TimeFramesAbcNamesTheOptionAndTheRule) {

@@ -1,4 +1,4 @@
-// Issue 28 item 3: output paths are checked (missing folders created, as render does) before the
+// Output paths are checked (missing folders created, as render does) before the
 // work, in every command that writes; a file-like name for a folder output, a folder for a file
 // output and a missing merge input are refused clearly.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Long runs show progress with an estimate of the time left (issue 17, item 4): in a log
+// Long runs show progress with an estimate of the time left: in a log
 // (stderr not a terminal, as here) one plain line per finished item.
 #include <gtest/gtest.h>
 

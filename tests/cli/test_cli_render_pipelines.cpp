@@ -1,4 +1,4 @@
-// `motorbench render SCENE --pipelines A,B,...|all -o DIR` (issue 39): several pipelines draw the
+// `motorbench render SCENE --pipelines A,B,...|all -o DIR`: several pipelines draw the
 // same frame in one process, DIR/<pipeline>.png each; each image is the frame renderFrame draws
 // for that pipeline, and a bad list is refused before anything is loaded or written.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// `motorbench report` and `motorbench claims`, end to end (issue 6): the report on a small
+// `motorbench report` and `motorbench claims`, end to end: the report on a small
 // built-in scene writes report.json with the keys documented in README.md (section Report),
 // its images exist and are referenced by relative paths, a bad file in the arguments is
 // recorded with its error while the run goes on; the claims JSON holds every claim id with a
@@ -38,7 +38,7 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
   const int rc = runCommand(motorbench() + "report " + quoted(bad) + " textured_box -o " + quoted(out) +
                                 " --no-bench --no-isa --frames 3 --size 64x48 --jobs 2",
                             &log);
-  // Written in full, but a scene failed: exit 1 (issue 34), as inspect.
+  // Written in full, but a scene failed: exit 1, as inspect.
   ASSERT_EQ(rc, 1) << log;
   EXPECT_NE(log.find("[2/2] textured_box: rendering motor t=0"), std::string::npos) << log;
 
@@ -100,7 +100,7 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
     EXPECT_NE(text.find("images/textured_box/t0_motor.png"), std::string::npos) << doc;
     EXPECT_EQ(text.find(out.string()), std::string::npos) << doc << " holds an absolute path";
     EXPECT_NE(text.find("broken.gltf"), std::string::npos) << doc;
-    // Issue 19: a summary median says how many scenes it covers (one scene loaded here), and
+    // A summary median says how many scenes it covers (one scene loaded here), and
     // the glossary explains every counter and the heat maps' colours.
     EXPECT_NE(text.find("36 over 1 scene"), std::string::npos) << doc << ": bytes per vertex without its scene count";
     EXPECT_NE(text.find("Glossary"), std::string::npos) << doc;
@@ -109,7 +109,7 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
   }
   EXPECT_TRUE(r["glossary"]["PipelineStats"].contains("zeroScalarFrames")) << r["glossary"].dump();
 
-  // Issue 28: the ops step (a minute or more) reports progress up to its last item; every frame
+  // The ops step (a minute or more) reports progress up to its last item; every frame
   // records the pixels each pipeline drew (the box covers part of the image, never all of it).
   EXPECT_TRUE(std::regex_search(log, std::regex("report: counting ops per vertex: ([0-9]+)/\\1 kernels and shader variants")))
       << log;
@@ -119,7 +119,7 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
       EXPECT_GT(f["drawnPixels"][p].get<int64_t>(), 0) << p;
       EXPECT_LT(f["drawnPixels"][p].get<int64_t>(), 64 * 48) << p;
     }
-  // Issue 28: image_error is grouped, one bar per compared pipeline on the scene, each at its
+  // image_error is grouped, one bar per compared pipeline on the scene, each at its
   // own x, read from the data plots/index.json records (when matplotlib is there).
   if (r["plots"]["available"] == true) {
     const json index = readJson(out / "plots" / "index.json");
@@ -186,7 +186,7 @@ TEST(CliClaims, JsonHoldsEveryClaimWithMeasuredValueAndVerdict) {
   std::map<std::string, json> byId;
   for (const json& c : j["claims"]) byId[c["id"].get<std::string>()] = c;
   const std::set<std::string> verdicts = {"reproduced", "differs", "inconclusive", "not measurable here", "baseline"};
-  // Every claim the issue lists, and the reviewer baselines.
+  // Every claim of the paper, and the reviewer baselines.
   for (const char* id : {"gp_mm", "gp_rr", "gp_tt", "gp_rt", "gp_tr", "gp_rm", "gp_mr", "gp_tm", "gp_mt",
                          "mat4_mul_mat4", "sw_mp_naive", "sw_mp", "mat4_mul_vec4", "sw_md", "sw_mx", "normalize_m",
                          "sqrt_m", "exp_b", "log_m", "extractNormalTangent", "vertex_frame_motor",
@@ -220,7 +220,7 @@ TEST(CliClaims, JsonHoldsEveryClaimWithMeasuredValueAndVerdict) {
   fs::remove_all(dir);
 }
 
-// The speed claims' frame evidence from a report.json (issues 18, 35): the paired vertex-bound
+// The speed claims' frame evidence from a report.json: the paired vertex-bound
 // ratio per kind of scene (dense_torus rigid: paired 0.80, not 1.30) in the rigid row, the skinned
 // scene in its own row, where a timing in the pipelines' different default skinning
 // configurations is named asymmetric and not used.
@@ -242,7 +242,7 @@ TEST(CliClaims, FrameRatiosArePairedAndVertexBoundOnlyWhereMeasured) {
          {"timing",
           {{"ratio_motor_matrix", 1.0},
            {"vertexBound", {{"paired_ratio_motor_matrix", 0.5}}}}}},
-        // A curved scene (issue 15) times its own pair: not evidence for the glTF pipelines.
+        // A curved scene times its own pair: not evidence for the glTF pipelines.
         {{"id", "s3_tiling"},
          {"space", "spherical (S3)"},
          {"timing", {{"ratio_motor_matrix", 0.1}, {"vertexBound", {{"paired_ratio_motor_matrix", 0.1}}}}}}}}};
@@ -268,7 +268,7 @@ TEST(CliClaims, FrameRatiosArePairedAndVertexBoundOnlyWhereMeasured) {
   EXPECT_DOUBLE_EQ(rigid["costRatio"].get<double>(), 0.8);
   EXPECT_EQ(speed.dump().find("0.1,"), std::string::npos);
   // The skinned evidence is its own row, and a timing in the pipelines' default skinning
-  // configurations (no skinSpace recorded: before issue 18) is named asymmetric and not used.
+  // configurations (no skinSpace recorded) is named asymmetric and not used.
   const json& skinned = skinnedSpeed["measuredValue"]["kinds"]["frame time, vertex-bound crowd (median of per-frame paired ratios)"];
   ASSERT_TRUE(skinned.is_object()) << skinnedSpeed.dump(2);
   EXPECT_FALSE(skinned["usable"].get<bool>()) << skinned.dump(2);

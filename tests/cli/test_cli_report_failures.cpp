@@ -1,4 +1,4 @@
-// Issue 34 items 2 and 7: `report` exits 1 when a scene failed and shows each failure's reason
+// `report` exits 1 when a scene failed and shows each failure's reason
 // in report.md and report.html (not "failed" and "-"); a worker that dies is named with the step
 // it was on; frames whose drawn pixels fail compare's check are marked, with compare's reason
 // for the same frame; skinned frames are judged against their own skinning method's reference,

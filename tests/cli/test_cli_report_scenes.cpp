@@ -1,4 +1,4 @@
-// What `motorbench report` shows beyond one animation of Euclidean built-ins (issues 14, 15, 18):
+// What `motorbench report` shows beyond one animation of Euclidean built-ins:
 // --anim chooses animations (several, by name or index, per scene), an unknown one stops the
 // run naming the scene's animations; curved scenes are measured with their own space's
 // pipelines into a "curved space" section; statistics keep built-in scenes apart from files;
@@ -126,7 +126,7 @@ TEST(CliReportCurved, CurvedScenesGetTheirSpacesPipelinesAndASection) {
       ASSERT_TRUE(m.is_object()) << f.dump();
       if (!m["identical"].get<bool>()) EXPECT_GE(m["psnr"].get<double>(), 50.0);
     }
-    // Ops of the scene's own space only (the issue's 64/48 matrix transform counted).
+    // Ops of the scene's own space only (the curved matrix transform's 64 mul, 48 add per vertex counted).
     ASSERT_EQ(s["opsPerVertex"].size(), 2u) << s["opsPerVertex"].dump();
     EXPECT_EQ(s["opsPerVertex"][prefix + "matrix"]["counted"]["mul"], 64.0);
     EXPECT_TRUE(s["timing"]["paired_ratio_motor_matrix"].is_number()) << s["timing"].dump();

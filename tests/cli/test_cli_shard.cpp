@@ -1,4 +1,4 @@
-// Sharded runs (issue 17, item 1): `report`, `inspect` and `check` with --shard I/N run as GNU
+// Sharded runs: `report`, `inspect` and `check` with --shard I/N run as GNU
 // parallel would run them, then `motorbench merge`, against one unsharded run of the same inputs.
 // Everything but the timings must be equal; a missing or duplicated shard must be an error.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Issue 28 items 4 and 10: `motorbench time` prints every pipeline with a spread [q1-q3] beside
+// `motorbench time` prints every pipeline with a spread [q1-q3] beside
 // every ratio, "noise" where that spread crosses 1, "< 1: motor faster" above the table, scene
 // names that cannot shift the columns, and never "scenes timed" for a scene that failed.
 #include <gtest/gtest.h>
@@ -65,7 +65,7 @@ TEST(CliTimeText, BlockListsEveryPipelineWithSpreadsAndTheLegendSaysWhichWayIsFa
   EXPECT_TRUE(contains(timing::timingLegend(), "< 1: motor")) << timing::timingLegend();
 }
 
-// Issue 28 item 7: "Fox motor update phases 'sampling 32.78 us' beside 'whole update 3.85 us'".
+// Update phases beside the whole update (Fox's motor once read 'sampling 32.78 us' beside 'whole update 3.85 us').
 // Each phase line shows its sum beside the whole update, and says so when the phase blocks ran
 // far slower than the timed update (phases then read as shares).
 TEST(CliTimeText, PhasesShowTheirSumBesideTheWholeUpdate) {

@@ -1,4 +1,4 @@
-// Issue 36 item 6, the small traps, each as a new user met it: `time` without --pipelines and
+// The small traps, each as a new user met it: `time` without --pipelines and
 // --anim (and silently blending two animations), ratios from one frame with no mark, `bench
 // --out` into a missing folder exiting 1 in silence, an unwritable output folder found only
 // after the work, a silent `ops`, `help isa` without options, `help help` unknown, `--fail

@@ -20,7 +20,7 @@ TEST(CliUsage, TopLevelHelpListsEveryCommand) {
   EXPECT_EQ(runCommand(motorbench(), &none), 2) << none;
 }
 
-// Issue 28 item 10: the help is the usage line, then options and an example (test_cli_help.cpp);
+// The help is the usage line, then options and an example (test_cli_help.cpp);
 // nothing runs: none of the lines a run prints (time's machine line, report's progress, bench's
 // "Running" line) appears.
 TEST(CliUsage, CommandHelpPrintsThatCommandsUsageAndRunsNothing) {

@@ -1,4 +1,4 @@
-// Issue 19, "Why" bullet 5 and "What to build" 3-4: what was done is shown. render/compare
+// What was done is shown. render/compare
 // print animation, time, camera and loader fallbacks on stderr; compare writes a heat-map
 // legend; every counter has a glossary entry; inspect lists animations and cameras; time takes
 // folders.
@@ -134,7 +134,7 @@ TEST(CliVisibility, CompareWritesTheHeatMapLegend) {
   auto legend = mb::readImage((dir / "diff_legend.png").string());
   ASSERT_TRUE(legend) << legend.error();
   ASSERT_EQ(legend->width, 32 * 7);
-  ASSERT_EQ(legend->height, 32 + 16);  // the blocks, then their numbers (issue 36)
+  ASSERT_EQ(legend->height, 32 + 16);  // the blocks, then their numbers
   auto pixel = [&](const mb::RgbaImage& img, int x, int y) {
     const uint8_t* p = &img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4];
     return std::vector<int>{p[0], p[1], p[2]};
@@ -147,7 +147,7 @@ TEST(CliVisibility, CompareWritesTheHeatMapLegend) {
     const int steps = stops[i]["steps"];
     if (stated.count(steps)) EXPECT_EQ(block, stated.at(steps)) << steps << " steps";
   }
-  // Each block's number of steps written under it (issue 36): light text on the dark strip.
+  // Each block's number of steps written under it: light text on the dark strip.
   for (size_t i = 0; i < stops.size(); ++i) {
     int light = 0;
     for (int y = 32; y < 48; ++y)
