@@ -10,7 +10,6 @@
 #include <fstream>
 #include <sstream>
 
-#include "tests/support/cli_issue_support.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/junit_check.h"
 #include "tests/support/scene_test_gltf.h"

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "harness/render/image_metrics.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 #include "tests/support/cli_parallel.h"
 
 namespace {

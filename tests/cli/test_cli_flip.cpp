@@ -7,7 +7,7 @@
 #include <string>
 
 #include "harness/render/flip.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "pipelines/pipeline.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 

@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include "tests/support/cli_issue_support.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/junit_check.h"
 

@@ -7,7 +7,7 @@
 
 #include "harness/render/image_metrics.h"
 #include "pipelines/scene/builtin_scenes.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include "harness/options/args.h"
 #include "harness/render/frame_options.h"
 #include "harness/render/image_metrics.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 

@@ -12,7 +12,7 @@
 
 #include "harness/render/counter_glossary.h"
 #include "pipelines/scene/builtin_scenes.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include "harness/render/image_metrics.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/scene/loader.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "harness/render/image_metrics.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 #include "tests/support/png_pixels.h"
 #include "tests/support/skin_test_files.h"
 

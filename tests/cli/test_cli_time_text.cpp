@@ -10,7 +10,7 @@
 
 #include "harness/timing/timing_text.h"
 #include "pipelines/pipeline.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 
 #include <nlohmann/json.hpp>
 

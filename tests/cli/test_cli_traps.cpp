@@ -11,7 +11,7 @@
 #include <string>
 
 #include "harness/render/image_metrics.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 

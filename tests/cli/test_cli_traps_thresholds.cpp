@@ -16,7 +16,7 @@
 #include "harness/render/thresholds.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/curved_space.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 #include "tests/support/cli_parallel.h"
 
 namespace {

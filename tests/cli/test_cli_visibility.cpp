@@ -18,7 +18,7 @@
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scene_stats.h"
 #include "tests/hostile/hostile_cases.h"
-#include "tests/support/cli_issue_support.h"
+#include "tests/support/cli_test_support.h"
 
 namespace {
 

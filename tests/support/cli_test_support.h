@@ -1,6 +1,7 @@
 // Helpers for tests that run the motorbench executable (test_cli_*): run a command and
-// capture its output, quote paths, and a fresh scratch folder per test process (ctest runs
-// tests in parallel, each in its own process).
+// capture its output (runMb: status and output together), quote paths, a fresh scratch folder
+// per test process (ctest runs tests in parallel, each in its own process), and the shared
+// real-world corpus beside the checkout.
 #pragma once
 #include <sys/wait.h>
 #include <unistd.h>
@@ -50,6 +51,34 @@ inline std::filesystem::path scratchDir(const std::string& name) {
   fs::remove_all(p);
   fs::create_directories(p);
   return p;
+}
+
+// ../shared/corpus next to the checkout; a worktree (/work/wt/<name>) finds it one level up.
+// Empty when neither exists (tests that need it skip).
+inline std::filesystem::path corpusDir() {
+  namespace fs = std::filesystem;
+  for (const char* rel : {"../shared/corpus", "../../shared/corpus"}) {
+    const fs::path p = fs::path(MB_SOURCE_DIR) / rel;
+    std::error_code ec;
+    if (fs::is_directory(p, ec)) return fs::canonical(p);
+  }
+  return {};
+}
+
+struct Run {
+  int rc = -1;
+  std::string out;  // stdout and stderr together
+};
+
+// Runs `motorbench <args>` (args already quoted where needed).
+inline Run runMb(const std::string& args) {
+  Run r;
+  r.rc = runCommand(motorbench() + args, &r.out);
+  return r;
+}
+
+inline bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
 }
 
 }  // namespace mb::cli_test
