@@ -52,6 +52,11 @@ struct PipelineEntry {
 const std::vector<PipelineEntry>& registeredPipelines();
 // nullptr when `name` is not registered.
 const PipelineEntry* findPipeline(const std::string& name);
+// Whether `name` is registered with the 16-byte vertex (int16 position, 4-byte frame, half uv).
+inline bool hasSixteenByteVertex(const std::string& name) {
+  const PipelineEntry* e = findPipeline(name);
+  return e && e->vertexBytes == 16;
+}
 
 // A registration that lasts as long as the object: a test adds a pipeline (a copy of one under
 // another name) with one entry and finds it in every command's lists. A name already taken is

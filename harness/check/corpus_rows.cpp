@@ -275,10 +275,6 @@ bool RuleSet::isFullPrecision(const std::string& p) const { return contains(full
 bool RuleSet::isCompact(const std::string& p) const { return contains(compact, p); }
 bool RuleSet::blendsMotors(const std::string& p) const { return contains(motorBlend, p); }
 
-bool isSixteenBytePipeline(const std::string& p) {
-  const PipelineEntry* e = findPipeline(p);  // the vertex bytes each pipeline declares
-  return e && e->vertexBytes == 16;
-}
 
 RuleSet defaultRuleSet(const std::vector<std::string>& only) {
   RuleSet set;
@@ -288,7 +284,7 @@ RuleSet defaultRuleSet(const std::vector<std::string>& only) {
     if (!only.empty() && !contains(only, p)) continue;
     if (skinMethodOf(p) == SkinMethod::MotorBlend) set.motorBlend.push_back(p);
     if (p == all.front()) continue;  // the baseline
-    (isSixteenBytePipeline(p) ? set.compact : set.fullPrecision).push_back(p);
+    (hasSixteenByteVertex(p) ? set.compact : set.fullPrecision).push_back(p);
   }
   return set;
 }

@@ -31,9 +31,6 @@ struct RuleSet {
 // those whose skinning method is the motor blend (pipelines/skin_method.h).
 RuleSet defaultRuleSet(const std::vector<std::string>& only = {});
 
-// The 16-byte pipelines (int16 positions in each primitive's bounding cube, pipelines/compact).
-bool isSixteenBytePipeline(const std::string& pipeline);
-
 // How one survey worker ended.
 struct WorkerRecord {
   ojson exit = nullptr;    // exit status, null when it died by a signal or never ran

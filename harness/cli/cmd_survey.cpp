@@ -49,11 +49,6 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// The pipelines whose positions are int16 in each primitive's bounding cube (pipelines/compact).
-bool isCompact(const std::string& p) {
-  const PipelineEntry* e = findPipeline(p);  // the vertex bytes each pipeline declares
-  return e && e->vertexBytes == 16;
-}
 
 json fallbackJson(const PipelineStats& s) {
   return {{"nonUniformScaleNodes", s.nonUniformScaleNodes}, {"negativeScaleNodes", s.negativeScaleNodes},
@@ -243,7 +238,7 @@ int runSurvey(const std::vector<std::string>& argv) {
             f["psnrNotTies"] = mt->rmse == 0.0 ? json(nullptr) : json(mt->psnr);
           }
         }
-        if (isCompact(name) && frames[k].contains("positionBound")) {
+        if (hasSixteenByteVertex(name) && frames[k].contains("positionBound")) {  // int16 positions
           // Judged in the geometry view (positions and uv alone), outside the int16-cell ties.
           auto geometry = [&]() -> Result<RgbaImage> {
             if (Status ok = geometryBaseline(); !ok) return Result<RgbaImage>::fail(ok.error());
