@@ -23,6 +23,7 @@
 #include "harness/process/progress.h"
 #include "harness/process/report_workers.h"
 #include "harness/render/frame_options.h"
+#include "harness/render/scene_inputs.h"
 
 namespace mb {
 namespace rules {
@@ -48,31 +49,6 @@ std::string absolutePath(const std::string& p) {
   std::string s = fs::absolute(p).lexically_normal().string();
   while (s.size() > 1 && s.back() == '/') s.pop_back();
   return s;
-}
-
-bool isGltfName(const std::string& name) {
-  std::string lower = name;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  auto ends = [&](const std::string& e) { return lower.size() >= e.size() && lower.compare(lower.size() - e.size(), e.size(), e) == 0; };
-  return ends(".gltf") || ends(".glb");
-}
-
-// Files as given, folders as their .gltf/.glb files (recursively, sorted).
-std::vector<std::string> gltfFiles(const std::vector<std::string>& paths) {
-  std::vector<std::string> out;
-  for (const std::string& p : paths) {
-    if (!fs::is_directory(p)) {
-      out.push_back(p);
-      continue;
-    }
-    std::vector<std::string> found;
-    std::error_code ec;
-    for (auto it = fs::recursive_directory_iterator(p, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-      if (!it->is_directory() && isGltfName(it->path().filename().string())) found.push_back(it->path().string());
-    std::sort(found.begin(), found.end());
-    out.insert(out.end(), found.begin(), found.end());
-  }
-  return out;
 }
 
 // {absolute path: features} from the MANIFEST.tsv (columns path, features) of each folder given.
@@ -334,7 +310,7 @@ int runCheckRules(const std::vector<std::string>& argv) {
     error = e.what();
   }
   if (!error.empty()) return commandError("check", error);
-  const std::vector<std::string> files = gltfFiles(o.paths);
+  const std::vector<std::string> files = expandSceneInputs(o.paths);  // folders as their .gltf/.glb files
   if (files.empty()) return commandError("check", "no .gltf/.glb files under " + joinNames(o.paths));
   if (o.jobs > 1 && !std::getenv("LP_NUM_THREADS")) {
     // llvmpipe: a share of the CPUs per worker, so that --jobs workers do not contend.
