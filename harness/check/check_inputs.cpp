@@ -1,11 +1,11 @@
 #include "harness/check/check_inputs.h"
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <map>
 
 #include "harness/check/golden.h"
+#include "harness/render/scene_inputs.h"
 #include "pipelines/scene/builtin_scenes.h"
 
 namespace mb::golden {
@@ -14,25 +14,16 @@ namespace {
 namespace fs = std::filesystem;
 using Inputs = Result<std::vector<CheckInput>>;
 
-bool isGltfFile(const fs::path& p) {
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".gltf" || ext == ".glb";
-}
-
 CheckInput fileInput(const fs::path& path, const fs::path& relative) {
   const std::string shown = relative.generic_string();
   return {path.string(), fileSceneName(shown), shown, true};
 }
 
-// The folder's glTF files, sorted by their relative path.
+// The folder's glTF files (expandSceneInputs: recursively, sorted), named by their relative path.
 std::vector<CheckInput> folderInputs(const fs::path& folder) {
   std::vector<CheckInput> found;
-  std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(folder, fs::directory_options::skip_permission_denied, ec);
-       !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-    if (it->is_regular_file(ec) && isGltfFile(it->path()))
-      found.push_back(fileInput(it->path(), it->path().lexically_relative(folder)));
+  for (const std::string& path : expandSceneInputs({folder.string()}))
+    found.push_back(fileInput(path, fs::path(path).lexically_relative(folder)));
   std::sort(found.begin(), found.end(), [](const CheckInput& a, const CheckInput& b) { return a.shown < b.shown; });
   return found;
 }
@@ -50,7 +41,7 @@ Inputs checkInputs(const std::vector<std::string>& arguments) {
       if (found.empty()) return Inputs::fail(a + ": folder holds no .gltf or .glb files");
       inputs.insert(inputs.end(), found.begin(), found.end());
     } else if (fs::is_regular_file(a, ec)) {
-      if (!isGltfFile(a)) return Inputs::fail(a + ": not a .gltf or .glb file");
+      if (!isGltfPath(a)) return Inputs::fail(a + ": not a .gltf or .glb file");
       inputs.push_back(fileInput(a, fs::path(a).filename()));
     } else {
       return Inputs::fail(a + ": no such file or folder, nor a built-in scene (`motorbench scenes` lists them)");

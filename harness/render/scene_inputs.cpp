@@ -7,17 +7,14 @@
 #include "pipelines/scene/builtin_scenes.h"
 
 namespace mb {
-namespace {
 
 namespace fs = std::filesystem;
 
-bool isGltf(const fs::path& p) {
-  std::string ext = p.extension().string();
+bool isGltfPath(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return ext == ".gltf" || ext == ".glb";
 }
-
-}  // namespace
 
 std::vector<std::string> expandSceneInputs(const std::vector<std::string>& inputs,
                                            std::vector<std::string>* warnings) {
@@ -31,7 +28,7 @@ std::vector<std::string> expandSceneInputs(const std::vector<std::string>& input
     std::vector<std::string> found;
     for (auto it = fs::recursive_directory_iterator(in, fs::directory_options::skip_permission_denied, ec);
          !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-      if (it->is_regular_file(ec) && isGltf(it->path())) found.push_back(it->path().string());
+      if (it->is_regular_file(ec) && isGltfPath(it->path().string())) found.push_back(it->path().string());
     std::sort(found.begin(), found.end());
     if (found.empty() && warnings) warnings->push_back(in + ": folder holds no .gltf or .glb files");
     out.insert(out.end(), found.begin(), found.end());

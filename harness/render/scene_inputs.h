@@ -12,6 +12,9 @@ namespace mb {
 std::vector<std::string> expandSceneInputs(const std::vector<std::string>& inputs,
                                            std::vector<std::string>* warnings = nullptr);
 
+// Whether `path` names a glTF file by its extension (.gltf or .glb, any case).
+bool isGltfPath(const std::string& path);
+
 // The warnings expandSceneInputs would give for `inputs` (report expands its own inputs).
 std::vector<std::string> emptyInputWarnings(const std::vector<std::string>& inputs);
 
