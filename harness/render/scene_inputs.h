@@ -1,4 +1,4 @@
-// Scene arguments of the commands that take many (inspect, time; report warns through it):
+// Scene arguments of the commands that take many (inspect, time, report, check):
 // files, built-in names and folders, expanded the same way everywhere.
 #pragma once
 #include <string>
@@ -15,7 +15,7 @@ std::vector<std::string> expandSceneInputs(const std::vector<std::string>& input
 // Whether `path` names a glTF file by its extension (.gltf or .glb, any case).
 bool isGltfPath(const std::string& path);
 
-// The warnings expandSceneInputs would give for `inputs` (report expands its own inputs).
+// The warnings expandSceneInputs would give for `inputs`, without the list.
 std::vector<std::string> emptyInputWarnings(const std::vector<std::string>& inputs);
 
 }  // namespace mb

@@ -4,19 +4,13 @@
 #include <filesystem>
 #include <set>
 
+#include "harness/render/scene_inputs.h"
 #include "pipelines/scene/builtin_scenes.h"
 
 namespace mb::report {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool isGltf(const fs::path& p) {
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".gltf" || ext == ".glb";
-}
 
 // The file stem with anything but [A-Za-z0-9_-] replaced, so ids are safe in paths and URLs.
 std::string safeStem(const std::string& spec) {
@@ -30,21 +24,8 @@ std::string safeStem(const std::string& spec) {
 }  // namespace
 
 std::vector<Input> expandInputs(const std::vector<std::string>& args) {
-  std::vector<std::string> specs;
-  if (args.empty()) specs = builtinSceneNames();
-  for (const std::string& a : args) {
-    std::error_code ec;
-    if (isBuiltinScene(a) || !fs::is_directory(a, ec)) {
-      specs.push_back(a);
-      continue;
-    }
-    std::vector<std::string> found;
-    for (auto it = fs::recursive_directory_iterator(a, fs::directory_options::skip_permission_denied, ec);
-         !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-      if (it->is_regular_file(ec) && isGltf(it->path())) found.push_back(it->path().string());
-    std::sort(found.begin(), found.end());
-    specs.insert(specs.end(), found.begin(), found.end());
-  }
+  // Folders as their .gltf/.glb files, as every command that takes many scenes expands them.
+  const std::vector<std::string> specs = args.empty() ? builtinSceneNames() : expandSceneInputs(args);
   std::vector<Input> out;
   std::set<std::string> used;
   for (const std::string& s : specs) {
