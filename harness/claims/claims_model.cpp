@@ -130,10 +130,12 @@ std::string originOf(const Claim& c) {
 }
 
 nlohmann::json toJson(const Claim& c) {
-  return {{"id", c.id}, {"origin", originOf(c)}, {"section", c.section}, {"statement", c.statement}, {"paper", c.paper},
+  nlohmann::json j = {{"id", c.id}, {"origin", originOf(c)}, {"section", c.section}, {"statement", c.statement}, {"paper", c.paper},
           {"paperValue", c.paperValue}, {"measured", c.measured}, {"measuredValue", c.measuredValue},
           {"method", c.method}, {"verdict", verdictName(c.verdict)}, {"verdictText", c.verdictText},
           {"quote", c.quote.empty() ? nlohmann::json() : nlohmann::json(c.quote)}, {"tallyAs", c.tallyAs.empty() ? c.id : c.tallyAs}};
+  if (c.declared.is_object()) j.update(c.declared);
+  return j;
 }
 
 std::string fmt(const char* f, double v) {

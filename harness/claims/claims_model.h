@@ -39,6 +39,9 @@ struct Claim {
   std::string quote;
   // Rows the paper prints as one table entry share a key and are tallied once ("" = the id).
   std::string tallyAs;
+  // A declared row's scope, rule, evidence (references and values) and note (evaluate.h);
+  // null for rows not yet declared.
+  nlohmann::json declared;
 };
 
 // "paper" or "own: <kind>": the origin above, plus rows whose paper value says the paper does
