@@ -31,6 +31,8 @@ struct AnswerLine {
   std::string verdict;
   std::vector<std::string> figures;  // the names of the figures the text quotes
   std::vector<KindAnswer> kinds;     // the line by kind of content (empty: not recorded)
+  // The scope-ladder cells the line quotes ({"stage", "measure", "baseline", "text", "verdict"}).
+  nlohmann::json cells = nlohmann::json::array();
 };
 
 // The figures a line quotes, each looked up by name and remembered in line.figures (the tests

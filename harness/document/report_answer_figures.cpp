@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <vector>
 
 #include "harness/document/report_document.h"
 #include "harness/document/report_format.h"
 #include "harness/document/report_isa.h"
 #include "harness/document/report_kind_figures.h"
+#include "harness/document/scope_ladder.h"
 #include "harness/figures/figure.h"
 #include "pipelines/registry.h"
 
@@ -56,24 +58,34 @@ void fetchFigures(json& out, const json& r, const std::vector<std::string>& pipe
   }
 }
 
+// Per family, variant and pipeline, the compiler's statistics of the vertex shader: ISA
+// instructions, ACO's inverse-throughput estimate, VGPRs and waves per SIMD.
 void isaFigures(json& out, const json& r, const std::vector<std::string>& pipes) {
   const json& isa = at(r, {"isa"});
+  const std::tuple<const char*, const char*, const char*, const char*> measures[] = {
+      {"instructions", "instructions", "instructions", "ISA instructions of the compiled vertex shader"},
+      {"inverse_throughput", "inverseThroughput", "cycles", "ACO's static inverse-throughput estimate of the compiled vertex shader"},
+      {"vgprs", "vgprs", "VGPRs", "vector registers the compiled vertex shader allocates"},
+      {"waves", "wavesPerSimd", "waves", "waves per SIMD the register use allows (occupancy)"}};
   for (const json& fam : at(isa, {"families"}).is_array() ? isa["families"] : json::array())
-    for (const std::string& p : pipes) {
-      const std::string id = fam.value("id", "");
-      const json* row = isaRow(isa, p, "rigid", id);
-      Figure f;
-      f.name = "isa.instructions.rigid." + id + "." + p;
-      f.unit = "instructions";
-      f.statistic = "count";
-      f.scope = "rigid vertex shader, one vertex (one lane of a wave)";
-      f.device = "RADV " + id + " (" + fam.value("generation", "") + "), compiler statistics on the null device, not timed";
-      f.definition = "ISA instructions of the compiled vertex shader";
-      f.value = row ? numberOrNaN((*row)["instructions"]) : std::nan("");
-      f.n = std::isfinite(f.value) ? 1 : 0;
-      if (!row) f.why = "no rigid vertex shader of " + p + " for " + id;
-      figures::put(out, f);
-    }
+    for (const char* variant : {"rigid", "skinned"})
+      for (const std::string& p : pipes) {
+        const std::string id = fam.value("id", "");
+        const json* row = isaRow(isa, p, variant, id);
+        for (const auto& [name, key, unit, definition] : measures) {
+          Figure f;
+          f.name = std::string("isa.") + name + "." + variant + "." + id + "." + p;
+          f.unit = unit;
+          f.statistic = "compiled: the compiler's statistic";
+          f.scope = std::string(variant) + " vertex shader (whole shader, main() included), one vertex (one lane of a wave)";
+          f.device = "RADV " + id + " (" + fam.value("generation", "") + "), compiler statistics on the null device, not timed";
+          f.definition = definition;
+          f.value = row ? numberOrNaN((*row)[key]) : std::nan("");
+          f.n = std::isfinite(f.value) ? 1 : 0;
+          if (!row) f.why = std::string("no ") + variant + " vertex shader of " + p + " for " + id;
+          figures::put(out, f);
+        }
+      }
 }
 
 // The vertex format's own image cost: the worst PSNR over the frames of
@@ -201,6 +213,7 @@ void addAnswerFigures(json& r) {
   json families = json::object();
   for (const std::string& p : pipes) families[p] = pipelineFamily(p);
   r["pipelineFamilies"] = families;
+  r["scopeLadder"] = ladderJson(scopeLadder(r));
 }
 
 }  // namespace mb::report

@@ -157,6 +157,20 @@ void kernelFigures(json& out, const json& kernels, const std::string& cpu) {
       if (!std::isfinite(f.value)) f.why = "no throughput for " + motor + " or " + matrix;
       figures::put(out, f);
     };
+    for (const auto& [side, v] : p.items()) {
+      if (!at(v, {"items_per_second"}).is_number() || ips(side) <= 0) continue;
+      Figure f;
+      f.name = "kernel_time." + pair + "." + side;
+      f.value = 1e9 / ips(side);
+      f.unit = "ns";
+      f.n = 1;
+      f.statistic = "measured: Google Benchmark time per item (items/s inverted)";
+      f.scope = "CPU kernel " + pair + ", implementation " + side;
+      f.device = cpu + (at(v, {"label"}).is_string() ? ", Highway " + v["label"].get<std::string>() : "");
+      f.disturbed = at(v, {"disturbance"});
+      f.definition = "nanoseconds per item of " + side;
+      figures::put(out, f);
+    }
     add("kernel_time." + pair + ".fastest_motor_over_fastest_matrix", p.value("fastest_motor", "motor"),
         p.value("fastest_matrix", "matrix"), "fastest motor implementation vs fastest matrix implementation");
     add("kernel_time." + pair + ".shim_motor_over_shim_matrix", "motor", "matrix",
@@ -236,6 +250,36 @@ void fallbackFigures(json& out, const std::vector<json>& scenes, const std::vect
   }
 }
 
+// Per scene and pipeline, Pipeline::update's median time and its hierarchy phase, in
+// microseconds (report_timing's updateMedianMs / updatePhasesMedianMs, wall clock).
+void updateFigures(json& out, const std::vector<json>& scenes) {
+  for (const json& s : scenes) {
+    const json& timing = s.value("timing", json());
+    const json& ps = at(timing, {"pipelines"});
+    if (!ps.is_object()) continue;
+    for (const auto& [p, v] : ps.items()) {
+      auto put = [&](const std::string& name, const json& ms, const std::string& what) {
+        Figure f;
+        f.name = name + "." + s.value("id", "") + "." + p;
+        f.value = numberOrNaN(ms) * 1000.0;
+        f.unit = "us";
+        f.n = v.value("updateCallsPerBlock", 0);
+        f.statistic = "measured: median over timed blocks of the mean time per call";
+        f.scope = what + " of " + s.value("id", "") + " (" + std::to_string(at(v, {"drawnVertices"}).is_number()
+                                                                           ? v["drawnVertices"].get<int>() : 0) +
+                  " drawn vertices)";
+        f.device = "CPU wall clock";
+        f.definition = "microseconds per Pipeline::update call of " + p;
+        f.disturbed = timing.value("disturbance", json());
+        if (!std::isfinite(f.value)) f.why = "not timed";
+        figures::put(out, f);
+      };
+      put("update", v.value("updateMedianMs", json()), "the whole CPU update (sampling, blending, hierarchy, palette)");
+      put("update.hierarchy", at(v, {"updatePhasesMedianMs", "hierarchy"}), "the hierarchy phase (each node composed with its parent)");
+    }
+  }
+}
+
 json reportFigures(const json& machine, const json& settings, const std::vector<json>& scenes, const json& ops,
                    const json& kernels) {
   json out = json::object();
@@ -247,7 +291,11 @@ json reportFigures(const json& machine, const json& settings, const std::vector<
                "shading attributes per vertex (position, frame, uv)");
   memoryFigure(out, scenes, pipelines, "floatsPerTransform", "floats_per_transform", "floats",
                "per-draw transform uniforms");
+  memoryFigure(out, scenes, pipelines, "floatsPerTransformWithScale", "floats_per_transform_with_scale", "floats",
+               "per-draw transform uniforms with the per-draw scale float");
+  memoryFigure(out, scenes, pipelines, "floatsPerJoint", "floats_per_joint", "floats", "joint palette per joint");
   fallbackFigures(out, scenes, pipelines);
+  updateFigures(out, scenes);
   opsFigures(out, ops);
   kernelFigures(out, kernels, machine.value("cpu", "") + " (" + std::to_string(machine.value("logicalCores", 0)) +
                                   " logical cores)");
