@@ -11,6 +11,7 @@
 #include "harness/process/progress.h"
 #include "harness/ops/op_count.h"
 #include "harness/ops/op_kernels.h"
+#include "harness/ops/ops_figures.h"
 #include "harness/isa/isa_ops.h"
 #include "harness/ops/ops_vertex.h"
 #include "harness/ops/pipeline_ops.h"
@@ -45,7 +46,8 @@ int runOps(const std::vector<std::string>& argv) {
   std::fputs(mb::ops::formatTable(rows).c_str(), stdout);
   int disagree = 0;
   for (const auto& r : rows) disagree += r.agree() == "NO";
-  std::printf("\n%d kernel(s) disagree with their claim.\n", disagree);
+  std::printf("\n%d kernel(s) disagree with their claim.\n\n", disagree);
+  std::fputs(mb::ops::formatListings(rows).c_str(), stdout);
 
   // Per-vertex transforms of each pipeline, counted and from SPIR-V (harness/ops/ops_vertex.h).
   const mb::opsv::VertexOps perVertex = mb::opsv::measureVertexOps();
@@ -74,6 +76,8 @@ int runOps(const std::vector<std::string>& argv) {
         {"per_vertex", mb::opsv::toJson(perVertex)},
         {"per_pipeline", mb::opsv::toJson(perPipeline)},
         {"isa", isa ? mb::isa::isaBesideOpsJson(perVertex, *isa) : nlohmann::json{{"error", isa.error()}}},
+        // Every count above (and the listings and pieces claims quote) as named figures.
+        {"figures", mb::ops::opsFigures(rows, perVertex)},
     };
     if (mb::Status ok = mb::writeTextFile(*path, j.dump(2) + "\n"); !ok) {
       std::fprintf(stderr, "motorbench ops: %s\n", ok.error().c_str());
@@ -89,5 +93,5 @@ MB_COMMAND(ops, "ops", "[--json FILE]",
            "count mul/add/div/sqrt per PGA kernel and matrix op, next to the paper's claims; ops per "
            "vertex of each pipeline, counted and from SPIR-V", runOps);
 MB_COMMAND_HELP(ops, "ops",
-               "  --json FILE        every count as JSON\n",
+               "  --json FILE        every count as JSON (and as named figures: \"figures\")\n",
                 "motorbench ops --json out/ops.json", false);
