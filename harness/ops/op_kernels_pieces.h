@@ -49,11 +49,11 @@ inline std::vector<Kernel> pieceKernels() {
        "rotorFromQuat + normalize_m, as the motor pipeline's fromTRS runs it per animated node (the normalisation "
        "is a defensive extra the conversion does not need)",
        std::nullopt, [rotorFromQuat] { (void)kernels.normalize_m(rotorFromQuat()); }},
-      {"matrix", "mat4x3*mat4x3",
+      {"affine", "mat4x3*mat4x3",
        "affine composition: mat4x3 * mat4x3 (3x3 linear part and translation, the last row 0 0 0 1 implied; "
        "harness/bench/affine_compose.h), the strongest matrix composition",
        std::nullopt, [] { (void)bench::affineCompose<Counted>(a, b); }},
-      {"vertex", "motor_vertex_frame",
+      {"motor", "motor_vertex_frame",
        "motor vertex with frame by the paper's pieces, as the shader executes them: sw_mp + gp_rr + "
        "extractNormalTangent + motorHandedness (sign(1/x)); no uniform scale (the paper counts it apart)",
        paper(47, 38),
@@ -62,9 +62,9 @@ inline std::vector<Kernel> pieceKernels() {
          (void)P.extractNormalTangent(P.gp_rr(in.toWorld, PC::motor(in.rotor, PC::vec4(0.0))));
          (void)P.motorHandedness(in.rotor);
        }},
-      {"vertex", "motor_handedness", "motorHandedness: sign(1 / tangentRotor.x) (the paper counts it as 1 mul)",
+      {"motor", "motor_handedness", "motorHandedness: sign(1 / tangentRotor.x) (the paper counts it as 1 mul)",
        std::nullopt, [] { (void)P.motorHandedness(in.rotor); }},
-      {"vertex", "three_mat4*vec4",
+      {"matrix", "three_mat4*vec4",
        "the paper's matrix vertex: three mat4 * vec4 (position and tangent by the model matrix, normal by the "
        "normal matrix), without the shader's handedness",
        paper(48, 36),

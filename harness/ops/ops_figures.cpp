@@ -83,7 +83,9 @@ std::string sourceOf(const std::string& group) {
   if (group == "listing") return "shaders/paper_listings.glsl";
   if (group == "matrix") return "the GLSL matrix operators of the shim";
   if (group == "conversion") return "pipelines/motor/companion.h, written on the shim's types";
-  return "shaders/pga.glsl and shaders/matrix_transform.glsl";
+  if (group == "affine") return "harness/bench/affine_compose.h on the shim's types";
+  if (group == "motor") return "shaders/pga.glsl and shaders/motor_transform.glsl";
+  return group;
 }
 
 void putKernels(json& out, const std::string& family, const std::vector<Row>& rows) {
