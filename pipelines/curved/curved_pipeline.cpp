@@ -183,20 +183,20 @@ void CurvedPipeline::release() {
   scene_ = nullptr;
 }
 
-}  // namespace
+template <Space S, bool Motor>
+std::unique_ptr<Pipeline> makeCurved() {
+  return std::make_unique<CurvedPipeline>(S, Motor);
+}
 
-std::unique_ptr<Pipeline> makeS3MatrixPipeline() { return std::make_unique<CurvedPipeline>(Space::Spherical, false); }
-std::unique_ptr<Pipeline> makeS3MotorPipeline() { return std::make_unique<CurvedPipeline>(Space::Spherical, true); }
-std::unique_ptr<Pipeline> makeH3MatrixPipeline() { return std::make_unique<CurvedPipeline>(Space::Hyperbolic, false); }
-std::unique_ptr<Pipeline> makeH3MotorPipeline() { return std::make_unique<CurvedPipeline>(Space::Hyperbolic, true); }
+}  // namespace
 
 // One program each: the instance vertex of its space (MB_KAPPA = the curvature) and curved.fs.
 PipelineEntry curvedEntry(Space space, bool motor) {
   static const std::string kMain = "main() adds the projection u_Projection * position (mat4 * vec4: 16 mul, 12 add), "
                                    "the same on both sides of a space";
   const bool s3 = space == Space::Spherical;
-  std::unique_ptr<Pipeline> (*make)() = s3 ? (motor ? makeS3MotorPipeline : makeS3MatrixPipeline)
-                                           : (motor ? makeH3MotorPipeline : makeH3MatrixPipeline);
+  const auto make = motor ? (s3 ? makeCurved<Space::Spherical, true> : makeCurved<Space::Hyperbolic, true>)
+                          : (s3 ? makeCurved<Space::Spherical, false> : makeCurved<Space::Hyperbolic, false>);
   return {.name = std::string(s3 ? "s3_" : "h3_") + (motor ? "motor" : "matrix"), .make = make, .space = space,
           .skin = SkinMethod::None, .family = motor ? PipelineFamily::Motor : PipelineFamily::Matrix,
           .variants = {{.stage = motor ? "curved_motor.vs" : "curved_matrix.vs", .defines = {{"MB_KAPPA", s3 ? "1" : "-1"}},

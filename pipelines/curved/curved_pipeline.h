@@ -12,10 +12,6 @@
 #include "pipelines/registry.h"
 
 namespace mb {
-std::unique_ptr<Pipeline> makeS3MatrixPipeline();
-std::unique_ptr<Pipeline> makeS3MotorPipeline();
-std::unique_ptr<Pipeline> makeH3MatrixPipeline();
-std::unique_ptr<Pipeline> makeH3MotorPipeline();
 // The registry entry of the curved pipeline of `space` (Spherical or Hyperbolic), matrix or motor.
 PipelineEntry curvedEntry(Space space, bool motor);
 }  // namespace mb

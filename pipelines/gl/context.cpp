@@ -49,6 +49,13 @@ struct Context::Impl {
   // Makes the context current and (re)loads the GL pointers from its backend when needed.
   // Returns "" or what went wrong.
   std::string makeCurrent();
+  // Drops the EGL context, if any (a failed attempt's half-made one, or at destruction).
+  void releaseEgl() {
+    if (context == EGL_NO_CONTEXT) return;
+    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(display, context);
+    context = EGL_NO_CONTEXT;
+  }
 };
 
 namespace {
@@ -89,29 +96,29 @@ std::string startEglContext(Context::Impl& s, const char* platform) {
   return s.makeCurrent();
 }
 
-PFNEGLGETPLATFORMDISPLAYEXTPROC platformDisplayFn() {
-  return reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+// The context on the display of `platform` (client extension `extension`) for `native`.
+std::string startPlatform(Context::Impl& s, const char* extension, EGLenum platform, void* native,
+                          const std::string& name) {
+  if (!eglExtensionListed(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), extension))
+    return std::string(extension) + " not available";
+  auto getPlatformDisplay =
+      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (!getPlatformDisplay) return "eglGetPlatformDisplayEXT not available";
+  s.display = getPlatformDisplay(platform, native, nullptr);
+  return startEglContext(s, name.c_str());
 }
 
 // Mesa's surfaceless platform (llvmpipe where no hardware driver claims it).
 std::string startSurfaceless(Context::Impl& s) {
-  if (!eglExtensionListed(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_MESA_platform_surfaceless"))
-    return "EGL_MESA_platform_surfaceless not available";
-  auto getPlatformDisplay = platformDisplayFn();
-  if (!getPlatformDisplay) return "eglGetPlatformDisplayEXT not available";
-  s.display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-  return startEglContext(s, "surfaceless");
+  return startPlatform(s, "EGL_MESA_platform_surfaceless", EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
+                       "surfaceless");
 }
 
 // One EGL device (EGL_EXT_platform_device): how NVIDIA's EGL, which has no surfaceless
 // platform, offers a headless context; Mesa offers its software device the same way.
 std::string startDevice(Context::Impl& s, const EglDevice& device) {
-  if (!eglExtensionListed(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_EXT_platform_device"))
-    return "EGL_EXT_platform_device not available";
-  auto getPlatformDisplay = platformDisplayFn();
-  if (!getPlatformDisplay) return "eglGetPlatformDisplayEXT not available";
-  s.display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device.handle, nullptr);
-  return startEglContext(s, ("device " + std::to_string(device.index)).c_str());
+  return startPlatform(s, "EGL_EXT_platform_device", EGL_PLATFORM_DEVICE_EXT, device.handle,
+                       "device " + std::to_string(device.index));
 }
 
 std::string startOsmesa(Context::Impl& s) {
@@ -157,10 +164,7 @@ std::string Context::Impl::makeCurrent() {
 
 Context::~Context() {
   if (!impl_) return;
-  if (impl_->context != EGL_NO_CONTEXT) {
-    eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    eglDestroyContext(impl_->display, impl_->context);
-  }
+  impl_->releaseEgl();
   if (impl_->osContext) impl_->osDestroy(impl_->osContext);
   if (gPointersLoadedFor == impl_.get()) gPointersLoadedFor = nullptr;
   // The OSMesa library stays loaded: GL pointers may still refer into it.
@@ -168,18 +172,11 @@ Context::~Context() {
 
 bool Context::makeCurrent() { return impl_ && impl_->makeCurrent().empty(); }
 
-namespace {
-
 // Drops whatever an EGL attempt got half-way, so the next one starts from a fresh state.
-void discardEgl(std::unique_ptr<Context::Impl>& impl) {
-  if (impl->context != EGL_NO_CONTEXT) {
-    eglMakeCurrent(impl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    eglDestroyContext(impl->display, impl->context);
-  }
+static void discardEgl(std::unique_ptr<Context::Impl>& impl) {
+  impl->releaseEgl();
   impl = std::make_unique<Context::Impl>();
 }
-
-}  // namespace
 
 Result<std::unique_ptr<Context>> Context::create() {
   using R = Result<std::unique_ptr<Context>>;

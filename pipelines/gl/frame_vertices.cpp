@@ -1,5 +1,7 @@
 #include "pipelines/gl/frame_vertices.h"
 
+#include <cmath>
+
 namespace mb::gl {
 
 bool uploadsTangent(const Primitive& p) { return !p.tangents.empty(); }
@@ -21,6 +23,20 @@ std::vector<float> interleaveVertices(const Primitive& p) {
     out.insert(out.end(), {uv.x, uv.y});
   }
   return out;
+}
+
+VertexFrame vertexFrame(const Primitive& p, size_t v) {
+  VertexFrame f;
+  f.normal = v < p.normals.size() ? p.normals[v] : glm::vec3(0, 0, 1);
+  if (v < p.tangents.size()) {
+    f.tangent = p.tangents[v];
+    return f;
+  }
+  const glm::vec3 axis = std::fabs(f.normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  const glm::vec3 c = glm::cross(f.normal, axis);
+  const float len = glm::length(c);
+  f.tangent = glm::vec4(len > 0.0f ? c / len : glm::vec3(1, 0, 0), 1.0f);
+  return f;
 }
 
 VertexFormat floatFrameFormat(const Primitive& p) {

@@ -24,6 +24,15 @@ bool uploadsTangent(const Primitive& p);
 // a missing normal (0, 0, 1).
 std::vector<float> interleaveVertices(const Primitive& p);
 
+// The frame of vertex v as the full-frame vertices (qtangent, matrix_c and the motor family)
+// fill it: a missing normal (0, 0, 1), a missing tangent any unit vector perpendicular to the
+// normal (w = +1; no normal map samples it), so every pipeline shades the same frames.
+struct VertexFrame {
+  glm::vec3 normal;
+  glm::vec4 tangent;  // xyz + handedness w
+};
+VertexFrame vertexFrame(const Primitive& p, size_t v);
+
 // interleaveVertices(p) with its attributes (locations 0 position, 1 normal, 2 tangent when
 // uploaded, 3 uv0) and variant 1 when it has no tangent (the shaders' MB_NO_TANGENT).
 VertexFormat floatFrameFormat(const Primitive& p);

@@ -47,15 +47,6 @@ void countNormalMappedShare(const Scene& scene, const Primitive& p, uint64_t byt
   stats.normalMappedVertices += p.positions.size();
 }
 
-void SceneGeometry::upload(const Scene& scene, const Interleave& interleave,
-                           std::initializer_list<GLint> attributeSizes, PipelineStats& stats) {
-  std::vector<VertexAttribute> attributes;
-  GLuint location = 0;
-  for (GLint size : attributeSizes) attributes.push_back({location++, size});
-  upload(scene, [&](const Primitive& p) { return VertexFormat{interleave(p), attributes, 0}; },
-         stats);
-}
-
 void SceneGeometry::upload(const Scene& scene, const Format& format, PipelineStats& stats) {
   uploadEach(scene, stats, [&](const Primitive& p, GpuPrimitive& g) {
     VertexFormat f = format(p);
@@ -69,6 +60,23 @@ void SceneGeometry::upload(const Scene& scene, const Format& format, PipelineSta
       glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, stride,
                             reinterpret_cast<const void*>(offset * sizeof(float)));
       offset += size_t(a.size);
+    }
+  });
+}
+
+void SceneGeometry::uploadPacked(const Scene& scene, const PackedInterleave& interleave,
+                                 const std::vector<PackedAttribute>& attributes, PipelineStats& stats) {
+  GLsizei stride = 0;
+  for (const PackedAttribute& a : attributes) stride += GLsizei(a.bytes());
+  uploadEach(scene, stats, [&](const Primitive& p, GpuPrimitive& g) {
+    g.vertices = createBuffer(GL_ARRAY_BUFFER, interleave(p), stats.vertexBytes);
+    GLuint loc = 0;
+    size_t offset = 0;
+    for (const PackedAttribute& a : attributes) {
+      glEnableVertexAttribArray(loc);
+      glVertexAttribPointer(loc++, a.size, a.type, a.normalized ? GL_TRUE : GL_FALSE, stride,
+                            reinterpret_cast<const void*>(offset));
+      offset += a.bytes();
     }
   });
 }

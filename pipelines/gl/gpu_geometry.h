@@ -5,7 +5,6 @@
 #pragma once
 #include <chrono>
 #include <functional>
-#include <initializer_list>
 #include <vector>
 
 #include "pipelines/gl/gl_api.h"
@@ -52,20 +51,15 @@ struct VertexFormat {
 // Every primitive of every mesh on the GPU.
 class SceneGeometry {
 public:
-  // The pipeline's vertex layout of a primitive: tightly interleaved floats.
-  using Interleave = std::function<std::vector<float>(const Primitive&)>;
+  // Uploads all primitives of `scene`: format(p)'s tightly interleaved floats at its attributes
+  // (stats.vertexBytes), ExtraStreams (extraVertexBytes, skinVertexBytes), indices (indexBytes);
+  // counts stats.vertices and sets stats.floatsPerVertex from the bytes. Also counts the
+  // normal-mapped share (PipelineStats::normalMappedVertexBytes/Vertices).
   using Format = std::function<VertexFormat(const Primitive&)>;
-  // Uploads all primitives of `scene`: interleave(p) at float attributes of the given sizes on
-  // locations 0, 1, ... (stats.vertexBytes), ExtraStreams (extraVertexBytes, skinVertexBytes),
-  // indices (indexBytes); counts stats.vertices and sets stats.floatsPerVertex from the bytes.
-  // Also counts the normal-mapped share (PipelineStats::normalMappedVertexBytes/Vertices).
-  void upload(const Scene& scene, const Interleave& interleave,
-              std::initializer_list<GLint> attributeSizes, PipelineStats& stats);
-  // The same with a format chosen per primitive by `format`.
   void upload(const Scene& scene, const Format& format, PipelineStats& stats);
   // The same for a vertex layout of mixed component types (pipelines/gl/packed_vertices.h):
   // interleave(p) returns the bytes of p's vertices, `attributes` their formats in order on
-  // locations 0, 1, ... (packed_geometry.cpp).
+  // locations 0, 1, ...
   using PackedInterleave = std::function<std::vector<uint8_t>(const Primitive&)>;
   void uploadPacked(const Scene& scene, const PackedInterleave& interleave,
                     const std::vector<PackedAttribute>& attributes, PipelineStats& stats);

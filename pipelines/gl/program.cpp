@@ -87,21 +87,10 @@ GLint Program::uniform(const std::string& name) const {
   return loc;
 }
 
-GLint Program::attribute(const std::string& name) const {
-  return glGetAttribLocation(id_, name.c_str());
-}
-
 bool Program::bindStorageBlock(const std::string& block, GLuint binding) const {
   GLuint index = glGetProgramResourceIndex(id_, GL_SHADER_STORAGE_BLOCK, block.c_str());
   if (index == GL_INVALID_INDEX) return false;
   glShaderStorageBlockBinding(id_, index, binding);
-  return true;
-}
-
-bool Program::bindUniformBlock(const std::string& block, GLuint binding) const {
-  GLuint index = glGetUniformBlockIndex(id_, block.c_str());
-  if (index == GL_INVALID_INDEX) return false;
-  glUniformBlockBinding(id_, index, binding);
   return true;
 }
 

@@ -29,16 +29,11 @@ public:
   Program(const Program&) = delete;
   Program& operator=(const Program&) = delete;
 
-  GLuint id() const { return id_; }
   void use() const { glUseProgram(id_); }
   // Location of a uniform (cached); -1 when the program does not use it.
   GLint uniform(const std::string& name) const;
-  // Location of a vertex input; -1 when the program does not use it.
-  GLint attribute(const std::string& name) const;
   // Binds the shader storage block `block` to binding point `binding`; false when inactive.
   bool bindStorageBlock(const std::string& block, GLuint binding) const;
-  // Binds the uniform block `block` to binding point `binding`; false when inactive.
-  bool bindUniformBlock(const std::string& block, GLuint binding) const;
 
 private:
   Program() = default;

@@ -7,12 +7,6 @@ void bufferData(GLenum target, size_t bytes, const void* data, GLenum usage, uin
   if (data) counter += bytes;  // a null pointer only allocates
 }
 
-void bufferSubData(GLenum target, size_t offset, size_t bytes, const void* data,
-                   uint64_t& counter) {
-  glBufferSubData(target, GLintptr(offset), GLsizeiptr(bytes), data);
-  counter += bytes;
-}
-
 void uniform1i(GLint loc, int v, uint64_t& counter) {
   if (loc < 0) return;
   glUniform1i(loc, v);

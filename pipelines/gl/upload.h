@@ -12,8 +12,6 @@
 namespace mb::gl {
 
 void bufferData(GLenum target, size_t bytes, const void* data, GLenum usage, uint64_t& counter);
-void bufferSubData(GLenum target, size_t offset, size_t bytes, const void* data,
-                   uint64_t& counter);
 
 // Generates a buffer, binds it to `target` and uploads `v` (counted). Returns its name.
 template <class T>

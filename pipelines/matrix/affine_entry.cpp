@@ -27,7 +27,8 @@ PipelineEntry matrixFamilyEntry(const char* name, std::unique_ptr<Pipeline> (*ma
 PipelineEntry affineEntry() {
   const std::string vs = "affine.vs";
   return matrixFamilyEntry(
-      "affine", makeAffinePipeline, 48, {.fetched = "float frame"},
+      "affine", [] { return affine::makePipeline("affine", affine::FrameFormat::Float); }, 48,
+      {.fetched = "float frame"},
       {
           {.stage = vs, .draws = "rigid", .kernels = {"matrixAffineVertex", kClip}, .note = kMain},
           {.stage = vs, .defines = {{"MB_SKINNED", ""}}, .draws = "skinned", .kernels = {"affineSkinnedVertex", kClip},
@@ -61,8 +62,9 @@ std::vector<ShaderVariant> affine::qtangentVariants(const std::string& also) {
 }
 
 PipelineEntry qtangentEntry() {
-  return matrixFamilyEntry("qtangent", makeQtangentPipeline, 28, {.decodeKernel = "qtangentFrame"},
-                           affine::qtangentVariants(""));
+  return matrixFamilyEntry(
+      "qtangent", [] { return affine::makePipeline("qtangent", affine::FrameFormat::QTangent); }, 28,
+      {.decodeKernel = "qtangentFrame"}, affine::qtangentVariants(""));
 }
 
 // The 16-byte vertex (pipelines/compact): rigid draws fold the mesh's cube into their transform,
@@ -70,7 +72,8 @@ PipelineEntry qtangentEntry() {
 PipelineEntry matrixCEntry() {
   const std::string vs = "affine.vs";
   return matrixFamilyEntry(
-      "matrix_c", makeMatrixCPipeline, 16, {.decodeKernel = "compactMatrixFrame"},
+      "matrix_c", [] { return affine::makePipeline("matrix_c", affine::FrameFormat::Compact); }, 16,
+      {.decodeKernel = "compactMatrixFrame"},
       {
           {.stage = vs, .defines = {{"MB_COMPACT", ""}}, .draws = "rigid", .kernels = {"compactRigidVertex", kClip},
            .note = kMain},

@@ -165,23 +165,9 @@ void AffinePipeline::setDequant(const gl::Program& program, const gl::DrawItem& 
 
 }  // namespace
 
-std::unique_ptr<Poser> makeMatrixPoser() { return std::make_unique<MatrixPoser>(); }
-
 std::unique_ptr<Pipeline> makePipeline(const std::string& name, FrameFormat format,
                                        std::unique_ptr<Poser> poser) {
-  return std::make_unique<AffinePipeline>(name, format, std::move(poser));
+  return std::make_unique<AffinePipeline>(name, format, poser ? std::move(poser) : std::make_unique<MatrixPoser>());
 }
 
 }  // namespace mb::affine
-
-namespace mb {
-std::unique_ptr<Pipeline> makeAffinePipeline() {
-  return affine::makePipeline("affine", affine::FrameFormat::Float, affine::makeMatrixPoser());
-}
-std::unique_ptr<Pipeline> makeQtangentPipeline() {
-  return affine::makePipeline("qtangent", affine::FrameFormat::QTangent, affine::makeMatrixPoser());
-}
-std::unique_ptr<Pipeline> makeMatrixCPipeline() {
-  return affine::makePipeline("matrix_c", affine::FrameFormat::Compact, affine::makeMatrixPoser());
-}
-}  // namespace mb

@@ -31,21 +31,16 @@ public:
                     PhaseClock& clock) = 0;
 };
 
-// The GLM poser (affine::poseScene).
-std::unique_ptr<Poser> makeMatrixPoser();
-
+// `poser` null: the GLM poser (affine::poseScene); pipelines/hybrid passes its own.
 std::unique_ptr<Pipeline> makePipeline(const std::string& name, FrameFormat format,
-                                       std::unique_ptr<Poser> poser);
+                                       std::unique_ptr<Poser> poser = nullptr);
 
 // The programs of the int16-quaternion vertex (qtangent's, hybrid's), `also` added to each note.
 std::vector<ShaderVariant> qtangentVariants(const std::string& also);
 
 }  // namespace affine
 
-std::unique_ptr<Pipeline> makeAffinePipeline();
-std::unique_ptr<Pipeline> makeQtangentPipeline();
-std::unique_ptr<Pipeline> makeMatrixCPipeline();  // matrix_c: 16-byte vertex, 4-byte frame
-// Their registry entries (affine_entry.cpp).
+// The registry entries of affine, qtangent and matrix_c (affine_entry.cpp).
 PipelineEntry affineEntry();
 PipelineEntry qtangentEntry();
 PipelineEntry matrixCEntry();

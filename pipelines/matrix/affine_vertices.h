@@ -1,7 +1,6 @@
 // The full frame qtangent packs (interleaveQTangent): position, normal, tangent (xyz +
-// handedness w), uv0 on every primitive, 12 floats. A missing tangent becomes any unit vector
-// perpendicular to the normal (w = +1; no normal map samples it), missing uv0 (0, 0), a missing
-// normal (0, 0, 1). `affine` itself uploads pipelines/gl/frame_vertices.h's vertex.
+// handedness w), uv0 on every primitive, 12 floats: frames as gl::vertexFrame fills them, a
+// missing uv0 (0, 0). `affine` itself uploads pipelines/gl/frame_vertices.h's vertex.
 #pragma once
 #include <vector>
 

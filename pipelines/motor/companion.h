@@ -46,7 +46,6 @@ inline constexpr float kScaleTolerance = float(kSimilarityTolerance);
 inline constexpr float kShearTolerance = float(kSimilarityTolerance);
 inline constexpr float kMinTangentScalar = 1.0f / 32767.0f;
 
-inline Vec3 toVec3(const glm::vec3& v) { return Vec3(v.x, v.y, v.z); }
 inline glm::vec3 toGlm(const Vec3& v) { return glm::vec3(v.x, v.y, v.z); }
 using mb::identityMotor;  // motor_kernels.h (the same glsl::mat2x4 type)
 

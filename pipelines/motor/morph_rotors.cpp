@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "pipelines/gl/frame_vertices.h"
 #include "pipelines/motor/companion.h"
-#include "pipelines/motor/motor_vertices.h"
 
 namespace mb::motor {
 
@@ -17,7 +17,7 @@ std::vector<float> packRotorDeltas(const Primitive& p, gl::MorphLayout& layout) 
       float* o = &out[(t * nv + v) * 7];
       if (v < d.positions.size()) o[0] = d.positions[v].x, o[1] = d.positions[v].y, o[2] = d.positions[v].z;
       if (d.normals.empty() && d.tangents.empty()) continue;
-      const VertexFrame f = vertexFrame(p, v);
+      const gl::VertexFrame f = gl::vertexFrame(p, v);
       const glm::vec3 n = f.normal + (v < d.normals.size() ? d.normals[v] : glm::vec3(0.0f));
       const glm::vec3 tan = glm::vec3(f.tangent) + (v < d.tangents.size() ? d.tangents[v] : glm::vec3(0.0f));
       const glm::vec4 base = companion::encodeTangentRotor(f.normal, glm::vec3(f.tangent), f.tangent.w).rotor;

@@ -79,12 +79,13 @@ PipelineEntry motorEntry() {
   variants.push_back({.stage = kVs, .defines = with(morphDefines(), {{"MB_MORPH_ROTOR", ""}}), .draws = "rigid, morph rotor (b)",
                       .kernels = {"morphRotorBlend", "motorRigidVertex", kClip},
                       .note = std::string(kMorphSums) + " (position, rotor deltas: 7 floats)"});
-  return motorFamilyEntry("motor", makeMotorPipeline, 36, {.fetched = "float frame"}, std::move(variants));
+  return motorFamilyEntry("motor", [] { return makeMotorPipeline({}); }, 36, {.fetched = "float frame"},
+                          std::move(variants));
 }
 
 PipelineEntry motorQEntry() {
-  return motorFamilyEntry("motor_q", makeMotorQPipeline, 28, {.fetched = "SNORM16: the vertex fetch"},
-                          rotorVariants());
+  return motorFamilyEntry("motor_q", [] { return makeMotorPipeline({.name = "motor_q", .quantizedFrame = true}); },
+                          28, {.fetched = "SNORM16: the vertex fetch"}, rotorVariants());
 }
 
 // Rigid draws fold the mesh's cube into their transform, skinned and instanced draws run
@@ -110,7 +111,8 @@ PipelineEntry motorCEntry() {
       {.stage = kVs, .defines = with(c, {{"MB_INSTANCED", ""}, {"MB_SCALE_FALLBACK", ""}}),
        .draws = "scaled fallback, instanced", .kernels = {kCube, "motorCompactScaledVertex", kClip}, .note = kInstanced},
   };
-  return motorFamilyEntry("motor_c", makeMotorCPipeline, 16, {.decodeKernel = "compactRotor"}, std::move(v));
+  return motorFamilyEntry("motor_c", [] { return makeMotorPipeline({.name = "motor_c", .compact = true}); }, 16,
+                          {.decodeKernel = "compactRotor"}, std::move(v));
 }
 
 // motor_c's bytes, the world tangent rotor as the varying (forward.fs unpacks it per fragment:
@@ -141,7 +143,8 @@ PipelineEntry motorCFEntry() {
       {.stage = kVs, .defines = with(scaled, {{"MB_INSTANCED", ""}}), .draws = "scaled fallback, instanced",
        .kernels = {kCube, "compactSignedRotor", "motorScaledRotorVertex", kClip}, .note = kInstanced},
   };
-  return motorFamilyEntry("motor_cf", makeMotorCFPipeline, 16,
+  auto make = [] { return makeMotorPipeline({.name = "motor_cf", .compact = true, .fragmentRotor = true}); };
+  return motorFamilyEntry("motor_cf", make, 16,
                           {.decodeKernel = "compactSignedRotor", .perFragment = true}, std::move(v));
 }
 

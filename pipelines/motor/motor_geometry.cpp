@@ -35,13 +35,13 @@ void MotorGeometry::upload(const Scene& scene, const MotorVariant& variant, Morp
     };
     vertices.uploadPacked(scene, packed, quantizedAttributes(), stats);
   } else {
-    auto interleave = [&stats](const Primitive& p) {
+    auto format = [&stats](const Primitive& p) {
       VertexStream stream = interleaveVertices(p);
       stats.zeroScalarFrames += stream.zeroScalarFrames;
       stats.biasedFrames += countBiasedFrames(stream.data);
-      return std::move(stream.data);
+      return gl::VertexFormat{std::move(stream.data), {{0, 3}, {1, 4}, {2, 2}}};  // position, tangent rotor, uv0
     };
-    vertices.upload(scene, interleave, {3, 4, 2}, stats);  // position, tangent rotor, uv0
+    vertices.upload(scene, format, stats);
   }
   uploadMorph(scene, packer, stats);
 }

@@ -12,27 +12,12 @@
 // uniformBytesPerFrame. Skinning: SkinSpace::WorldPalette by default (joint motors in world
 // space, no node motor per vertex); Reference on request (configure()): the paper's form,
 // joint motors relative to the mesh node and gp(u_World, blend) per vertex (MB_SKIN_REFERENCE).
-// Instanced nodes (Node::instances): the same motor and scale per instance, node world
-// composed with the instance's motor per frame (MB_INSTANCED, pipelines/gl/instance_stream.h:
-// 9 floats, 36 bytes; 11 on the scale fallback, PipelineStats::scaleFallbackInstances).
-// motor_c (MotorVariant::compact): the 16-byte vertex (motor_c_vertices.h, MB_COMPACT);
-// rigid draws upload the world motor composed with a translation by scale * the primitive's
-// cube center and the scale times its extent, so no dequantisation runs per vertex; skinned and
-// instanced draws upload the cube as u_Dequant.
-// motor_cf (MotorVariant::fragmentRotor): motor_c's bytes with the rotors signed per triangle
-// (rotor_signs.h: vertices split where needed, PipelineStats::rotorSplitVertices), the world
-// tangent rotor passed to forward.fs instead of a normal and a tangent; the joint palette put in
-// one hemisphere so neighbouring vertices blend to rotors of one sign; draws on the scale
-// fallback extract per vertex (a non-uniform scale is no rotation).
+// Instanced nodes, motor_c, motor_cf and morph targets: README.md.
 // The exact fallback (linear_fallback.h, variant MB_LINEAR_FALLBACK): a rigid draw
 // whose node is general (its world may not be a similarity) gets its exact world's polar
 // factors, a motor and a mat3 (+ its normal matrix); a skin whose palette is not one common
 // positive scale gets a motor and 24 floats per joint (binding 1). Counted in PipelineStats
 // (linearFallbackDraws, skinFallbackDraws, skinFallbackJoints, fallbackVertices).
-// Morph targets: a draw (instanced too) whose node has a non-zero weight uses the
-// MB_MORPH variant of its program; motor and motor_q morph the rotor by PipelineOptions::morph
-// (Frame by default: exact; morph_rotors.h), motor_c and motor_cf by the frame method on their
-// decoded rotor, their morphing draws dequantising per vertex (the cube is never folded).
 // Vertices and morph deltas: motor_geometry.h.
 #include "pipelines/motor/motor_pipeline.h"
 
@@ -246,9 +231,10 @@ void MotorPipeline::render(const View& view) {
     const int paletteIndex = paletteOf(pose_.palettes, g, patch, d.node);
     const motor::JointPalette* palette = paletteIndex < 0 ? nullptr : &pose_.palettes[size_t(paletteIndex)];
     const GLuint paletteBuffer = paletteIndex < 0 ? 0 : palettes_[size_t(paletteIndex)];
+    const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
     if (palette ? palette->fallback : (!patch && rig_.general[size_t(d.node)])) {
-      drawLinear(d, g, prim, palette, paletteBuffer, bindMorph(useProgram(palette ? DrawKind::Skinned : DrawKind::Rigid, ScaleForm::Linear, morph)), transformBytes,
-                 transformScaleBytes);
+      drawLinear(d, g, prim, palette, paletteBuffer, bindMorph(useProgram(kind, ScaleForm::Linear, morph)),
+                 transformBytes, transformScaleBytes);
       transforms += palette ? 0 : 1;
       continue;
     }
@@ -264,25 +250,27 @@ void MotorPipeline::render(const View& view) {
       scale = drawScale(world->scale * cube.extent, world->residual);
       world = &folded;
     }
-    const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
+    // glTF: a skinned mesh ignores its node's transform, so with a world-space palette only
+    // rigid draws upload one; the reference form composes it per vertex.
+    const bool transform = !palette || referenceSkin_;
+    // The draw's uniforms and material; returns the bytes of its u_Scale.
+    auto setDraw = [&](const gl::Program& p, const glm::vec3& s, bool perAxis) {
+      if (dequantise) setDequant(p, d);
+      if (transform) gl::uniform4fv(p.uniform("u_World"), 2, &world->motor[0][0], transformBytes);
+      uint64_t bytes = 0;
+      if (perAxis)
+        gl::uniform3f(p.uniform("u_Scale"), &s[0], bytes);
+      else
+        gl::uniform1f(p.uniform("u_Scale"), s.x, bytes);
+      stats_.uniformBytesPerFrame += bytes;
+      bindMaterial(p, prim);
+      return bytes;
+    };
     const gl::Program& program = patch ? setFrame(*programs.patch[scale.fallback])
                                        : bindMorph(useProgram(kind, formOf(scale.fallback), morph));
     if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
-    if (dequantise) setDequant(program, d);
-    // glTF: a skinned mesh ignores its node's transform, so with a world-space palette only
-    // rigid draws upload one; the reference form composes it per vertex.
-    if (!palette || referenceSkin_) {
-      gl::uniform4fv(program.uniform("u_World"), 2, &world->motor[0][0], transformBytes);
-      ++transforms;
-    }
-    uint64_t scaleBytes = 0;
-    if (scale.fallback)
-      gl::uniform3f(program.uniform("u_Scale"), &scale.value[0], scaleBytes);
-    else
-      gl::uniform1f(program.uniform("u_Scale"), scale.value.x, scaleBytes);
-    stats_.uniformBytesPerFrame += scaleBytes;
-    if (!palette || referenceSkin_) transformScaleBytes += scaleBytes;  // draws with a transform
-    bindMaterial(program, prim);
+    const uint64_t scaleBytes = setDraw(program, scale.value, scale.fallback);
+    if (transform) ++transforms, transformScaleBytes += scaleBytes;  // draws with a transform
     gl::setWinding(scale.mirrored);
     // motor_cf: triangles whose corner rotors cannot share a hemisphere (rotor_signs.h) are drawn
     // after the others by the per-vertex extraction of its scale-fallback program (motor_c's way).
@@ -293,14 +281,7 @@ void MotorPipeline::render(const View& view) {
       continue;
     }
     stats_.drawnVertices += g.drawRange(0, GLsizei(interpolable));
-    const gl::Program& extract = bindMorph(useProgram(kind, ScaleForm::PerAxis, morph));
-    if (dequantise) setDequant(extract, d);
-    if (!palette || referenceSkin_) gl::uniform4fv(extract.uniform("u_World"), 2, &world->motor[0][0], transformBytes);
-    uint64_t extractBytes = 0;
-    const glm::vec3 uniformScale(scale.value.x);
-    gl::uniform3f(extract.uniform("u_Scale"), &uniformScale[0], extractBytes);
-    stats_.uniformBytesPerFrame += extractBytes;
-    bindMaterial(extract, prim);
+    setDraw(bindMorph(useProgram(kind, ScaleForm::PerAxis, morph)), glm::vec3(scale.value.x), true);
     g.drawRange(GLsizei(interpolable), g.indexCount - GLsizei(interpolable));
     stats_.draws += 2;
   }
@@ -410,16 +391,6 @@ void MotorPipeline::release() {
 
 std::unique_ptr<Pipeline> makeMotorPipeline(const MotorVariant& variant) {
   return std::make_unique<MotorPipeline>(variant);
-}
-std::unique_ptr<Pipeline> makeMotorPipeline() { return makeMotorPipeline(MotorVariant{}); }
-std::unique_ptr<Pipeline> makeMotorQPipeline() {
-  return makeMotorPipeline(MotorVariant{.name = "motor_q", .quantizedFrame = true});
-}
-std::unique_ptr<Pipeline> makeMotorCPipeline() {
-  return makeMotorPipeline(MotorVariant{.name = "motor_c", .compact = true});
-}
-std::unique_ptr<Pipeline> makeMotorCFPipeline() {
-  return makeMotorPipeline(MotorVariant{.name = "motor_cf", .compact = true, .fragmentRotor = true});
 }
 
 }  // namespace mb

@@ -17,11 +17,7 @@ struct MotorVariant {
 };
 
 std::unique_ptr<Pipeline> makeMotorPipeline(const MotorVariant& variant);
-std::unique_ptr<Pipeline> makeMotorPipeline();   // the paper's form
-std::unique_ptr<Pipeline> makeMotorQPipeline();  // motor_q: quantized frame
-std::unique_ptr<Pipeline> makeMotorCPipeline();  // motor_c: 16-byte vertex, 4-byte rotor
-std::unique_ptr<Pipeline> makeMotorCFPipeline();  // motor_cf: motor_c, rotor to the fragment shader
-// Their registry entries (motor_entry.cpp).
+// The registry entries of motor, motor_q, motor_c and motor_cf (motor_entry.cpp).
 PipelineEntry motorEntry();
 PipelineEntry motorQEntry();
 PipelineEntry motorCEntry();

@@ -15,18 +15,8 @@ struct VertexStream {
   int zeroScalarFrames = 0;   // frames whose rotor scalar part was exactly 0 (see companion.h)
 };
 
-// The frame of vertex v as interleaveVertices encodes it (absent streams filled as below).
-struct VertexFrame {
-  glm::vec3 normal;
-  glm::vec4 tangent;  // xyz + handedness w
-};
-VertexFrame vertexFrame(const Primitive& p, size_t v);
-
 // Interleaves `p`'s streams, converting (normal, tangent, w) to tangent rotors
-// (companion::encodeTangentRotor). Absent streams are filled as the matrix pipeline fills them,
-// so both pipelines shade the same frames: a missing tangent becomes
-// normalize(cross(n, |n.x| < 0.9 ? x : y)) with w = +1, missing uv0 (0, 0), a missing normal
-// (0, 0, 1).
+// (companion::encodeTangentRotor). Frames as gl::vertexFrame fills them, a missing uv0 (0, 0).
 VertexStream interleaveVertices(const Primitive& p);
 
 }  // namespace mb::motor
