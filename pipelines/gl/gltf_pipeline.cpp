@@ -1,12 +1,5 @@
 #include "pipelines/gl/gltf_pipeline.h"
 
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
-
-#include "pipelines/gl/upload.h"
-#include "pipelines/scene/camera_rule.h"
-#include "pipelines/scene/transform.h"
-
 namespace mb::gl {
 
 Result<CachedProgram*> ProgramCache::get(const std::string& vs, const std::string& fs, const Defines& defines,
@@ -32,9 +25,7 @@ Status GltfPipeline::beginPrepare(const Scene& scene, size_t bytesPerJoint) {
   stats_ = PipelineStats{};
   if (Status fits = checkPaletteSize(scene, bytesPerJoint); !fits) return fits;
   if (Status tex = textures_.upload(scene, stats_.textureBytes); !tex) return tex;
-  if (hasPatches(scene))
-    if (Status up = patches_.upload(scene, stats_); !up) return up;
-  return {};
+  return patches_.upload(scene, stats_);  // nothing for a scene without patches
 }
 
 Status GltfPipeline::endPrepare(const Scene& scene) {
@@ -53,24 +44,6 @@ CachedProgram* GltfPipeline::link(Status& status, const std::string& vs, const D
     return nullptr;
   }
   return *program;
-}
-
-std::vector<std::vector<glm::mat4>> GltfPipeline::instanceMatrices(const Scene& scene) {
-  std::vector<std::vector<glm::mat4>> matrices(scene.nodes.size());
-  for (size_t n = 0; n < scene.nodes.size(); ++n)
-    for (const TRS& t : scene.nodes[n].instances) matrices[n].push_back(trsMatrix(t));
-  return matrices;
-}
-
-void GltfPipeline::setMatrixFrame(const Program& p, const glm::mat4& viewProjection, const View& view) {
-  uniformMatrix4(p.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection), stats_.uniformBytesPerFrame);
-  setFrameUniforms(p, view, stats_.uniformBytesPerFrame);
-}
-
-glm::mat4 GltfPipeline::viewProjection(const View& view) {
-  const glm::mat4 viewMatrix =
-      glm::inverse(glm::translate(glm::mat4(1.0f), view.eye) * glm::mat4_cast(view.orientation));
-  return projectionMatrix(view) * viewMatrix;
 }
 
 void GltfPipeline::beginFrame() {

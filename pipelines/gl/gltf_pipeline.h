@@ -48,10 +48,6 @@ private:
   std::map<std::string, std::unique_ptr<CachedProgram>> programs_;
 };
 
-// How a draw reaches world space; the rows of a pipeline's program table.
-enum DrawKind { kRigid = 0, kSkinned = 1, kInstanced = 2, kDrawKinds = 3 };
-using ProgramTable = CachedProgram* [kDrawKinds][2];  // [kind][frame variant]
-
 class GltfPipeline : public Pipeline {
 public:
   void timeUpdatePhases(bool on) override { timePhases_ = on; }
@@ -68,36 +64,9 @@ protected:
   // The program of a define set (see ProgramCache::get); nullptr with `status` set on failure.
   CachedProgram* link(Status& status, const std::string& vs, const Defines& defines,
                       const std::vector<StorageBlock>& blocks = {});
-  // Links `vs` for each draw kind (instanced only for scenes with instances) and each of its
-  // `frames` frame variants (0, 1: MB_NO_TANGENT where the pipeline has it) with
-  // defines(kind, frame), into `plain`; for scenes with morph targets the same with the morph
-  // defines into `morphing`. Skinned programs read `jointBlock` at binding 0.
-  template <class DefinesOf>
-  Status linkTable(const Scene& scene, const std::string& vs, int frames, const char* jointBlock,
-                   DefinesOf definesOf, ProgramTable& plain, ProgramTable& morphing) {
-    Status linked;
-    for (int kind = 0; kind < (hasInstances(scene) ? 3 : 2); ++kind)
-      for (int frame = 0; frame < frames; ++frame) {
-        Defines defines = definesOf(kind, frame);
-        std::vector<StorageBlock> blocks;
-        if (kind == kSkinned) blocks.push_back({jointBlock, 0});
-        if (!(plain[kind][frame] = link(linked, vs, defines, blocks))) return linked;
-        if (!maxMorphTargets(scene)) continue;
-        for (const auto& d : morphDefines(scene)) defines.push_back(d);
-        blocks.push_back({"MorphDeltas", kMorphBinding});
-        if (!(morphing[kind][frame] = link(linked, vs, defines, blocks))) return linked;
-      }
-    return linked;
-  }
-  // Per node: the TRS matrix of each of its instances.
-  static std::vector<std::vector<glm::mat4>> instanceMatrices(const Scene& scene);
-
   // render()'s shared start: the per-frame counters reset, a new frame for the programs'
   // per-frame uniforms.
   void beginFrame();
-  // The matrix families' per-frame uniforms: u_ViewProjectionMatrix and the shared ones.
-  void setMatrixFrame(const Program& p, const glm::mat4& viewProjection, const View& view);
-  static glm::mat4 viewProjection(const View& view);
   // Makes `p` current; the first time in a frame, setFrame(program) uploads its per-frame
   // uniforms (a program the frame does not use uploads nothing, so uniformBytesPerFrame
   // counts what a frame needs).
@@ -135,16 +104,6 @@ protected:
   void drawCounted(const DrawItem& d, const GpuPrimitive& g, bool patch) {
     stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
     ++stats_.draws;
-  }
-  // The instance groups of a node drawn with the bound program and material, each
-  // with its winding (key 1: mirrored), counted.
-  void drawInstanceGroups(const GpuPrimitive& g, const std::vector<InstanceGroup>& groups,
-                          const InstanceLayout& layout) {
-    for (const InstanceGroup& group : groups) {
-      setWinding(group.key == 1);
-      stats_.drawnVertices += instances_.draw(g, group, layout);
-      ++stats_.draws;
-    }
   }
   const Primitive& primitiveOf(const DrawItem& d) const {
     return scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];

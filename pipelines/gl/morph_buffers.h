@@ -51,7 +51,6 @@ public:
   bool active(const DrawItem& d) const;
   // Binds d's deltas and sets the MB_MORPH uniforms of `program` (counted in `uniformBytes`).
   void bind(const Program& program, const DrawItem& d, uint64_t& uniformBytes) const;
-  const std::vector<float>& weights(int node) const { return weights_[size_t(node)]; }
   void release();
 
 private:

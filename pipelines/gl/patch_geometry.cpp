@@ -36,8 +36,7 @@ Status PatchGeometry::upload(const Scene& scene, PipelineStats& stats) {
                         std::to_string(kMaxPatchLevel));
   GLint maxTexels = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-  level_ = scene.patchLevel;
-  RefinementPattern pattern = refinementPattern(level_);
+  RefinementPattern pattern = refinementPattern(scene.patchLevel);
   glGenVertexArrays(1, &vao_);
   glBindVertexArray(vao_);
   uv_ = createBuffer(GL_ARRAY_BUFFER, pattern.uv, stats.patchPatternBytes);
@@ -99,7 +98,6 @@ void PatchGeometry::release() {
   if (vao_) glDeleteVertexArrays(1, &vao_);
   vao_ = uv_ = indices_ = 0;
   indexCount_ = 0;
-  level_ = 0;
 }
 
 }  // namespace mb::gl

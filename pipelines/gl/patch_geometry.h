@@ -49,7 +49,6 @@ public:
   // Binds the pattern and the primitive's control points and draws all its patches. The
   // caller's patch program must be in use with its uniforms set. Returns the vertices drawn.
   uint64_t draw(const DrawItem& d) const;
-  int level() const { return level_; }
   void release();
 
 private:
@@ -61,7 +60,6 @@ private:
   GLuint vao_ = 0, uv_ = 0, indices_ = 0;
   GLsizei indexCount_ = 0;
   GLsizei patternVertices_ = 0;  // (level + 1)^2
-  int level_ = 0;
 };
 
 }  // namespace mb::gl

@@ -15,11 +15,20 @@
 #pragma once
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
 #include "pipelines/gl/frame_vertices.h"
 #include "pipelines/gl/gltf_pipeline.h"
 #include "pipelines/gl/morph_buffers.h"
+#include "pipelines/gl/upload.h"
+#include "pipelines/scene/transform.h"
 
 namespace mb::gl {
+
+// How a draw reaches world space; the rows of a pipeline's program table.
+enum DrawKind { kRigid = 0, kSkinned = 1, kInstanced = 2, kDrawKinds = 3 };
+using ProgramTable = CachedProgram* [kDrawKinds][2];  // [kind][frame variant]
 
 // What the per-draw uniforms of a frame added up to: the transforms, the bytes of their
 // matrices and of what a transform adds beside them (affine's mirror float).
@@ -33,12 +42,12 @@ public:
   Status prepare(const Scene& scene) override {
     release();
     if (Status begun = beginPrepare(scene, Self::kBytesPerJoint); !begun) return begun;
-    auto defines = [this](int kind, int frame) { return self().defines(kind, frame); };
-    Status linked = linkTable(scene, Self::kVertexShader, self().frames(), Self::kJointBlock, defines,
-                              programs_, morphing_);
+    Status linked = linkTable(scene);
     if (linked && hasPatches(scene)) patch_ = link(linked, Self::kPatchShader, {});
     if (!linked) return linked;
-    instanceMatrices_ = instanceMatrices(scene);
+    instanceMatrices_.assign(scene.nodes.size(), {});
+    for (size_t n = 0; n < scene.nodes.size(); ++n)
+      for (const TRS& t : scene.nodes[n].instances) instanceMatrices_[n].push_back(trsMatrix(t));
     auto t0 = Clock::now();
     if (Status converted = self().convert(scene); !converted) return converted;
     morph_.upload(scene, packFrameDeltas, stats_);
@@ -62,10 +71,16 @@ public:
     beginFrame();
     uploadPalettes(self().palettes().size(), [this](size_t i) { return self().uploadPalette(i); });
     streamInstances();
-    const glm::mat4 viewProjection = GltfPipeline::viewProjection(view);
+    const glm::mat4 viewMatrix =
+        glm::inverse(glm::translate(glm::mat4(1.0f), view.eye) * glm::mat4_cast(view.orientation));
+    const glm::mat4 viewProjection = projectionMatrix(view) * viewMatrix;
     beginDraws();
     auto useProgram = [&](CachedProgram* p) -> const Program& {
-      return use(*p, [&](const Program& program) { setMatrixFrame(program, viewProjection, view); });
+      return use(*p, [&](const Program& program) {
+        uniformMatrix4(program.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
+                       stats_.uniformBytesPerFrame);
+        setFrameUniforms(program, view, stats_.uniformBytesPerFrame);
+      });
     };
     TransformCounters counters;
     for (const DrawItem& d : draws_) {
@@ -85,7 +100,11 @@ public:
       if (morph) morph_.bind(program, d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
       if (!groups.empty()) {
         bindMaterial(program, primitiveOf(d));
-        drawInstanceGroups(g, groups, Self::kInstanceLayout);
+        for (const InstanceGroup& group : groups) {  // key 1: mirrored
+          setWinding(group.key == 1);
+          stats_.drawnVertices += instances_.draw(g, group, Self::kInstanceLayout);
+          ++stats_.draws;
+        }
         continue;
       }
       const bool mirrored = self().drawUniforms(program, d, palette, patch, morph, counters);
@@ -111,6 +130,26 @@ protected:
 
 private:
   Self& self() { return static_cast<Self&>(*this); }
+
+  // Links kVertexShader for each draw kind (instanced only for scenes with instances) and each of
+  // its frames() frame variants (0, 1: MB_NO_TANGENT where the pipeline has it) with
+  // defines(kind, frame), into programs_; for scenes with morph targets the same with the morph
+  // defines into morphing_. Skinned programs read kJointBlock at binding 0.
+  Status linkTable(const Scene& scene) {
+    Status linked;
+    for (int kind = 0; kind < (hasInstances(scene) ? 3 : 2); ++kind)
+      for (int frame = 0; frame < self().frames(); ++frame) {
+        Defines defines = self().defines(kind, frame);
+        std::vector<StorageBlock> blocks;
+        if (kind == kSkinned) blocks.push_back({Self::kJointBlock, 0});
+        if (!(programs_[kind][frame] = link(linked, Self::kVertexShader, defines, blocks))) return linked;
+        if (!maxMorphTargets(scene)) continue;
+        for (const auto& d : morphDefines(scene)) defines.push_back(d);
+        blocks.push_back({"MorphDeltas", kMorphBinding});
+        if (!(morphing_[kind][frame] = link(linked, Self::kVertexShader, defines, blocks))) return linked;
+      }
+    return linked;
+  }
 
   // Per instance: model = node world * instance, written by the pipeline, which returns its
   // key (1: mirrored, the winding flips).

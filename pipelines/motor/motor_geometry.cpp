@@ -43,10 +43,6 @@ void MotorGeometry::upload(const Scene& scene, const MotorVariant& variant, Morp
     };
     vertices.upload(scene, format, stats);
   }
-  uploadMorph(scene, packer, stats);
-}
-
-void MotorGeometry::uploadMorph(const Scene& scene, const gl::MorphPacker& packer, PipelineStats& stats) {
   if (gl::maxMorphTargets(scene)) morph.upload(scene, packer, stats);
 }
 
@@ -78,7 +74,7 @@ void MotorGeometry::uploadSignedCompact(const Scene& scene, const gl::MorphPacke
     for (const Primitive& p : mesh.primitives) bytes[&p] = std::move(streams[next++]);
   vertices.uploadPacked(split, [&bytes](const Primitive& p) { return std::move(bytes.at(&p)); },
                         compact::attributes(), stats);
-  uploadMorph(split, packer, stats);
+  if (gl::maxMorphTargets(split)) morph.upload(split, packer, stats);
 }
 
 void MotorGeometry::release() {

@@ -27,7 +27,6 @@ struct MotorGeometry {
 
 private:
   void uploadSignedCompact(const Scene& scene, const gl::MorphPacker& packer, PipelineStats& stats);
-  void uploadMorph(const Scene& scene, const gl::MorphPacker& packer, PipelineStats& stats);
 };
 
 }  // namespace mb::motor
