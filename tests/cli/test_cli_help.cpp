@@ -19,7 +19,7 @@ using mb::cli_test::contains;
 using mb::cli_test::quoted;
 using mb::cli_test::runMb;
 
-const std::vector<std::string> kCommands = {"bench", "check", "claims", "compare", "diff", "drift", "inspect",
+const std::vector<std::string> kCommands = {"accuracy", "bench", "check", "claims", "compare", "diff", "drift", "inspect",
                                             "merge", "ops",   "render", "report",  "scenes", "survey", "time"};
 
 // The --options of `text` (each once, in order).
