@@ -11,11 +11,11 @@
 #include <filesystem>
 #include <optional>
 
-#include "harness/claims/corpus_models.h"
-#include "harness/claims/corpus_stats.h"
 #include "harness/options/args.h"
 #include "harness/options/shard.h"
 #include "harness/process/progress.h"
+#include "harness/report/corpus_models.h"
+#include "harness/report/corpus_stats.h"
 #include "harness/report/report_inputs.h"
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
@@ -188,7 +188,7 @@ int runInspect(const std::vector<std::string>& argv) {
     if (summary && !scene) std::fprintf(stderr, "motorbench inspect: FAILED %s\n", scene.error().c_str());  // names the file
     files.push_back(mb::toJson(stats.back()));
     files.back()["input"] = file;  // the argument (a built-in's "file" is its generated name)
-    if (scene) files.back()["contentHash"] = mb::claims::contentHash(*scene);  // duplicate models
+    if (scene) files.back()["contentHash"] = mb::report::contentHash(*scene);  // duplicate models
     if (scene) describeMotorFallbacks(*scene, files.back(), summary);
     if (scene) describeViews(*scene, files.back(), summary);
     failed += !scene;
@@ -197,17 +197,19 @@ int runInspect(const std::vector<std::string>& argv) {
   progress.reset();  // its last line before the aggregate
   nlohmann::json aggregate = mb::aggregateJson(stats);
   // By source kind when the files' folder has a MANIFEST.tsv (../shared/corpus-graph), and files
-  // of the same content (harness/claims/corpus_models.h): claims counts each model once.
-  mb::claims::addCorpusAggregates(files, aggregate);
+  // of the same content (harness/report/corpus_models.h): the figures count each model once.
+  mb::report::addCorpusAggregates(files, aggregate);
   if (stats.size() > 1 || summary) printAggregate(aggregate);
   if (stats.size() > 1 || summary)
     std::printf("  models      %s (%zu duplicate groups; the same content hash: see \"models\" in --json)\n",
-                mb::claims::filesAndModels(mb::claims::distinctModels(files)).c_str(),
+                mb::report::filesAndModels(mb::report::distinctModels(files)).c_str(),
                 aggregate["models"]["duplicateGroups"].get<size_t>());
   if (auto path = args.get("json")) {
     // replace: error messages may quote file bytes or paths that are not UTF-8.
     const nlohmann::json shardJson = {{"index", shard.index}, {"count", shard.count}, {"inputs", all}};
-    const std::string text = nlohmann::json{{"files", files}, {"aggregate", aggregate}, {"shard", shardJson}}.dump(
+    const nlohmann::json doc = {{"files", files}, {"aggregate", aggregate}, {"shard", shardJson},
+                                {"figures", mb::report::scaleFigures(files)}};
+    const std::string text = doc.dump(
                                  2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
     if (mb::Status w = mb::writeTextFile(*path, text); !w) {
       std::fprintf(stderr, "motorbench inspect: %s\n", w.error().c_str());

@@ -11,11 +11,11 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/check/check_merge.h"
-#include "harness/claims/corpus_stats.h"
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
 #include "harness/options/args.h"
 #include "harness/options/shard.h"
+#include "harness/report/corpus_stats.h"
 #include "harness/report/report_merge.h"
 #include "harness/render/render_frame.h"
 #include "pipelines/scene/scene_stats.h"
@@ -52,9 +52,10 @@ int mergeInspectRuns(const std::vector<std::string>& inputs, const std::string& 
     files.push_back(it->second);
   }
   json aggregate = aggregateFileJson(files);
-  claims::addCorpusAggregates(files, aggregate);  // as inspect adds them
+  report::addCorpusAggregates(files, aggregate);  // as inspect adds them
   json merged = {{"files", files}, {"aggregate", aggregate},
-                 {"shard", {{"count", parts[0].count}, {"inputs", parts[0].inputs}, {"merged", inputs}}}};
+                 {"shard", {{"count", parts[0].count}, {"inputs", parts[0].inputs}, {"merged", inputs}}},
+                 {"figures", report::scaleFigures(files)}};
   if (!writeTextFile(out, merged.dump(2, ' ', false, json::error_handler_t::replace) + "\n"))
     return fail(out + ": cannot write the merged JSON file");
   std::printf("merge: %d shard(s), %zu file(s), %d failed -> %s\n", parts[0].count, files.size(), failed, out.c_str());
