@@ -28,6 +28,19 @@ struct PackedAttribute {
   }
 };
 
+// The 28-byte vertex of qtangent and motor_q: position float3, the frame (quaternion or rotor)
+// int16x4 SNORM, uv0 float2.
+inline std::vector<PackedAttribute> snormFrameAttributes() {
+  return {{3, GL_FLOAT, false}, {4, GL_SHORT, true}, {2, GL_FLOAT, false}};
+}
+
+// A primitive's packed vertices and what their frame encoding counted.
+struct PackedStream {
+  std::vector<uint8_t> bytes;
+  int zeroScalarFrames = 0;  // tangent rotors whose scalar part was exactly 0 (before any bias)
+  int biasedFrames = 0;      // frames whose scalar (rotor) or w (quaternion) the bias rule raised
+};
+
 // float -> int16 SNORM: round(clamp(v, -1, 1) * 32767). The decoder (GL 4.2+ and
 // fromSnorm16) gives max(c / 32767, -1), so +-1/32767 survives exactly and -0 becomes +0.
 inline int16_t snorm16(float v) {

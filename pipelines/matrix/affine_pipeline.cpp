@@ -1,18 +1,14 @@
-// The affine pipelines' GL side. Per draw: u_ModelMatrix (mat4x3, 12 floats) and
-// u_NormalMatrix (mat3, 9 floats) for rigid draws (PipelineStats::floatsPerTransform = 21),
-// u_Mirror (sign(det), in uniformBytesPerFrame) for every draw; skinned draws read the joint
-// palette (12 floats per joint, stored as rows) and upload no transform, as glTF ignores a
-// skinned node's own transform. The projection matrix is built once per frame. Bezier patch
-// primitives are drawn rigidly by their node with affine_patch.vs (the same per-draw uniforms).
-// Instanced nodes (Node::instances): the same model, normal matrix and mirror per instance,
-// node world * instance composed per frame (MB_INSTANCED, pipelines/gl/instance_stream.h:
-// 22 floats, 88 bytes per instance). matrix_c (FrameFormat::Compact): rigid draws
-// get the mesh's quantisation cube folded into u_ModelMatrix (model * translate * scale);
-// skinned and instanced draws get it as u_Dequant (a vec4 per draw, in uniformBytesPerFrame).
-// Morph targets: a draw (instanced too) whose node has a non-zero weight uses the
-// MB_MORPH variant of its program, the glTF deltas as matrix does (morph_buffers.h); qtangent,
-// hybrid and matrix_c decode their frame and add the deltas to it (affine.vs), and matrix_c's
-// morphing rigid draws dequantise per vertex instead of folding the cube into the model.
+// The affine pipelines' GL side. Per draw: u_ModelMatrix (mat4x3, 12 floats) and u_NormalMatrix
+// (mat3, 9 floats) for rigid draws (PipelineStats::floatsPerTransform = 21), u_Mirror
+// (sign(det), in uniformBytesPerFrame) for every draw; skinned draws read the joint palette (12
+// floats per joint, stored as rows) and upload no transform, as glTF ignores a skinned node's
+// own transform. The projection matrix is built once per frame. Bezier patch primitives are
+// drawn rigidly by their node with affine_patch.vs (the same per-draw uniforms). Instanced
+// nodes and matrix_c's quantisation cube: README.md. Morph targets: a draw (instanced too)
+// whose node has a non-zero weight uses the MB_MORPH variant of its program, the glTF deltas as
+// matrix does (morph_buffers.h); qtangent, hybrid and matrix_c decode their frame and add the
+// deltas to it (affine.vs), and matrix_c's morphing rigid draws dequantise per vertex instead
+// of folding the cube into the model.
 #include "pipelines/matrix/affine_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -118,11 +114,11 @@ Status AffinePipeline::convert(const Scene& scene) {
   if (Status posed = poser_->prepare(scene); !posed) return posed;
   if (format_ == FrameFormat::QTangent) {
     auto interleave = [this](const Primitive& p) {
-      PackedStream s = interleaveQTangent(p);
+      gl::PackedStream s = interleaveQTangent(p);
       stats_.biasedFrames += s.biasedFrames;
       return std::move(s.bytes);
     };
-    geometry_.uploadPacked(scene, interleave, qtangentAttributes(), stats_);
+    geometry_.uploadPacked(scene, interleave, gl::snormFrameAttributes(), stats_);
   } else if (format_ == FrameFormat::Compact) {
     cubes_ = compact::primitiveCubes(scene);
     geometry_.uploadPacked(scene, interleaveCompact, compact::attributes(), stats_);

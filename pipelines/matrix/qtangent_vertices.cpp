@@ -27,14 +27,10 @@ QTangent encodeQTangent(const glm::vec3& normal, const glm::vec3& tangent, float
   return out;
 }
 
-std::vector<gl::PackedAttribute> qtangentAttributes() {
-  return {{3, GL_FLOAT, false}, {4, GL_SHORT, true}, {2, GL_FLOAT, false}};
-}
-
-PackedStream interleaveQTangent(const Primitive& p) {
+gl::PackedStream interleaveQTangent(const Primitive& p) {
   const std::vector<float> f = interleaveFullFrame(p);  // pos 3, normal 3, tangent 4, uv 2
   const size_t stride = size_t(kFloatsPerVertex);
-  PackedStream out;
+  gl::PackedStream out;
   out.bytes.reserve(p.positions.size() * 28);
   for (size_t v = 0; v + stride <= f.size(); v += stride) {
     const float* x = &f[v];

@@ -25,16 +25,8 @@ struct QTangent {
 // (Gram-Schmidt: the normal wins); w < 0 means handedness -1.
 QTangent encodeQTangent(const glm::vec3& normal, const glm::vec3& tangent, float w);
 
-struct PackedStream {
-  std::vector<uint8_t> bytes;  // 28 bytes per vertex
-  int biasedFrames = 0;
-};
-
-// The vertex formats of the stream, in location order.
-std::vector<gl::PackedAttribute> qtangentAttributes();
-
-// `p`'s vertices in the QTangent layout. Absent streams are filled exactly as the matrix
+// `p`'s vertices in the QTangent layout (gl::snormFrameAttributes, 28 bytes per vertex). Absent streams are filled exactly as the matrix
 // pipelines fill them (affine_vertices.h), so all shade the same frames.
-PackedStream interleaveQTangent(const Primitive& p);
+gl::PackedStream interleaveQTangent(const Primitive& p);
 
 }  // namespace mb::affine

@@ -10,7 +10,7 @@
 
 namespace mb::motor {
 
-CompactStream interleaveCompact(const Primitive& p) {
+gl::PackedStream interleaveCompact(const Primitive& p) {
   // The paper's rotors: handedness in the sign of the scalar part, kept non-zero by the bias
   // rule (so signbit reads it); the compact word carries it as its own bit.
   const VertexStream f = interleaveVertices(p);

@@ -4,18 +4,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "pipelines/gl/packed_vertices.h"
 #include "pipelines/scene/scene.h"
 
 namespace mb::motor {
 
-struct CompactStream {
-  std::vector<uint8_t> bytes;  // 16 bytes per vertex
-  int zeroScalarFrames = 0;    // rotor scalar exactly 0 (kept by the reflection bit, not a sign)
-};
-
 // `p`'s vertices in motor_c's layout, quantised in compact::positionCube(p.positions); frames
-// and absent streams as motor::interleaveVertices fills them.
-CompactStream interleaveCompact(const Primitive& p);
+// and absent streams as motor::interleaveVertices fills them. A rotor scalar of exactly 0
+// (zeroScalarFrames) is kept by the reflection bit, not a sign.
+gl::PackedStream interleaveCompact(const Primitive& p);
 
 }  // namespace mb::motor
 

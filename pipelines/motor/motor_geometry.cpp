@@ -21,19 +21,19 @@ void MotorGeometry::upload(const Scene& scene, const MotorVariant& variant, Morp
   }
   if (variant.compact) {
     auto packed = [&stats](const Primitive& p) {
-      CompactStream stream = interleaveCompact(p);
+      gl::PackedStream stream = interleaveCompact(p);
       stats.zeroScalarFrames += stream.zeroScalarFrames;
       return std::move(stream.bytes);
     };
     vertices.uploadPacked(scene, packed, compact::attributes(), stats);
   } else if (variant.quantizedFrame) {
     auto packed = [&stats](const Primitive& p) {
-      PackedStream stream = interleaveQuantized(p);
+      gl::PackedStream stream = interleaveQuantized(p);
       stats.zeroScalarFrames += stream.zeroScalarFrames;
       stats.biasedFrames += stream.biasedFrames;
       return std::move(stream.bytes);
     };
-    vertices.uploadPacked(scene, packed, quantizedAttributes(), stats);
+    vertices.uploadPacked(scene, packed, gl::snormFrameAttributes(), stats);
   } else {
     auto format = [&stats](const Primitive& p) {
       VertexStream stream = interleaveVertices(p);

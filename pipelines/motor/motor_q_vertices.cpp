@@ -22,16 +22,12 @@ int countBiasedFrames(const std::vector<float>& motorVertices) {
   return n;
 }
 
-std::vector<gl::PackedAttribute> quantizedAttributes() {
-  return {{3, GL_FLOAT, false}, {4, GL_SHORT, true}, {2, GL_FLOAT, false}};
-}
-
-PackedStream interleaveQuantized(const Primitive& p) {
+gl::PackedStream interleaveQuantized(const Primitive& p) {
   // motor::interleaveVertices encodes with the bias rule already (companion::encodeTangentRotor);
   // a biased rotor's scalar is exactly +-kMinTangentScalar.
   const VertexStream f = interleaveVertices(p);
   const size_t stride = size_t(kFloatsPerVertex);
-  PackedStream out;
+  gl::PackedStream out;
   out.zeroScalarFrames = f.zeroScalarFrames;
   out.biasedFrames = countBiasedFrames(f.data);
   out.bytes.reserve(p.positions.size() * 28);

@@ -5,7 +5,7 @@
 // signed zero when that scalar is exactly 0 (axis-aligned frames turned half a turn). An
 // integer has no -0: SNORM16 stores -0 as 0, which decodes as +1. The bias rule
 // (companion::encodeTangentRotor: |s| >= 1/32767, one SNORM16 step) keeps the sign in a
-// non-zero value that survives quantisation; PackedStream counts the frames it changed.
+// non-zero value that survives quantisation; gl::PackedStream counts the frames it changed.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -17,12 +17,6 @@
 
 namespace mb::motor {
 
-struct PackedStream {
-  std::vector<uint8_t> bytes;  // 28 bytes per vertex
-  int zeroScalarFrames = 0;    // rotor scalar exactly 0 before the bias
-  int biasedFrames = 0;        // |s| raised to 1/32767 by the bias rule
-};
-
 // The rotor as int16 SNORM, component order (s, e23, e31, e12).
 void quantizeRotor(const glm::vec4& rotor, int16_t out[4]);
 // What the GPU reads back from quantizeRotor's values (GL's SNORM rule).
@@ -32,10 +26,8 @@ glm::vec4 dequantizeRotor(const int16_t q[4]);
 // is exactly +-1/32767, where companion::encodeTangentRotor puts a clamped one).
 int countBiasedFrames(const std::vector<float>& motorVertices);
 
-// The vertex formats of the stream, in location order.
-std::vector<gl::PackedAttribute> quantizedAttributes();
-
-// `p`'s vertices in motor_q's layout (frames filled as motor::interleaveVertices fills them).
-PackedStream interleaveQuantized(const Primitive& p);
+// `p`'s vertices in motor_q's layout (gl::snormFrameAttributes, 28 bytes per vertex; frames
+// filled as motor::interleaveVertices fills them).
+gl::PackedStream interleaveQuantized(const Primitive& p);
 
 }  // namespace mb::motor

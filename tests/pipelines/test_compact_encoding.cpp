@@ -176,7 +176,7 @@ TEST(CompactEncoding, NormalTorusZeroScalarFramesCorrectInFourBytes) {
   for (const Mesh& mesh : scene->meshes)
     for (const Primitive& p : mesh.primitives) {
       if (p.tangents.empty()) continue;
-      const motor::CompactStream stream = motor::interleaveCompact(p);
+      const gl::PackedStream stream = motor::interleaveCompact(p);
       const motor::VertexStream floats = motor::interleaveVertices(p);
       ASSERT_EQ(stream.bytes.size(), p.positions.size() * compact::kVertexBytes);
       zeroScalar += stream.zeroScalarFrames;
