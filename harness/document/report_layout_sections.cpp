@@ -107,7 +107,10 @@ void statisticsSection(Document& d, const json& r) {
                   {str(f.value("loaded", json()), "0") + " (" + str(f.value("failed", json()), "0") + ")"}});
   for (const auto& [label, key] : std::vector<std::pair<std::string, const char*>>{
            {"skinned", "filesSkinned"}, {"normal-mapped", "filesNormalMapped"},
-           {"animated scale", "filesWithAnimatedScale"}, {"non-uniform scale", "filesWithNonUniformScale"},
+           // A scale channel whose keys never change sets a scale and animates nothing: counted apart.
+           {"scale keys changing the scale", "filesWithChangingScale"},
+           {"scale channels with constant keys only", "filesWithOnlyConstantScaleChannels"},
+           {"non-uniform scale", "filesWithNonUniformScale"},
            {"non-uniform scale only on leaves", "filesWithNonUniformOnlyOnLeaves"},
            {"negative scale (mirror)", "filesWithNegativeScale"}, {"loader fallbacks", "filesWithFallbacks"},
            {"unsupported features", "filesWithUnsupported"}})
