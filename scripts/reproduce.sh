@@ -4,24 +4,27 @@
 # pairs), report.json/.md/.html + images/ + plots/ (motorbench report: the built-in scenes, the
 # curved s3_tiling / h3_tiling included, skinned_tube with its bend and candy_wrapper
 # animations), isa.json/.txt (motorbench isa: AMD ISA statistics from RADV's null device),
-# morph.json/.txt (motorbench morph), claims.md/.json (motorbench claims). Budget: under 15
-# minutes on 2 cores.
+# morph.json/.txt (motorbench morph), accuracy.json/.txt (motorbench accuracy: handedness rule,
+# blend vs slerp, skin volume, quaternion bits, camera drift), claims.md/.json (motorbench
+# claims). Budget: under 15 minutes on 2 cores.
 #
 # Committed inputs (results/inputs.json: each one's source folder, its files' sha256, the commit
 # and date that measured it; scripts/committed_inputs.py): figures over corpora a clone does not
 # have. Where the folder is present they are measured again and their provenance recorded; where
 # it is absent (every user's clone) the committed files are read as they are and never deleted,
 # so that a clone's run gives the committed results:
-#   corpus/ (+ corpus/skin-volumes.json)  the report over ../shared/corpus (real glTF files) and the
-#                                 skinned-file volumes claims measures on it
+#   corpus/ (+ corpus/accuracy.json, corpus/skin-volumes.json)  the report over ../shared/corpus
+#                                 (real glTF files) and the skinned-file volumes measured on it
+#                                 (motorbench accuracy --skinned-files; claims --skin-volumes-out)
 #   corpus-graph.json             motorbench inspect over ../shared/corpus-graph (~960 scene graphs)
 #   morph-corpus-wide.json        motorbench morph over ../shared/corpus-wide's morph files, counted
 #                                 into morph.json with morph_torus
 #
 # Progress on stderr: each step with its number, the seconds so far and an estimate of what is
 # left (this machine's last run, build/reproduce-steps.tsv, else the figures of a fresh 2-core
-# run). The steps that time nothing (ops, isa, inspect) run side by side; a timed step (bench,
-# report: frame timing) always runs alone, so nothing else competes for the cores it measures on.
+# run). The steps that time nothing (ops, isa, morph, accuracy, inspect) run side by side; a
+# timed step (bench, report: frame timing) always runs alone, so nothing else competes for the
+# cores it measures on.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=scripts/build_fallback.sh
@@ -106,10 +109,13 @@ rm -rf "$OUT/images" "$OUT/plots"
 
 # Untimed: op counts (with the SPIR-V compiles), the AMD ISA statistics and the corpus scene
 # graphs, side by side; each writes its own files. A line every 30 s says which are still running.
-step untimed "ops -> $OUT/ops.json, isa -> $OUT/isa.json, morph -> $OUT/morph.json, inspect -> $OUT/corpus-graph.json (side by side: none is timed)"
+step untimed "ops -> $OUT/ops.json, isa -> $OUT/isa.json, morph -> $OUT/morph.json, accuracy -> $OUT/accuracy.json, inspect -> $OUT/corpus-graph.json (side by side: none is timed)"
 declare -A UNTIMED=()
 "$MB" ops --json "$OUT/ops.json" > "$OUT/ops.txt" & UNTIMED[ops]=$!
 "$MB" isa --json "$OUT/isa.json" > "$OUT/isa.txt" & UNTIMED[isa]=$!
+# The accuracy figures of the built-in scenes (handedness rule, blend vs slerp, candy wrapper,
+# quaternion bits, camera drift over 10^6 steps): a few seconds of CPU.
+"$MB" accuracy --json "$OUT/accuracy.json" > "$OUT/accuracy.txt" & UNTIMED[accuracy]=$!
 # Morph methods' image and byte cost: morph_torus measured now, with corpus-wide's
 # morph files: measured into $MORPH_WIDE where that folder is, else its committed figures.
 # (Exit 1 of morph or inspect: some file failed, recorded in their JSON with the reason.)
@@ -154,6 +160,9 @@ step report "report: built-in scenes -> $OUT/report.html (frame timing: alone)"
 if [ -d "$CORPUS" ]; then
   step corpus "report: $CORPUS -> $OUT/corpus/report.html (frame timing: alone)"
   "$MB" report "$CORPUS" -o "$OUT/corpus" --bench-json "$OUT/bench.json" --isa-json "$OUT/isa.json" --jobs "$JOBS"
+  # The skin volumes (LBS vs motor) of its skinned files: skinning_volume_file's figures. (Exit 1:
+  # a file failed to load, recorded in the JSON with the reason.)
+  "$MB" accuracy --skinned-files "$CORPUS" --json "$OUT/corpus/accuracy.json" > /dev/null || { rc=$?; [ "$rc" -eq 1 ] || exit "$rc"; }
 else
   step corpus "report: no $CORPUS: $OUT/corpus/ is the committed input, read as it is"
 fi
@@ -173,8 +182,8 @@ SKIN=(--skin-volumes "$SKIN_VOLUMES")
 # The provenance of each committed input measured again in this run.
 if [ -d "$CORPUS" ]; then
   "${INPUTS[@]}" record "$OUT" corpus --source "$CORPUS" --outputs corpus/ \
-    --what "motorbench report over ../shared/corpus (real glTF files: thumbnails, diffs, memory, ops, frame timing) and the skinned-file volumes claims judges skinning_volume_file on (corpus/skin-volumes.json)" \
-    --command "motorbench report $CORPUS -o $OUT/corpus --bench-json $OUT/bench.json --isa-json $OUT/isa.json; motorbench claims --corpus $CORPUS --skin-volumes-out $SKIN_VOLUMES"
+    --what "motorbench report over ../shared/corpus (real glTF files: thumbnails, diffs, memory, ops, frame timing) and the skinned-file volumes skinning_volume_file is judged on (corpus/accuracy.json; corpus/skin-volumes.json, the same measurement as claims --skin-volumes-out keeps it)" \
+    --command "motorbench report $CORPUS -o $OUT/corpus --bench-json $OUT/bench.json --isa-json $OUT/isa.json; motorbench accuracy --skinned-files $CORPUS --json $OUT/corpus/accuracy.json; motorbench claims --corpus $CORPUS --skin-volumes-out $SKIN_VOLUMES"
 fi
 if [ -d "$GRAPHS" ]; then
   "${INPUTS[@]}" record "$OUT" corpus-graph --source "$GRAPHS" --outputs corpus-graph.json \
@@ -213,6 +222,9 @@ Written by \`scripts/reproduce.sh\` in $(($(date +%s) - start)) s on $(nproc) co
 - [morph.txt](morph.txt) ([morph.json](morph.json)): \`motorbench morph\`, the image and byte
   cost of each morph method: morph_torus measured, with the corpus-wide files of
   [morph-corpus-wide.json](morph-corpus-wide.json) (below).
+- [accuracy.txt](accuracy.txt) ([accuracy.json](accuracy.json)): \`motorbench accuracy\`, the
+  paper's handedness rule, motor blend vs slerp, the candy wrapper's LBS vs motor skin, the
+  quaternion's bits and the curved camera's drift, as named figures.
 
 ## Committed inputs ([inputs.json](inputs.json))
 
