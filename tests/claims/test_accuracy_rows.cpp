@@ -4,6 +4,9 @@
 // "not measurable" with its reason, and the baseline rows print their figures.
 #include <gtest/gtest.h>
 
+#include <map>
+
+#include "harness/accuracy/blending.h"
 #include "harness/accuracy/drift.h"
 #include "harness/accuracy/handedness.h"
 #include "harness/accuracy/skinning.h"
@@ -98,4 +101,29 @@ TEST(AccuracyRows, DriftRowIsABaselineOverEverySpaceAndSide) {
   EXPECT_EQ(d.verdict, claims::Verdict::Baseline) << d.verdictText;
   EXPECT_EQ(d.measuredValue.size(), 12u) << d.measuredValue.dump();
   EXPECT_NE(d.measured.find("H3 motor ops per renormalisation 24 ops"), std::string::npos) << d.measured;
+}
+
+// Every figure an accuracy row reads is one the accuracy room writes: the built-in run's figures
+// (from hand-made measurements: the names do not depend on the values) and the skinned-file run's.
+TEST(AccuracyRows, EveryReferenceIsAFigureTheRoomWrites) {
+  json builtin = json::object(), files = json::object(), details = json::object();
+  accuracy::putHandednessFigures({{"textured_box", 24, 8, 8, 8, 8, 1.3}}, builtin, details);
+  accuracy::RingRadii r;
+  r.measured = true, r.lbs = 0.5, r.motor = 1, r.times = 1;
+  accuracy::putCandyWrapperFigures(r, builtin, details);
+  const json side = {{"raw", 1}, {"renormalised", 1}, {"renormOps", json::object()}};
+  accuracy::putDriftFigures({{"steps", 1}, {"spaces", {{{"space", "S3"}, {"matrix", side}, {"motor", side}},
+                                                       {{"space", "H3"}, {"matrix", side}, {"motor", side}}}}},
+                            builtin, details);
+  accuracy::putSkinnedFileFigures({{"folder", "f"}, {"files", json::array()}, {"meshes", json::array()}}, files, details);
+  accuracy::putBlendFigures({}, builtin, details);  // the names, not measured
+  const std::map<std::string, const json*> sources = {{"accuracy", &builtin}, {"corpus_accuracy", &files}};
+  for (const claims::ClaimRow& row : claims::accuracyRows())
+    for (const claims::Evidence& e : row.evidence)
+      for (const std::string& ref : {e.value, e.over}) {
+        if (ref.empty()) continue;
+        const std::string source = ref.substr(0, ref.find(':')), name = ref.substr(ref.find(':') + 1);
+        ASSERT_TRUE(sources.count(source)) << row.id << ": " << ref;
+        EXPECT_TRUE(sources.at(source)->contains(name)) << row.id << ": " << ref << " is no figure of " << source;
+      }
 }

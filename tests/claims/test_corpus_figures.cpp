@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <map>
 
 #include "harness/claims/evaluate.h"
@@ -422,4 +423,31 @@ TEST(CorpusStatistics, GraphOnlyFilesHashTheirGraph) {
   EXPECT_EQ(meshHash.size(), 16u);
   EXPECT_EQ(report::contentHash(meshed(animated({1, 2, 1}, {2, 2, 3}), kTriangle[2])), meshHash);
   EXPECT_NE(report::contentHash(meshed(s, {0, 2, 0})), meshHash);
+}
+
+// Every figure a corpus row reads is one inspect writes (graphs:) or one the corpus report holds
+// (corpus:, results/corpus/report.json as committed: a report's figures, harness/document).
+TEST(CorpusStatistics, EveryReferenceIsAFigureOfItsSource) {
+  FileStats st = computeFileStats(twoNodes({1, 1, 1}, {1, 1, 1}));
+  st.file = "corpus/a.glb";
+  const json graphs = report::scaleFigures(json::array({toJson(st)}));
+  // The committed report, searched as text for each figure's key (parsing it costs 0.3 s).
+  std::ifstream in(fs::path(MB_SOURCE_DIR) / "results" / "corpus" / "report.json");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string corpus = text.str();
+  for (const claims::ClaimRow& row : claims::corpusRows())
+    for (const claims::Evidence& e : row.evidence)
+      for (const std::string& ref : {e.value, e.over}) {
+        if (ref.empty()) continue;
+        const std::string source = ref.substr(0, ref.find(':')), name = ref.substr(ref.find(':') + 1);
+        if (source == "graphs") {
+          EXPECT_TRUE(graphs.contains(name)) << row.id << ": " << ref;
+        } else if (source == "corpus") {
+          if (corpus.empty()) continue;  // a checkout without results/
+          EXPECT_NE(corpus.find("\"" + name + "\": {"), std::string::npos) << row.id << ": " << ref;
+        } else {
+          ADD_FAILURE() << row.id << " reads " << ref << ": not a corpus source";
+        }
+      }
 }
