@@ -47,6 +47,9 @@ struct Rule {
   RuleKind kind = RuleKind::Baseline;
   double limit = 0;  // AtMost / AtLeast: the bound (1.10 for "motor / matrix within 10 %")
   int minN = 0;      // an evidence whose figure aggregates fewer samples carries no verdict
+  // A frame time stands for a GPU only when a GPU measured it: one from a CPU rasterizer is
+  // left out (it is printed, not judged).
+  bool gpuTimed = false;
 };
 
 // How several kinds of evidence combine (printed with the verdict): every kind passes:

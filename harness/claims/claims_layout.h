@@ -6,18 +6,20 @@
 
 #include "harness/claims/claims_model.h"
 #include "harness/document/report_model.h"
+#include "harness/document/scope_ladder.h"
 
 namespace mb::claims {
 
 inline constexpr const char* kClaimsSchema = "motorbench-claims/1";
 
-// {"schema", "machine", "sources", "scope", "counts": {verdict: n} (every row), "paperCounts" (the
+// {"schema", "machine", "sources", "counts": {verdict: n} (every row), "paperCounts" (the
 // paper's claims), "ownCounts" (our own rows: baselines, vs strongest, curved, not claimed),
-// "claims": [toJson(claim)...]}. `scope`: {"cpu": cpuScope(...), "frameTimeDevice": label}.
+// "claims": [toJson(claim)...]}.
 nlohmann::json claimsJson(const std::vector<Claim>& claims, const nlohmann::json& machine,
-                          const nlohmann::json& sources, const nlohmann::json& scope = nullptr);
+                          const nlohmann::json& sources);
 
-// One verdict line per claim, then a table per section (paper | measured | how | verdict).
-report::Document claimsDocument(const nlohmann::json& claims);
+// The tally, the scope ladder, one verdict line per claim, then a table per section (claim |
+// scope | paper | measured | rule | verdict | note).
+report::Document claimsDocument(const nlohmann::json& claims, const std::vector<report::LadderCell>& ladder);
 
 }  // namespace mb::claims

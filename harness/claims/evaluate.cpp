@@ -46,6 +46,8 @@ std::optional<figures::Figure> read(const FigureSet& set, const std::string& ref
   if (!std::isfinite(f->value)) r.leftOut = ref + " not measured" + (f->why.empty() ? "" : ": " + f->why);
   else if (f->disturbed.is_object() && f->disturbed.value("disturbed", false))
     r.leftOut = ref + " disturbed (" + f->disturbed.value("reason", std::string("load")) + ")";
+  else if (rule.gpuTimed && f->device.find("CPU rasterizer") != std::string::npos)
+    r.leftOut = ref + " was timed on a CPU rasterizer, which cannot stand for a GPU";
   else if (rule.minN > 0 && f->n > 0 && f->n < rule.minN)
     r.leftOut = ref + ": n = " + std::to_string(f->n) + " < " + std::to_string(rule.minN) + ", too few to carry a verdict";
   return f;
@@ -211,7 +213,7 @@ Claim evaluate(const ClaimRow& row, const FigureSet& set) {
   static const char* const kKinds[] = {"paper_columns", "paper_columns_or_listing", "paper_columns_undefined",
                                        "at_most", "at_least", "baseline"};
   c.declared = {{"scope", {{"stage", row.scope.stage}, {"baseline", row.scope.baseline}, {"content", row.scope.content}}},
-                {"rule", {{"kind", kKinds[int(row.rule.kind)]}, {"limit", row.rule.limit}, {"minN", row.rule.minN},
+                {"rule", {{"kind", kKinds[int(row.rule.kind)]}, {"limit", row.rule.limit}, {"minN", row.rule.minN}, {"gpuTimed", row.rule.gpuTimed},
                           {"text", ruleText(row)}}},
                 {"evidence", evidence}, {"note", row.note.empty() ? json() : json(row.note)}};
   return c;

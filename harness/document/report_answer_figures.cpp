@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "harness/document/report_document.h"
+#include "harness/document/report_figures.h"
 #include "harness/document/report_format.h"
 #include "harness/document/report_isa.h"
 #include "harness/document/report_kind_figures.h"
@@ -209,6 +210,7 @@ void addAnswerFigures(json& r) {
   fetchFigures(out, r, pipes, base);
   isaFigures(out, r, pipes);
   imageFigures(out, r, pipes);
+  curvedFigures(out, r["scenes"].get<std::vector<json>>(), at(r, {"curved", "drift"}), frameTimeDevice(at(r, {"machine"})));
   addKindFigures(r);
   json families = json::object();
   for (const std::string& p : pipes) families[p] = pipelineFamily(p);

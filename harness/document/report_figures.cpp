@@ -180,6 +180,49 @@ void kernelFigures(json& out, const json& kernels, const std::string& cpu) {
 
 }  // namespace
 
+// Curved space (the non-Euclidean scenes and the drift run): per scene the frame-time ratio
+// motor / matrix and each pipeline's floats per instance; per space and side the drift.
+void curvedFigures(json& out, const std::vector<json>& scenes, const json& drift, const std::string& device) {
+  for (const json& s : scenes) {
+    if (euclidean(s)) continue;
+    const std::string id = s.value("id", "");
+    const json& timing = s.value("timing", json());
+    if (timing.is_object()) {
+      figures::put(out, sceneFrameTimeFigure("curved.frame_time." + id + ".motor_over_matrix", timing, device));
+      if (timing.contains("vertexBound"))
+        figures::put(out, sceneFrameTimeFigure("curved.frame_time_vertex_bound." + id + ".motor_over_matrix", timing["vertexBound"], device));
+    }
+    const json pipelines = s.value("pipelines", json::object());
+    for (const auto& [p, v] : pipelines.items()) {
+      Figure f;
+      f.name = "curved.floats_per_instance." + id + "." + p;
+      f.value = numberOrNaN(at(v, {"memory", "floatsPerTransform"}));
+      f.unit = "floats";
+      f.n = 1;
+      f.statistic = "counted: instance-buffer floats uploaded per instance";
+      f.scope = id;
+      f.device = "buffers uploaded (PipelineStats)";
+      f.definition = "PipelineStats.floatsPerTransform (instance bytes / instances / 4) of " + p;
+      figures::put(out, f);
+    }
+  }
+  for (const json& space : at(drift, {"spaces"}).is_array() ? drift["spaces"] : json::array())
+    for (const char* side : {"matrix", "motor"})
+      for (const char* kind : {"raw", "renormalised"}) {
+        Figure f;
+        f.name = "curved.drift." + space.value("space", "") + "." + side + "." + kind;
+        f.value = numberOrNaN(at(space, {side, kind}));
+        f.unit = "";
+        f.n = drift.value("steps", 0);
+        f.statistic = "measured: error after every step, in float";
+        f.scope = space.value("space", "") + " camera, " + drift.value("step", "");
+        f.device = "CPU, float";
+        f.definition = std::string(side) + (kind == std::string("raw") ? " without renormalisation" : " renormalised every step") +
+                       ": distance of the accumulated transform from the exact one";
+        figures::put(out, f);
+      }
+}
+
 double opsTotal(const json& ops) {
   if (!ops.is_object()) return std::nan("");
   double t = 0;

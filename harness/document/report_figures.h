@@ -32,4 +32,11 @@ nlohmann::json reportFigures(const nlohmann::json& machine, const nlohmann::json
                              const std::vector<nlohmann::json>& scenes, const nlohmann::json& ops,
                              const nlohmann::json& kernels);
 
+// Adds the curved-space figures to `out`: per non-Euclidean scene curved.frame_time.<scene>.
+// motor_over_matrix (and _vertex_bound) and curved.floats_per_instance.<scene>.<pipeline>; per
+// space and side of `drift` (report.json's curved.drift) curved.drift.<space>.<side>.raw /
+// .renormalised.
+void curvedFigures(nlohmann::json& out, const std::vector<nlohmann::json>& scenes, const nlohmann::json& drift,
+                   const std::string& device);
+
 }  // namespace mb::report

@@ -19,6 +19,8 @@ namespace mb::report {
 
 // "As cheap": motor / baseline at most this (the paper calls 89 vs 85 ops "nearly identical").
 inline constexpr double kAsCheapLimit = 1.10;
+// "Cheaper" or "a gain": motor / baseline at most this (beyond the same 10 % tolerance).
+inline constexpr double kCheaperLimit = 0.90;
 
 struct LadderCell {
   std::string stage, measure, baseline;  // baseline: "paper" or "strongest"
