@@ -12,6 +12,9 @@ listing `pipelines` does not admit `pipelines/matrix`). Includes outside every r
 (tests/, system headers) are not checked here. So the picture in README.md's Architecture
 section -- pipelines never include harness; shaders include nothing else -- stays true.
 
+A room that measures nothing (MEASURES_NOTHING: harness/claims) may not include a room that
+measures or renders, even where its README lists it.
+
 Usage: scripts/check_include_rooms.py [REPO_ROOT]   exit 0 when clean, 1 with one line per
 violation ("file:line: room X includes Y (room Z); X may include: ...").
 """
@@ -23,6 +26,19 @@ SOURCE_SUFFIXES = (".h", ".cpp", ".inl", ".inc", ".glsl", ".vs", ".fs")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 RULE = re.compile(r"^May include:\s*(.*)$", re.MULTILINE)
 CHECKED_TOPS = ("harness", "kernels", "pipelines", "shaders")
+# Rooms that measure nothing: they judge or print figures other rooms measured, so no include
+# may reach a room that measures or renders (a prefix covers its sub-rooms), whatever their
+# README lists.
+MEASURES_NOTHING = {
+    "harness/claims": ("harness/ops", "harness/isa", "harness/render", "harness/timing", "harness/bench",
+                       "harness/report", "harness/accuracy", "harness/process", "harness/check", "pipelines",
+                       "shaders"),
+}
+
+
+def measuring(target, forbidden):
+    """Whether room `target` is one of `forbidden` or below one of them."""
+    return any(target == f or target.startswith(f + "/") for f in forbidden)
 
 
 def read_rooms(root):
@@ -71,6 +87,10 @@ def violations(root):
                         if not m:
                             continue
                         target = room_of(os.path.dirname(m.group(1)), rooms)
+                        if target is not None and measuring(target, MEASURES_NOTHING.get(own, ())):
+                            found.append(f"{path}:{line_no}: room {own} measures nothing but includes "
+                                         f"{m.group(1)} (room {target}, which measures or renders)")
+                            continue
                         if target is None or target == own or target in rooms[own]:
                             continue
                         allowed = ", ".join(sorted(rooms[own])) or "nothing"

@@ -13,9 +13,8 @@
 # have. Where the folder is present they are measured again and their provenance recorded; where
 # it is absent (every user's clone) the committed files are read as they are and never deleted,
 # so that a clone's run gives the committed results:
-#   corpus/ (+ corpus/accuracy.json, corpus/skin-volumes.json)  the report over ../shared/corpus
-#                                 (real glTF files) and the skinned-file volumes measured on it
-#                                 (motorbench accuracy --skinned-files; claims --skin-volumes-out)
+#   corpus/ (+ corpus/accuracy.json)  the report over ../shared/corpus (real glTF files) and the
+#                                 skinned-file volumes measured on it (motorbench accuracy --skinned-files)
 #   corpus-graph.json             motorbench inspect over ../shared/corpus-graph (~960 scene graphs)
 #   morph-corpus-wide.json        motorbench morph over ../shared/corpus-wide's morph files, counted
 #                                 into morph.json with morph_torus
@@ -45,7 +44,6 @@ CORPUS=../shared/corpus
 GRAPHS=../shared/corpus-graph
 WIDE=../shared/corpus-wide
 MORPH_WIDE=$OUT/morph-corpus-wide.json
-SKIN_VOLUMES=$OUT/corpus/skin-volumes.json
 INPUTS=(python3 scripts/committed_inputs.py)
 JOBS=$(nproc)
 STEPS=(setup build untimed bench report corpus claims)
@@ -167,23 +165,13 @@ else
   step corpus "report: no $CORPUS: $OUT/corpus/ is the committed input, read as it is"
 fi
 
-step claims "claims -> $OUT/claims.md"
-SCENE_GRAPHS=()
-[ -s "$OUT/corpus-graph.json" ] && SCENE_GRAPHS=(--scene-graphs "$OUT/corpus-graph.json")
-ISA=()
-[ -s "$OUT/isa.json" ] && ISA=(--isa "$OUT/isa.json")
-CORPUS_REPORT=()
-[ -s "$OUT/corpus/report.json" ] && CORPUS_REPORT=(--corpus-report "$OUT/corpus/report.json")
-# The skinned real-file volumes: measured over $CORPUS and kept, or the kept figures read.
-SKIN=(--skin-volumes "$SKIN_VOLUMES")
-[ -d "$CORPUS" ] && SKIN=(--skin-volumes-out "$SKIN_VOLUMES")
-"$MB" claims --report "$OUT/report.json" --bench-json "$OUT/bench.json" --corpus "$CORPUS" "${SKIN[@]}" \
-  "${SCENE_GRAPHS[@]}" "${ISA[@]}" "${CORPUS_REPORT[@]}" -o "$OUT/claims.md" --json "$OUT/claims.json"
+step claims "claims -> $OUT/claims.md (the declared rows judged on the figures above; nothing measured)"
+"$MB" claims --results "$OUT" -o "$OUT/claims.md" --json "$OUT/claims.json"
 # The provenance of each committed input measured again in this run.
 if [ -d "$CORPUS" ]; then
   "${INPUTS[@]}" record "$OUT" corpus --source "$CORPUS" --outputs corpus/ \
-    --what "motorbench report over ../shared/corpus (real glTF files: thumbnails, diffs, memory, ops, frame timing) and the skinned-file volumes skinning_volume_file is judged on (corpus/accuracy.json; corpus/skin-volumes.json, the same measurement as claims --skin-volumes-out keeps it)" \
-    --command "motorbench report $CORPUS -o $OUT/corpus --bench-json $OUT/bench.json --isa-json $OUT/isa.json; motorbench accuracy --skinned-files $CORPUS --json $OUT/corpus/accuracy.json; motorbench claims --corpus $CORPUS --skin-volumes-out $SKIN_VOLUMES"
+    --what "motorbench report over ../shared/corpus (real glTF files: thumbnails, diffs, memory, ops, frame timing) and the skinned-file volumes skinning_volume_file is judged on (corpus/accuracy.json)" \
+    --command "motorbench report $CORPUS -o $OUT/corpus --bench-json $OUT/bench.json --isa-json $OUT/isa.json; motorbench accuracy --skinned-files $CORPUS --json $OUT/corpus/accuracy.json"
 fi
 if [ -d "$GRAPHS" ]; then
   "${INPUTS[@]}" record "$OUT" corpus-graph --source "$GRAPHS" --outputs corpus-graph.json \

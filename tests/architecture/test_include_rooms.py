@@ -72,6 +72,22 @@ class IncludeRooms(unittest.TestCase):
             self.assertTrue(found[0].startswith("harness/render/frame.cpp:2: room harness/render includes harness/cli/command.h"), found)
             self.assertTrue(found[1].startswith("shaders/x.glsl:1: room shaders includes"), found)
 
+    def test_claims_including_a_measuring_room_fails_even_when_listed(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            copy_rules(tmp)
+            readme = os.path.join(tmp, "harness", "claims", "README.md")
+            with open(readme, encoding="utf-8") as f:
+                text = f.read()
+            with open(readme, "w", encoding="utf-8") as f:  # the README admits it: still refused
+                f.write(text.replace("May include: `harness/figures`", "May include: `harness/ops`, `harness/figures`"))
+            write(tmp, "harness/claims/rows.cpp", '#include "harness/figures/figure.h"\n#include "harness/ops/op_count.h"\n')
+            write(tmp, "harness/claims/other.cpp", '#include "pipelines/motor/motor_rig.h"\n')
+            found = check_include_rooms.violations(tmp)
+            self.assertEqual(len(found), 2, found)
+            self.assertTrue(found[0].startswith("harness/claims/other.cpp:1: room harness/claims measures nothing"), found)
+            self.assertTrue(found[1].startswith("harness/claims/rows.cpp:2: room harness/claims measures nothing but "
+                                                "includes harness/ops/op_count.h"), found)
+
 
 if __name__ == "__main__":
     unittest.main()
