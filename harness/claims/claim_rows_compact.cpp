@@ -98,6 +98,11 @@ std::vector<ClaimRow> curved() {
            {"S3 vertex-bound", "report:curved.frame_time_vertex_bound.s3_tiling.motor_over_matrix", ""},
            {"H3 vertex-bound", "report:curved.frame_time_vertex_bound.h3_tiling.motor_over_matrix", ""}},
           {RuleKind::Baseline}, "a CPU rasterizer's frame time says nothing about a GPU"),
+      row("curved_update", s, "the curved scenes' CPU update (sampling, hierarchy, instances)", "curved",
+          {"CPU update", "the 4x4 matrix of the same space", "s3_tiling and h3_tiling"}, "-",
+          {pair("S3 motor / matrix", "report:update.s3_tiling.", "s3_motor", "s3_matrix"),
+           pair("H3 motor / matrix", "report:update.h3_tiling.", "h3_motor", "h3_matrix")},
+          {RuleKind::Baseline}),
   };
 }
 

@@ -37,7 +37,7 @@ std::string scopeText(const json& cl) {
   return s(sc["stage"]) + "; baseline: " + s(sc["baseline"]) + "; content: " + s(sc["content"]);
 }
 
-report::Document claimsDocument(const json& j, const std::vector<report::LadderCell>& ladder) {
+report::Document claimsDocument(const json& j) {
   report::Document d;
   d.title = "Claims of \"Look, Ma, No Matrices!\" judged by motorbench";
   json m = j.contains("machine") && j["machine"].is_object() ? j["machine"] : json::object();
@@ -56,7 +56,6 @@ report::Document claimsDocument(const json& j, const std::vector<report::LadderC
   d.paragraph("The paper's claims (each quotes its sentence or table row; a table row printed as a pair, such as "
               "gp_rt / gp_tr, counts once): " + tally(j["paperCounts"]) + ". Our own rows (marked with their kind): " +
               tally(j["ownCounts"]) + ", " + s(j["ownCounts"]["baseline"]) + " baselines.");
-  report::scopeLadderSection(d, ladder);
   d.heading(2, "Verdicts", "verdicts");
   std::vector<std::string> lines;
   for (const json& cl : j["claims"])

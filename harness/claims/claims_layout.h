@@ -6,7 +6,6 @@
 
 #include "harness/claims/claims_model.h"
 #include "harness/document/report_model.h"
-#include "harness/document/scope_ladder.h"
 
 namespace mb::claims {
 
@@ -18,8 +17,9 @@ inline constexpr const char* kClaimsSchema = "motorbench-claims/1";
 nlohmann::json claimsJson(const std::vector<Claim>& claims, const nlohmann::json& machine,
                           const nlohmann::json& sources);
 
-// The tally, the scope ladder, one verdict line per claim, then a table per section (claim |
-// scope | paper | measured | rule | verdict | note).
-report::Document claimsDocument(const nlohmann::json& claims, const std::vector<report::LadderCell>& ladder);
+// The tally, one verdict line per claim, then a table per section (claim | scope | paper |
+// measured | rule | verdict | note). The answer block with the scope ladder goes before it
+// (report_answer.h).
+report::Document claimsDocument(const nlohmann::json& claims);
 
 }  // namespace mb::claims

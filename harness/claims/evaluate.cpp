@@ -163,7 +163,9 @@ void judge(Claim& c, const ClaimRow& row, const std::vector<Reading>& rs) {
   const std::string rule = " under the rule (" + ruleText(row) + ")";
   if (pass == judged.size()) {
     c.verdict = Verdict::Reproduced;
-    c.verdictText = judged.size() == 1 ? "reproduced" : "reproduced: every kind of evidence passes" + rule;
+    c.verdictText = judged.size() == 1 && isColumnRule(row.rule.kind)
+                        ? "reproduced"
+                        : "reproduced: " + std::string(judged.size() == 1 ? "" : "every kind passes ") + passing + rule;
   } else if (pass == 0) {
     c.verdict = row.rule.kind == RuleKind::PaperColumnsUndefined ? Verdict::Inconclusive : Verdict::Differs;
     c.verdictText = (c.verdict == Verdict::Inconclusive ? "inconclusive: " : "differs: ") + failing +

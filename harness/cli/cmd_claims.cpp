@@ -75,13 +75,12 @@ int runClaims(const std::vector<std::string>& argv) {
   }
   const std::vector<claims::Claim> all = claims::evaluateAll(claims::claimTable(), figures);
   json j = claims::claimsJson(all, report.value("machine", json()), sources);
-  const std::vector<report::LadderCell> ladder = report::scopeLadder(report);
-  j["scopeLadder"] = report::ladderJson(ladder);
+  j["scopeLadder"] = report::ladderJson(report::scopeLadder(report));
   j["answer"] = report::answerJson(report);
   const std::string mdPath = args.get("o", args.get("output", ""));
   const fs::path reportMd = fs::path(layout["report"]).parent_path() / "report.md";
   const fs::path mdDir = mdPath.empty() ? fs::current_path() : fs::absolute(mdPath).parent_path();
-  report::Document doc = claims::claimsDocument(j, ladder);
+  report::Document doc = claims::claimsDocument(j);
   doc = report::withAnswerFirst(doc, report, fs::absolute(reportMd).lexically_relative(mdDir).generic_string());
   if (auto path = args.get("json"))
     if (Status ok = writeTextFile(*path, report::dumpJson(j, 2) + "\n"); !ok) return fail(ok.error());
