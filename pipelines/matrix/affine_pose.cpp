@@ -18,15 +18,6 @@ float mirror(const glm::mat4x3& m) { return glm::determinant(glm::mat3(m)) < 0.0
     }
 }
 
-Pose poseScene(const Scene& scene, const AnimState& state) {
-  MatrixPoseWork work;
-  prepareMatrixPose(scene, work);
-  Pose pose;
-  PhaseClock off(nullptr);
-  poseScene(scene, state, work, pose, off);
-  return pose;
-}
-
 namespace {
 
 // flatten: GLM's products inlined into the loop, as on the other pipelines.

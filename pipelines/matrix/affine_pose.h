@@ -25,10 +25,9 @@ struct Pose {
   std::vector<Palette> palettes;   // one per node with a mesh and a skin, in node order
 };
 
-// GLM: samplePose (shared sampling and blending), world matrices, palettes.
-Pose poseScene(const Scene& scene, const AnimState& state);
-// The same, per frame: into `pose` (storage reused), with `work` from prepareMatrixPose; the
-// mat4 -> mat4x3 copy of the world matrices laps as conversion.
+// GLM: samplePose (shared sampling and blending), world matrices, palettes, into `pose`
+// (storage reused), with `work` from prepareMatrixPose; the mat4 -> mat4x3 copy of the world
+// matrices laps as conversion.
 void poseScene(const Scene& scene, const AnimState& state, MatrixPoseWork& work, Pose& pose, PhaseClock& clock);
 
 // The normal matrix of an affine transform's linear part: transpose(inverse(m)).
