@@ -6,6 +6,7 @@ namespace mb::accuracy {
 
 void putFigure(nlohmann::json& figures, const std::string& name, double value, int n, const FigureText& text) {
   figures::Figure f;
+  f.kind = "measured";
   f.name = name;
   f.value = value;
   f.n = n;

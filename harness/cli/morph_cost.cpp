@@ -126,6 +126,7 @@ void worstOf(const json& doc, const std::string& id, bool skinned, const std::st
   const std::string kind = skinned ? "skinned" : "rigid";
   const std::string against = skinned ? "the CPU skin reference (harness/render/skin_reference.h)" : "matrix";
   figures::Figure f;
+  f.kind = "measured";
   f.name = "morph.worst_psnr." + kind + "." + id;
   f.unit = "dB";
   f.statistic = "minimum over frames";
@@ -175,6 +176,7 @@ nlohmann::json morphFigures(const nlohmann::json& doc) {
       if (!s.contains("bytes") || !s["bytes"].contains(m.id)) continue;
       const json& b = s["bytes"][m.id];
       figures::Figure v;
+      v.kind = "measured";
       v.name = "morph.bytes_per_vertex." + m.id;
       v.unit = "bytes";
       v.statistic = "one scene";

@@ -154,6 +154,7 @@ void addOpsRanking(json& r) {
   for (const Scope& s : kScopes) {
     const json& entry = r["opsRanking"][s.label];
     figures::Figure f;
+    f.kind = "compiled";
     f.name = std::string("ops_ranking.") + s.label + ".pairs_reversed";
     f.unit = "pairs";
     f.statistic = "count";

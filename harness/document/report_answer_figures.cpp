@@ -31,6 +31,7 @@ const char* kFetchDevice = "meshoptimizer's analyzers on the mesh and the pipeli
 Figure overScenes(std::string name, std::string unit, std::string scope, std::string device, std::string definition,
                   const std::vector<double>& perScene) {
   Figure f;
+  f.kind = "modelled";
   f.name = std::move(name), f.unit = std::move(unit), f.scope = std::move(scope), f.device = std::move(device);
   f.statistic = "median over scenes";
   f.definition = std::move(definition);
@@ -75,6 +76,7 @@ void isaFigures(json& out, const json& r, const std::vector<std::string>& pipes)
         const json* row = isaRow(isa, p, variant, id);
         for (const auto& [name, key, unit, definition] : measures) {
           Figure f;
+          f.kind = "compiled";
           f.name = std::string("isa.") + name + "." + variant + "." + id + "." + p;
           f.unit = unit;
           f.statistic = "compiled: the compiler's statistic";
@@ -97,6 +99,7 @@ void ownFormatFigure(json& out, const json& r, const std::string& p, const std::
   const json& im = at(r, {"summary", "vertexFormatImages", p.c_str()});
   if (!im.is_object()) return;
   Figure f;
+  f.kind = "measured";
   f.name = "image.worst_psnr_own_format." + p, f.unit = "dB", f.device = device;
   f.scope = "frames where " + p + " draws its own vertex format (its uploaded mesh vertices), Euclidean scenes, each "
             "against its own reference: " + base + ", but a skinned frame of another skinning method than " + base +
@@ -156,6 +159,7 @@ void imageFigures(json& out, const json& r, const std::vector<std::string>& pipe
                               ", but a skinned frame of a pipeline that blends joints by another method than " + base +
                               " against its own method's reference (" + kMotorBlendReferenceText + ")";
     Figure w;
+    w.kind = "measured";
     w.name = "image.worst_psnr." + p, w.unit = "dB", w.scope = scope, w.device = "the rendered images (8-bit RGBA)";
     w.statistic = "minimum over the frames that differ";
     w.definition = "PSNR of " + p + " against its reference; identical frames (infinite PSNR) are counted apart";

@@ -52,6 +52,7 @@ void frameTimeFigures(json& out, const std::vector<json>& scenes, const char* co
   }
   for (const auto& [p, v] : byPipeline) {
     Figure f;
+    f.kind = "measured";
     f.name = key + "." + p + "_over_matrix";
     f.unit = "x";
     f.statistic = kOverScenes;
@@ -61,6 +62,7 @@ void frameTimeFigures(json& out, const std::vector<json>& scenes, const char* co
     figures::put(out, figures::withQuartiles(f, figures::quartilesOf(v)));
   }
   Figure all;
+  all.kind = "measured";
   all.name = key + ".motor_over_matrix";
   all.unit = "x";
   all.statistic = kOverScenes;
@@ -81,6 +83,7 @@ void memoryFigure(json& out, const std::vector<json>& scenes, const std::vector<
       if (x > 0) v.push_back(x);
     }
     Figure f;
+    f.kind = "measured";
     f.name = name + "." + p;
     f.unit = unit;
     f.statistic = "median over scenes";
@@ -93,6 +96,7 @@ void memoryFigure(json& out, const std::vector<json>& scenes, const std::vector<
 
 Figure opsFigure(const std::string& name, double total, const std::string& scope, const std::string& source) {
   Figure f;
+  f.kind = name.find(".counted.") != std::string::npos ? "counted" : "compiled";
   f.name = name;
   f.value = total;
   f.unit = "ops";
@@ -135,6 +139,7 @@ void kernelFigures(json& out, const json& kernels, const std::string& cpu) {
     auto ips = [&](const std::string& side) { return numberOrNaN(at(p, {side.c_str(), "items_per_second"})); };
     auto add = [&](const std::string& name, const std::string& motor, const std::string& matrix, const std::string& what) {
       Figure f;
+      f.kind = "measured";
       f.name = name;
       f.unit = "x";
       f.value = ips(motor) > 0 && ips(matrix) > 0 ? ips(matrix) / ips(motor) : std::nan("");
@@ -160,6 +165,7 @@ void kernelFigures(json& out, const json& kernels, const std::string& cpu) {
     for (const auto& [side, v] : p.items()) {
       if (!at(v, {"items_per_second"}).is_number() || ips(side) <= 0) continue;
       Figure f;
+      f.kind = "measured";
       f.name = "kernel_time." + pair + "." + side;
       f.value = 1e9 / ips(side);
       f.unit = "ns";
@@ -195,6 +201,7 @@ void curvedFigures(json& out, const std::vector<json>& scenes, const json& drift
     const json pipelines = s.value("pipelines", json::object());
     for (const auto& [p, v] : pipelines.items()) {
       Figure f;
+      f.kind = "measured";
       f.name = "curved.floats_per_instance." + id + "." + p;
       f.value = numberOrNaN(at(v, {"memory", "floatsPerTransform"}));
       f.unit = "floats";
@@ -210,6 +217,7 @@ void curvedFigures(json& out, const std::vector<json>& scenes, const json& drift
     for (const char* side : {"matrix", "motor"})
       for (const char* kind : {"raw", "renormalised"}) {
         Figure f;
+        f.kind = "measured";
         f.name = "curved.drift." + space.value("space", "") + "." + side + "." + kind;
         f.value = numberOrNaN(at(space, {side, kind}));
         f.unit = "";
@@ -240,6 +248,7 @@ std::string frameTimeDevice(const json& machine) {
 
 Figure sceneFrameTimeFigure(const std::string& name, const json& config, const std::string& device) {
   Figure f;
+  f.kind = "measured";
   f.name = name;
   f.unit = "x";
   f.statistic = kPairedStatistic;
@@ -276,6 +285,7 @@ void fallbackFigures(json& out, const std::vector<json>& scenes, const std::vect
     }
     auto put = [&](const std::string& what, double value, const std::string& unit, const std::string& definition) {
       Figure f;
+      f.kind = "measured";
       f.name = "fallback." + what + "." + p;
       f.value = value;
       f.unit = unit;
@@ -303,6 +313,7 @@ void updateFigures(json& out, const std::vector<json>& scenes) {
     for (const auto& [p, v] : ps.items()) {
       auto put = [&](const std::string& name, const json& ms, const std::string& what) {
         Figure f;
+        f.kind = "measured";
         f.name = name + "." + s.value("id", "") + "." + p;
         f.value = numberOrNaN(ms) * 1000.0;
         f.unit = "us";

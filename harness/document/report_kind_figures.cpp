@@ -78,6 +78,11 @@ Figure make(const std::string& name, const std::string& unit, const std::string&
   Figure f;
   f.name = name, f.unit = unit, f.statistic = statistic, f.scope = scope, f.device = device, f.definition = definition;
   f.value = std::nan("");
+  // The kind of figure by its family: fetched bytes a model, ops counted or compiled, ISA compiled.
+  f.kind = name.find("fetched") != std::string::npos                                        ? "modelled"
+           : name.find("ops_counted") != std::string::npos                                  ? "counted"
+           : name.find("ops_spirv") != std::string::npos || name.find("isa_") != std::string::npos ? "compiled"
+                                                                                             : "measured";
   return f;
 }
 

@@ -41,7 +41,7 @@ Figure withQuartiles(Figure f, const Quartiles& q) {
 }
 
 json toJson(const Figure& f) {
-  json j = {{"value", number(f.value)}, {"unit", f.unit}, {"statistic", f.statistic}, {"scope", f.scope},
+  json j = {{"value", number(f.value)}, {"unit", f.unit}, {"kind", f.kind}, {"statistic", f.statistic}, {"scope", f.scope},
             {"device", f.device}, {"n", f.n}, {"tolerance", f.tolerance}, {"definition", f.definition},
             {"disturbed", f.disturbed}, {"text", valueText(f)}};
   j["spread"] = f.q1 && f.q3 ? json{{"q1", number(*f.q1)}, {"q3", number(*f.q3)}, {"kind", "interquartile range"}}
@@ -62,6 +62,7 @@ Figure figureFromJson(const std::string& name, const json& j) {
   const json& v = j.value("value", json());
   f.value = numberOrNaN(v);
   f.unit = j.value("unit", "");
+  f.kind = j.value("kind", "");
   f.statistic = j.value("statistic", "");
   f.scope = j.value("scope", "");
   f.device = j.value("device", "");

@@ -15,6 +15,11 @@ struct Figure {
   std::string name;        // stable key, e.g. "frame_time.motor_over_matrix"
   double value = 0;        // NaN: not measured (then `why` says so)
   std::string unit;        // "x" (a ratio), "bytes", "ops", "dB", "ms", "files", ...
+  // What kind of figure it is: "measured" (run and observed: uploads, images, times, counts a
+  // run made), "counted" (ops executed on the op-counting scalar), "compiled" (read from a
+  // compiler's output: SPIR-V, RADV's null-device statistics; not timed) or "modelled"
+  // (meshoptimizer's vertex-fetch model).
+  std::string kind;
   std::string statistic;   // e.g. "median over scenes of each scene's median of per-frame paired ratios"
   std::optional<double> q1, q3;  // spread: the interquartile range of what `statistic` aggregates
   std::string scope;       // what was measured, e.g. "whole frame, Euclidean scenes, 512x512"

@@ -50,6 +50,7 @@ figures::Figure column(const std::string& prefix, const char* col, double value,
   f.value = value;
   f.unit = "ops";
   f.statistic = kind.statistic;
+  f.kind = &kind == &kSpirv ? "compiled" : "counted";
   f.device = kind.device;
   f.scope = scope;
   f.n = std::isfinite(value) ? 1 : 0;

@@ -95,6 +95,7 @@ void putGroup(json& out, const std::string& prefix, size_t files, const json& mo
   auto put = [&](const std::string& name, double value, const std::string& unit, const std::string& definition,
                  const std::string& stat, int over) {
     figures::Figure f;
+    f.kind = "measured";
     f.name = prefix + name;
     f.value = value;
     f.unit = unit;
@@ -202,6 +203,7 @@ json scaleFigures(const json& files) {
   int failed = 0;
   for (size_t i = 0; i < files.size(); ++i) failed += real[i] && !files[i].value("loaded", false);
   figures::Figure f;
+  f.kind = "measured";
   f.name = "scale.failed.files";
   f.value = failed;
   f.unit = "files";
