@@ -29,7 +29,8 @@ std::string g3(double v) {
 }
 
 json describe(const std::string& ref, const figures::Figure& f) {
-  return {{"reference", ref}, {"value", std::isfinite(f.value) ? json(f.value) : json()}, {"statistic", f.statistic},
+  return {{"reference", ref}, {"value", std::isfinite(f.value) ? json(f.value) : json()}, {"kind", f.kind},
+          {"statistic", f.statistic},
           {"n", f.n}, {"device", f.device}, {"scope", f.scope}};
 }
 
