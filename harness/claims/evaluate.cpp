@@ -20,7 +20,16 @@ struct Reading {
   json columns;           // the column rules: {"mul": 48, ...}
   json figures = json::array();  // what each figure is: reference, statistic, n, device
   bool passes = false;
+  bool share = false;     // a count over a count of the same thing: printed as a percentage
 };
+
+// Units that count things: a ratio of two figures in the same one is a share.
+bool countsThings(const std::string& unit) {
+  for (const char* u : {"models", "files", "frames", "quaternions", "draws", "scenes", "joints", "vertices",
+                        "primitives", "pairs", "key pairs", "meshes"})
+    if (unit == u) return true;
+  return false;
+}
 
 std::string g3(double v) {
   char b[32];
@@ -103,27 +112,36 @@ Reading readValue(const FigureSet& set, const Evidence& e, const Rule& rule) {
       return r;
     }
     r.value = a->value / b->value;
-    r.text = g3(r.value) + "x (" + figures::valueText(*a) + " / " + figures::valueText(*b) + ")";
+    r.share = a->unit == b->unit && countsThings(a->unit);
+    r.text = (r.share ? g3(100 * r.value) + " %" : g3(r.value) + "x") + " (" + figures::valueText(*a) + " / " +
+             figures::valueText(*b) + ")";
   }
   if (rule.kind == RuleKind::AtMost) r.passes = r.value <= rule.limit;
   if (rule.kind == RuleKind::AtLeast) r.passes = r.value >= rule.limit;
   return r;
 }
 
-std::string ruleText(const ClaimRow& row) {
+std::string ruleText(const ClaimRow& row, bool shares = false) {
   const Rule& r = row.rule;
   const bool ratio = !row.evidence.empty() && !row.evidence[0].over.empty();
-  const std::string what = ratio ? "each ratio" : "each value";
+  const std::string what = shares ? "each share" : ratio ? "each ratio" : "each value";
+  const std::string limit = shares ? g3(100 * r.limit) + " %" : g3(r.limit);
   switch (r.kind) {
     case RuleKind::PaperColumns: return "every column the paper states, equal";
     case RuleKind::PaperColumnsOrListing: return "ours or the paper's printed listing equal in every column the paper states";
     case RuleKind::PaperColumnsUndefined:
       return "every column the paper states, equal; a difference is inconclusive (the paper defines no expansion)";
-    case RuleKind::AtMost: return what + " <= " + g3(r.limit);
-    case RuleKind::AtLeast: return what + " >= " + g3(r.limit);
+    case RuleKind::AtMost: return what + " <= " + limit;
+    case RuleKind::AtLeast: return what + " >= " + limit;
     case RuleKind::Baseline: return "a baseline: no verdict";
   }
   return "?";
+}
+
+bool allShares(const std::vector<Reading>& rs) {
+  for (const Reading& r : rs)
+    if (r.leftOut.empty() && !r.share) return false;
+  return !rs.empty();
 }
 
 void judge(Claim& c, const ClaimRow& row, const std::vector<Reading>& rs) {
@@ -161,7 +179,7 @@ void judge(Claim& c, const ClaimRow& row, const std::vector<Reading>& rs) {
     std::string& to = r->passes ? passing : failing;
     to += (to.empty() ? "" : ", ") + r->evidence->label + " " + r->text;
   }
-  const std::string rule = " under the rule (" + ruleText(row) + ")";
+  const std::string rule = " under the rule (" + ruleText(row, allShares(rs)) + ")";
   if (pass == judged.size()) {
     c.verdict = Verdict::Reproduced;
     c.verdictText = judged.size() == 1 && isColumnRule(row.rule.kind)
@@ -209,7 +227,7 @@ Claim evaluate(const ClaimRow& row, const FigureSet& set) {
   c.measuredValue = measuredValue.empty() ? json() : measuredValue;
   judge(c, row, rs);
   c.method = "scope: " + row.scope.stage + "; baseline: " + row.scope.baseline + "; content: " + row.scope.content +
-             ". Rule: " + ruleText(row) + (rs.size() > 1 && !isColumnRule(row.rule.kind) && row.rule.kind != RuleKind::Baseline
+             ". Rule: " + ruleText(row, allShares(rs)) + (rs.size() > 1 && !isColumnRule(row.rule.kind) && row.rule.kind != RuleKind::Baseline
                                                ? "; every kind passes: reproduced, none: differs, some: inconclusive"
                                                : "") +
              ".";
@@ -217,7 +235,7 @@ Claim evaluate(const ClaimRow& row, const FigureSet& set) {
                                        "at_most", "at_least", "baseline"};
   c.declared = {{"scope", {{"stage", row.scope.stage}, {"baseline", row.scope.baseline}, {"content", row.scope.content}}},
                 {"rule", {{"kind", kKinds[int(row.rule.kind)]}, {"limit", row.rule.limit}, {"minN", row.rule.minN}, {"gpuTimed", row.rule.gpuTimed},
-                          {"text", ruleText(row)}}},
+                          {"text", ruleText(row, allShares(rs))}}},
                 {"evidence", evidence}, {"note", row.note.empty() ? json() : json(row.note)}};
   return c;
 }
