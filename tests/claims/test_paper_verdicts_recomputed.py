@@ -1,8 +1,15 @@
-"""Every paper verdict in results/claims.json recomputed from the row's own JSON values with the
-rule the row prints, never by calling motorbench's formula. The rows whose rules weigh several
-kinds of evidence are recomputed in test_claims_recomputed.py (speed, tally, minimum of work,
-scene graph) and test_ops_ranking_recomputed.py; this file covers the rest, and fails on a paper row that no
-file recomputes (a new paper claim needs its recomputation).
+"""Every verdict in claims.json, the paper's rows and our own, recomputed from the row's declared
+rule (claims.json's "rule" and "evidence") and the run's source JSON files alone, never by calling
+motorbench: each evidence reference "<source>:<name>" is looked up in the file claims.json's
+"sources" names for that source (read relative to the results folder) as that file's
+["figures"][name]; the value claims.json says it read must be that figure's (a ratio: value /
+over), the evidence left out exactly when the figure is missing, not measured, disturbed, from too
+few samples (n < minN) or, under the GPU rule, timed on a CPU rasterizer; then the rule kinds are
+applied here (the paper's columns, ours or the printed listing, an undefined expansion, at most /
+at least, a baseline) and combined (every kind passes: reproduced, none: differs, some:
+inconclusive; none left: not measurable here). A rule kind this file does not know fails the test
+until it is recomputed here. MB_RESULTS_DIR checks another results folder (a scratch
+`motorbench claims --results DIR` run).
 """
 import json
 import os
@@ -10,111 +17,204 @@ import unittest
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 RESULTS = os.environ.get("MB_RESULTS_DIR", os.path.join(REPO, "results"))
-
-# Paper rows recomputed in test_claims_recomputed.py (their tests named there).
-ELSEWHERE = {"as_fast_as_matrices", "scene_graph_update", "composition", "fragment_rotor"}
-# Counted once against the paper's table; reproduced only when every column the paper states is
-# equal (the rule vertex_frame_motor prints; every op row is counted the same way).
-OP_ROWS = {"mat4_mul_mat4", "gp_mm", "gp_rr", "gp_tt", "gp_rt", "gp_tr", "gp_rm", "gp_mr", "gp_tm", "gp_mt",
-           "mat4_mul_vec4", "sw_mp", "sw_md", "sw_mx", "extractNormalTangent", "vertex_frame_motor",
-           "vertex_frame_matrix"}
-# Ours and the paper's printed listing, both counted: reproduced when either states the table's
-# columns, differs when neither does.
-LISTING_ROWS = {"normalize_m", "sqrt_m", "exp_b", "log_m"}
-# The paper prints 33 mul, 29 add without defining the expansion behind it: inconclusive
-# whenever ours differs.
-UNDEFINED_ROWS = {"sw_mp_naive"}
-MEMORY_ROWS = {"floats_per_vertex", "floats_per_transform"}
-OTHER_ROWS = {"vertices_per_storage", "quaternion_to_rotor", "uniform_scale_overhead", "handedness_rule",
-              "animated_scale_corpus", "nonuniform_scale_leaves"}
+COLUMNS = ("mul", "add", "div", "sqrt", "other")
+COLUMN_KINDS = {"paper_columns", "paper_columns_or_listing", "paper_columns_undefined"}
+KINDS = COLUMN_KINDS | {"at_most", "at_least", "baseline"}
+VERDICTS = {"reproduced", "differs", "inconclusive", "not measurable here", "baseline"}
 
 
-def states(measured, paper):
-    """Whether `measured` has the paper's value in every column the paper states."""
-    return all(measured.get(k) == v for k, v in paper.items())
+def load_sources(claims):
+    """{source: its "figures" object, or None when claims.json names the file as missing}."""
+    sources = claims["sources"]
+    # The results folder as the claims run named it: the folder of its report.json.
+    base = os.path.dirname(sources["report"])
+    out = {}
+    for source, path in sources.items():
+        if "; made by " in path:  # "<path>: not found; made by motorbench ..."
+            out[source] = None
+            continue
+        with open(os.path.join(RESULTS, os.path.relpath(path, base)), encoding="utf-8") as f:
+            out[source] = json.load(f)["figures"]
+    return out
 
 
-class PaperVerdictsRecomputed(unittest.TestCase):
+class Reading:
+    """One evidence as recomputed here: what it read, whether it passes, why it is left out."""
+
+    def __init__(self):
+        self.read = None
+        self.passes = None
+        self.left_out = None  # "missing", "not measured", "disturbed", "cpu rasterizer", "few", "zero"
+        self.reference = None  # the figure it was left out for
+
+
+def why_left_out(figure, rule):
+    if figure is None:
+        return "missing"
+    if figure.get("value") is None:
+        return "not measured"
+    disturbed = figure.get("disturbed")
+    if isinstance(disturbed, dict) and disturbed.get("disturbed"):
+        return "disturbed"
+    if rule["gpuTimed"] and "CPU rasterizer" in figure.get("device", ""):
+        return "cpu rasterizer"
+    n = figure.get("n", 0)
+    if rule["minN"] > 0 and 0 < n < rule["minN"]:
+        return "few"
+    return None
+
+
+class VerdictsRecomputed(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         with open(os.path.join(RESULTS, "claims.json"), encoding="utf-8") as f:
-            cls.rows = {c["id"]: c for c in json.load(f)["claims"]}
+            cls.claims = json.load(f)
+        cls.rows = cls.claims["claims"]
+        if not all("rule" in row for row in cls.rows):
+            raise AssertionError("claims.json predates the declared table (no \"rule\"): regenerate results/ "
+                                 "(scripts/reproduce.sh)")
+        cls.figures = load_sources(cls.claims)
 
-    def verdict(self, cid):
-        return self.rows[cid]["verdict"]
+    def figure(self, reference):
+        source, name = reference.split(":", 1)
+        self.assertIn(source, self.figures, reference)
+        figures = self.figures[source]
+        return None if figures is None else figures.get(name)
 
-    def test_every_paper_row_is_recomputed_somewhere(self):
-        paper = {cid for cid, c in self.rows.items() if c.get("origin") == "paper"}
-        covered = ELSEWHERE | OP_ROWS | LISTING_ROWS | UNDEFINED_ROWS | MEMORY_ROWS | OTHER_ROWS
-        self.assertEqual(paper - covered, set(), "paper rows no test recomputes")
+    def read_one(self, reading, reference, rule):
+        """The figure's value, or None with reading.left_out set."""
+        f = self.figure(reference)
+        why = why_left_out(f, rule)
+        if why:
+            reading.left_out, reading.reference = why, reference
+            return None
+        return f["value"]
 
-    def test_op_and_memory_rows(self):
-        # One rule for both: reproduced when every value the paper states is measured.
-        for cid in OP_ROWS | MEMORY_ROWS:
-            row = self.rows[cid]
-            want = "reproduced" if states(row["measuredValue"], row["paperValue"]) else "differs"
-            self.assertEqual(row["verdict"], want, cid)
+    def recompute(self, row, evidence):
+        rule, r = row["rule"], Reading()
+        kind = rule["kind"]
+        if kind in COLUMN_KINDS:
+            paper = row["paperValue"]
+            read = {}
+            for c in COLUMNS:
+                reference = evidence["value"] + "." + c
+                if self.figure(reference) is None and c not in paper:
+                    continue  # an unstated column may be absent
+                v = self.read_one(r, reference, rule)
+                if r.left_out:
+                    return r
+                read[c] = v
+            r.read = read
+            r.passes = all(read[c] == v for c, v in paper.items())
+            return r
+        a = self.read_one(r, evidence["value"], rule)
+        if r.left_out:
+            return r
+        if evidence["over"] is None:
+            r.read = a
+        else:
+            b = self.read_one(r, evidence["over"], rule)
+            if r.left_out:
+                return r
+            if b == 0:
+                r.left_out, r.reference = "zero", evidence["over"]
+                return r
+            r.read = a / b
+        if kind == "at_most":
+            r.passes = r.read <= rule["limit"]
+        elif kind == "at_least":
+            r.passes = r.read >= rule["limit"]
+        return r
 
-    def test_listing_rows(self):
-        for cid in LISTING_ROWS:
-            row = self.rows[cid]
-            either = any(states(row["measuredValue"][k], row["paperValue"]) for k in ("ours", "listing"))
-            self.assertEqual(row["verdict"], "reproduced" if either else "differs", cid)
+    def readings(self, row):
+        return [self.recompute(row, e) for e in row["evidence"]]
 
-    def test_undefined_expansion_is_inconclusive_unless_equal(self):
-        for cid in UNDEFINED_ROWS:
-            row = self.rows[cid]
-            want = "reproduced" if states(row["measuredValue"], row["paperValue"]) else "inconclusive"
-            self.assertEqual(row["verdict"], want, cid)
+    def test_every_rule_kind_is_recomputed_here(self):
+        kinds = {row["rule"]["kind"] for row in self.rows}
+        self.assertEqual(kinds - KINDS, set(), "a rule kind this test does not recompute: add it here")
+        self.assertEqual({row["verdict"] for row in self.rows} - VERDICTS, set())
 
-    def test_vertices_per_storage(self):
-        row = self.rows["vertices_per_storage"]
-        want = "reproduced" if abs(row["measuredValue"] - row["paperValue"]) < 1e-9 else "differs"
-        self.assertEqual(row["verdict"], want)
+    def test_the_sources_are_files_of_the_results_folder(self):
+        for source, path in self.claims["sources"].items():
+            self.assertTrue(self.figures[source] is not None or "; made by motorbench " in path, (source, path))
+        self.assertIsNotNone(self.figures["report"])
 
-    def test_quaternion_to_rotor_is_a_free_bit_exact_conversion(self):
-        row = self.rows["quaternion_to_rotor"]
-        mv = row["measuredValue"]
-        free = states(mv["conversion"], row["paperValue"])
-        self.assertEqual(row["verdict"], "reproduced" if free and mv["bitExact"] > 0 else "differs")
+    def test_every_figure_claims_quotes_is_its_source_s(self):
+        for row in self.rows:
+            for e in row["evidence"]:
+                for quoted in e["figures"]:
+                    f = self.figure(quoted["reference"])
+                    self.assertIsNotNone(f, (row["id"], quoted["reference"]))
+                    for key in ("value", "n", "device", "statistic", "scope", "kind"):
+                        if key in quoted:
+                            self.assertEqual(quoted[key], f.get(key), (row["id"], quoted["reference"], key))
 
-    def test_uniform_scale_overhead_rule(self):
-        # Printed rule: per-vertex overhead at most 5 % of the vertex's ops and one float per draw.
-        row = self.rows["uniform_scale_overhead"]
-        mv = row["measuredValue"]
-        ops = lambda o: o["mul"] + o["add"] + o["div"] + o["sqrt"] + o["other"]
-        share = ops(mv["perVertex"]) / ops(mv["vertexWithScale"])
-        self.assertAlmostEqual(share, mv["shareOfVertexOps"], places=12)
-        floats = mv["floatsPerTransformWithScale"] - mv["floatsPerTransform"]
-        want = "reproduced" if share <= 0.05 and floats <= 1 else "differs"
-        self.assertEqual(row["verdict"], want)
+    def test_every_evidence_reads_what_its_figures_give(self):
+        for row in self.rows:
+            baseline = row["rule"]["kind"] == "baseline"
+            for e, r in zip(row["evidence"], self.readings(row)):
+                where = (row["id"], e["label"])
+                self.assertEqual(e["leftOut"] is not None, r.left_out is not None, (where, e["leftOut"], r.left_out))
+                if r.left_out:
+                    self.assertIsNone(e["read"], where)
+                    self.assertIsNone(e["passes"], where)
+                    continue
+                # Columns as {column: count}; a ratio is the same double division on both sides.
+                self.assertEqual(e["read"], r.read, where)
+                self.assertEqual(e["passes"], None if baseline else r.passes, where)
 
-    def test_handedness_rule(self):
-        row = self.rows["handedness_rule"]
-        mv = row["measuredValue"]
-        wrong = sum(s["wrong"] for s in mv["scenes"].values())
-        self.assertEqual(wrong, mv["wrongFrames"])
-        want = "reproduced" if wrong == row["paperValue"]["wrongFrames"] else "differs"
-        self.assertEqual(row["verdict"], want)
+    def test_left_out_evidence_names_its_figure_and_why(self):
+        words = {"missing": "no figure {ref}", "not measured": "{ref} not measured", "disturbed": "{ref} disturbed",
+                 "cpu rasterizer": "{ref} was timed on a CPU rasterizer", "few": "{ref}: n = ", "zero": "{ref} is 0"}
+        seen = 0
+        for row in self.rows:
+            for e, r in zip(row["evidence"], self.readings(row)):
+                if not r.left_out:
+                    continue
+                seen += 1
+                self.assertIsNotNone(e["leftOut"], (row["id"], e["label"], r.left_out))
+                self.assertIn(words[r.left_out].format(ref=r.reference), e["leftOut"], (row["id"], e["label"]))
+                if r.left_out == "few":
+                    self.assertIn("< %d" % row["rule"]["minN"], e["leftOut"])
+                self.assertIn(e["label"] + ": " + e["leftOut"], row["verdictText"], row["id"])
+        # results/ is timed on a CPU rasterizer: the GPU-only frame-time rows leave their evidence out.
+        self.assertGreater(seen, 0, "no evidence left out: the GPU rule and the missing-figure path are untested here")
 
-    def test_animated_scale_corpus(self):
-        # The paper: fewer than 0.5 % of files animate their scale; judged over distinct models.
-        row = self.rows["animated_scale_corpus"]
-        mv = row["measuredValue"]
-        fraction = mv["judgedWithChangingScale"] / mv["judgedModels"]
-        self.assertAlmostEqual(fraction, mv["judgedFraction"], places=12)
-        self.assertLessEqual(mv["judgedModels"], mv["judgedFiles"])
-        want = "reproduced" if fraction < row["paperValue"]["fraction"] else "differs"
-        self.assertEqual(row["verdict"], want)
+    def test_every_verdict_follows_its_rule(self):
+        for row in self.rows:
+            kind = row["rule"]["kind"]
+            rs = self.readings(row)
+            judged = [r for r in rs if not r.left_out]
+            if not judged:
+                want = "not measurable here"
+            elif kind == "baseline":
+                want = "baseline"
+            elif kind == "paper_columns_or_listing":
+                # Either ours (the first evidence) or the paper's printed listing (the second).
+                either = any(not r.left_out and r.passes for r in rs[:2])
+                want = "reproduced" if either else "differs"
+            else:
+                passed = sum(1 for r in judged if r.passes)
+                if passed == len(judged):
+                    want = "reproduced"
+                elif passed == 0:
+                    want = "inconclusive" if kind == "paper_columns_undefined" else "differs"
+                else:
+                    want = "inconclusive"
+            self.assertEqual(row["verdict"], want, (row["id"], row["verdictText"]))
 
-    def test_nonuniform_scale_leaves(self):
-        # The paper: non-uniform scale on leaves only; any judged model with it on an inner node
-        # contradicts that.
-        row = self.rows["nonuniform_scale_leaves"]
-        mv = row["measuredValue"]
-        only_leaves = 1.0 - mv["judgedWithInnerNonUniform"] / mv["judgedModels"]
-        want = "reproduced" if only_leaves >= row["paperValue"]["fractionOnlyOnLeaves"] else "differs"
-        self.assertEqual(row["verdict"], want)
+    def test_the_tally_counts_every_row_once(self):
+        counts, seen = {v: 0 for v in VERDICTS}, set()
+        paper = {v: 0 for v in VERDICTS}
+        for row in self.rows:
+            if row["tallyAs"] in seen:  # a table row printed as a pair (gp_rt / gp_tr) counts once
+                continue
+            seen.add(row["tallyAs"])
+            counts[row["verdict"]] += 1
+            if row["origin"] == "paper":
+                paper[row["verdict"]] += 1
+        self.assertEqual(self.claims["counts"], counts)
+        self.assertEqual(self.claims["paperCounts"], paper)
 
 
 if __name__ == "__main__":
