@@ -102,7 +102,7 @@ AnswerLine opsLine(const json& r, const std::vector<LadderCell>& ladder, const s
            q.value("ops_per_vertex.to_clip.counted." + m) + " " + cellText(q, cc) + ", SPIR-V probe " +
            cellText(q, ladderCell(ladder, clip, "SPIR-V probe", "paper"));
   if (!wc || wc->verdict == "-") l.verdict = "not counted";
-  else l.verdict = "to world " + wc->verdict + ", to clip " + (cc ? cc->verdict : "-") + " (motor / 4x4 <= 1.1)";
+  else l.verdict = "to world " + wc->verdict + ", to clip " + (cc ? cc->verdict : "-");
   return l;
 }
 
@@ -120,19 +120,10 @@ AnswerLine isaLine(const json& r, const std::vector<LadderCell>& ladder, const s
     l.verdict = "not measured";
     return l;
   }
-  std::string perFamily;
-  for (const auto& [a, b] : ins->samples) {
-    const auto x = q.get(a), y = q.get(b);
-    if (!x || !y) continue;
-    const std::string family = a.substr(std::string("isa.instructions.rigid.").size(),
-                                        a.size() - std::string("isa.instructions.rigid.").size() - M.size() - 1);
-    perFamily += (perFamily.empty() ? "" : ", ") + family + " " + figureMark(a, fmt(x->value, 4)) + "/" +
-                 figureMark(b, fmt(y->value, 4));
-  }
-  l.text = "whole rigid vertex shader " + M + " / " + m + " (RADV null device, compiled, not timed): instructions " +
-           perFamily + " " + cellText(q, ins) + "; ACO's inverse-throughput estimate " + cellText(q, thr) +
-           "; occupancy cost " + cellText(q, occ);
-  l.verdict = "instructions " + ins->verdict + ", throughput estimate " + (thr ? thr->verdict : "-") + " (motor / 4x4 <= 1.1)";
+  l.text = "whole rigid vertex shader " + M + " / " + m + ", " + std::to_string(ins->ratios.size()) +
+           " families (RADV null device, compiled, not timed): instructions " + cellText(q, ins) +
+           "; ACO's inverse-throughput estimate " + cellText(q, thr) + "; occupancy cost " + cellText(q, occ);
+  l.verdict = "instructions " + ins->verdict + ", throughput estimate " + (thr ? thr->verdict : "-");
   return l;
 }
 

@@ -51,7 +51,7 @@ std::string opsText(KindQuote& q, KindAnswer& k, const std::string& m, const std
   k.ratio = a > 0 ? b / a : std::nan("");
   q.line.figures.resize(q.line.figures.size() - 2);  // quoted again below, marked
   return "counted " + m + " " + q.value("kind.ops_counted." + id + "." + m) + ", " + M + " " +
-         q.value("kind.ops_counted." + id + "." + M) + "; SPIR-V " + m + " " + q.value("kind.ops_spirv." + id + "." + m) +
+         q.value("kind.ops_counted." + id + "." + M) + "; SPIR-V whole shader " + m + " " + q.value("kind.ops_spirv." + id + "." + m) +
          ", " + M + " " + q.value("kind.ops_spirv." + id + "." + M);
 }
 
@@ -122,12 +122,13 @@ void kindsVerdictOf(AnswerLine& l) {
   const std::string what = l.evidence.rfind("bytes", 0) == 0 ? "fewer bytes fetched"
                            : l.evidence.rfind("ops", 0) == 0 ? "fewer arithmetic ops"
                                                               : "fewer ISA instructions";
-  const std::string before = l.verdict.substr(0, l.verdict.find(':'));  // "matrix side cheaper", ...
+  const std::string before = l.verdict;  // the rigid vertex's verdict on the scope ladder
   l.verdict = sideOf(all->ratio, what) + ", weighted by drawn vertices (by kind: above";
   if (const KindAnswer* b = kindOf(l, "built_in"); b && std::isfinite(b->ratio))
     l.verdict += "; built-in scenes: " + std::string(b->ratio < 1 ? "motor" : b->ratio > 1 ? "matrix" : "neither") +
                  " side cheaper";
-  if (l.evidence.rfind("ops", 0) == 0) l.verdict += "; rigid kernel alone: " + before;
+  if (l.evidence.rfind("ops", 0) == 0) l.verdict += "; rigid vertex alone: " + before;
+  if (l.evidence.rfind("AMD ISA", 0) == 0) l.verdict += "; rigid shader alone: " + before;
   l.verdict += ")";
 }
 
