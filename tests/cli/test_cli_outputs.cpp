@@ -39,12 +39,22 @@ TEST(CliOutputs, TimeCreatesTheJsonFolderAndRefusesBeforeTiming) {
 TEST(CliOutputs, ClaimsAndInspectCheckTheirFilesFirst) {
   const fs::path dir = mb::cli_test::scratchDir("outputs_claims");
   std::ofstream(dir / "plain") << "x";
+  // A run's folder claims can judge (a report.json without figures: every row not measurable).
+  fs::create_directories(dir / "run");
+  std::ofstream(dir / "run" / "report.json") << R"({"figures": {}})";
+  const std::string results = "claims --results " + quoted(dir / "run") + " ";
   for (const char* option : {"--json", "-o"}) {
-    const auto r = runMb(std::string("claims --no-run ") + option + " " + quoted(dir / "plain" / "x" / "claims.json"));
+    const auto r = runMb(results + option + " " + quoted(dir / "plain" / "x" / "claims.json"));
     EXPECT_EQ(r.rc, 2) << r.out;
     EXPECT_TRUE(contains(r.out, std::string(option) + " " + (dir / "plain").string())) << r.out;
-    EXPECT_FALSE(contains(r.out, "counting ops")) << "measured before refusing:\n" << r.out;
+    EXPECT_FALSE(contains(r.out, " rows; ")) << "judged before refusing:\n" << r.out;
   }
+  // Missing folders are made, as render does.
+  const auto made = runMb(results + "-o " + quoted(dir / "new" / "claims.md") + " --json " +
+                          quoted(dir / "new" / "deeper" / "claims.json"));
+  EXPECT_EQ(made.rc, 0) << made.out;
+  EXPECT_TRUE(fs::is_regular_file(dir / "new" / "claims.md")) << made.out;
+  EXPECT_TRUE(fs::is_regular_file(dir / "new" / "deeper" / "claims.json")) << made.out;
   // inspect: missing folders are made, a folder is refused.
   const fs::path json = dir / "new" / "dir" / "x.json";
   const auto ok = runMb("inspect normal_torus --json " + quoted(json));
