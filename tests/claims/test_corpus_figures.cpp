@@ -222,7 +222,7 @@ TEST(CorpusStatistics, RowsJudgeTheFigures) {
   json files = handMadeSample(dir);
   const claims::Claim a = judged(report::scaleFigures(files), "animated_scale_corpus");
   EXPECT_EQ(a.verdict, claims::Verdict::Differs) << a.verdictText;
-  EXPECT_NE(a.measured.find("0.01x (2 models / 200 models)"), std::string::npos) << a.measured;
+  EXPECT_NE(a.measured.find("1 % (2 models / 200 models)"), std::string::npos) << a.measured;  // a share, in %
   const claims::Claim l = judged(report::scaleFigures(files), "nonuniform_scale_leaves");
   EXPECT_EQ(l.verdict, claims::Verdict::Differs) << l.verdictText;
   for (int i : {3, 4, 7}) {
