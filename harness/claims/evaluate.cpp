@@ -58,7 +58,7 @@ std::optional<figures::Figure> read(const FigureSet& set, const std::string& ref
     r.leftOut = ref + " disturbed (" + f->disturbed.value("reason", std::string("load")) + ")";
   else if (rule.gpuTimed && f->device.find("CPU rasterizer") != std::string::npos)
     r.leftOut = ref + " was timed on a CPU rasterizer, which cannot stand for a GPU";
-  else if (rule.minN > 0 && f->n > 0 && f->n < rule.minN)
+  else if (rule.minN > 0 && f->n < rule.minN)
     r.leftOut = ref + ": n = " + std::to_string(f->n) + " < " + std::to_string(rule.minN) + ", too few to carry a verdict";
   return f;
 }
@@ -166,9 +166,11 @@ void judge(Claim& c, const ClaimRow& row, const std::vector<Reading>& rs) {
     const bool ours = rs[0].leftOut.empty() && rs[0].passes;
     const bool listing = rs.size() > 1 && rs[1].leftOut.empty() && rs[1].passes;
     c.verdict = ours || listing ? Verdict::Reproduced : Verdict::Differs;
+    const std::string oursText = rs[0].leftOut.empty() ? "; ours " + rs[0].text : "";
     c.verdictText = ours      ? "reproduced by ours"
-                    : listing ? "reproduced by the paper's printed listing; ours " + rs[0].text
-                              : "differs: ours " + rs[0].text + (rs.size() > 1 ? "; listing " + rs[1].text : "");
+                    : listing ? "reproduced by the paper's printed listing" + oursText
+                              : "differs" + (oursText.empty() ? std::string(":") : ":" + oursText.substr(1)) +
+                                    (rs.size() > 1 && rs[1].leftOut.empty() ? "; listing " + rs[1].text : "");
     c.verdictText = withLeftOut(c.verdictText);
     return;
   }

@@ -1,6 +1,7 @@
 #include "harness/claims/figure_set.h"
 
 #include <fstream>
+#include <iterator>
 
 namespace mb::claims {
 
@@ -18,12 +19,13 @@ FigureSet loadFigureSet(const std::map<std::string, std::string>& layout) {
   FigureSet set;
   for (const auto& [source, path] : layout) {
     set.files[source] = path;
-    std::ifstream in(path);
+    std::ifstream in(path, std::ios::binary);
     if (!in) {
       set.missing[source] = path + ": not found";
       continue;
     }
-    const json j = json::parse(in, nullptr, false);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const json j = json::parse(text, nullptr, false);
     if (j.is_discarded() || !j.is_object()) {
       set.missing[source] = path + ": not JSON";
     } else if (!j.contains("figures") || !j["figures"].is_object()) {

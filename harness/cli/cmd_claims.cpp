@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "harness/claims/claim_table.h"
 #include "harness/claims/claims_layout.h"
@@ -43,8 +44,10 @@ const SourceOption kSources[] = {
 };
 
 json readJson(const std::string& path) {
-  std::ifstream f(path);
-  return f ? json::parse(f, nullptr, false) : json();
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return json();
+  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  return json::parse(text, nullptr, false);
 }
 
 int runClaims(const std::vector<std::string>& argv) {
