@@ -46,6 +46,7 @@ json sideFigures(const json& b, unsigned cores) {
   for (const char* key : {bench::kCopyFraction, "copy_GBps"})
     if (b.contains(key)) s[key] = b[key];
   if (b.contains("label")) s["label"] = b["label"];
+  if (b.contains("repetitions")) s["repetitions"] = b["repetitions"];  // the median's sample count
   return s;
 }
 

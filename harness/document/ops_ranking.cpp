@@ -56,10 +56,10 @@ json measures(const json& isa) {
         {"definition", "mul + add + div + sqrt + other of the functions the vertex shader calls, executed once on the "
                        "op-counting scalar through the GLSL shim (subtraction counts as addition, negation is free)"},
         {"device", "op-counting scalar (mb::Counted)"}},
-       {{"key", "spirv_probe"}, {"name", "SPIR-V (probe) ops"}, {"short", "SPIR-V (probe)"},
+       {{"key", "spirv_probe"}, {"name", "SPIR-V probe ops"}, {"short", "SPIR-V probe"},
         {"definition", "the same total counted in the SPIR-V of those functions compiled alone (glslangValidator, "
                        "spirv-opt -O, vector and matrix instructions expanded to scalar operations)"},
-        {"device", "SPIR-V (probe): the transform functions compiled alone"}},
+        {"device", "SPIR-V probe: the transform functions compiled alone"}},
        {{"key", "isa"}, {"name", "AMD ISA instructions (median over " + std::to_string(families) + " families)"},
         {"short", "ISA"},
         {"definition", "instructions of the whole compiled vertex shader (main() included), the median over the GPU "
@@ -161,7 +161,7 @@ void addOpsRanking(json& r) {
     f.scope = s.name;
     f.n = entry["pairs"].get<int>();
     f.value = f.n > 0 ? double(entry["reversed"].size()) : std::nan("");
-    f.device = "counted ops, SPIR-V (probe) ops, AMD ISA instructions (report.json opsRanking)";
+    f.device = "counted ops, SPIR-V probe ops, AMD ISA instructions (report.json opsRanking)";
     f.definition = "pipeline pairs one measure orders one way and another the other way (ties order nothing), "
                    "of n pairs at least two measures order";
     if (!std::isfinite(f.value)) f.why = entry.value("line", "");

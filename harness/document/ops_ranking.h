@@ -1,5 +1,5 @@
 // Where the three kinds of op evidence order the pipelines differently: counted
-// ops, SPIR-V (probe) ops and AMD ISA instructions of one vertex shader scope ("rigid vertex to
+// ops, SPIR-V probe ops and AMD ISA instructions of one vertex shader scope ("rigid vertex to
 // clip", "skinned vertex to clip"). Computed once into report.json "opsRanking" (with each
 // measure's definition and device) and the figures ops_ranking.<scope>.pairs_reversed;
 // report.md's ops section and claims' ops_ranking_* rows print its "line" and the table of the
@@ -26,7 +26,7 @@ nlohmann::json opsRanking(const nlohmann::json& opsVariants, const nlohmann::jso
 // ops_ranking.<scope>.pairs_reversed (value: reversed pairs, n: pairs compared).
 void addOpsRanking(nlohmann::json& report);
 
-// "matrix 113 / 113 / 129, motor 132 / 132 / 137 (counted ops / SPIR-V (probe) ops / ...)":
+// "matrix 113 / 113 / 129, motor 132 / 132 / 137 (counted ops / SPIR-V probe ops / ...)":
 // one scope's table in one line ("-" where a measure lacks the pipeline).
 std::string opsRankingTableText(const nlohmann::json& scope);
 

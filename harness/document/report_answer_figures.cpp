@@ -5,6 +5,7 @@
 #include <tuple>
 #include <vector>
 
+#include "harness/document/report_compact.h"
 #include "harness/document/report_document.h"
 #include "harness/document/report_figures.h"
 #include "harness/document/report_format.h"
@@ -53,7 +54,7 @@ void fetchFigures(json& out, const json& r, const std::vector<std::string>& pipe
     }
     const std::string scope = "shading-attribute stream of every drawn primitive, one frame, Euclidean scenes";
     figures::put(out, overScenes("vertex_fetch.bytes_per_vertex." + p, "bytes", scope, kFetchDevice,
-                                 "bytes a GPU fetches (64-byte lines) per vertex referenced, with " + p + "'s stride",
+                                 "bytes fetched per vertex referenced in meshoptimizer's fetch model (64-byte lines), with " + p + "'s stride",
                                  perVertex));
     figures::put(out, overScenes("vertex_fetch.bytes_per_frame_over_baseline." + p, "x", scope, kFetchDevice,
                                  "bytes fetched per frame " + p + " / " + base + " (< 1: " + p + " cheaper)", perFrame));
@@ -89,6 +90,58 @@ void isaFigures(json& out, const json& r, const std::vector<std::string>& pipes)
           figures::put(out, f);
         }
       }
+}
+
+Figure fragmentFigure(const std::string& name, const std::string& kind, const std::string& unit, double value,
+                      const std::string& scope, const std::string& device, const std::string& definition) {
+  Figure f;
+  f.kind = kind;
+  f.name = name, f.unit = unit, f.scope = scope, f.device = device, f.definition = definition;
+  f.statistic = kind == "counted" ? "count (mul + add + div + sqrt + other)" : "compiled: the compiler's statistic";
+  f.value = value;
+  f.n = std::isfinite(value) ? 1 : 0;
+  if (!std::isfinite(value)) f.why = "not in this report.json";
+  return f;
+}
+
+// The fragment stage of each pipeline's rigid program: its AMD ISA per family
+// (isa.fragment_instructions / isa.fragment_vgprs.rigid.<family>.<p>), the varyings it reads
+// (varyings.slots / varyings.components.<p>: the fragment shader's inputs in its SPIR-V) and the
+// counted shading normal per fragment (ops_per_fragment.shading_normal.<normal_mapped|no_normal_map>.<p>).
+void fragmentFigures(json& out, const json& r, const std::vector<std::string>& pipes) {
+  const json& isa = at(r, {"isa"});
+  const json& families = at(isa, {"families"}).is_array() ? isa["families"] : json::array();
+  const std::string rigid = "the rigid program's fragment shader (forward.fs as the pipeline links it)";
+  for (const std::string& p : pipes) {
+    for (const json& fam : families) {
+      const std::string id = fam.value("id", "");
+      const json* row = isaRow(isa, p, "rigid", id, "fragment");
+      const std::string device = "RADV " + id + " (" + fam.value("generation", "") + "), compiler statistics on the null device, not timed";
+      figures::put(out, fragmentFigure("isa.fragment_instructions.rigid." + id + "." + p, "compiled", "instructions",
+                                       row ? numberOrNaN((*row)["instructions"]) : std::nan(""), rigid, device,
+                                       "ISA instructions of the compiled fragment shader"));
+      figures::put(out, fragmentFigure("isa.fragment_vgprs.rigid." + id + "." + p, "compiled", "VGPRs",
+                                       row ? numberOrNaN((*row)["vgprs"]) : std::nan(""), rigid, device,
+                                       "vector registers the compiled fragment shader allocates"));
+    }
+    const json* first = families.empty() ? nullptr : isaRow(isa, p, "rigid", families.front().value("id", ""));
+    for (const auto& [key, field] : {std::pair<const char*, const char*>{"slots", "varyingSlots"}, {"components", "varyingComponents"}})
+      figures::put(out, fragmentFigure(std::string("varyings.") + key + "." + p, "compiled", key,
+                                       first ? numberOrNaN(first->value(field, json())) : std::nan(""),
+                                       "the rigid program's varyings", "SPIR-V of the fragment shader (its inputs)",
+                                       std::string("vec4 ") + key + " the rigid program passes to the fragment shader"));
+    for (const bool mapped : {true, false}) {
+      const std::string kernel = shadingNormalKernel(p, mapped);
+      double total = std::nan("");
+      for (const json& k : at(r, {"opsPerVertex", "kernels"}).is_array() ? r["opsPerVertex"]["kernels"] : json::array())
+        if (k.value("function", "") == kernel) total = opsTotal(k.value("counted", json()));
+      figures::put(out, fragmentFigure(std::string("ops_per_fragment.shading_normal.") + (mapped ? "normal_mapped." : "no_normal_map.") + p,
+                                       "counted", "ops", total, "one fragment's shading normal, " + kernel +
+                                           (mapped ? " (normal-mapped)" : " (no normal map)"),
+                                       "counted (op-counting scalar through the GLSL shim)",
+                                       "arithmetic operations per fragment; subtraction counts as addition, negation is free"));
+    }
+  }
 }
 
 // The vertex format's own image cost: the worst PSNR over the frames of
@@ -197,6 +250,45 @@ void imageFigures(json& out, const json& r, const std::vector<std::string>& pipe
 
 }  // namespace
 
+namespace {
+
+bool sameVariants(const std::vector<ShaderVariant>& a, const std::vector<ShaderVariant>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].stage != b[i].stage || a[i].defines != b[i].defines || a[i].draws != b[i].draws ||
+        a[i].kernels != b[i].kernels || a[i].fragment != b[i].fragment)
+      return false;
+  return true;
+}
+
+// The family most registered pipelines that run `stage` belong to: the family of that vertex shader.
+PipelineFamily stageFamily(const std::string& stage) {
+  int motor = 0, matrix = 0;
+  for (const PipelineEntry& q : registeredPipelines())
+    for (const ShaderVariant& v : q.variants)
+      if (v.stage == stage) {
+        ++(q.family == PipelineFamily::Motor ? motor : matrix);
+        break;
+      }
+  return motor > matrix ? PipelineFamily::Motor : PipelineFamily::Matrix;
+}
+
+}  // namespace
+
+std::string gpuSideOf(const std::string& p) {
+  const PipelineEntry* e = findPipeline(p);
+  if (!e || e->vertexBytes == 0 || e->variants.empty()) return "";
+  // Its shaders are its own family's: it draws with its own GPU side.
+  const PipelineFamily gpu = stageFamily(e->variants.front().stage);
+  if (gpu == e->family) return "";
+  for (const PipelineEntry& q : registeredPipelines())
+    if (q.name != p && q.family == gpu && q.space == e->space && q.vertexBytes == e->vertexBytes &&
+        q.frame.decodeKernel == e->frame.decodeKernel && q.frame.fetched == e->frame.fetched &&
+        q.frame.perFragment == e->frame.perFragment && sameVariants(q.variants, e->variants))
+      return q.name;
+  return "";
+}
+
 std::string pipelineFamily(const std::string& p) {
   const PipelineEntry* e = findPipeline(p);
   if (!e) return p.find("motor") != std::string::npos ? "motor" : "matrix";  // a name this build lacks
@@ -213,12 +305,17 @@ void addAnswerFigures(json& r) {
   const std::string base = pipes.empty() ? "" : pipes[0];
   fetchFigures(out, r, pipes, base);
   isaFigures(out, r, pipes);
+  fragmentFigures(out, r, pipes);
   imageFigures(out, r, pipes);
   curvedFigures(out, r["scenes"].get<std::vector<json>>(), at(r, {"curved", "drift"}), frameTimeDevice(at(r, {"machine"})));
   addKindFigures(r);
-  json families = json::object();
-  for (const std::string& p : pipes) families[p] = pipelineFamily(p);
+  json families = json::object(), gpuSides = json::object();
+  for (const std::string& p : pipes) {
+    families[p] = pipelineFamily(p);
+    if (const std::string q = gpuSideOf(p); !q.empty()) gpuSides[p] = q;
+  }
   r["pipelineFamilies"] = families;
+  r["pipelineGpuSides"] = gpuSides;
   r["scopeLadder"] = ladderJson(scopeLadder(r));
 }
 

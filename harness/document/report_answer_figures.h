@@ -15,6 +15,11 @@ namespace mb::report {
 // motor_c, motor_cf, hybrid), "matrix" for the others (matrix, affine, qtangent, matrix_c).
 std::string pipelineFamily(const std::string& pipeline);
 
+// The registered pipeline of the other family whose GPU side `pipeline` draws with (the same vertex,
+// frame encoding and vertex-shader variants): "qtangent" for hybrid, which poses with motors on the
+// CPU and draws as qtangent. "" when it draws with its own. report.json "pipelineGpuSides".
+std::string gpuSideOf(const std::string& pipeline);
+
 // Adds to report["figures"]: vertex_fetch.bytes_per_vertex.<p>,
 // vertex_fetch.bytes_per_frame_over_baseline.<p>, isa.instructions.rigid.<family id>.<p>,
 // image.worst_psnr.<p>, image.worst_psnr_own_format.<p> (the frames drawing p's own vertex

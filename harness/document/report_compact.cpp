@@ -81,8 +81,7 @@ void fragmentStageTable(Document& d, const json& r, const std::vector<std::strin
         {p},
         {v && v->contains("varyingSlots") ? fmt((*v)["varyingSlots"], 3) + " / " + fmt((*v)["varyingComponents"], 3)
                                           : "-"},
-        {kernelText(r, rotorPerFragment(p) ? "rotorShadingNormal" : "tbnShadingNormal")},
-        {kernelText(r, rotorPerFragment(p) ? "rotorSurfaceNormal" : "tbnSurfaceNormal")}};
+        {kernelText(r, shadingNormalKernel(p, true))}, {kernelText(r, shadingNormalKernel(p, false))}};
     for (const std::string& f : families) row.push_back({isaText(r, p, f, "fragment")});
     rows.push_back(std::move(row));
   }
@@ -90,6 +89,11 @@ void fragmentStageTable(Document& d, const json& r, const std::vector<std::strin
 }
 
 }  // namespace
+
+std::string shadingNormalKernel(const std::string& pipeline, bool normalMapped) {
+  if (rotorPerFragment(pipeline)) return normalMapped ? "rotorShadingNormal" : "rotorSurfaceNormal";
+  return normalMapped ? "tbnShadingNormal" : "tbnSurfaceNormal";
+}
 
 void compactSection(Document& d, const json& r) {
   d.heading(2, "Bytes vs image cost vs unpack cost", "compact");
@@ -106,11 +110,12 @@ void compactSection(Document& d, const json& r) {
               " over the frames where both should agree and the pipeline draws its own vertex format (skinning-method "
               "frames and scenes of patches only left out): worst "
               "PSNR, largest share of pixels over 1/255 and 4/255, worst channel difference; counted ops of the "
-              "frame decoding alone and of the whole rigid vertex to clip (counted; SPIR-V); frame time / " +
+              "frame decoding alone and of the rigid vertex shader (counted: the transform to clip; SPIR-V whole "
+              "shader: the compiled shader with its main()); frame time / " +
               pipes.front() + " (median over scenes, their count in brackets; vertex-bound: the tiny viewport)" +
               (families.empty() ? "." : "; AMD ISA instructions / VGPRs of the rigid vertex shader per family."));
   std::vector<std::string> head = {"pipeline", "B/vertex (normal-mapped)", "worst PSNR", "px > 1/255", "px > 4/255",
-                                   "worst pixel", "frame decode (counted)", "rigid to clip (counted; SPIR-V)",
+                                   "worst pixel", "frame decode (counted)", "rigid vertex shader (counted to clip; SPIR-V whole shader)",
                                    "frame time", "vertex-bound frame time"};
   for (const std::string& f : families) head.push_back("ISA " + f);
   std::vector<std::vector<Cell>> rows;

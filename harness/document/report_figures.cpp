@@ -1,9 +1,12 @@
 #include "harness/document/report_figures.h"
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <map>
 
 #include "harness/document/report_format.h"
+#include "pipelines/registry.h"
 
 namespace mb::report {
 namespace {
@@ -115,20 +118,38 @@ void opsFigures(json& out, const json& ops) {
   const std::pair<const char*, const char*> kinds[] = {{"rigid", "rigid vertex with frame, transform only"},
                                                        {"skinned", "skinned vertex (4 joints), transform only"},
                                                        {"toClip", "rigid vertex with frame, object to clip"}};
+  // A curved pipeline's probe is its instance transform (position and normal by camera * instance);
+  // the projection, the same on both sides, is in main() only (its whole-shader figure).
+  const char* kCurvedScope = "instance vertex (position + normal by camera * instance), projection left out";
   for (const json& row : ops.value("perPipeline", json::array())) {
     const std::string p = row.value("pipeline", "");
-    for (const auto& [kind, scope] : kinds) {
+    const PipelineEntry* e = findPipeline(p);
+    const bool curved = e && e->space != Space::Euclidean;
+    for (const auto& [kind, euclideanScope] : kinds) {
       const std::string k = kind == std::string("toClip") ? "to_clip" : kind;
+      const std::string scope = curved ? kCurvedScope : euclideanScope;
       figures::put(out, opsFigure("ops_per_vertex." + k + ".counted." + p, opsTotal(at(row, {kind, "counted"})), scope,
                                   "counted (op-counting scalar through the GLSL shim)"));
       figures::put(out, opsFigure("ops_per_vertex." + k + ".spirv_probe." + p, opsTotal(at(row, {kind, "spirv"})), scope,
-                                  "SPIR-V (probe): the transform functions compiled alone"));
+                                  "SPIR-V probe: the transform functions compiled alone"));
     }
   }
   for (const json& v : ops.value("variants", json::array()))
     figures::put(out, opsFigure("ops_per_vertex." + v.value("label", "") + ".spirv_whole_shader." + v.value("pipeline", ""),
                                 opsTotal(v.value("spirv", json())), "whole vertex shader " + v.value("shader", ""),
-                                "SPIR-V (whole shader): main() included"));
+                                "SPIR-V whole shader: main() included"));
+}
+
+// "the median of 3 repetitions" (the sides' recorded count; a bench file without it: "one run
+// or the median of the bench's repetitions").
+std::string repetitionsOf(const json& pair, std::initializer_list<std::string> sides) {
+  int n = 0;
+  for (const std::string& side : sides) {
+    const json& r = at(pair, {side.c_str(), "repetitions"});
+    if (!r.is_number_integer()) return "one run or the median of the bench's repetitions (not recorded)";
+    n = n == 0 ? r.get<int>() : std::min(n, r.get<int>());
+  }
+  return n > 1 ? "the median of " + std::to_string(n) + " repetitions" : "one run";
 }
 
 // CPU kernels: time of the fastest motor implementation / the fastest matrix implementation
@@ -144,7 +165,8 @@ void kernelFigures(json& out, const json& kernels, const std::string& cpu) {
       f.unit = "x";
       f.value = ips(motor) > 0 && ips(matrix) > 0 ? ips(matrix) / ips(motor) : std::nan("");
       f.n = std::isfinite(f.value) ? 1 : 0;
-      f.statistic = "ratio of Google Benchmark throughputs (items/s), expressed as time motor / matrix";
+      f.statistic = "ratio of two Google Benchmark throughputs (items/s), each " + repetitionsOf(p, {motor, matrix}) +
+                    ", expressed as time motor / matrix";
       f.scope = "CPU kernel " + pair + ": " + what + " (" + motor + " / " + matrix + ")";
       f.device = cpu;
       // The Highway target beside the CPU where a side is a SIMD kernel (its label).
@@ -170,7 +192,7 @@ void kernelFigures(json& out, const json& kernels, const std::string& cpu) {
       f.value = 1e9 / ips(side);
       f.unit = "ns";
       f.n = 1;
-      f.statistic = "measured: Google Benchmark time per item (items/s inverted)";
+      f.statistic = "measured: Google Benchmark time per item (items/s inverted), " + repetitionsOf(p, {side});
       f.scope = "CPU kernel " + pair + ", implementation " + side;
       f.device = cpu + (at(v, {"label"}).is_string() ? ", Highway " + v["label"].get<std::string>() : "");
       f.disturbed = at(v, {"disturbance"});

@@ -34,12 +34,13 @@ void gpuEvidenceSection(Document& d, const json& r) {
       first = false;
     }
   }
-  d.heading(2, "GPU-relevant evidence (measured on the mesh and layout, not timed)", kGpuEvidenceAnchor);
+  d.heading(2, "GPU-relevant evidence (modelled by meshoptimizer on the mesh and layout, not timed)", kGpuEvidenceAnchor);
   if (rows.empty()) {
     d.paragraph("Not in this report.json (made by an older motorbench, or no Euclidean scene drew).");
     return;
   }
-  d.paragraph("What one frame makes a GPU's vertex stage read and run, from meshoptimizer's analyzers on each "
+  d.paragraph("What one frame would make a GPU's vertex stage read and run in meshoptimizer's model (modelled, "
+              "not measured on a GPU): its analyzers on each "
               "drawn primitive's index buffer (times its instances) with each pipeline's own interleaved vertex "
               "stride as uploaded (normal-mapped / other primitives: the matrix pipeline adds a tangent only on "
               "the former). Skin and optional streams are the same for every pipeline and left out. Model: " +

@@ -1,7 +1,7 @@
-// The report's GPU-relevant evidence: per scene and pipeline, what the vertex stage of
-// a GPU fetches and transforms per frame for the pipeline's own vertex layout (report.json
-// scenes[].pipelines[p].vertexFetch and scenes[].overdraw, harness/report/vertex_fetch.h).
-// Measured on the mesh and the layout, not timed.
+// The report's GPU-relevant evidence: per scene and pipeline, what meshoptimizer's model says the
+// vertex stage of a GPU fetches and transforms per frame for the pipeline's own vertex layout
+// (report.json scenes[].pipelines[p].vertexFetch and scenes[].overdraw, harness/report/vertex_fetch.h).
+// Modelled from the mesh and the layout, not timed.
 #pragma once
 #include <nlohmann/json.hpp>
 

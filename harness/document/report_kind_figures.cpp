@@ -144,7 +144,7 @@ void bytesFigures(json& out, const json& r, const ContentKindDef& k, const std::
     const std::string none = s.scenes ? "the content has no vertex of this kind" : "no scene measured the vertex fetch";
     auto per = [](double a, double n) { return n > 0 ? a / n : std::nan(""); };
     putValue(out, make("kind.fetched_bytes_per_vertex." + k.id + "." + p, "bytes", "sum over scenes / sum over scenes",
-                       scope, kFetchDevice, "bytes a GPU fetches (64-byte lines) per vertex referenced, with " + p + "'s stride"),
+                       scope, kFetchDevice, "bytes fetched per vertex referenced in meshoptimizer's fetch model (64-byte lines), with " + p + "'s stride"),
              per(s.fetched, s.referenced), s.scenes, none);
     putValue(out, make("kind.uploaded_bytes_per_vertex." + k.id + "." + p, "bytes", "sum over scenes / sum over scenes",
                        scope, kFetchDevice, "shading-attribute bytes " + p + " uploads per vertex referenced (its stride)"),
@@ -259,7 +259,7 @@ void opsFigures(json& out, const json& r, const ContentKindDef& k, const std::ve
       putValue(out, make(std::string("kind.ops_") + way + "." + k.id + "." + p, "ops", kVariantStatistic,
                          scopeText(r, k.id, k.label),
                          way == std::string("counted") ? "counted (op-counting scalar through the GLSL shim)"
-                                                       : "SPIR-V (whole vertex shader, main() included)",
+                                                       : "SPIR-V whole shader (main() included)",
                          std::string("arithmetic operations (mul + add + div + sqrt + other)") + kVariantDefinition),
                v, n, variants.is_array() ? "no vertex of this kind, or a variant it draws was not counted"
                                          : "no ops counted in this report");

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "harness/document/report_document.h"
+#include "harness/document/report_figures.h"
 #include "harness/document/report_format.h"
 #include "harness/document/report_answer.h"
 #include "harness/document/report_compact.h"
@@ -106,7 +107,8 @@ void summary(Document& d, const json& r) {
       bool any = false;
       for (const json& v : ops.value("variants", json::array())) any = any || v.value("label", "") == label;
       if (!any) continue;
-      row(std::string("ops per vertex, ") + label + " shader (" + (std::string(way) == "counted" ? "counted" : "SPIR-V") + ")",
+      row(std::string("ops per vertex, ") + label + " shader (" +
+              (std::string(way) == "counted" ? "counted, to clip" : "SPIR-V whole shader") + ")",
           [&](const std::string& p) {
             for (const json& v : ops.value("variants", json::array()))
               if (v.value("pipeline", "") == p && v.value("label", "") == label) return opsText(v[way]);
@@ -147,7 +149,8 @@ void summary(Document& d, const json& r) {
                     "times and ops per vertex above.");
   }
   const json& ft = sum["frameTimeRatio"];
-  lines.push_back("Frame time motor / matrix (median over Euclidean scenes of each scene's median of per-frame "
+  lines.push_back("Frame time motor / matrix on " + frameTimeDevice(at(r, {"machine"})) +
+                  " (median over Euclidean scenes of each scene's median of per-frame "
                   "paired ratios; in brackets the range over those scenes): " +
                   (ft.value("n", 0) ? ratio(ft["median"]) + " (" + ratio(ft["min"]) + ".." + ratio(ft["max"]) + ")" : "-") +
                   scenesText(ft) + " (< 1: motor faster).");

@@ -8,6 +8,7 @@
 #include "harness/document/report_format.h"
 #include "harness/document/report_layout_common.h"
 #include "harness/document/report_marks.h"
+#include "harness/figures/figure.h"
 
 namespace mb::report {
 
@@ -43,8 +44,9 @@ void curvedSection(Document& d, const json& r) {
   d.paragraph("Spherical (S3) and hyperbolic (H3) scenes drawn by their space's pipelines: the matrix side "
               "uploads an O(4) / O(3,1) 4x4 matrix per instance, the motor side an 8-float motor (S3: the "
               "quaternion pair) and sandwiches in the vertex shader. Floats per instance as uploaded; ops per "
-              "vertex of the instance vertex shader (position + normal, counted through the shim and in the "
-              "optimised SPIR-V); PSNR of the motor images against the matrix ones; frame time motor / matrix "
+              "vertex in two scopes: counted, the instance transform only (position + normal by camera * instance, "
+              "the projection left out), and SPIR-V whole shader, the optimised vertex shader with main() (the "
+              "projection included, one mat4 * vec4 the same on both sides); PSNR of the motor images against the matrix ones; frame time motor / matrix "
               "paired per frame in one run, at the timing viewport and at the small vertex-bound one.");
   std::vector<std::vector<Cell>> table;
   for (const json& c : rows) {
@@ -65,7 +67,8 @@ void curvedSection(Document& d, const json& r) {
     }
   }
   d.paragraph(frameTimeOn(at(r, {"machine", "gl"})) + ": the two motor/matrix columns.");
-  d.table({"scene", "space", "pipeline", "floats per instance", "ops per vertex (counted)", "ops per vertex (SPIR-V)",
+  d.table({"scene", "space", "pipeline", "floats per instance", "ops per vertex (counted, transform only)",
+           "ops per vertex (SPIR-V whole shader, projection included)",
            "images vs matrix side", "frame time motor/matrix", "vertex-bound motor/matrix"},
           table);
   const json& drift = at(r, {"curved", "drift"});
@@ -124,8 +127,9 @@ void opsSection(Document& d, const json& r) {
   const json& ops = r["opsPerVertex"];
   d.heading(2, "Ops per vertex", "ops");
   d.paragraph("Each pipeline's vertex-shader variants (transform + world to clip). Counted: the GLSL "
-              "functions executed once on the op-counting scalar through the shim; SPIR-V: the real "
-              "vertex shader compiled with glslangValidator, optimised with spirv-opt -O, vector and "
+              "functions executed once on the op-counting scalar through the shim; SPIR-V probe: those "
+              "functions compiled alone; SPIR-V whole shader: the real vertex shader with its main(); both "
+              "compiled with glslangValidator, optimised with spirv-opt -O, vector and "
               "matrix instructions expanded to scalar operations." +
               (ops.value("toolsProblem", "").empty() ? std::string() : " SPIR-V not counted: " + str(ops["toolsProblem"])));
   std::vector<std::vector<Cell>> rows;
@@ -144,13 +148,34 @@ void opsSection(Document& d, const json& r) {
   for (const json& v : ops.value("variants", json::array()))
     rows.push_back({{str(v["pipeline"])}, {str(v["label"])}, {str(v["shader"])}, {opsText(v["counted"])},
                     {opsText(v["spirv"])}, {str(v["difference"], "")}});
-  d.table({"pipeline", "variant", "shader", "counted", "SPIR-V", "why they differ"}, rows);
+  d.table({"pipeline", "variant", "shader", "counted", "SPIR-V whole shader", "why they differ"}, rows);
   rows.clear();
   for (const json& k : ops.value("kernels", json::array()))
     rows.push_back({{str(k["pipeline"])}, {str(k["kernel"])}, {str(k["function"])}, {opsText(k["counted"])},
                     {opsText(k["spirv"])}, {str(k["difference"], "") + (str(k["note"], "").empty() ? "" : " " + str(k["note"]))}});
-  d.table({"pipeline", "kernel", "function", "counted", "SPIR-V (probe)", "difference / note"}, rows);
+  d.table({"pipeline", "kernel", "function", "counted", "SPIR-V probe", "difference / note"}, rows);
 }
+
+namespace {
+
+// "Google Benchmark's median of 3 repetitions" from the sides' recorded repetitions; a bench
+// file that does not record them says so.
+std::string repetitionsText(const json& kernels) {
+  std::vector<int> seen;
+  for (const json& p : kernels.value("pairs", json::array()))
+    for (const auto& [side, v] : p.items())
+      if (at(v, {"repetitions"}).is_number_integer() &&
+          std::find(seen.begin(), seen.end(), v["repetitions"].get<int>()) == seen.end())
+        seen.push_back(v["repetitions"].get<int>());
+  if (seen.empty()) return "one run or Google Benchmark's median of repetitions (not recorded in this report.json)";
+  std::sort(seen.begin(), seen.end());
+  if (seen == std::vector<int>{1}) return "one Google Benchmark run";
+  std::string n;
+  for (int k : seen) n += (n.empty() ? "" : " or ") + std::to_string(k);
+  return "Google Benchmark's median of " + n + " repetitions (each repetition and their spread in bench.json)";
+}
+
+}  // namespace
 
 void kernelSection(Document& d, const json& r) {
   const json& k = r["kernels"];
@@ -173,23 +198,29 @@ void kernelSection(Document& d, const json& r) {
               "hand-vectorised with Highway (compose also has simd_affine, the mat4x3 product, and lanes_motor, the "
               "4-lane motor product of the motor pipelines' CPU update). Out of cache = arrays "
               "of at least 256 MiB; "
-              "bw = bytes/s over the STREAM probe. Ratios of items/s: > 1 means faster than matrix. Skinned vertices in "
+              "bw = bytes/s over the STREAM probe. Each items/s is " + repetitionsText(k) +
+              ". Every ratio is time per item motor / matrix (the inverse of the items/s "
+              "ratio; < 1: motor faster), as in the summary and the plot. Skinned vertices in "
               "matched configurations: skinned_vertex with a world-space palette on every side, "
               "skinned_vertex_reference in the references' form (the node's transform after the blend) on every side.");
   std::vector<std::vector<Cell>> rows;
   for (const json& p : k.value("pairs", json::array())) {
     auto ips = [&](const char* side) { return fmt(at(p, {side, "items_per_second"}), 4); };
     auto bw = [&](const char* side) { return fixed(at(p, {side, "bw_fraction"}), 2); };
-    const std::string best = p["ratio_motor_fastest_matrix"].is_number()
-                                 ? ratio(p["ratio_motor_fastest_matrix"]) + " (" + str(p["fastest_motor"]) + " / " +
-                                       str(p["fastest_matrix"]) + ")"
-                                 : "-";
+    // The time ratios are report.json's figures (kernel_time.<pair>.*), the values the summary quotes.
+    const std::string pair = str(p["pair"]);
+    const auto shim = figures::figureNamed(r, "kernel_time." + pair + ".shim_motor_over_shim_matrix");
+    const auto fastest = figures::figureNamed(r, "kernel_time." + pair + ".fastest_motor_over_fastest_matrix");
+    const std::string best = fastest ? figureMark(fastest->name, figures::valueText(*fastest)) + " (" +
+                                           str(p["fastest_motor"]) + " / " + str(p["fastest_matrix"]) + ")"
+                                     : "-";
     rows.push_back({{str(p["kernel"])}, {str(p["size"], "-")}, {ips("matrix")}, {ips("motor")}, {ips("glm")},
-                    {ips("simd_matrix")}, {ips("simd_motor")}, {ratio(p["ratio_motor_matrix"])}, {best},
+                    {ips("simd_matrix")}, {ips("simd_motor")},
+                    {shim ? figureMark(shim->name, figures::valueText(*shim)) : "-"}, {best},
                     {bw("matrix") + " / " + bw("motor") + " / " + bw("simd_matrix") + " / " + bw("simd_motor")}});
   }
   d.table({"kernel", "working set", "matrix items/s", "motor items/s", "glm items/s", "simd_matrix items/s",
-           "simd_motor items/s", "motor/matrix", "best motor / fastest matrix",
+           "simd_motor items/s", "time motor / matrix (shim sources)", "time fastest motor / fastest matrix",
            "bw fraction matrix / motor / simd_matrix / simd_motor"},
           rows);
   std::string probe;

@@ -48,11 +48,11 @@ TEST(OpsRanking, NamesThePairTheIsaReverses) {
   EXPECT_EQ(r["reversed"][0]["a"], "A");
   EXPECT_EQ(r["reversed"][0]["b"], "B");
   EXPECT_EQ(r["line"],
-            "op ranking of the rigid vertex to clip: counted ops, SPIR-V (probe) ops and AMD ISA instructions (median over 2 families) "
-            "disagree on the order of 1 of 3 pipeline pairs: A vs B: A cheaper by counted and SPIR-V (probe), B "
+            "op ranking of the rigid vertex to clip: counted ops, SPIR-V probe ops and AMD ISA instructions (median over 2 families) "
+            "disagree on the order of 1 of 3 pipeline pairs: A vs B: A cheaper by counted and SPIR-V probe, B "
             "cheaper by ISA");
   EXPECT_EQ(mb::report::opsRankingTableText(r),
-            "A 10 / 10 / 6, B 20 / 20 / 4, C 30 / 30 / 10 (counted ops / SPIR-V (probe) ops / AMD ISA instructions "
+            "A 10 / 10 / 6, B 20 / 20 / 4, C 30 / 30 / 10 (counted ops / SPIR-V probe ops / AMD ISA instructions "
             "(median over 2 families))");
 }
 

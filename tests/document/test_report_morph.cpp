@@ -87,6 +87,25 @@ TEST(ReportMorph, CellsQuoteTheirFiguresAndRows) {
   EXPECT_EQ(matrix[col("worst PSNR vs matrix")], "baseline");
 }
 
+// The default method's sentence says what its figures say (worst PSNR and max error against
+// matrix over n frames), not that it is exact.
+TEST(ReportMorph, TheDefaultMethodIsDescribedByItsFigures) {
+  json r = handReport();
+  json& f = r["morph"]["figures"];
+  f["morph.worst_psnr.rigid.motor_frame"] = figureJson("morph.worst_psnr.rigid.motor_frame", 56.7, "dB");
+  f["morph.max_error.rigid.motor_frame"] = figureJson("morph.max_error.rigid.motor_frame", 0.129, "of 1");
+  report::Document d;
+  report::morphSection(d, r);
+  std::string text;
+  for (const auto& b : d.blocks) text += b.text + "\n";
+  EXPECT_EQ(text.find("exact where matrix is"), std::string::npos) << text;
+  EXPECT_NE(text.find("56.7 dB"), std::string::npos) << text;
+  EXPECT_NE(text.find("0.129 of 1"), std::string::npos) << text;
+  EXPECT_NE(text.find("over 3 frames"), std::string::npos) << text;  // the figures' n
+  const auto rows = report::morphTable(r);
+  EXPECT_EQ(rows[2].back().rfind("exact", 0), std::string::npos) << rows[2].back();
+}
+
 TEST(ReportMorph, WithoutMorphJsonTheSectionSaysHowToMeasure) {
   report::Document d;
   report::morphSection(d, json{{"opsPerVertex", json::object()}});
