@@ -24,7 +24,7 @@ COLOURS = {
     "s3_matrix": "#8c564b", "s3_motor": "#e377c2", "h3_matrix": "#393b79", "h3_motor": "#ad494a",
     "frame": "#3182bd", "64x64 viewport (vertex-bound)": "#e6550d", "CPU update": "#31a354",
     "in cache": "#6baed6", "out of cache (>= 256 MiB)": "#fd8d3c", "one working set": "#969696",
-    "matrix family": "#08519c", "motor family": "#e6550d",
+    "matrix family: matrices on the CPU and the GPU": "#08519c", "motor family: motors on the CPU and the GPU": "#e6550d",
     "bytes fetched per frame": "#756bb1", "ops counted per vertex": "#de9ed6",
 }
 # Every label is at least 10 px high at the plots' 90 dpi: 8 pt = 8 * 90 / 72 = 10 px.
@@ -72,8 +72,9 @@ def scenes_with(report, pred):
     return [s for s in report.get("scenes", []) if pred(s)]
 
 
-def save(fig, outdir, name):
-    fig.tight_layout(rect=(0, 0, 1, 0.94))
+def save(fig, outdir, name, right=1.0):
+    """Writes the figure; `right` is the share of its width the axes may use (a legend beside them)."""
+    fig.tight_layout(rect=(0, 0, right, 0.94))
     fig.savefig(os.path.join(outdir, name + ".png"), dpi=DPI, metadata={"Software": None})
 
 
@@ -125,10 +126,16 @@ def grouped_bars(ax, labels, series, ylabel, digits=3, reference=None, bars=None
     ax.set_ylabel(ylabel, fontsize=FONT + 1)
 
 
-def legend(fig, names):
+def legend(fig, names, markers=False):
     """One legend for the figure, above the axes (it never hides a bar), a patch of each
-    series' colour from the table."""
+    series' colour from the table (markers: the series' point marker in its colour, for scatter
+    plots)."""
+    from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
+    if markers:  # beside the axes, one entry a line: the figure keeps its height
+        handles = [Line2D([], [], linestyle="none", marker=marker(n), color=colour(n), label=n) for n in names]
+        fig.legend(handles=handles, loc="center right", ncol=1, fontsize=FONT, frameon=False)
+        return
     handles = [Patch(facecolor=colour(n), label=n) for n in names]
     fig.legend(handles=handles, loc="upper center", ncol=min(len(names), 6), fontsize=FONT,
                bbox_to_anchor=(0.5, 1.0), frameon=False)
@@ -187,8 +194,8 @@ def plot_ops_per_vertex(plt, report, outdir):
 def plot_kernel_ratios(plt, report, outdir):
     # Time per item, fastest motor implementation / fastest matrix implementation: report.json's
     # summary.kernelRatios, the figure report.md and claims quote (not the shim sources
-    # against each other); < 1 = motor side cheaper, as in every other plot. One Google
-    # Benchmark run per kernel: no spread to draw.
+    # against each other); < 1 = motor side cheaper, as in every other plot. Each side's time is
+    # the median of the bench's repetitions; the ratio of two medians carries no spread to draw.
     ratios = (report.get("summary") or {}).get("kernelRatios") or {}
     pairs = [dict(p, time_ratio=ratios[p["pair"]]["motorOverMatrixTime"],
                   sides="%s / %s" % (ratios[p["pair"]].get("fastestMotor"), ratios[p["pair"]].get("fastestMatrix")))
@@ -231,14 +238,18 @@ def plot_kernel_ratios(plt, report, outdir):
     ax.set_xlabel("time per item motor / matrix (%s)" % CONVENTION, fontsize=FONT + 1)
     ctx = report.get("kernels", {}).get("context") or {}
     cpu = ctx.get("cpu_model") or (report.get("machine") or {}).get("cpu", "unnamed CPU")
-    ax.set_title("CPU kernel time ratios on %s (Google Benchmark, one run: no spread)" % cpu, fontsize=9)
+    reps = repetitions(report)
+    short = reps if len(reps) < 40 else "repetitions not recorded"
+    ax.set_title("CPU kernel time ratios on %s (Google Benchmark)\neach side's time: %s; no spread drawn" % (cpu, short),
+                 fontsize=9)
     ax.legend(fontsize=FONT)
     save(fig, outdir, "kernel_ratios")
     return ("kernel_ratios", "Kernel time ratios",
             "motorbench bench: time per item of the fastest motor implementation over the fastest matrix "
             "implementation of each pair (named beside the kernel; the inverse of the throughput ratio; "
-            "< 1: motor faster), in cache and out of cache, on the CPU in the title; one run per kernel, so "
-            "no error bars; a logarithmic axis when the ratios span more than 10x.", bars)
+            "< 1: motor faster), in cache and out of cache, on the CPU in the title; each side's time is %s "
+            "(bench.json keeps every repetition and their coefficient of variation); a ratio of two medians has no "
+            "spread of its own, so no error bars; a logarithmic axis when the ratios span more than 10x." % reps, bars)
 
 
 def fallback_label(scene):
@@ -342,17 +353,54 @@ def plot_image_error(plt, report, outdir):
             "expected difference, not an error).", bars)
 
 
+PLURAL = {"matrix": "matrices", "motor": "motors"}
+
+
+def design_series(p, families, gpu_sides):
+    """The design-space series of pipeline p: its family, which transforms with its own maths on the
+    CPU and the GPU, or, where its GPU side is another family's pipeline (report.json
+    pipelineGpuSides), an entry of its own that says both ("hybrid: motors on the CPU, qtangent
+    on the GPU")."""
+    fam = families.get(p, "matrix")
+    if p in gpu_sides:
+        return "%s: %s on the CPU, %s on the GPU" % (p, PLURAL.get(fam, fam), gpu_sides[p])
+    return "%s family: %s on the CPU and the GPU" % (fam, PLURAL.get(fam, fam))
+
+
+def marker(series):
+    """A family's points are discs; a pipeline with another family's GPU side a diamond."""
+    return "o" if " family: " in series else "D"
+
+
+def apart_text(points):
+    apart = sorted({p["family"] for p in points if " family: " not in p["family"]})
+    return ("; marked apart (a diamond): " + "; ".join(apart)) if apart else ""
+
+
+def repetitions(report):
+    """How each kernel time was taken: "the median of 3 repetitions" from the pairs' recorded
+    repetitions (report.json kernels.pairs[].<side>.repetitions), else what is known."""
+    seen = sorted({v["repetitions"] for p in (report.get("kernels") or {}).get("pairs", []) for v in p.values()
+                   if isinstance(v, dict) and isinstance(v.get("repetitions"), int)})
+    if not seen:
+        return "one run or the median of repetitions (not recorded in this report.json)"
+    if seen == [1]:
+        return "one run"
+    return "the median of %s repetitions" % " or ".join(str(n) for n in seen)
+
+
 def design_space_points(report):
     """One point per pipeline: x = bytes fetched per vertex, y = ISA instructions of the rigid
     vertex shader on the newest AMD family measured (else counted ops to clip, said on the axis),
     family and the GPU frame time over the baseline where a GPU measured it. All figures."""
     pipes = (report.get("settings") or {}).get("pipelines", [])
     families = report.get("pipelineFamilies") or {}
+    gpu_sides = report.get("pipelineGpuSides") or {}
     isa = [f.get("id") for f in ((report.get("isa") or {}).get("families") or [])]
     fam = isa[-1] if isa else None
     gpu = bool(((report.get("machine") or {}).get("gl") or {}).get("realGpu"))
     if fam:
-        ylabel = "ISA instructions, rigid VS (RADV %s)" % fam
+        ylabel = "ISA instr., rigid VS (RADV %s; compiled)" % fam
     else:
         ylabel = "ops per vertex, rigid to clip (counted; no ISA in this report)"
     points = []
@@ -364,7 +412,7 @@ def design_space_points(report):
         # The vertex-bound viewport's paired ratio where measured (the GPU question), else the frame's.
         t = (figure(report, "frame_time_vertex_bound.%s_over_matrix" % p)
              or figure(report, "frame_time.%s_over_matrix" % p)) if gpu else None
-        points.append({"pipeline": p, "family": families.get(p, "matrix") + " family", "x": x["value"],
+        points.append({"pipeline": p, "family": design_series(p, families, gpu_sides), "x": x["value"],
                        "y": y["value"], "time": t["value"] if t else None})
     return points, ylabel, gpu
 
@@ -373,7 +421,7 @@ def plot_design_space(plt, report, outdir):
     points, ylabel, gpu = design_space_points(report)
     if not points:
         return None
-    fig, ax = plt.subplots(figsize=(7.0, 3.0))
+    fig, ax = plt.subplots(figsize=(9.5, 3.0))  # 3 in high: the answer block and it above the fold
     bars = []
     seen = {}
     for pt in points:
@@ -382,7 +430,8 @@ def plot_design_space(plt, report, outdir):
         # family's colour shows.
         key = (round(pt["x"], 3), round(pt["y"], 3))
         seen.setdefault(key, []).append(pt)
-        ax.scatter([pt["x"]], [pt["y"]], color=col, s=60 / len(seen[key]), zorder=2 + len(seen[key]))
+        ax.scatter([pt["x"]], [pt["y"]], color=col, s=60 / len(seen[key]), zorder=2 + len(seen[key]),
+                   marker=marker(pt["family"]))
         bars.append({"panel": None, "series": pt["family"], "label": pt["pipeline"], "x": pt["x"], "value": pt["y"],
                      "text": None if pt["time"] is None else "%.2fx" % pt["time"], "colour": col, "iqr": None})
     xs = [p["x"] for p in points]
@@ -401,18 +450,19 @@ def plot_design_space(plt, report, outdir):
         placed.append((x, y, side))
     ax.set_xlim(0, max(xs) * 1.35)
     ax.set_ylim(min(ys) * 0.9, max(ys) * 1.1)
-    ax.set_xlabel("bytes fetched per vertex (meshoptimizer model, not timed)", fontsize=FONT + 1)
+    ax.set_xlabel("bytes fetched per vertex (meshoptimizer's model: modelled, not timed)", fontsize=FONT + 1)
     ax.set_ylabel(ylabel, fontsize=FONT)
     ax.tick_params(labelsize=FONT)
     ax.grid(alpha=0.3)
     ax.set_title("Design space; labels: frame time / matrix on %s (vertex-bound where measured)" % frame_device(report) if gpu else
                  "Design space (no GPU timed: no frame times shown)", fontsize=9, pad=18)
-    legend(fig, sorted({p["family"] for p in points}))
-    save(fig, outdir, "design_space")
+    legend(fig, sorted({p["family"] for p in points}), markers=True)
+    save(fig, outdir, "design_space", right=0.66)
     return ("design_space", "Design space",
-            "One point per pipeline: bytes a GPU fetches per vertex with its layout (median over scenes) "
-            "against its vertex shader's instructions; lower left is cheaper on both. Motor and matrix "
-            "families in two colours.", bars)
+            "One point per pipeline: bytes fetched per vertex in meshoptimizer's fetch model with its layout "
+            "(modelled, not timed; median over scenes) against its vertex shader's ISA instructions (compiled by "
+            "RADV on its null device, not timed); lower left is cheaper on both. Colours: the matrix family and the "
+            "motor family, each transforming with its own maths on the CPU and the GPU" + apart_text(points) + ".", bars)
 
 # The kinds of content the answer splits the report into (harness/document/report_kind_figures.h).
 CONTENT_KINDS = [("all", "all content"), ("normal_mapped", "normal-mapped"), ("not_normal_mapped", "not normal-mapped"),
@@ -467,13 +517,13 @@ def plot_content_kinds(plt, report, outdir):
     kind_of = {label: kind for kind, label, _, _ in kinds}
     for b in bars:  # the kind's figure key beside its printed label
         b["kind"] = kind_of[b["label"]]
-    ax.set_title("Cost motor / matrix by kind of content (device: meshoptimizer's fetch model and the op counts, "
-                 "not timed)", fontsize=9, pad=24)
+    ax.set_title("Cost motor / matrix by kind of content (modelled: meshoptimizer's fetch model; counted: the op "
+                 "counts; not timed)", fontsize=9, pad=24)
     legend(fig, [name for name, _ in series])
     save(fig, outdir, "content_kinds")
     return ("content_kinds", "Cost by kind of content",
-            "Per kind of content the report draws, cost motor / matrix (< 1: motor side cheaper): bytes a GPU "
-            "fetches per frame (meshoptimizer's fetch model, each pipeline's stride) and arithmetic ops counted per "
+            "Per kind of content the report draws, cost motor / matrix (< 1: motor side cheaper): bytes fetched "
+            "per frame in meshoptimizer's fetch model (modelled, not timed; each pipeline's stride) and arithmetic ops counted per "
             "vertex, each vertex by the shader variant its primitive draws with (exact fallback included); under each "
             "kind its share of the content's drawn vertices and primitives. The values are report.json's kind "
             "figures, the same the answer quotes; the built-in scenes are controlled cases beside the files.", bars)

@@ -90,11 +90,43 @@ class AnswerPlots(unittest.TestCase):
         bars = self.plots["design_space"]["bars"]
         self.assertEqual(sorted(b["label"] for b in bars), ["matrix", "motor", "qtangent"])
         points = {b["label"]: (b["x"], b["value"], b["series"]) for b in bars}
-        self.assertEqual(points["motor"], (36, 162, "motor family"))
-        self.assertEqual(points["qtangent"], (28, 156, "matrix family"))  # the newest ISA family
+        motors, matrices = "motor family: motors on the CPU and the GPU", "matrix family: matrices on the CPU and the GPU"
+        self.assertEqual(points["motor"], (36, 162, motors))
+        self.assertEqual(points["qtangent"], (28, 156, matrices))  # the newest ISA family
         colours = {b["series"]: b["colour"] for b in bars}
-        self.assertNotEqual(colours["motor family"], colours["matrix family"])
+        self.assertNotEqual(colours[motors], colours[matrices])
         self.assertTrue(all(b["text"] is None for b in bars))  # no GPU timed: no time labels
+
+    def test_a_pipeline_with_another_familys_gpu_side_has_its_own_entry(self):
+        # hybrid poses with motors (its family) and draws as qtangent: not a motor-family point.
+        r = report()
+        r["settings"]["pipelines"].append("hybrid")
+        r["pipelineFamilies"]["hybrid"] = "motor"
+        r["pipelineGpuSides"] = {"hybrid": "qtangent"}
+        r["figures"]["vertex_fetch.bytes_per_vertex.hybrid"] = fig(28, "bytes")
+        r["figures"]["isa.instructions.rigid.gfx1100.hybrid"] = fig(156, "instructions")
+        folder, _, plots = run_plots(r, "motorbench_plots_hybrid_")
+        shutil.rmtree(folder, ignore_errors=True)
+        series = {b["label"]: b["series"] for b in plots["design_space"]["bars"]}
+        colours = {b["series"]: b["colour"] for b in plots["design_space"]["bars"]}
+        self.assertEqual(series["hybrid"], "hybrid: motors on the CPU, qtangent on the GPU")
+        self.assertEqual(series["motor"], "motor family: motors on the CPU and the GPU")
+        self.assertEqual(len(set(colours.values())), 3)  # three entries, three colours
+        self.assertIn("hybrid: motors on the CPU, qtangent on the GPU", plots["design_space"]["caption"])
+        self.assertIn("modelled", plots["design_space"]["caption"])
+        self.assertIn("compiled", plots["design_space"]["caption"])
+
+    def test_kernel_caption_says_how_each_time_was_taken(self):
+        # The sides' recorded repetitions (Google Benchmark's medians), else that they are unknown.
+        self.assertIn("not recorded", self.plots["kernel_ratios"]["caption"])
+        r = report()
+        r["kernels"]["pairs"][0]["simd_motor"] = {"items_per_second": 4.0, "repetitions": 3}
+        r["kernels"]["pairs"][0]["simd_affine"] = {"items_per_second": 1.0, "repetitions": 3}
+        folder, _, plots = run_plots(r, "motorbench_plots_reps_")
+        shutil.rmtree(folder, ignore_errors=True)
+        caption = plots["kernel_ratios"]["caption"]
+        self.assertIn("the median of 3 repetitions", caption)
+        self.assertNotIn("one run per kernel", caption)
 
     def test_design_space_labels_gpu_time_where_a_gpu_measured_it(self):
         r = report()
