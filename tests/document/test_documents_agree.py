@@ -1,9 +1,11 @@
-"""README.md, pipelines/compact/README.md, results/report.md, results/claims.md and results/curved/README.md quote one value
-per figure: every value a document quotes is read back by name (the
-<span title="NAME">TEXT</span> marks motorbench and scripts/document_figures.py write, and
-claims.md's rows by id as claims.<id>), and a name quoted twice, in one document or in two,
-must read the same; a figure of report.json must read as report.json's text. claims.md's
-answer lines must be report.md's. A copy with one value edited by hand fails (shown below).
+"""README.md, pipelines/compact/README.md, harness/cli/README.md, results/report.md,
+results/claims.md and results/curved/README.md quote one value per figure: every value a
+document quotes is read back by name (the <span title="NAME">TEXT</span> marks motorbench and
+scripts/document_figures.py write, and claims.md's rows by id as claims.<id>), and a name quoted
+twice, in one document or in two, must read the same; a figure of report.json (its "figures" and
+the morph figures it embeds) must read as report.json's text. claims.md's answer lines must be
+report.md's. A column that says SPIR-V says which (probe or whole shader) and quotes only that
+one. A copy with one value edited by hand fails (shown below).
 """
 import json
 import os
@@ -15,7 +17,8 @@ import tempfile
 import unittest
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-DOCS = ("README.md", "pipelines/compact/README.md", "results/report.md", "results/claims.md", "results/curved/README.md")
+DOCS = ("README.md", "pipelines/compact/README.md", "harness/cli/README.md", "results/report.md", "results/claims.md",
+        "results/curved/README.md")
 SPAN = re.compile(r'<span title="([^"]+)">([^<]*)</span>')
 
 
@@ -35,7 +38,16 @@ def quoted(text):
     out = {}
     for name, value in SPAN.findall(text):
         out.setdefault(name, []).append(value.replace("\\|", "|"))
-    # claims.md's section tables: | id | origin | claim | paper | measured | how | verdict |
+    # claims.md's section tables: | id | origin | claim | ... | measured | ... | verdict |
+    for header, cells in table_rows(text):
+        column = measured_column(header)
+        if column is not None and len(cells) > column:
+            out.setdefault("claims." + cells[0], []).append(cells[column])
+    return out
+
+
+def table_rows(text):
+    """(header, cells) of every body row of every Markdown table."""
     header = None
     for line in text.splitlines():
         if not line.startswith("|"):
@@ -44,10 +56,32 @@ def quoted(text):
         cells = split_row(line)
         if header is None:
             header = cells
-            continue
-        if header[:5] == ["id", "origin", "claim", "paper", "measured"] and len(cells) >= 5 and not cells[0].startswith("-"):
-            out.setdefault("claims." + cells[0], []).append(cells[4])
-    return out
+        elif not cells[0].startswith("-") and not set("".join(cells)) <= set("-: "):
+            yield header, cells
+
+
+def measured_column(header):
+    """The "measured" column of a claims.md section table (its first columns id, origin), else None."""
+    return header.index("measured") if header[:2] == ["id", "origin"] and "measured" in header else None
+
+
+def spirv_scope_problems(doc, text):
+    """Every column whose header says SPIR-V must name its scope (probe or whole shader) and quote
+    only figures of that scope (ops_per_vertex.*.spirv_probe.* or *.spirv_whole_shader.*)."""
+    problems = []
+    for header, cells in table_rows(text):
+        for title, cell in zip(header, cells):
+            if "SPIR-V" not in title:
+                continue
+            scopes = [k for k, words in (("spirv_probe", "SPIR-V probe"), ("spirv_whole_shader", "SPIR-V whole shader"))
+                      if words in title]
+            names = [n for n, _ in SPAN.findall(cell) if ".spirv" in n]
+            if len(scopes) != 1 and names:
+                problems.append(f"{doc}: column '{title}' quotes SPIR-V figures without one scope: {names}")
+            for n in names:
+                if scopes and scopes[0] not in n:
+                    problems.append(f"{doc}: column '{title}' quotes {n}")
+    return problems
 
 
 def answer_rows(text):
@@ -69,7 +103,8 @@ def disagreements(root):
     """Every name read differently, each with where; [] when the documents agree."""
     with open(os.path.join(root, "results", "report.json"), encoding="utf-8") as f:
         report = json.load(f)
-    figures = report.get("figures", {})
+    figures = dict((report.get("morph") or {}).get("figures") or {})
+    figures.update(report.get("figures", {}))
     seen = {}  # name -> {canonical value: [document, ...]}
     texts = {}
     for doc in DOCS:
@@ -80,7 +115,7 @@ def disagreements(root):
         for name, values in quoted(texts[doc]).items():
             for v in values:
                 seen.setdefault(name, {}).setdefault(canonical(name, v, figures), []).append(doc)
-    problems = []
+    problems = [p for doc in texts for p in spirv_scope_problems(doc, texts[doc])]
     for name, values in sorted(seen.items()):
         fig = figures.get(name)
         if fig and fig.get("value") is not None:
@@ -91,13 +126,13 @@ def disagreements(root):
                     problems.append(f"{name}: {sorted(set(docs))} quote '{v}', report.json '{fig['text']}'")
         elif len(values) > 1:
             problems.append(f"{name}: " + "; ".join(f"'{v}' in {sorted(set(d))}" for v, d in values.items()))
-    # The ops ranking line: report.md and claims.md print report.json's line as it
-    # is, wherever they print it: no start or end of it is left once its exact copies are taken out.
+    # The ops ranking line: report.md prints report.json's line as it is, and claims.md, where it
+    # quotes it, too: no start or end of it is left once its exact copies are taken out.
     for label, ranking in sorted((report.get("opsRanking") or {}).items()):
         line = ranking["line"]
         start, end = "op ranking of the " + ranking["scope"] + ": ", line[-40:]
         for doc in ("results/report.md", "results/claims.md"):
-            if doc not in texts:
+            if doc not in texts or (doc == "results/claims.md" and start not in texts[doc]):
                 continue
             rest = texts[doc].replace(line, "")
             if line not in texts[doc] or start in rest or end in rest:
@@ -157,8 +192,9 @@ class DocumentsAgree(unittest.TestCase):
     def test_a_hand_edited_claims_row_fails(self):
         tmp = self.copy()
         claims = os.path.join(tmp, "results", "claims.md")
+        header = next(h for h, cells in table_rows(read(claims)) if cells[0] == "curved_floats_per_instance")
         row = next(l for l in read(claims).splitlines(True) if l.startswith("| curved_floats_per_instance |"))
-        measured = split_row(row)[4]
+        measured = split_row(row)[measured_column(header)]
         self.edit(claims, row, row.replace(measured, measured.replace("16", "15"), 1))
         self.assertTrue(any(p.startswith("claims.curved_floats_per_instance:") for p in disagreements(tmp)))
 
@@ -168,9 +204,20 @@ class DocumentsAgree(unittest.TestCase):
             ranking = json.load(f).get("opsRanking")
         self.assertIsNotNone(ranking, "results/report.json predates the ops ranking: regenerate results/")
         line = ranking["rigid"]["line"]
-        self.edit(os.path.join(tmp, "results", "claims.md"), line, line.replace(" pipeline pairs", " pairs", 1))
-        self.assertTrue(any(p.startswith("opsRanking.rigid: results/claims.md") for p in disagreements(tmp)),
+        self.edit(os.path.join(tmp, "results", "report.md"), line, line.replace(" pipeline pairs", " pairs", 1))
+        self.assertTrue(any(p.startswith("opsRanking.rigid: results/report.md") for p in disagreements(tmp)),
                         disagreements(tmp))
+
+    def test_a_spirv_column_of_the_other_scope_fails(self):
+        tmp = self.copy()
+        readme = os.path.join(tmp, "README.md")
+        self.edit(readme, '<span title="ops_per_vertex.rigid.spirv_probe.motor">',
+                  '<span title="ops_per_vertex.rigid.spirv_whole_shader.motor">')
+        self.assertTrue(any("quotes ops_per_vertex.rigid.spirv_whole_shader.motor" in p for p in disagreements(tmp)),
+                        disagreements(tmp))
+        compact = os.path.join(tmp, "pipelines", "compact", "README.md")
+        self.edit(compact, "rigid to clip (counted / SPIR-V probe)", "rigid to clip (counted / SPIR-V)")
+        self.assertTrue(any("without one scope" in p for p in disagreements(tmp)), disagreements(tmp))
 
     def test_an_edited_answer_line_fails(self):
         tmp = self.copy()
