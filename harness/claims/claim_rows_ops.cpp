@@ -191,7 +191,7 @@ void baselineRows(std::vector<ClaimRow>& rows) {
   rows.push_back(baseline(
       "affine_matrix_vertex", "affine matrix vertex with frame: 3x4 model matrix, 3x3 normal matrix", kToWorld,
       {{"counted", "ops:vertex.matrixAffineVertex.total", ""},
-       {"SPIR-V (probe)", "ops:vertex.matrixAffineVertex.spirv.total", ""},
+       {"SPIR-V probe", "ops:vertex.matrixAffineVertex.spirv.total", ""},
        {"motor rigid / affine, counted", "ops:vertex.motorRigidVertex.total", "ops:vertex.matrixAffineVertex.total"},
        {"Sample Viewer mat4 / affine, counted", "ops:vertex.matrixRigidVertex.total", "ops:vertex.matrixAffineVertex.total"}},
       "matrixAffineVertex (shaders/matrix_transform.glsl)"));
@@ -223,7 +223,7 @@ void baselineRows(std::vector<ClaimRow>& rows) {
     rows.push_back(baseline(
         f.id, f.what, {"transform to clip", "none", "synthetic inputs"},
         {{"counted (the functions main() calls)", v + ".counted.total", ""},
-         {"SPIR-V (whole shader, main() included)", v + ".spirv.total", ""},
+         {"SPIR-V whole shader (main() included)", v + ".spirv.total", ""},
          {std::string(f.pipeline) + " / " + f.other + ", counted", v + ".counted.total", o + ".counted.total"}},
         "columns: " + v + ".counted and " + v + ".spirv"));
   }

@@ -40,6 +40,8 @@ json syntheticReport(bool realGpu) {
   }
   figures::put(r["figures"], fig("bytes_per_vertex.matrix", 48, "bytes"));
   figures::put(r["figures"], fig("bytes_per_vertex.motor", 36, "bytes"));
+  figures::put(r["figures"], fig("ops_per_vertex.rigid.counted.matrix", 85, "ops"));
+  figures::put(r["figures"], fig("ops_per_vertex.rigid.counted.motor", 89, "ops"));
   figures::put(r["figures"], fig("ops_per_vertex.to_clip.counted.matrix", 113, "ops"));
   figures::put(r["figures"], fig("ops_per_vertex.to_clip.counted.motor", 132, "ops"));
   figures::put(r["figures"], fig("frame_time.motor_over_matrix", 0.9, "x", 3, 0.85, 0.95));
@@ -89,7 +91,14 @@ TEST(ReportAnswer, EveryLineQuotesItsFiguresAsReportJsonHasThem) {
                                                                          << figures::valueText(*f) << " not in: " << l.text;
     }
   }
-  EXPECT_NE(line(lines, "AMD ISA").text.find("tahiti 125/115, gfx1100 150/153"), std::string::npos);
+  // The ISA line quotes the scope ladder's cell: 150/153 = 0.98 (gfx1100) .. 125/115 = 1.09 (tahiti).
+  EXPECT_NE(line(lines, "AMD ISA").text.find("2 families"), std::string::npos) << line(lines, "AMD ISA").text;
+  EXPECT_NE(line(lines, "AMD ISA").text.find("instructions 0.98..1.09x as cheap"), std::string::npos)
+      << line(lines, "AMD ISA").text;
+  // The ops line: to world 89/85 = 1.05 (the paper's scope), to clip 132/113 = 1.17.
+  EXPECT_NE(line(lines, "ops").text.find("to world (the paper's scope) counted 89 ops / 85 ops 1.05x as cheap"),
+            std::string::npos) << line(lines, "ops").text;
+  EXPECT_NE(line(lines, "ops").text.find("132 ops / 113 ops 1.17x dearer"), std::string::npos) << line(lines, "ops").text;
   EXPECT_NE(line(lines, "image").text.find("1 of 3 frames identical"), std::string::npos);
 }
 
@@ -146,8 +155,10 @@ TEST(ReportAnswer, SkinnedFramesAreJudgedByTheirOwnMethodAndCounted) {
 TEST(ReportAnswer, VerdictsFollowTheFigures) {
   const std::vector<AnswerLine> cpu = answerLines(syntheticReport(false));
   EXPECT_EQ(line(cpu, "bytes").verdict, "motor side cheaper: it fetches fewer bytes");
-  EXPECT_EQ(line(cpu, "ops").verdict, "matrix side cheaper: it runs fewer arithmetic ops");  // 113 < 132
-  EXPECT_EQ(line(cpu, "AMD ISA").verdict, "motor fewer on 1, more on 1 of 2 families");
+  // Each scope judged by the one rule (motor / matrix <= 1.1): to world 89/85 passes, to clip 132/113 not.
+  EXPECT_EQ(line(cpu, "ops").verdict, "to world as cheap, to clip dearer");
+  // 125/115 and 150/153 both within 1.1; no throughput estimate in this report.
+  EXPECT_EQ(line(cpu, "AMD ISA").verdict, "instructions as cheap, throughput estimate -");
   EXPECT_EQ(line(cpu, "time").verdict, "inconclusive: a CPU rasterizer cannot discriminate");
   EXPECT_EQ(line(cpu, "image").verdict, "equivalent (every differing frame >= 50 dB)");
   // On a GPU the spread decides: IQR 0.85..0.95 lies below 1.

@@ -164,9 +164,9 @@ TEST(ReportKinds, LinesQuoteEachKindWithItsShareAndTheHeadlineNamesTheSides) {
                                           "motor 130 ops", 0),
             0u)
       << kindRow(ops, "skinned");
-  // 122 / 148 on the files; on the built-in scene 110 / 100; the rigid kernel alone as before.
+  // 122 / 148 on the files; on the built-in scene 110 / 100; the rigid vertex alone as before.
   EXPECT_EQ(ops.verdict, "motor side cheaper: fewer arithmetic ops, weighted by drawn vertices (by kind: above; "
-                         "built-in scenes: matrix side cheaper; rigid kernel alone: not counted)");
+                         "built-in scenes: matrix side cheaper; rigid vertex alone: not counted)");
   EXPECT_EQ(kindRow(lineOf(lines, "time"), "skinned"),
             "skinned [60 % of vertices, 75 % of primitives]: frame motor / matrix 1.2x over 1 scene(s)");
   EXPECT_EQ(kindRow(lineOf(lines, "time"), "built_in"), "built-in scenes (controlled cases) [50 vertices, 1 primitives]: not measured");
