@@ -1,7 +1,8 @@
-// `motorbench check` end to end: the committed goldens
-// pass; a deliberate shader change (tangent handedness flipped in a temporary copy of shaders/)
-// fails with a report; a one-step change only warns; a missing golden is an error naming the
-// file; --update writes goldens that then pass and keeps hand-tuned thresholds.
+// `motorbench check` end to end: the committed goldens pass; a deliberate shader change (tangent
+// handedness flipped in a temporary copy of shaders/) fails with a report; a one-step change only
+// warns; a missing golden is an error naming the file, a wrong --golden folder is named with what
+// a golden folder holds, and outside a checkout check asks for --golden DIR (never advising
+// --update); --update writes goldens that then pass and keeps hand-tuned thresholds.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -18,7 +19,10 @@ namespace fs = std::filesystem;
 
 const fs::path kGolden = fs::path(MB_SOURCE_DIR) / "tests" / "golden";
 
+using mb::cli_test::contains;
+using mb::cli_test::quoted;
 using mb::cli_test::readText;
+using mb::cli_test::runMb;
 using mb::cli_test::runCommand;
 std::string q(const fs::path& p) { return mb::cli_test::quoted(p); }
 int run(const std::string& cmd, std::string* output) { return runCommand(cmd, output); }
@@ -142,6 +146,35 @@ TEST(CliCheck, MissingGoldenIsAnErrorNamingTheFile) {
   EXPECT_EQ(rc, 2) << out;
   EXPECT_NE(out.find("golden.json"), std::string::npos) << out;
   fs::remove_all(root);
+}
+
+// "`check --golden <wrong folder>` advises `check --update`".
+TEST(CliInputText, WrongGoldenFolderIsNamedWithoutAdvisingUpdate) {
+  const fs::path dir = mb::cli_test::scratchDir("input_golden");
+  const auto r = runMb("check --golden " + quoted(dir) + " --scenes normal_torus --out " + quoted(dir / "out"));
+  EXPECT_EQ(r.rc, 2) << r.out;
+  EXPECT_TRUE(contains(r.out, "--golden " + dir.string() + ": not a golden folder (no golden.json there)")) << r.out;
+  EXPECT_TRUE(contains(r.out, "one PNG per scene, pose and pipeline")) << r.out;
+  EXPECT_FALSE(contains(r.out, "run check --update")) << r.out;
+  EXPECT_FALSE(contains(r.out, "--update` creates it")) << r.out;
+  EXPECT_FALSE(fs::exists(dir / "golden.json"));
+  fs::remove_all(dir);
+}
+
+// "`check` run outside the repository suggests `--update` (which would create goldens in the
+// wrong place) instead of `--golden DIR`."
+TEST(CliMessages, CheckOutsideACheckoutPointsToGolden) {
+  const fs::path dir = mb::cli_test::scratchDir("messages_check");
+  for (const char* args : {"check", "check --update"}) {
+    std::string out;
+    const int rc = mb::cli_test::runCommand("cd " + quoted(dir) + " && " + mb::cli_test::motorbench() + args, &out);
+    EXPECT_EQ(rc, 2) << args << "\n" << out;
+    EXPECT_TRUE(contains(out, "pass --golden DIR")) << out;
+    EXPECT_FALSE(contains(out, "run check --update")) << out;
+    EXPECT_FALSE(contains(out, "`motorbench check --update` creates it")) << out;
+  }
+  EXPECT_FALSE(fs::exists(dir / "tests")) << "check --update created goldens outside a checkout";
+  fs::remove_all(dir);
 }
 
 TEST(CliCheck, BadOptionsAreErrors) {

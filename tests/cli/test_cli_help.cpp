@@ -1,6 +1,7 @@
-// `motorbench help CMD` and `CMD --help` print the command's options,
-// the pipeline names it accepts and one example; a pipeline name is checked before the scene is
-// loaded and framed.
+// The help texts: `motorbench`, `motorbench --help` and `--version` (usage on stdout, exit 0; a
+// missing or unknown command exits 2), `motorbench help CMD` and `CMD --help` (the command's
+// options, the pipeline names it accepts and one example, and nothing run); a pipeline name is
+// checked before the scene is loaded and framed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,7 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using mb::cli_test::contains;
+using mb::cli_test::motorbench;
 using mb::cli_test::quoted;
+using mb::cli_test::runCommand;
 using mb::cli_test::runMb;
 
 const std::vector<std::string> kCommands = {"accuracy", "bench", "check", "claims", "compare", "diff", "drift", "inspect",
@@ -55,6 +58,32 @@ void expectUsageAndOptionsAgree(const std::string& command, const std::string& h
   }
 }
 
+TEST(CliUsage, TopLevelHelpListsEveryCommand) {
+  std::string out;
+  EXPECT_EQ(runCommand(motorbench() + "--help", &out), 0) << out;
+  for (const char* c : {"bench", "check", "claims", "compare", "inspect", "ops", "render", "report", "scenes", "time"})
+    EXPECT_NE(out.find(std::string("  ") + c + " "), std::string::npos) << c << " missing from:\n" << out;
+  std::string none;
+  EXPECT_EQ(runCommand(motorbench(), &none), 2) << none;
+}
+
+TEST(CliUsage, UnknownCommandIsAnError) {
+  std::string out;
+  EXPECT_EQ(runCommand(motorbench() + "frobnicate", &out), 2) << out;
+  EXPECT_NE(out.find("unknown command 'frobnicate'"), std::string::npos) << out;
+}
+
+// "`render` without `--pipeline` is an error or its default is in the usage"; "--version".
+TEST(CliOptions, RenderUsageNamesTheDefaultPipelineAndVersionPrints) {
+  const auto help = runMb("render --help");
+  EXPECT_TRUE(contains(help.out, "--pipeline NAME (default matrix")) << help.out;
+  const auto v = runMb("--version");
+  EXPECT_EQ(v.rc, 0) << v.out;
+  EXPECT_EQ(v.out.rfind("motorbench 0.", 0), 0u) << v.out;
+  EXPECT_TRUE(contains(v.out, "(git ")) << v.out;
+  EXPECT_TRUE(contains(runMb("--help").out, "--version"));
+}
+
 TEST(CliHelp, HelpCommandPrintsThatCommandsHelpNotTheGlobalOne) {
   const auto help = runMb("help render");
   EXPECT_EQ(help.rc, 0) << help.out;
@@ -64,6 +93,34 @@ TEST(CliHelp, HelpCommandPrintsThatCommandsHelpNotTheGlobalOne) {
   const auto unknown = runMb("help nope");
   EXPECT_EQ(unknown.rc, 2) << unknown.out;
   EXPECT_TRUE(contains(unknown.out, "unknown command 'nope'")) << unknown.out;
+}
+
+TEST(CliHelp, HelpIsaAndHelpHelp) {
+  const auto isa = runMb("help isa");
+  EXPECT_EQ(isa.rc, 0) << isa.out;
+  for (const char* part : {"\noptions:\n", "--family F,...", "--json FILE", "--isa-text DIR", "--device", "--jobs N",
+                           "\nexample:\n  motorbench isa "})
+    EXPECT_TRUE(contains(isa.out, part)) << part << "\n" << isa.out;
+  const auto help = runMb("help help");
+  EXPECT_EQ(help.rc, 0) << help.out;
+  EXPECT_TRUE(contains(help.out, "usage: motorbench help <command>")) << help.out;
+  EXPECT_TRUE(contains(help.out, "commands:")) << help.out;
+}
+
+// The help is the usage line, then options and an example (test_cli_help.cpp);
+// nothing runs: none of the lines a run prints (time's machine line, report's progress, bench's
+// "Running" line) appears.
+TEST(CliUsage, CommandHelpPrintsThatCommandsUsageAndRunsNothing) {
+  for (const char* c : {"time", "report", "render", "bench"}) {
+    std::string out;
+    EXPECT_EQ(runCommand(motorbench() + c + " --help", &out), 0) << c << ": " << out;
+    EXPECT_EQ(out.rfind(std::string("usage: motorbench ") + c + " ", 0), 0u) << out;
+    for (const char* ran : {"machine:", "report: ", "Running ", "GL_RENDERER"})
+      EXPECT_EQ(out.find(ran), std::string::npos) << c << " ran instead of printing its help:\n" << out;
+  }
+  std::string out;
+  EXPECT_EQ(runCommand(motorbench() + "time --frames 3 -h", &out), 0) << out;
+  EXPECT_NE(out.find("usage: motorbench time"), std::string::npos) << out;
 }
 
 // One `help` process per command; each lists its options and one example, and the commands that

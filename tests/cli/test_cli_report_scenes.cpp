@@ -1,14 +1,16 @@
-// What `motorbench report` shows beyond one animation of Euclidean built-ins:
-// --anim chooses animations (several, by name or index, per scene), an unknown one stops the
-// run naming the scene's animations; curved scenes are measured with their own space's
-// pipelines into a "curved space" section; statistics keep built-in scenes apart from files;
-// `time --json` carries the Bezier bytes table. Asserts structure and hand-derived values, never
-// a timing.
+// What `motorbench report` shows beyond one animation of Euclidean built-ins: an animated scene
+// gets one looping GIF per compared pipeline (24 frames of [baseline | pipeline | diff] over one
+// loop of its first animation), a scene without animation none; --anim chooses animations
+// (several, by name or index, per scene), an unknown one stops the run naming the scene's
+// animations; curved scenes are measured with their own space's pipelines into a "curved space"
+// section; statistics keep built-in scenes apart from files. Asserts structure and hand-derived
+// values, never a timing.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
 
+#include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 
 #include "harness/report/report_sources.h"
@@ -24,8 +26,36 @@ using mb::cli_test::quoted;
 using mb::cli_test::readJson;
 using mb::cli_test::readText;
 using mb::cli_test::runCommand;
+using mb::cli_test::scratchDir;
 
 const char* const kSmall = " --no-bench --no-isa --no-plots --frames 0 --size 48x32 --pipelines matrix,motor";
+
+TEST(AnimatedComparison, ReportHasOneLoopPerAnimatedScene) {
+  const fs::path dir = scratchDir("animated");
+  std::string out;
+  ASSERT_EQ(runCommand(motorbench() + "report skinned_tube textured_box --frames 0 --no-bench --no-isa --no-plots --size 64x48 -o " +
+                           quoted(dir), &out), 0) << out;
+  const nlohmann::json r = readJson(dir / "report.json");
+  ASSERT_FALSE(r.is_discarded());
+  const nlohmann::json& tube = r["scenes"][0];
+  ASSERT_EQ(tube["id"], "skinned_tube");
+  const nlohmann::json& a = tube["animated"]["motor"];
+  ASSERT_TRUE(a.contains("file")) << a.dump();
+  EXPECT_EQ(a["frames"], 24);
+  EXPECT_GT(a["maxPixelsOver2"].get<double>(), 0.0);  // LBS and motor skinning part on the bend
+  EXPECT_TRUE(r["scenes"][1]["animated"].is_null());  // textured_box has no animation
+
+  auto in = OIIO::ImageInput::open((dir / a["file"].get<std::string>()).string());
+  ASSERT_TRUE(in) << OIIO::geterror();
+  EXPECT_EQ(in->spec().width, 3 * 64);
+  EXPECT_EQ(in->spec().height, 48);
+  int subimages = 0;
+  while (in->seek_subimage(subimages, 0)) ++subimages;
+  EXPECT_EQ(subimages, 24);
+  in->close();
+  EXPECT_NE(readText(dir / "report.md").find(a["file"].get<std::string>()), std::string::npos);
+  fs::remove_all(dir);
+}
 
 TEST(CliReportAnim, SeveralAnimationsByNameAndIndexCommaOrRepeated) {
   const fs::path dir = mb::cli_test::scratchDir("report_anim");
@@ -179,33 +209,6 @@ TEST(ReportSources, EveryGltfPipelineNamesHowItBlendsJoints) {
   EXPECT_EQ(mb::report::sceneOrigin("skinned_tube"), "built-in");
   EXPECT_EQ(mb::report::sceneOrigin("s3_tiling"), "built-in");
   EXPECT_EQ(mb::report::sceneOrigin("/some/where/barrel.glb"), "file");
-}
-
-TEST(CliTimeJson, BezierBytesTableIsInTheJson) {
-  const fs::path dir = mb::cli_test::scratchDir("time_bytes");
-  std::string log;
-  ASSERT_EQ(runCommand(motorbench() + "time teapot --level 2,4 --frames 1 --warmup 0 --size 32x32 --json " +
-                           quoted(dir / "t.json"), &log), 0) << log;
-  const json j = readJson(dir / "t.json");
-  ASSERT_FALSE(j.is_discarded()) << log;
-  ASSERT_EQ(j["patchMemory"].size(), 1u) << j["patchMemory"].dump();
-  EXPECT_EQ(j["patchMemory"][0]["scene"], "teapot");
-  const json& rows = j["patchMemory"][0]["rows"];
-  ASSERT_FALSE(rows.empty());
-  int levels2 = 0, levels4 = 0;
-  for (const json& row : rows) {
-    const int n = row["level"];
-    (n == 2 ? levels2 : levels4) += 1;
-    // 32 patches x 16 control points x RGB32F; one pattern of (N+1)^2 uv (2 floats) and
-    // 2 N^2 triangles of 32-bit indices; pre-tessellated: (N+1)^2 vertices per patch.
-    EXPECT_EQ(row["controlPointBytes"], 32 * 16 * 12);
-    EXPECT_EQ(row["instancedBytes"], 32 * 16 * 12 + (n + 1) * (n + 1) * 8 + 2 * n * n * 3 * 4) << row.dump();
-    EXPECT_EQ(row["pretessellatedVertices"], 32 * (n + 1) * (n + 1));
-    EXPECT_GT(row["pretessellatedBytes"].get<double>(), row["instancedBytes"].get<double>()) << row.dump();
-  }
-  EXPECT_EQ(levels2, levels4);
-  EXPECT_GT(levels2, 0);
-  fs::remove_all(dir);
 }
 
 }  // namespace

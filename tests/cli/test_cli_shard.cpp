@@ -1,6 +1,7 @@
-// Sharded runs: `report`, `inspect` and `check` with --shard I/N run as GNU
-// parallel would run them, then `motorbench merge`, against one unsharded run of the same inputs.
-// Everything but the timings must be equal; a missing or duplicated shard must be an error.
+// Sharded runs: `report`, `inspect` and `check` with --shard I/N run as GNU parallel would run
+// them, then `motorbench merge`, against one unsharded run of the same inputs. Everything but the
+// timings must be equal; a missing or duplicated shard must be an error; a shard holding no input
+// says so.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -142,6 +143,23 @@ TEST(Shard, BadShardSpecIsAnError) {
     EXPECT_EQ(runCommand(motorbench() + "inspect textured_box --shard " + bad, &out), 2) << bad;
     EXPECT_NE(out.find("--shard"), std::string::npos) << out;
   }
+}
+
+// "an empty shard exits 0 silently".
+TEST(CliInputText, AnEmptyShardSaysSo) {
+  const fs::path dir = mb::cli_test::scratchDir("input_shard");
+  const auto r = runMb("inspect normal_torus textured_box --shard 3/3 --json " + quoted(dir / "s3.json"));
+  EXPECT_EQ(r.rc, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "shard 3/3 holds none of the 2 input(s) (more shards than inputs)")) << r.out;
+  EXPECT_TRUE(fs::is_regular_file(dir / "s3.json"));
+  const auto check = runMb("check --golden " + quoted(fs::path(MB_SOURCE_DIR) / "tests" / "golden") +
+                           " --scenes normal_torus --pipelines matrix --shard 2/2 --out " + quoted(dir / "c"));
+  EXPECT_EQ(check.rc, 0) << check.out;
+  EXPECT_TRUE(contains(check.out, "shard 2/2 holds none of the 1 input(s)")) << check.out;
+  const auto report = runMb("report normal_torus --shard 3/3 --frames 0 --no-bench --no-isa --no-plots -o " + quoted(dir / "r"));
+  EXPECT_EQ(report.rc, 0) << report.out;
+  EXPECT_TRUE(contains(report.out, "warning: shard 3/3 holds none of the 1 input(s)")) << report.out;
+  fs::remove_all(dir);
 }
 
 }  // namespace

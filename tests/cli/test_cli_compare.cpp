@@ -1,13 +1,17 @@
-// What compare prints and writes (its console lines, metrics.json, identical images) is
-// measured and says what it means. Drawn pixels are checked against an independent count of
-// the PNGs compare wrote.
+// `motorbench compare`: what it prints and writes (its console lines, metrics.json, diff.png,
+// the heat map's legend, the LDR-FLIP map) is measured and says what it means, and its verdict
+// follows the thresholds given (none given: not judged). Drawn pixels are checked against an
+// independent count of the PNGs compare wrote; skinned frames are judged against their own
+// skinning method's reference.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "harness/render/image_metrics.h"
 #include "tests/support/cli_test_support.h"
@@ -215,6 +219,117 @@ TEST(CliCompareText, SkinningMethodsAndOneUnitForEveryDifference) {
       << hard.out;
   EXPECT_GT(j["skinJudgement"]["pipelines"][0]["vsReference"]["maxError"].get<double>(), 0.0)
       << "the reference and motor agree to the byte: --hardfail 0.001 would pass";
+  fs::remove_all(dir);
+}
+
+// "compare's verdict text reads like a failure when no threshold was given; `--hardfail` alone
+// reports the default `--fail` reason; `--fail -1` and `--failpercent 500` are accepted;
+// `--fail`'s unit (0..1) is undocumented."
+TEST(CliMessages, CompareVerdictAndThresholds) {
+  const fs::path dir = mb::cli_test::scratchDir("messages_verdict");
+  const auto plain = runMb("compare normal_torus -o " + quoted(dir / "a"));
+  ASSERT_EQ(plain.rc, 0) << plain.out;
+  EXPECT_TRUE(contains(plain.out, "-> no threshold given, not judged")) << plain.out;
+  EXPECT_FALSE(contains(plain.out, "FAIL")) << plain.out;
+  const auto j = mb::cli_test::readJson(dir / "a" / "metrics.json");
+  ASSERT_FALSE(j.is_discarded());
+  EXPECT_EQ(j["verdict"]["text"], "no threshold given");
+  EXPECT_TRUE(j["verdict"]["reason"].is_null());
+  // The two pipelines differ a little on this scene (precondition of the --hardfail checks).
+  const double maxError = j["metrics"]["maxError"];
+  ASSERT_GT(maxError, 0.0) << "matrix and motor agree exactly: the --hardfail checks below say nothing";
+
+  // --hardfail alone judges the largest difference only: above it passes, below it fails with
+  // the --hardfail reason (not the default --fail one).
+  const auto pass = runMb("compare normal_torus --hardfail " + std::to_string(maxError * 2) + " -o " +
+                          quoted(dir / "b"));
+  EXPECT_EQ(pass.rc, 0) << pass.out;
+  EXPECT_TRUE(contains(pass.out, "-> PASS")) << pass.out;
+  const auto fail = runMb("compare normal_torus --hardfail " + std::to_string(maxError / 2) + " -o " +
+                          quoted(dir / "c"));
+  EXPECT_EQ(fail.rc, 1) << fail.out;
+  EXPECT_TRUE(contains(fail.out, "-> FAIL (max error")) << fail.out;
+  EXPECT_TRUE(contains(fail.out, "exceeds --hardfail")) << fail.out;
+  EXPECT_FALSE(contains(fail.out, "of pixels differ")) << fail.out;
+
+  for (const std::string& bad : {"--fail -1", "--failpercent 500", "--hardfail 2", "--fail abc"}) {
+    const auto r = runMb("compare normal_torus -o " + quoted(dir / "d") + " " + bad);
+    EXPECT_EQ(r.rc, 2) << bad << "\n" << r.out;
+    EXPECT_TRUE(contains(r.out, bad.substr(0, bad.find(' ')) + ": expected")) << r.out;
+  }
+  EXPECT_FALSE(fs::exists(dir / "d"));
+  const auto help = runMb("compare --help");
+  EXPECT_TRUE(contains(help.out, "--fail F(0..1)")) << help.out;
+  EXPECT_TRUE(contains(help.out, "--failpercent P(0..100)")) << help.out;
+  EXPECT_TRUE(contains(help.out, "channel difference / 255")) << help.out;
+  fs::remove_all(dir);
+}
+
+// --fail 1/255 as the help writes it (1/0 refused); LDR-FLIP printed, mapped and in
+// metrics.json beside PSNR. (The legend's numbers: test_cli_visibility.)
+TEST(CliCompare, CompareTakesFractionsAndWritesFlip) {
+  const fs::path dir = mb::cli_test::scratchDir("traps_compare");
+  const auto r = runMb("compare normal_torus --size 64x64 --fail 1/255 --failpercent 100 -o " + quoted(dir));
+  ASSERT_EQ(r.rc, 0) << r.out;
+  const auto j = mb::cli_test::readJson(dir / "metrics.json");
+  ASSERT_FALSE(j.is_discarded());
+  EXPECT_DOUBLE_EQ(j["thresholds"]["fail"].get<double>(), 1.0 / 255.0);
+  EXPECT_EQ(runMb("compare normal_torus --size 16x16 --fail 1/0 -o " + quoted(dir / "x")).rc, 2);
+  // FLIP: the line, the JSON beside psnr, the map of the frame's size.
+  EXPECT_TRUE(contains(r.out, "(LDR-FLIP, 0..1, 67 pixels per degree; map: flip.png)")) << r.out;
+  const auto& flip = j["metrics"]["flip"];
+  ASSERT_TRUE(flip.is_object()) << j["metrics"].dump();
+  EXPECT_GE(flip["mean"].get<double>(), 0.0);
+  EXPECT_LE(flip["max"].get<double>(), 1.0);
+  EXPECT_LE(flip["mean"].get<double>(), flip["max"].get<double>());
+  EXPECT_EQ(j["flipMap"], "flip.png");
+  auto map = mb::readImage((dir / "flip.png").string());
+  ASSERT_TRUE(map) << map.error();
+  EXPECT_EQ(map->width, 64);
+  EXPECT_EQ(map->height, 64);
+  fs::remove_all(dir);
+}
+
+// "the diff heat map has no legend"
+TEST(CliCompare, CompareWritesTheHeatMapLegend) {
+  const fs::path dir = mb::cli_test::scratchDir("visibility_legend");
+  const auto r = runMb("compare normal_torus -o " + quoted(dir));
+  ASSERT_EQ(r.rc, 0) << r.out;
+  const auto j = mb::cli_test::readJson(dir / "metrics.json");
+  ASSERT_FALSE(j.is_discarded());
+  const auto& stops = j["diffLegend"]["stops"];
+  ASSERT_EQ(stops.size(), 7u);
+  auto legend = mb::readImage((dir / "diff_legend.png").string());
+  ASSERT_TRUE(legend) << legend.error();
+  ASSERT_EQ(legend->width, 32 * 7);
+  ASSERT_EQ(legend->height, 32 + 16);  // the blocks, then their numbers
+  auto pixel = [&](const mb::RgbaImage& img, int x, int y) {
+    const uint8_t* p = &img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4];
+    return std::vector<int>{p[0], p[1], p[2]};
+  };
+  // The scale the heat map's documentation states: 1 step blue, 4 red, 16 yellow, 64 white.
+  const std::map<int, std::vector<int>> stated = {{1, {0, 0, 255}}, {4, {255, 0, 0}}, {16, {255, 255, 0}}, {64, {255, 255, 255}}};
+  for (size_t i = 0; i < stops.size(); ++i) {
+    const std::vector<int> block = pixel(*legend, int(i) * 32 + 16, 16);
+    EXPECT_EQ(block, stops[i]["rgb"].get<std::vector<int>>()) << "block " << i;
+    const int steps = stops[i]["steps"];
+    if (stated.count(steps)) EXPECT_EQ(block, stated.at(steps)) << steps << " steps";
+  }
+  // Each block's number of steps written under it: light text on the dark strip.
+  for (size_t i = 0; i < stops.size(); ++i) {
+    int light = 0;
+    for (int y = 32; y < 48; ++y)
+      for (int x = int(i) * 32; x < int(i) * 32 + 32; ++x) light += pixel(*legend, x, y)[0] > 160;
+    EXPECT_GT(light, 5) << "no number under block " << i;
+  }
+  // The diff's worst pixel has the legend colour of its difference when that is a stop.
+  const int steps = int(std::lround(j["metrics"]["maxError"].get<double>() * 255));
+  auto diff = mb::readImage((dir / "diff.png").string());
+  ASSERT_TRUE(diff);
+  for (const auto& s : stops)
+    if (s["steps"] == steps)
+      EXPECT_EQ(pixel(*diff, j["metrics"]["maxErrorPixel"]["x"], j["metrics"]["maxErrorPixel"]["y"]),
+                s["rgb"].get<std::vector<int>>());
   fs::remove_all(dir);
 }
 

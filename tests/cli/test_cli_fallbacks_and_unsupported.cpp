@@ -1,12 +1,20 @@
-// Render and compare say what they do not draw — one line per feature
-// `inspect` lists as unsupported (checked against inspect --json's own list of the same file)
-// and one line per non-zero fallback counter of each pipeline (checked against the counter in
-// compare's metrics.json).
+// Render and compare say what they do not draw and what they drew another way: one line per
+// feature `inspect` lists as unsupported (checked against inspect --json's own list of the same
+// file), one line per non-zero fallback counter of each pipeline (checked against the counter in
+// compare's metrics.json) and of the loader (checked against the loaded scene's count); every
+// counter the JSON files carry has a glossary entry.
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <string>
+#include <vector>
 
+#include "harness/render/counter_glossary.h"
+#include "harness/render/image_metrics.h"
+#include "harness/render/render_frame.h"
+#include "pipelines/scene/loader.h"
+#include "pipelines/scene/scene_stats.h"
+#include "tests/hostile/hostile_cases.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/scene_test_gltf.h"
 
@@ -17,6 +25,7 @@ using mb::cli_test::contains;
 using mb::cli_test::quoted;
 using mb::cli_test::readJson;
 using mb::cli_test::runMb;
+using mb::cli_test::writeBytes;
 
 // One triangle facing the camera with a morph target (POSITION offsets) and a node extension
 // no pipeline knows (the morph target is drawn; the extension is what motorbench leaves out).
@@ -38,6 +47,15 @@ fs::path unsupportedFile(const fs::path& dir) {
   const mbtest::Bytes bytes = g.gltf();
   std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
   return file;
+}
+
+// A hostile case whose only outcome is a counted fallback of `counter` (no pending fix, no
+// side files); null when the catalogue has none.
+const mb::hostile::Case* findCase(const std::vector<mb::hostile::Case>& cases, int mb::LoadStats::*counter) {
+  for (const auto& c : cases)
+    if (c.counter == counter && c.outcome == mb::hostile::Outcome::Fallback && c.pendingFix.empty() && c.sidecars.empty())
+      return &c;
+  return nullptr;
 }
 
 TEST(CliFrameNotes, RenderAndCompareListWhatInspectListsAsUnsupported) {
@@ -107,6 +125,56 @@ TEST(CliFrameNotes, NonZeroFallbackCountersArePrintedPerPipeline) {
     }
   }
   fs::remove_all(dir);
+}
+
+// "loader fallbacks (an image replaced by white, 64 non-finite positions dropped) are silent
+// on render and compare"
+TEST(CliFrameNotes, LoaderFallbacksAreWarnedOnRenderAndCompare) {
+  const fs::path dir = mb::cli_test::scratchDir("visibility_fallbacks");
+  const auto cases = mb::hostile::allCases();
+  for (auto [counter, key] : {std::pair{&mb::LoadStats::nonFinitePositions, std::string("nonFinitePositions")},
+                              std::pair{&mb::LoadStats::imagesNotDecoded, std::string("imagesNotDecoded")}}) {
+    const mb::hostile::Case* c = findCase(cases, counter);
+    ASSERT_NE(c, nullptr) << "no hostile case exercises " << key;
+    const fs::path file = dir / c->file;
+    writeBytes(file, c->bytes);
+    auto scene = mb::loadScene(file.string());
+    ASSERT_TRUE(scene) << scene.error();
+    const int count = (scene->stats).*counter;
+    ASSERT_GE(count, 1);
+    const std::string line = "loader fallback: " + key + " " + std::to_string(count);
+    const auto r = runMb("render " + quoted(file) + " --size 32x32 -o " + quoted(dir / "r.png"));
+    EXPECT_EQ(r.rc, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "motorbench render: " + line)) << c->file << "\n" << r.out;
+    const auto cmp = runMb("compare " + quoted(file) + " --size 32x32 -o " + quoted(dir / "c"));
+    EXPECT_EQ(cmp.rc, 0) << cmp.out;
+    EXPECT_TRUE(contains(cmp.out, "motorbench compare: " + line)) << c->file << "\n" << cmp.out;
+    const auto j = mb::cli_test::readJson(dir / "c" / "metrics.json");
+    ASSERT_FALSE(j.is_discarded());
+    EXPECT_EQ(j["loaderFallbacks"][key], count) << j["loaderFallbacks"];
+  }
+  // A clean scene prints no fallback line.
+  const auto clean = runMb("render textured_box --size 32x32 -o " + quoted(dir / "clean.png"));
+  EXPECT_FALSE(contains(clean.out, "loader fallback")) << clean.out;
+  fs::remove_all(dir);
+}
+
+// "`zeroScalarFrames` and other counters are not explained anywhere": every counter the JSON
+// files carry has a glossary entry (report and README show the glossary).
+TEST(CliGlossary, EveryCounterHasAGlossaryEntry) {
+  auto keysOf = [](const nlohmann::json& j) {
+    std::vector<std::string> keys;
+    for (const auto& [k, v] : j.items()) keys.push_back(k);
+    return keys;
+  };
+  for (const auto& [group, json] : {std::pair{std::string("PipelineStats"), mb::toJson(mb::PipelineStats{})},
+                                    std::pair{std::string("LoadStats"), mb::toJson(mb::LoadStats{})},
+                                    std::pair{std::string("ImageMetrics"), mb::toJson(mb::ImageMetrics{})}})
+    for (const std::string& key : keysOf(json)) {
+      const mb::CounterEntry* e = mb::findCounter(group, key);
+      ASSERT_NE(e, nullptr) << group << "." << key << " has no glossary entry (harness/render/counter_glossary.cpp)";
+      EXPECT_GT(e->meaning.size(), 10u) << key;
+    }
 }
 
 }  // namespace

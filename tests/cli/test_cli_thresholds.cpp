@@ -1,9 +1,7 @@
-// The command line's traps a new user meets, each as they met it: thresholds in byte steps
-// ("2/255") and fractions read alike, and a plain number that reads as byte steps ("--fail 1":
-// 255/255, any image passes) refused with the hint wherever thresholds are read (compare, diff,
-// check's golden.json); output paths checked before any work (render, survey, check); inspect
-// over folders with progress and --summary; a 0-byte .glb named as empty; the missing-file
-// error listing every built-in name. The processes of a test run at once (cli_parallel.h).
+// Image thresholds read by one rule wherever they are given (compare, diff, check's
+// golden.json): byte steps ("2/255") and fractions read alike, and a plain number that reads as
+// byte steps ("--fail 1": 255/255, any image passes) is refused with the hint, before any work;
+// idiff's verdict rules by hand. The processes of a test run at once (cli_parallel.h).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,8 +12,6 @@
 #include "harness/options/args.h"
 #include "harness/render/image_metrics.h"
 #include "harness/render/thresholds.h"
-#include "pipelines/scene/builtin_scenes.h"
-#include "pipelines/scene/curved_space.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/cli_parallel.h"
 
@@ -40,7 +36,7 @@ std::string thresholdRefusal(const std::vector<std::string>& line, const std::st
   return "";
 }
 
-TEST(CliTrapsThresholds, ByteStepsAndFractionsReadAlikeAndAPlainOneIsRefused) {
+TEST(CliThresholds, ByteStepsAndFractionsReadAlikeAndAPlainOneIsRefused) {
   EXPECT_DOUBLE_EQ(mb::channelDifference(thresholdArgs({"--fail", "2/255"}), "fail", 0), 2 / 255.0);
   EXPECT_DOUBLE_EQ(mb::channelDifference(thresholdArgs({"--fail", "0.0078"}), "fail", 0), 0.0078);
   EXPECT_DOUBLE_EQ(mb::channelDifference(thresholdArgs({"--fail", "255/255"}), "fail", 0), 1.0);  // as written
@@ -62,7 +58,7 @@ TEST(CliTrapsThresholds, ByteStepsAndFractionsReadAlikeAndAPlainOneIsRefused) {
 }
 
 // idiff's verdict by hand on 2x1 images: no pixel over --fail passes, whatever --hardfail says.
-TEST(CliTrapsThresholds, IdiffVerdictLooksPastFailOnlyWhenAPixelIsOverIt) {
+TEST(CliThresholds, IdiffVerdictLooksPastFailOnlyWhenAPixelIsOverIt) {
   const mb::RgbaImage a{2, 1, {100, 100, 100, 255, 100, 100, 100, 255}};
   const mb::RgbaImage b{2, 1, {103, 100, 100, 255, 100, 100, 100, 255}};  // one pixel 3 steps off
   mb::IdiffThresholds t;
@@ -79,7 +75,7 @@ TEST(CliTrapsThresholds, IdiffVerdictLooksPastFailOnlyWhenAPixelIsOverIt) {
 
 // The same refusals from the commands, before any work: no scene is framed, no image read; and
 // golden.json's "fail": 1 is refused naming the file, the scene and the level.
-TEST(CliTrapsThresholds, CommandsRefuseByteStepsWrittenPlain) {
+TEST(CliThresholds, CommandsRefuseByteStepsWrittenPlain) {
   const fs::path dir = mb::cli_test::scratchDir("traps_thresholds");
   const mb::RgbaImage img{2, 2, std::vector<uint8_t>(16, 200)};
   ASSERT_TRUE(mb::writeImage((dir / "a.png").string(), img));
@@ -103,61 +99,6 @@ TEST(CliTrapsThresholds, CommandsRefuseByteStepsWrittenPlain) {
   EXPECT_EQ(ran[2].rc, 2) << ran[2].out;
   EXPECT_TRUE(contains(ran[2].out, "golden.json: thresholds normal_torus exact fail: expected")) << ran[2].out;
   EXPECT_TRUE(contains(ran[2].out, "Did you mean 1/255")) << ran[2].out;
-  fs::remove_all(dir);
-}
-
-// Each command that writes late checks its outputs first: a folder that cannot be made is refused
-// before the scene is loaded or drawn (before, render drew and then failed).
-TEST(CliTrapsThresholds, OutputPathsAreCheckedBeforeAnyWork) {
-  const fs::path dir = mb::cli_test::scratchDir("traps_outputs");
-  const std::string mb = mb::cli_test::motorbench();
-  const std::vector<Ran> ran = mb::cli_test::runAll(
-      dir, {mb + "render textured_box --size 16x16 -o /proc/nope/x.png",
-            mb + "survey textured_box --size 16x16 -o /proc/nope/x.json",
-            mb + "check --scenes normal_torus --pipelines matrix --golden " + quoted(fs::path(MB_SOURCE_DIR) / "tests/golden") +
-                " --out /proc/nope"});
-  const char* const options[] = {"-o /proc/nope/x.png", "-o /proc/nope/x.json", "--out /proc/nope"};
-  for (size_t i = 0; i < ran.size(); ++i) {
-    EXPECT_EQ(ran[i].rc, 2) << ran[i].out;
-    EXPECT_TRUE(contains(ran[i].out, std::string(options[i]) + ": cannot create folder /proc/nope")) << ran[i].out;
-    for (const char* work : {"camera:", "drawn pixels", "\"frames\"", "golden images"})
-      EXPECT_FALSE(contains(ran[i].out, work)) << work << "\n" << ran[i].out;
-  }
-  fs::remove_all(dir);
-}
-
-// inspect over a folder: progress on stderr (first and last file, the time left), --summary
-// prints the aggregate alone and the failed file on stderr; a 0-byte .glb is "empty file".
-TEST(CliTrapsThresholds, InspectFolderProgressSummaryAndAnEmptyFile) {
-  const fs::path dir = mb::cli_test::scratchDir("traps_inspect");
-  for (const char* name : {"normal_torus", "textured_box", "crowd"}) {
-    auto glb = mb::builtinSceneGlb(name);
-    ASSERT_TRUE(glb) << glb.error();
-    std::ofstream(dir / (std::string(name) + ".glb"), std::ios::binary)
-        .write(reinterpret_cast<const char*>(glb->data()), std::streamsize(glb->size()));
-  }
-  std::ofstream(dir / "empty.glb").close();
-  const std::string mb = mb::cli_test::motorbench();
-  const std::vector<Ran> ran = mb::cli_test::runAll(
-      dir, {"{ " + mb + "inspect --summary " + quoted(dir) + " 2> err.txt; }", mb + "render nope.glb -o x.png"});
-  const std::string& out = ran[0].out;  // stdout only
-  const std::string err = mb::cli_test::readText(dir / "err.txt");
-  EXPECT_EQ(ran[0].rc, 1) << out << err;  // one input failed
-  EXPECT_TRUE(contains(out, "aggregate over 4 files: 3 loaded, 1 failed")) << out;
-  EXPECT_FALSE(contains(out, "  geometry ")) << out;  // no file's own lines
-  EXPECT_FALSE(contains(out, "FAILED")) << out;
-  EXPECT_TRUE(contains(err, "inspect: 1/4 files inspected (")) << err;
-  EXPECT_TRUE(contains(err, " left")) << err;  // the estimate
-  EXPECT_TRUE(contains(err, "inspect: 4/4 files inspected (")) << err;
-  EXPECT_TRUE(contains(err, "inspect: FAILED " + (dir / "empty.glb").string() + ": empty file (0 bytes)")) << err;
-  EXPECT_FALSE(contains(err, "magic")) << err;
-  // The missing-file error lists every name a scene can be (morph_torus included).
-  const std::string& missing = ran[1].out;
-  EXPECT_EQ(ran[1].rc, 2) << missing;
-  std::vector<std::string> names = mb::builtinSceneNames();
-  for (const auto* more : {&mb::goldenOnlySceneNames(), &mb::curvedSceneNames()}) names.insert(names.end(), more->begin(), more->end());
-  for (const std::string& n : names) EXPECT_TRUE(contains(missing, n)) << n << "\n" << missing;
-  EXPECT_TRUE(contains(missing, "morph_torus")) << missing;
   fs::remove_all(dir);
 }
 

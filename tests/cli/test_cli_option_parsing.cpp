@@ -1,6 +1,6 @@
-// The option parser every command shares (harness/options)
-// and the frame options of render/compare. Each test runs a command as a user typed it and
-// asserts the behaviour; the Args tests run the parser in-process.
+// The option parser every command shares (harness/options): values, flags, repeats, numbers
+// and sizes read by one set of rules with the option named in every message; in-process on
+// mb::Args, then on commands as a user typed them.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -8,7 +8,6 @@
 
 #include "harness/options/args.h"
 #include "harness/render/frame_options.h"
-#include "harness/render/image_metrics.h"
 #include "tests/support/cli_test_support.h"
 
 namespace {
@@ -18,11 +17,6 @@ using mb::cli_test::contains;
 using mb::cli_test::corpusDir;
 using mb::cli_test::runMb;
 using mb::cli_test::quoted;
-
-bool sameImage(const fs::path& a, const fs::path& b) {
-  auto x = mb::readImage(a.string()), y = mb::readImage(b.string());
-  return x && y && x->width == y->width && x->height == y->height && x->rgba == y->rgba;
-}
 
 // --- the parser, in-process -----------------------------------------------------------------
 
@@ -138,72 +132,23 @@ TEST(CliOptions, SizeWithoutValueDoesNotSwallowTheNextOption) {
   fs::remove_all(dir);
 }
 
-// "`render BoxAnimated.gltf --time 1.5` without `--anim` ignores the time silently (the image
-// equals the rest pose)." Now: animation 0 at 1.5 s, said on stderr, the same image as
-// --anim 0 --time 1.5 and not the rest pose.
-TEST(CliOptions, RenderTimeWithoutAnimPosesTheFirstAnimation) {
-  const fs::path corpus = corpusDir();
-  if (corpus.empty()) GTEST_SKIP() << "no ../shared/corpus";
-  const fs::path dir = mb::cli_test::scratchDir("options_time");
-  const std::string box = quoted(corpus / "BoxAnimated.gltf");
-  const auto timed = runMb("render " + box + " --time 1.5 -o " + quoted(dir / "t.png"));
-  ASSERT_EQ(timed.rc, 0) << timed.out;
-  EXPECT_TRUE(contains(timed.out, "--time without --anim: using animation 0")) << timed.out;
-  EXPECT_TRUE(contains(timed.out, "at t = 1.5 s")) << timed.out;
-  ASSERT_EQ(runMb("render " + box + " -o " + quoted(dir / "rest.png")).rc, 0);
-  ASSERT_EQ(runMb("render " + box + " --anim 0 --time 1.5 -o " + quoted(dir / "a0.png")).rc, 0);
-  EXPECT_FALSE(sameImage(dir / "t.png", dir / "rest.png")) << "--time 1.5 drew the rest pose";
-  EXPECT_TRUE(sameImage(dir / "t.png", dir / "a0.png")) << "--time alone must equal --anim 0 --time 1.5";
-  // A scene without animations rejects --time instead of ignoring it.
-  const auto still = runMb("render normal_torus --time 1.5 -o " + quoted(dir / "s.png"));
-  EXPECT_EQ(still.rc, 2) << still.out;
-  EXPECT_TRUE(contains(still.out, "has no animations")) << still.out;
-  fs::remove_all(dir);
-}
-
-// "`compare BoxAnimated.gltf --time 0.5` writes "time": 0.5 into metrics.json for a frame that
-// was never posed." Now the frame is posed by animation 0 and metrics.json says so.
-TEST(CliOptions, CompareTimeWithoutAnimRecordsThePosedAnimation) {
-  const fs::path corpus = corpusDir();
-  if (corpus.empty()) GTEST_SKIP() << "no ../shared/corpus";
-  const fs::path dir = mb::cli_test::scratchDir("options_compare_time");
-  const std::string box = quoted(corpus / "BoxAnimated.gltf");
-  const auto r = runMb("compare " + box + " --time 0.5 -o " + quoted(dir / "c"));
-  ASSERT_EQ(r.rc, 0) << r.out;
-  const auto j = mb::cli_test::readJson(dir / "c" / "metrics.json");
-  ASSERT_FALSE(j.is_discarded());
-  EXPECT_EQ(j["settings"]["anim"], 0);
-  EXPECT_DOUBLE_EQ(j["settings"]["time"].get<double>(), 0.5);
-  EXPECT_EQ(j["animation"]["index"], 0);
-  ASSERT_EQ(runMb("render " + box + " --anim 0 --time 0.5 --pipeline matrix -o " + quoted(dir / "m.png")).rc, 0);
-  EXPECT_TRUE(sameImage(dir / "c" / "matrix.png", dir / "m.png")) << "compare's frame is not the posed one";
-  fs::remove_all(dir);
-}
-
-// "Repeating `--time` (as the usage line `[--anim A --time T ...]` suggests) keeps only the
-// last value." Now: rejected with the reason, and the usage no longer suggests repeating.
-TEST(CliOptions, RepeatedTimeIsRejected) {
-  const fs::path dir = mb::cli_test::scratchDir("options_repeat");
-  for (const char* cmd : {"render", "compare"}) {
-    const auto r = runMb(std::string(cmd) + " skinned_tube --time 0.5 --time 1 -o " + quoted(dir / "x.png"));
-    EXPECT_EQ(r.rc, 2) << r.out;
-    EXPECT_TRUE(contains(r.out, "option --time given twice ('0.5', '1')")) << r.out;
-    EXPECT_TRUE(contains(r.out, "once per time")) << r.out;
-    const auto help = runMb(std::string(cmd) + " --help");
-    EXPECT_FALSE(contains(help.out, "--time T ...")) << help.out;
+// "`--size` is checked differently by render and report (report rejects 0x0 with 'expected
+// WxH'; `--size 640` silently means 640x640)." Now one rule and one message everywhere.
+TEST(CliMessages, SizeIsOneRuleInEveryCommand) {
+  const fs::path dir = mb::cli_test::scratchDir("messages_size");
+  const std::string rule = "expected WIDTHxHEIGHT, both whole numbers in 1..16384";
+  for (const char* size : {"0x0", "640"}) {
+    for (const std::string& cmd : {"render normal_torus -o " + quoted(dir / "x.png"),
+                                   "compare normal_torus -o " + quoted(dir / "c"), "report normal_torus -o " +
+                                   quoted(dir / "r"), std::string("time normal_torus")}) {
+      const auto r = runMb(cmd + " --size " + size);
+      EXPECT_EQ(r.rc, 2) << cmd << " --size " << size << "\n" << r.out;
+      EXPECT_TRUE(contains(r.out, "--size: " + rule + " (e.g. 640x480; a square is 640x640), got '" + size + "'"))
+          << cmd << "\n" << r.out;
+    }
   }
+  EXPECT_FALSE(fs::exists(dir / "r"));
   fs::remove_all(dir);
-}
-
-// "`render` without `--pipeline` is an error or its default is in the usage"; "--version".
-TEST(CliOptions, RenderUsageNamesTheDefaultPipelineAndVersionPrints) {
-  const auto help = runMb("render --help");
-  EXPECT_TRUE(contains(help.out, "--pipeline NAME (default matrix")) << help.out;
-  const auto v = runMb("--version");
-  EXPECT_EQ(v.rc, 0) << v.out;
-  EXPECT_EQ(v.out.rfind("motorbench 0.", 0), 0u) << v.out;
-  EXPECT_TRUE(contains(v.out, "(git ")) << v.out;
-  EXPECT_TRUE(contains(runMb("--help").out, "--version"));
 }
 
 }  // namespace
