@@ -161,203 +161,289 @@ std::string frameName(const Scene& scene, const FrameSettings& settings) {
   return "anim " + std::to_string(settings.anim.anim) + " '" + scene.animations[size_t(settings.anim.anim)].name + b;
 }
 
-int runCompare(const std::vector<std::string>& argv) {
-  auto fail = [](const std::string& message) { return commandError("compare", message); };
-  Args args(argv, sceneCommandOptions({"pipelines", "fail", "failpercent", "hardfail", "junit"}, {"quiet"}));
-  if (!args.error().empty()) return fail(args.error());
-  const bool quiet = args.has("quiet");
-  const std::string junitPath = args.get("junit", "");
-  auto notes = [quiet](const std::vector<std::string>& lines) {
-    if (!quiet) commandNotes("compare", lines);
-  };
-  // Everything about the options is checked before the (slow) load and render.
-  if (args.has("pipelines")) {
-    const std::vector<std::string> given = splitList(args.get("pipelines", ""));
-    if (given.size() != 2) return fail("--pipelines needs exactly two names, e.g. matrix,motor");
-    if (given[0] == given[1]) return fail("--pipelines " + given[0] + "," + given[1] + ": two different pipelines");
-    if (Status ok = checkPipelineNames("--pipelines", given); !ok) return fail(ok.error());
-  }
-  const bool thresholdsGiven = failThresholdGiven(args);
-  const Thresholds t = compareThresholds(args);  // harness/render/thresholds.h: the byte-step trap refused
-  {
-    namespace fs = std::filesystem;
-    const std::string dir = args.get("o", args.get("output", ""));
-    std::error_code ec;
-    if (!dir.empty() && fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-      return fail("-o " + dir + ": is a file; compare writes a folder (images, diff, metrics.json)");
-    args.size("size", 512, 512);  // a malformed --size is refused before the folder is made
-    // The scene's name first (cheap), then the folder: created now, before the renders.
-    if (args.positional().size() == 1)
-      if (Status ok = checkSceneSpec(args.positional()[0]); !ok) return fail(ok.error());
-    if (!dir.empty())
-      if (Status ok = prepareOutputFolder("-o", dir, "A.png, B.png, diff.png, diff_legend.png, flip.png, metrics.json"); !ok)
-        return fail(ok.error());
-    if (!junitPath.empty())
-      if (Status ok = prepareOutputFile("--junit", junitPath); !ok) return fail(ok.error());
-  }
-  // The JUnit file's one case: classname the scene, name "A vs B <frame>"; an error after the
-  // options is its error case.
+int compareError(const std::string& message) { return commandError("compare", message); }
+
+// --pipelines, when given: exactly two different registered names.
+Status checkComparePipelines(const Args& args) {
+  if (!args.has("pipelines")) return {};
+  const std::vector<std::string> given = splitList(args.get("pipelines", ""));
+  if (given.size() != 2) return Status::fail("--pipelines needs exactly two names, e.g. matrix,motor");
+  if (given[0] == given[1]) return Status::fail("--pipelines " + given[0] + "," + given[1] + ": two different pipelines");
+  return checkPipelineNames("--pipelines", given);
+}
+
+// The outputs before the (slow) load and render: -o not a file, --size well formed, the scene's
+// name (cheap), then the folder created and --junit's place writable.
+Status prepareCompareOutputs(const Args& args, const std::string& junitPath) {
+  namespace fs = std::filesystem;
+  const std::string dir = args.get("o", args.get("output", ""));
+  std::error_code ec;
+  if (!dir.empty() && fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    return Status::fail("-o " + dir + ": is a file; compare writes a folder (images, diff, metrics.json)");
+  args.size("size", 512, 512);  // a malformed --size is refused before the folder is made
+  if (args.positional().size() == 1)
+    if (Status ok = checkSceneSpec(args.positional()[0]); !ok) return ok;
+  if (!dir.empty())
+    if (Status ok = prepareOutputFolder("-o", dir, "A.png, B.png, diff.png, diff_legend.png, flip.png, metrics.json"); !ok)
+      return ok;
+  if (!junitPath.empty())
+    if (Status ok = prepareOutputFile("--junit", junitPath); !ok) return ok;
+  return {};
+}
+
+// One compare run's reporting: the notes on stderr (not with --quiet) and the JUnit file's one
+// case (classname the scene, name "A vs B <frame>"; an error after the options is its error case).
+struct CompareRun {
+  bool quiet = false;
+  std::string junitPath;  // --junit (empty: none written)
   JunitCase junit{"compare", "", 0, JunitCase::Kind::Error, "", ""};
-  if (!args.positional().empty()) junit.classname = args.positional()[0];
-  auto writeCase = [&]() {
-    if (Status w = junitPath.empty() ? Status{} : writeJunit(junitPath, "motorbench compare", {junit}); !w)
-      return fail(w.error());
-    return 0;
-  };
-  auto error = [&](const std::string& message) {
-    junit.kind = JunitCase::Kind::Error;
-    junit.message = message;
-    writeCase();
-    return fail(message);
-  };
-  auto cmd = parseSceneCommand(args, "DIR");
-  if (!cmd) return error(cmd.error());
-  const std::string& dir = cmd->output;
-  const Scene& scene = cmd->scene;
-  const FrameSettings& settings = cmd->settings;
-  // Default: the paper's pair in the scene's space (matrix,motor; s3_matrix,s3_motor; h3_...),
-  // the first two registered names (the registry lists the variants after them).
+};
+
+void compareNotes(const CompareRun& run, const std::vector<std::string>& lines) {
+  if (!run.quiet) commandNotes("compare", lines);
+}
+
+int writeCase(const CompareRun& run) {
+  if (Status w = run.junitPath.empty() ? Status{} : writeJunit(run.junitPath, "motorbench compare", {run.junit}); !w)
+    return compareError(w.error());
+  return 0;
+}
+
+// An error after the options: the JUnit case's error, then on stderr (exit 2).
+int runError(CompareRun& run, const std::string& message) {
+  run.junit.kind = JunitCase::Kind::Error;
+  run.junit.message = message;
+  writeCase(run);
+  return compareError(message);
+}
+
+// --pipelines, else the paper's pair in the scene's space (matrix,motor; s3_matrix,s3_motor;
+// h3_...): the first two registered names (the registry lists the variants after them).
+std::vector<std::string> comparedPipelines(const Args& args, const Scene& scene) {
+  if (args.has("pipelines")) return splitList(args.get("pipelines", ""));
   std::vector<std::string> pair = pipelineNames(scene.curved.space);
   pair.resize(2);
-  std::vector<std::string> names = args.has("pipelines") ? splitList(args.get("pipelines", "")) : pair;
-  if (names.size() != 2) return error("--pipelines needs exactly two names, e.g. matrix,motor");
-  junit.name = names[0] + " vs " + names[1] + " " + frameName(scene, settings);
-  notes(cmd->notes);
-  notes(loaderFallbackLines(scene));
-  notes(unsupportedLines(scene));
-  notes(describeFrame(scene, settings));
+  return pair;
+}
 
+// Both frames, each pipeline's fallbacks noted as it is drawn.
+Result<std::vector<Frame>> renderPair(const CompareRun& run, const Scene& scene, const std::vector<std::string>& names,
+                                      const FrameSettings& settings) {
   std::vector<Frame> frames;
   for (const std::string& name : names) {
     auto frame = renderFrame(scene, name, settings);
-    if (!frame) return error(frame.error());
-    notes(pipelineFallbackLines(name, frame->stats));
+    if (!frame) return Result<std::vector<Frame>>::fail(frame.error());
+    compareNotes(run, pipelineFallbackLines(name, frame->stats));
     frames.push_back(frame.take());
   }
-  notes({"drawn on " + describeGl(frames[0].gl) + " (both pipelines: one process, one device)"});
+  return frames;
+}
+
+// The two images measured against each other (the first pipeline is FLIP's reference).
+struct PairFigures {
+  ImageMetrics metrics;
+  FlipResult flip;
+  int64_t drawn[2] = {0, 0};
+};
+
+Result<PairFigures> measurePair(const std::vector<Frame>& frames) {
   auto metrics = compareImages(frames[0].image, frames[1].image);
-  if (!metrics) return error(metrics.error());
-  auto flip = computeFlip(frames[0].image, frames[1].image);  // the first pipeline is the reference
-  if (!flip) return error(flip.error());
-  const int64_t drawn[2] = {drawnPixels(frames[0].image), drawnPixels(frames[1].image)};
-  const PairVerdict verdict = judgePair(cmd->scene, settings, names, frames, thresholdsGiven ? &t : nullptr);
-  if (verdict.skinApplies && verdict.skin.empty()) return error(verdict.reason);  // a reference frame's error
-  const DrawnCheck& shape = verdict.shape;
-  const std::string skinning = skinningMethodNote(verdict, names[0], names[1]);
-  const bool nothingDrawn = shape.kind == DrawnCheck::Kind::NothingDrawn;
-  const bool failed = verdict.failed;
-  const std::string& reason = verdict.reason;
+  if (!metrics) return Result<PairFigures>::fail(metrics.error());
+  auto flip = computeFlip(frames[0].image, frames[1].image);
+  if (!flip) return Result<PairFigures>::fail(flip.error());
+  return PairFigures{*metrics, flip.take(), {drawnPixels(frames[0].image), drawnPixels(frames[1].image)}};
+}
+
+// DIR/<a>.png, DIR/<b>.png, diff.png, diff_legend.png (its warning noted) and flip.png.
+Status writeCompareImages(const CompareRun& run, const std::string& dir, const std::vector<std::string>& names,
+                          const std::vector<Frame>& frames, const FlipResult& flip) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) return Status::fail(dir + ": cannot create folder: " + ec.message());
+  for (size_t i = 0; i < 2; ++i)
+    if (Status s = writeImage((fs::path(dir) / (names[i] + ".png")).string(), frames[i].image); !s) return s;
+  if (Status d = writeImage((fs::path(dir) / "diff.png").string(), diffHeatmap(frames[0].image, frames[1].image)); !d)
+    return d;
+  std::string legendWarning;
+  if (Status legend = writeImage((fs::path(dir) / "diff_legend.png").string(), heatLegend(&legendWarning)); !legend)
+    return legend;
+  if (!legendWarning.empty()) compareNotes(run, {"warning: " + legendWarning});
+  return writeImage((fs::path(dir) / "flip.png").string(), flipErrorImage(flip));
+}
+
+// Per pipeline judged, the image it was judged against.
+json judgedAgainstJson(const PairVerdict& verdict, const std::vector<std::string>& names) {
   json judgedAgainst = json::object();
   if (verdict.byOwnMethod)
     for (const SkinnedFrameJudgement& j : verdict.skin) judgedAgainst[j.pipeline] = j.reference;
   else
     judgedAgainst[names[1]] = names[0];
+  return judgedAgainst;
+}
 
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return error(dir + ": cannot create folder: " + ec.message());
-  namespace fs = std::filesystem;
-  for (size_t i = 0; i < 2; ++i) {
-    Status s = writeImage((fs::path(dir) / (names[i] + ".png")).string(), frames[i].image);
-    if (!s) return error(s.error());
-  }
-  Status d = writeImage((fs::path(dir) / "diff.png").string(),
-                        diffHeatmap(frames[0].image, frames[1].image));
-  if (!d) return error(d.error());
-  std::string legendWarning;
-  Status legend = writeImage((fs::path(dir) / "diff_legend.png").string(), heatLegend(&legendWarning));
-  if (!legend) return error(legend.error());
-  if (!legendWarning.empty()) notes({"warning: " + legendWarning});
-  if (Status f = writeImage((fs::path(dir) / "flip.png").string(), flipErrorImage(*flip)); !f) return error(f.error());
+json animationJson(const Scene& scene, const FrameSettings& settings) {
+  if (settings.anim.anim < 0) return json(nullptr);
+  const auto& a = scene.animations[size_t(settings.anim.anim)];
+  return {{"index", settings.anim.anim}, {"name", a.name}, {"duration", a.duration}, {"time", settings.anim.time}};
+}
 
-  nlohmann::json j = {
-      {"scene", scene.source},
-      {"pipelines", names},
-      {"images", {names[0] + ".png", names[1] + ".png"}},
-      {"diff", "diff.png"},
-      {"diffLegend", heatLegendJson()},
-      {"flipMap", "flip.png"},  // magma: black 0 .. light yellow 1
-      {"settings", toJson(settings)},
-      {"animation", settings.anim.anim < 0
-                        ? nlohmann::json(nullptr)
-                        : nlohmann::json{{"index", settings.anim.anim},
-                                         {"name", scene.animations[size_t(settings.anim.anim)].name},
-                                         {"duration", scene.animations[size_t(settings.anim.anim)].duration},
-                                         {"time", settings.anim.time}}},
-      {"loaderFallbacks", loaderFallbackJson(scene)},
-      {"view", toJson(frames[0].view)},
-      {"gl", toJson(frames[0].gl)},  // both images: one device (the equivalence figures)
-      {"metrics", toJson(*metrics, *flip)},
-      {"drawnPixels", {{names[0], drawn[0]}, {names[1], drawn[1]}, {"total", int64_t(metrics->width) * metrics->height}}},
-      {"skinningMethods", {{names[0], report::skinBlendOf(names[0])}, {names[1], report::skinBlendOf(names[1])},
-                           {"methodsDiffer", verdict.skinApplies},
-                           {"differByDesign", verdict.skinApplies && shape.skinningMethodNote}}},
-      {"skinJudgement", judgedJson(verdict)},
-      {"drawnCheck", toJson(shape)},
-      {"thresholds", {{"applied", thresholdsGiven},
-                      {"units", "fail, hardfail: channel difference / 255 (0..1); failpercent: % of pixels"},
-                      {"fail", t.fail},
-                      {"failpercent", t.failPercent},
-                      {"hardfail", std::isinf(t.hardFail) ? nlohmann::json(nullptr)
-                                                          : nlohmann::json(t.hardFail)}}},
-      {"verdict", {{"judged", (thresholdsGiven || shape.failed) && !nothingDrawn},
-                   {"text", nothingDrawn ? "nothing drawn" : failed ? "fail" : !thresholdsGiven ? "no threshold given" : "pass"},
-                   {"failed", failed || (thresholdsGiven && nothingDrawn)},
-                   {"failPercent", verdict.failPercent},
-                   {"judgedAgainst", judgedAgainst},  // pipeline: the image it was judged against
-                   {"reason", nothingDrawn ? nlohmann::json("neither image drew any pixel")
-                              : failed || thresholdsGiven ? nlohmann::json(reason) : nlohmann::json(nullptr)}}},
-      {"stats", {toJson(frames[0].stats), toJson(frames[1].stats)}}};  // in --pipelines order
-  std::string jsonPath = (fs::path(dir) / "metrics.json").string();
-  if (Status w = writeTextFile(jsonPath, j.dump(2) + "\n"); !w) return error(w.error());
-  // What was measured, one line each (not with --quiet), then the verdict line.
+json appliedThresholdsJson(const Thresholds& t, bool given) {
+  return {{"applied", given},
+          {"units", "fail, hardfail: channel difference / 255 (0..1); failpercent: % of pixels"},
+          {"fail", t.fail},
+          {"failpercent", t.failPercent},
+          {"hardfail", std::isinf(t.hardFail) ? json(nullptr) : json(t.hardFail)}};
+}
+
+json verdictJson(const PairVerdict& verdict, const std::vector<std::string>& names, bool thresholdsGiven) {
+  const bool nothingDrawn = verdict.shape.kind == DrawnCheck::Kind::NothingDrawn;
+  const bool failed = verdict.failed;
+  return {{"judged", (thresholdsGiven || verdict.shape.failed) && !nothingDrawn},
+          {"text", nothingDrawn ? "nothing drawn" : failed ? "fail" : !thresholdsGiven ? "no threshold given" : "pass"},
+          {"failed", failed || (thresholdsGiven && nothingDrawn)},
+          {"failPercent", verdict.failPercent},
+          {"judgedAgainst", judgedAgainstJson(verdict, names)},  // pipeline: the image it was judged against
+          {"reason", nothingDrawn ? json("neither image drew any pixel")
+                     : failed || thresholdsGiven ? json(verdict.reason) : json(nullptr)}};
+}
+
+// DIR/metrics.json: the frame, both images' figures, the checks and the verdict.
+json compareMetricsJson(const Scene& scene, const FrameSettings& settings, const std::vector<std::string>& names,
+                 const std::vector<Frame>& frames, const PairFigures& fig, const PairVerdict& verdict,
+                 const Thresholds& t, bool thresholdsGiven) {
+  const DrawnCheck& shape = verdict.shape;
+  return {{"scene", scene.source},
+          {"pipelines", names},
+          {"images", {names[0] + ".png", names[1] + ".png"}},
+          {"diff", "diff.png"},
+          {"diffLegend", heatLegendJson()},
+          {"flipMap", "flip.png"},  // magma: black 0 .. light yellow 1
+          {"settings", toJson(settings)},
+          {"animation", animationJson(scene, settings)},
+          {"loaderFallbacks", loaderFallbackJson(scene)},
+          {"view", toJson(frames[0].view)},
+          {"gl", toJson(frames[0].gl)},  // both images: one device (the equivalence figures)
+          {"metrics", toJson(fig.metrics, fig.flip)},
+          {"drawnPixels",
+           {{names[0], fig.drawn[0]}, {names[1], fig.drawn[1]}, {"total", int64_t(fig.metrics.width) * fig.metrics.height}}},
+          {"skinningMethods", {{names[0], report::skinBlendOf(names[0])}, {names[1], report::skinBlendOf(names[1])},
+                               {"methodsDiffer", verdict.skinApplies},
+                               {"differByDesign", verdict.skinApplies && shape.skinningMethodNote}}},
+          {"skinJudgement", judgedJson(verdict)},
+          {"drawnCheck", toJson(shape)},
+          {"thresholds", appliedThresholdsJson(t, thresholdsGiven)},
+          {"verdict", verdictJson(verdict, names, thresholdsGiven)},
+          {"stats", {toJson(frames[0].stats), toJson(frames[1].stats)}}};  // in --pipelines order
+}
+
+// What was measured, one line each: drawn pixels, the differences, FLIP, the skinning note and
+// each own-method judgement.
+std::vector<std::string> measuredLines(const std::vector<std::string>& names, const PairFigures& fig,
+                                       const PairVerdict& verdict, const std::string& skinning) {
   std::vector<std::string> measured;
   char line[256];
   std::snprintf(line, sizeof line, "drawn pixels (not background): %s %lld, %s %lld of %lld", names[0].c_str(),
-                (long long)drawn[0], names[1].c_str(), (long long)drawn[1], (long long)metrics->width * metrics->height);
+                (long long)fig.drawn[0], names[1].c_str(), (long long)fig.drawn[1],
+                (long long)fig.metrics.width * fig.metrics.height);
   measured.push_back(line);
-  for (const std::string& l : differenceLines(*metrics)) measured.push_back(l);
-  std::snprintf(line, sizeof line, "%s (LDR-FLIP, 0..1, %.0f pixels per degree; map: flip.png)", flipText(*flip).c_str(),
-                flip->pixelsPerDegree);
+  for (const std::string& l : differenceLines(fig.metrics)) measured.push_back(l);
+  std::snprintf(line, sizeof line, "%s (LDR-FLIP, 0..1, %.0f pixels per degree; map: flip.png)", flipText(fig.flip).c_str(),
+                fig.flip.pixelsPerDegree);
   measured.push_back(line);
   if (!skinning.empty()) measured.push_back("note: " + skinning);
   for (const SkinnedFrameJudgement& j : verdict.skin)
     for (const std::string& l : judgementLines(j)) measured.push_back(l);
-  if (!quiet) {
-    std::printf("%s: %s vs %s, %dx%d\n", scene.source.c_str(), names[0].c_str(), names[1].c_str(), metrics->width,
-                metrics->height);
-    for (const std::string& l : measured) std::printf("  %s\n", l.c_str());
-  }
-  for (const std::string& l : measured) junit.detail += (junit.detail.empty() ? "" : "\n") + l;
-  // Two background-only frames agree trivially: nothing was compared.
-  if (nothingDrawn && !thresholdsGiven) {  // nothing judged, but said
-    notes({"warning: neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are "
-                             "background only): nothing was compared"});
-  } else if (nothingDrawn) {
-    std::printf("%s: %s vs %s -> NOT COMPARED\n", scene.source.c_str(), names[0].c_str(), names[1].c_str());
-    return error("neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are background only: the " +
-                "scene is off screen, empty or scaled to zero at this pose); nothing was compared, so it cannot pass");
-  }
-  if (shape.failed && !quiet) std::printf("  drawn-pixel check: FAIL: %s\n", drawnFailure(verdict).c_str());
+  return measured;
+}
+
+// The verdict line's tail: " -> PASS (...)", " -> FAIL (why)" or not judged.
+std::string verdictText(const PairVerdict& verdict, bool thresholdsGiven) {
   std::string judgedBy;  // "motor against the motor-blend reference"
   for (const SkinnedFrameJudgement& j : verdict.skin)
     if (verdict.byOwnMethod)
       judgedBy += (judgedBy.empty() ? "" : ", ") + j.pipeline + " against " +
                   (j.reference == kMatrixReference ? j.reference : "the " + j.reference);
-  std::string verdictText = " -> no threshold given, not judged (--fail/--failpercent/--hardfail judge; exit 0)";
-  if (verdict.byOwnMethod && !thresholdsGiven && !failed)
-    verdictText = " -> no threshold given (" + judgedBy + ": drawn pixels within 1 %; --fail/--failpercent/--hardfail "
-                  "judge the pixels; exit 0)";
-  if (failed)
-    verdictText = " -> FAIL (" + reason + (verdict.skinApplies && !verdict.byOwnMethod && shape.skinningMethodNote
-                                               ? "; the skinning methods differ by design, see the note" : "") + ")";
-  else if (thresholdsGiven)
-    verdictText = " -> PASS (" + (judgedBy.empty() ? std::string() : judgedBy + ": ") + "within the thresholds given)";
-  std::printf("%s: %s vs %s%s\n", scene.source.c_str(), names[0].c_str(), names[1].c_str(), verdictText.c_str());
-  junit.kind = failed ? JunitCase::Kind::Fail : nothingDrawn ? JunitCase::Kind::Skipped : JunitCase::Kind::Pass;
-  junit.message = failed ? reason : nothingDrawn ? "neither image drew any pixel: nothing compared" : "";
-  if (writeCase() != 0) return 2;
-  return failed ? 1 : 0;
+  if (verdict.failed)
+    return " -> FAIL (" + verdict.reason +
+           (verdict.skinApplies && !verdict.byOwnMethod && verdict.shape.skinningMethodNote
+                ? "; the skinning methods differ by design, see the note" : "") + ")";
+  if (thresholdsGiven) return " -> PASS (" + (judgedBy.empty() ? std::string() : judgedBy + ": ") + "within the thresholds given)";
+  if (verdict.byOwnMethod)
+    return " -> no threshold given (" + judgedBy + ": drawn pixels within 1 %; --fail/--failpercent/--hardfail "
+           "judge the pixels; exit 0)";
+  return " -> no threshold given, not judged (--fail/--failpercent/--hardfail judge; exit 0)";
+}
+
+// The end of a run: the measured lines (not with --quiet), the drawn-pixel failure, the verdict
+// line and the JUnit case; two background-only frames are said, and with a threshold an error.
+int reportVerdict(CompareRun& run, const Scene& scene, const std::vector<std::string>& names,
+                  const std::vector<std::string>& measured, const PairFigures& fig, const PairVerdict& verdict,
+                  bool thresholdsGiven) {
+  const char* source = scene.source.c_str();
+  const bool nothingDrawn = verdict.shape.kind == DrawnCheck::Kind::NothingDrawn;
+  if (!run.quiet) {
+    std::printf("%s: %s vs %s, %dx%d\n", source, names[0].c_str(), names[1].c_str(), fig.metrics.width, fig.metrics.height);
+    for (const std::string& l : measured) std::printf("  %s\n", l.c_str());
+  }
+  for (const std::string& l : measured) run.junit.detail += (run.junit.detail.empty() ? "" : "\n") + l;
+  // Two background-only frames agree trivially: nothing was compared.
+  if (nothingDrawn && !thresholdsGiven) {  // nothing judged, but said
+    compareNotes(run, {"warning: neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are "
+                "background only): nothing was compared"});
+  } else if (nothingDrawn) {
+    std::printf("%s: %s vs %s -> NOT COMPARED\n", source, names[0].c_str(), names[1].c_str());
+    return runError(run, "neither " + names[0] + " nor " + names[1] + " drew any pixel (both images are background only: the " +
+                    "scene is off screen, empty or scaled to zero at this pose); nothing was compared, so it cannot pass");
+  }
+  if (verdict.shape.failed && !run.quiet) std::printf("  drawn-pixel check: FAIL: %s\n", drawnFailure(verdict).c_str());
+  std::printf("%s: %s vs %s%s\n", source, names[0].c_str(), names[1].c_str(), verdictText(verdict, thresholdsGiven).c_str());
+  run.junit.kind = verdict.failed ? JunitCase::Kind::Fail : nothingDrawn ? JunitCase::Kind::Skipped : JunitCase::Kind::Pass;
+  run.junit.message = verdict.failed ? verdict.reason : nothingDrawn ? "neither image drew any pixel: nothing compared" : "";
+  if (writeCase(run) != 0) return 2;
+  return verdict.failed ? 1 : 0;
+}
+
+int runCompare(const std::vector<std::string>& argv) {
+  Args args(argv, sceneCommandOptions({"pipelines", "fail", "failpercent", "hardfail", "junit"}, {"quiet"}));
+  if (!args.error().empty()) return compareError(args.error());
+  CompareRun run;
+  run.quiet = args.has("quiet");
+  run.junitPath = args.get("junit", "");
+  // Everything about the options is checked before the (slow) load and render.
+  if (Status ok = checkComparePipelines(args); !ok) return compareError(ok.error());
+  const bool thresholdsGiven = failThresholdGiven(args);
+  const Thresholds t = compareThresholds(args);  // harness/render/thresholds.h: the byte-step trap refused
+  if (Status ok = prepareCompareOutputs(args, run.junitPath); !ok) return compareError(ok.error());
+  if (!args.positional().empty()) run.junit.classname = args.positional()[0];
+
+  auto cmd = parseSceneCommand(args, "DIR");
+  if (!cmd) return runError(run, cmd.error());
+  Scene& scene = cmd->scene;
+  const FrameSettings& settings = cmd->settings;
+  const std::vector<std::string> names = comparedPipelines(args, scene);
+  if (names.size() != 2) return runError(run, "--pipelines needs exactly two names, e.g. matrix,motor");
+  run.junit.name = names[0] + " vs " + names[1] + " " + frameName(scene, settings);
+  compareNotes(run, cmd->notes);
+  compareNotes(run, loaderFallbackLines(scene));
+  compareNotes(run, unsupportedLines(scene));
+  compareNotes(run, describeFrame(scene, settings));
+
+  auto frames = renderPair(run, scene, names, settings);
+  if (!frames) return runError(run, frames.error());
+  compareNotes(run, {"drawn on " + describeGl((*frames)[0].gl) + " (both pipelines: one process, one device)"});
+  auto fig = measurePair(*frames);
+  if (!fig) return runError(run, fig.error());
+  const PairVerdict verdict = judgePair(scene, settings, names, *frames, thresholdsGiven ? &t : nullptr);
+  if (verdict.skinApplies && verdict.skin.empty()) return runError(run, verdict.reason);  // a reference frame's error
+  const std::string skinning = skinningMethodNote(verdict, names[0], names[1]);
+
+  const std::string& dir = cmd->output;
+  if (Status ok = writeCompareImages(run, dir, names, *frames, fig->flip); !ok) return runError(run, ok.error());
+  const json metrics = compareMetricsJson(scene, settings, names, *frames, *fig, verdict, t, thresholdsGiven);
+  const std::string jsonPath = (std::filesystem::path(dir) / "metrics.json").string();
+  if (Status w = writeTextFile(jsonPath, metrics.dump(2) + "\n"); !w) return runError(run, w.error());
+  return reportVerdict(run, scene, names, measuredLines(names, *fig, verdict, skinning), *fig, verdict, thresholdsGiven);
 }
 
 }  // namespace
