@@ -125,143 +125,192 @@ int timeOneScene(const std::string& name, const timing::Settings& normal, const 
   return status;
 }
 
-int runTime(const std::vector<std::string>& argv) {
-  auto fail = [](const std::string& m) {
-    std::fprintf(stderr, "motorbench time: error: %s\n", m.c_str());
-    return 2;
-  };
-  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level",
-                          "instances", "gpu", "pipelines", "anim"},
-                         {},
-                         {}});
-  if (!args.error().empty()) return fail(args.error());
-  if (Status gpu = applyGpuOption(args); !gpu) return fail(gpu.error());  // workers inherit MB_GPU
+int timeError(const std::string& m) {
+  std::fprintf(stderr, "motorbench time: error: %s\n", m.c_str());
+  return 2;
+}
 
+// The normal and the vertex-bound (tiny viewport) configurations from --frames, --warmup,
+// --best-of, --size and --tiny. A malformed value throws OptionError.
+struct TimeConfigs {
   timing::Settings normal, tiny;
-  normal.frames = int(args.integer("frames", 30, 1, 100000));
-  normal.warmup = int(args.integer("warmup", 5, 0, 100000));
-  normal.bestOf = int(args.integer("best-of", normal.bestOf, 1, 100));
-  std::tie(normal.width, normal.height) = args.size("size", 512, 512);
-  tiny = normal;
-  tiny.config = "vertex-bound";
-  std::tie(tiny.width, tiny.height) = args.size("tiny", 64, 64);
-  args.integer("instances", 1, 1, kMaxInstances);  // checked here; each worker applies it
-  if (auto list = args.get("pipelines")) {  // checked before any scene is timed
-    if (splitList(*list).empty()) return fail("--pipelines " + *list + ": expected pipeline names, e.g. matrix,motor");
-    if (Status ok = checkPipelineNames("--pipelines", splitList(*list)); !ok) return fail(ok.error());
-  }
-  // llvmpipe reads LP_NUM_THREADS when the context is created, which has not happened yet.
-  if (args.has("lp-threads"))
-    setenv("LP_NUM_THREADS", std::to_string(args.integer("lp-threads", 0, 0, 1024)).c_str(), 1);
+};
 
-  // --level N[,M...]: refinement levels of Bezier patch scenes (others ignore it), each timed
-  // in the same worker, one after the other.
+TimeConfigs readTimeConfigs(const Args& args) {
+  TimeConfigs c;
+  c.normal.frames = int(args.integer("frames", 30, 1, 100000));
+  c.normal.warmup = int(args.integer("warmup", 5, 0, 100000));
+  c.normal.bestOf = int(args.integer("best-of", c.normal.bestOf, 1, 100));
+  std::tie(c.normal.width, c.normal.height) = args.size("size", 512, 512);
+  c.tiny = c.normal;
+  c.tiny.config = "vertex-bound";
+  std::tie(c.tiny.width, c.tiny.height) = args.size("tiny", 64, 64);
+  return c;
+}
+
+// --pipelines, checked before any scene is timed: at least one name, every one registered.
+Status checkTimePipelines(const Args& args) {
+  auto list = args.get("pipelines");
+  if (!list) return {};
+  if (splitList(*list).empty()) return Status::fail("--pipelines " + *list + ": expected pipeline names, e.g. matrix,motor");
+  return checkPipelineNames("--pipelines", splitList(*list));
+}
+
+// --level N[,M...]: refinement levels of Bezier patch scenes (others ignore it), each timed
+// in the same worker, one after the other. Empty when not given.
+Result<std::vector<int>> readLevels(const Args& args) {
+  using R = Result<std::vector<int>>;
   std::vector<int> levels;
-  if (auto list = args.get("level")) {
-    std::string item;
-    std::istringstream in(*list);
-    while (std::getline(in, item, ',')) {
-      if (item.empty() || item.find_first_not_of("0123456789") != std::string::npos || item.size() > 3 ||
-          std::stoi(item) < 1 || std::stoi(item) > gl::kMaxPatchLevel)
-        return fail("--level " + *list + ": expected whole numbers in 1.." + std::to_string(gl::kMaxPatchLevel) +
-                    ", comma-separated");
-      levels.push_back(std::stoi(item));
-    }
-    if (levels.empty()) return fail("--level: expected at least one level");
+  auto list = args.get("level");
+  if (!list) return levels;
+  std::string item;
+  std::istringstream in(*list);
+  while (std::getline(in, item, ',')) {
+    if (item.empty() || item.find_first_not_of("0123456789") != std::string::npos || item.size() > 3 ||
+        std::stoi(item) < 1 || std::stoi(item) > gl::kMaxPatchLevel)
+      return R::fail("--level " + *list + ": expected whole numbers in 1.." + std::to_string(gl::kMaxPatchLevel) +
+                     ", comma-separated");
+    levels.push_back(std::stoi(item));
   }
+  if (levels.empty()) return R::fail("--level: expected at least one level");
+  return levels;
+}
 
+// The scenes named (folders expanded, their warnings printed), or every built-in scene.
+Result<std::vector<std::string>> timedSceneNames(const Args& args) {
   std::vector<std::string> warnings;
   std::vector<std::string> names = expandSceneInputs(args.positional(), &warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "motorbench time: warning: %s\n", w.c_str());
   if (args.positional().empty()) names = builtinSceneNames();
-  if (names.empty()) return fail("no scenes to time (the folders given hold no .gltf or .glb files)");
-  // The --json file's folder is created and checked now, not after every scene was timed.
-  if (auto path = args.get("json"); path && !args.has("worker"))
-    if (Status ok = prepareOutputFile("--json", *path); !ok) return fail(ok.error());
-  if (auto file = args.get("worker")) {
-    if (names.size() != 1) return fail("--worker times exactly one scene");
-    return timeOneScene(names[0], normal, tiny, levels, args, *file);
-  }
+  if (names.empty())
+    return Result<std::vector<std::string>>::fail("no scenes to time (the folders given hold no .gltf or .glb files)");
+  return names;
+}
 
-  auto machine = timing::machineInfo();
-  if (!machine) return fail(machine.error());
+// How the frames are timed, the machine and the table legend, before the first scene's rows.
+void printTimeHeader(const timing::Settings& normal, const timing::MachineInfo& machine) {
   std::printf("motorbench time: %d frames per pipeline after %d warm-up, pipelines interleaved "
               "frame by frame (alternating order); frame = clear + render (%s, fastest of %d "
               "back-to-back renders); update = Pipeline::update (hierarchy, "
               "animation, skin palette; matrix forms: + the drawn nodes' normal matrices) timed apart, per call (fastest block, same count); median "
               "[first-third quartile]\n",
               normal.frames, normal.warmup,
-              machine->realGpu ? "GL_TIME_ELAPSED timer query; wall clock to glFinish beside it in --json"
-                               : "wall clock to glFinish",
+              machine.realGpu ? "GL_TIME_ELAPSED timer query; wall clock to glFinish beside it in --json"
+                              : "wall clock to glFinish",
               normal.bestOf);
   std::printf("machine: %s, %u cores; GL_RENDERER %s; GL_VERSION %s; device %s; LP_NUM_THREADS %s; "
               "frame time from: %s\n\n",
-              machine->cpuModel.c_str(), machine->cores, machine->glRenderer.c_str(),
-              machine->glVersion.c_str(), machine->gl.deviceText().c_str(), machine->lpNumThreads.c_str(),
-              machine->realGpu ? "GPU timer queries (a real GPU)"
-                               : "the wall clock (a CPU rasterizer: its timer queries time no GPU)");
+              machine.cpuModel.c_str(), machine.cores, machine.glRenderer.c_str(),
+              machine.glVersion.c_str(), machine.gl.deviceText().c_str(), machine.lpNumThreads.c_str(),
+              machine.realGpu ? "GPU timer queries (a real GPU)"
+                              : "the wall clock (a CPU rasterizer: its timer queries time no GPU)");
   std::printf("%s\n", timing::timingLegend().c_str());
+}
 
-  nlohmann::json results = nlohmann::json::array(), patchMemory = nlohmann::json::array();
-  int status = 0;
-  const std::string scratch = (std::filesystem::temp_directory_path() /
-                               ("motorbench-time-" + std::to_string(::getpid()) + ".json")).string();
-  Progress progress("time", "scenes done", names.size(), false);
-  for (const std::string& name : names) {
-    std::vector<std::string> child = {"time", name, "--worker", scratch};
-    for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level", "instances", "pipelines", "anim"})
-      if (auto v = args.get(key)) child.insert(child.end(), {std::string("--") + key, *v});
-    std::filesystem::remove(scratch);
-    std::fflush(stdout);  // the child prints its rows to the same stdout
-    const std::string how = report::runSelf(child, "", kWorkerTimeoutS);
-    std::ifstream in(scratch);
-    const nlohmann::json worker = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
-    nlohmann::json rows = worker.is_object() ? worker.value("rows", nlohmann::json()) : nlohmann::json();
-    if (!rows.is_array()) {
-      const std::string why = how.empty() ? "the worker wrote no result" : "the worker ended: " + how;
-      std::fprintf(stderr, "motorbench time: error: %s: %s\n", name.c_str(), why.c_str());
-      results.push_back({{"scene", name}, {"error", why}});
-      status = 2;
-      progress.done(name + ": failed");
-      continue;
-    }
-    // A scene that failed (it could not load, or a pipeline could not run) is not "timed".
-    bool failed = !how.empty();
-    for (const auto& r : rows) failed = failed || r.contains("error");
-    progress.done(name + (failed ? ": failed, see the error above" : ": timed"));
-    if (failed) status = 2;
-    for (auto& r : rows) results.push_back(std::move(r));
-    if (const nlohmann::json m = worker.value("patchMemory", nlohmann::json()); m.is_array())
-      patchMemory.push_back({{"scene", name}, {"rows", m}});
-  }
-  std::filesystem::remove(scratch);
+// What the ratios printed mean, after the last scene.
+void printRatioNote() {
   std::printf("frame/matrix and motor/matrix: paired per-frame ratios (both pipelines render the same frame "
               "back to back); of the medians: ratio of the two medians; CPU time: the paired ratio of process CPU "
               "time per frame (llvmpipe threads included); update/matrix: paired, per update call; update phases: "
               "medians per call of a separate block of updates timed with the phase clock on "
               "(pipelines/update_phases.h). < 1: motor (or the pipeline) faster; noise: q1 <= 1 <= q3.\n");
+}
 
-  if (auto path = args.get("json")) {
-    const nlohmann::json j = {
-        {"tool", "motorbench time"},
-        {"machine", timing::toJson(*machine)},
-        {"settings",
-         {{"frames", normal.frames}, {"warmup", normal.warmup}, {"best_of", normal.bestOf},
-          {"size", {normal.width, normal.height}},
-          {"vertex_bound_size", {tiny.width, tiny.height}},
-          {"method", "pipelines interleaved frame by frame in alternating order; frame = clear + "
-                     "render, timed as each result's frameTimeSource says (gpu-timer: GL_TIME_ELAPSED, "
-                     "read after glFinish, wall_ms beside it; wall-clock: steady_clock to glFinish), "
-                     "fastest of best_of renders; also process "
-                     "CPU time; update = Pipeline::update per call; update_phases_ms = a further "
-                     "block of update calls with the phase clock on, per call"}}},
-        {"results", results},
-        // Bezier patch scenes timed with --level: bytes uploaded per pipeline and level, instanced
-        // (control points + one refinement pattern) vs the same surface pre-tessellated.
-        {"patchMemory", patchMemory}};
-    if (Status w = writeTextFile(*path, j.dump(2) + "\n"); !w) return fail(w.error());
+// Every scene's rows and patch memory tables, and the exit status (2 when a scene failed).
+struct TimedScenes {
+  nlohmann::json results = nlohmann::json::array(), patchMemory = nlohmann::json::array();
+  int status = 0;
+};
+
+// One scene timed in a child process (`time SCENE --worker scratch`, the timing options passed
+// on), its rows and patch memory added to `into`.
+void timeSceneInWorker(const std::string& name, const Args& args, const std::string& scratch, Progress& progress,
+                       TimedScenes& into) {
+  std::vector<std::string> child = {"time", name, "--worker", scratch};
+  for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level", "instances", "pipelines", "anim"})
+    if (auto v = args.get(key)) child.insert(child.end(), {std::string("--") + key, *v});
+  std::filesystem::remove(scratch);
+  std::fflush(stdout);  // the child prints its rows to the same stdout
+  const std::string how = report::runSelf(child, "", kWorkerTimeoutS);
+  std::ifstream in(scratch);
+  const nlohmann::json worker = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+  nlohmann::json rows = worker.is_object() ? worker.value("rows", nlohmann::json()) : nlohmann::json();
+  if (!rows.is_array()) {
+    const std::string why = how.empty() ? "the worker wrote no result" : "the worker ended: " + how;
+    std::fprintf(stderr, "motorbench time: error: %s: %s\n", name.c_str(), why.c_str());
+    into.results.push_back({{"scene", name}, {"error", why}});
+    into.status = 2;
+    progress.done(name + ": failed");
+    return;
   }
-  return status;
+  // A scene that failed (it could not load, or a pipeline could not run) is not "timed".
+  bool failed = !how.empty();
+  for (const auto& r : rows) failed = failed || r.contains("error");
+  progress.done(name + (failed ? ": failed, see the error above" : ": timed"));
+  if (failed) into.status = 2;
+  for (auto& r : rows) into.results.push_back(std::move(r));
+  if (const nlohmann::json m = worker.value("patchMemory", nlohmann::json()); m.is_array())
+    into.patchMemory.push_back({{"scene", name}, {"rows", m}});
+}
+
+// The --json document: the machine, the settings and method, every scene's rows.
+nlohmann::json timeJson(const timing::MachineInfo& machine, const TimeConfigs& c, const TimedScenes& timed) {
+  return {{"tool", "motorbench time"},
+          {"machine", timing::toJson(machine)},
+          {"settings",
+           {{"frames", c.normal.frames}, {"warmup", c.normal.warmup}, {"best_of", c.normal.bestOf},
+            {"size", {c.normal.width, c.normal.height}},
+            {"vertex_bound_size", {c.tiny.width, c.tiny.height}},
+            {"method", "pipelines interleaved frame by frame in alternating order; frame = clear + "
+                       "render, timed as each result's frameTimeSource says (gpu-timer: GL_TIME_ELAPSED, "
+                       "read after glFinish, wall_ms beside it; wall-clock: steady_clock to glFinish), "
+                       "fastest of best_of renders; also process "
+                       "CPU time; update = Pipeline::update per call; update_phases_ms = a further "
+                       "block of update calls with the phase clock on, per call"}}},
+          {"results", timed.results},
+          // Bezier patch scenes timed with --level: bytes uploaded per pipeline and level, instanced
+          // (control points + one refinement pattern) vs the same surface pre-tessellated.
+          {"patchMemory", timed.patchMemory}};
+}
+
+int runTime(const std::vector<std::string>& argv) {
+  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level",
+                          "instances", "gpu", "pipelines", "anim"},
+                         {},
+                         {}});
+  if (!args.error().empty()) return timeError(args.error());
+  if (Status gpu = applyGpuOption(args); !gpu) return timeError(gpu.error());  // workers inherit MB_GPU
+  const TimeConfigs configs = readTimeConfigs(args);
+  args.integer("instances", 1, 1, kMaxInstances);  // checked here; each worker applies it
+  if (Status ok = checkTimePipelines(args); !ok) return timeError(ok.error());
+  // llvmpipe reads LP_NUM_THREADS when the context is created, which has not happened yet.
+  if (args.has("lp-threads"))
+    setenv("LP_NUM_THREADS", std::to_string(args.integer("lp-threads", 0, 0, 1024)).c_str(), 1);
+  const auto levels = readLevels(args);
+  if (!levels) return timeError(levels.error());
+  const auto names = timedSceneNames(args);
+  if (!names) return timeError(names.error());
+  // The --json file's folder is created and checked now, not after every scene was timed.
+  if (auto path = args.get("json"); path && !args.has("worker"))
+    if (Status ok = prepareOutputFile("--json", *path); !ok) return timeError(ok.error());
+  if (auto file = args.get("worker")) {
+    if (names->size() != 1) return timeError("--worker times exactly one scene");
+    return timeOneScene((*names)[0], configs.normal, configs.tiny, *levels, args, *file);
+  }
+
+  auto machine = timing::machineInfo();
+  if (!machine) return timeError(machine.error());
+  printTimeHeader(configs.normal, *machine);
+  TimedScenes timed;
+  const std::string scratch = (std::filesystem::temp_directory_path() /
+                               ("motorbench-time-" + std::to_string(::getpid()) + ".json")).string();
+  Progress progress("time", "scenes done", names->size(), false);
+  for (const std::string& name : *names) timeSceneInWorker(name, args, scratch, progress, timed);
+  std::filesystem::remove(scratch);
+  printRatioNote();
+  if (auto path = args.get("json"))
+    if (Status w = writeTextFile(*path, timeJson(*machine, configs, timed).dump(2) + "\n"); !w) return timeError(w.error());
+  return timed.status;
 }
 
 }  // namespace
