@@ -148,7 +148,8 @@ TEST(CliCheck, MissingGoldenIsAnErrorNamingTheFile) {
   fs::remove_all(root);
 }
 
-// "`check --golden <wrong folder>` advises `check --update`".
+// A --golden folder without golden.json is named with what a golden folder holds, and check
+// does not advise --update (it would write goldens there).
 TEST(CliInputText, WrongGoldenFolderIsNamedWithoutAdvisingUpdate) {
   const fs::path dir = mb::cli_test::scratchDir("input_golden");
   const auto r = runMb("check --golden " + quoted(dir) + " --scenes normal_torus --out " + quoted(dir / "out"));
@@ -161,8 +162,8 @@ TEST(CliInputText, WrongGoldenFolderIsNamedWithoutAdvisingUpdate) {
   fs::remove_all(dir);
 }
 
-// "`check` run outside the repository suggests `--update` (which would create goldens in the
-// wrong place) instead of `--golden DIR`."
+// Outside a checkout there are no default goldens: check (with or without --update) asks for
+// --golden DIR and creates nothing, so goldens never land in the wrong place.
 TEST(CliMessages, CheckOutsideACheckoutPointsToGolden) {
   const fs::path dir = mb::cli_test::scratchDir("messages_check");
   for (const char* args : {"check", "check --update"}) {

@@ -125,7 +125,8 @@ TEST(CliCompareText, WithoutItsOwnReferenceASkinnedFrameIsJudgedAgainstMatrixAnd
   fs::remove_all(dir);
 }
 
-// "An empty frame passes a comparison: ... PSNR inf dB ... -> PASS".
+// A frame where neither pipeline drew a pixel is not a pass: with a threshold it is an error
+// naming both pipelines, and metrics.json's verdict says "nothing drawn".
 TEST(CliCompareText, NothingDrawnInEitherImageIsNotAPass) {
   const fs::path dir = mb::cli_test::scratchDir("compare_empty");
   const fs::path file = zeroScaleFile(dir);
@@ -181,11 +182,10 @@ TEST(CliCompareText, DrawnPixelsIdenticalAndUntimedPhases) {
   fs::remove_all(dir);
 }
 
-// "compare on a skinned file between LBS and motor pipelines fails with no word that the two
-// skinning methods differ by design; units switch within one line; --hardfail 0.5 prints 'max
-// error 0.670588' beside 'max 171/255'": the note says so, every channel difference reads in both
-// units, and a --hardfail failure against the motor-blend reference names the max error its line
-// printed.
+// A skinned file compared between a linear-blend and a motor pipeline: a note says the two
+// skinning methods differ by design, every channel difference reads in both units (0..1 and
+// steps of 255), and a --hardfail failure against the motor-blend reference names the max error
+// its line printed.
 TEST(CliCompareText, SkinningMethodsAndOneUnitForEveryDifference) {
   const fs::path dir = mb::cli_test::scratchDir("compare_skin");
   const std::string frame = "compare skinned_tube --anim candy_wrapper --time 0.5 --size 128x96 ";
@@ -222,9 +222,9 @@ TEST(CliCompareText, SkinningMethodsAndOneUnitForEveryDifference) {
   fs::remove_all(dir);
 }
 
-// "compare's verdict text reads like a failure when no threshold was given; `--hardfail` alone
-// reports the default `--fail` reason; `--fail -1` and `--failpercent 500` are accepted;
-// `--fail`'s unit (0..1) is undocumented."
+// Without a threshold the verdict says "not judged"; --hardfail alone judges the largest
+// difference with its own reason; malformed or out-of-range thresholds are refused; the help
+// states the unit of --fail (0..1, a channel difference / 255) and of --failpercent.
 TEST(CliMessages, CompareVerdictAndThresholds) {
   const fs::path dir = mb::cli_test::scratchDir("messages_verdict");
   const auto plain = runMb("compare normal_torus -o " + quoted(dir / "a"));
@@ -266,7 +266,7 @@ TEST(CliMessages, CompareVerdictAndThresholds) {
 }
 
 // --fail 1/255 as the help writes it (1/0 refused); LDR-FLIP printed, mapped and in
-// metrics.json beside PSNR. (The legend's numbers: test_cli_visibility.)
+// metrics.json beside PSNR. (The legend's numbers: CliCompare.CompareWritesTheHeatMapLegend.)
 TEST(CliCompare, CompareTakesFractionsAndWritesFlip) {
   const fs::path dir = mb::cli_test::scratchDir("traps_compare");
   const auto r = runMb("compare normal_torus --size 64x64 --fail 1/255 --failpercent 100 -o " + quoted(dir));
@@ -290,7 +290,9 @@ TEST(CliCompare, CompareTakesFractionsAndWritesFlip) {
   fs::remove_all(dir);
 }
 
-// "the diff heat map has no legend"
+// compare writes diff_legend.png beside diff.png: one colour block per stop of the heat map's
+// scale, its number of steps under it, the colours those of metrics.json's diffLegend and of the
+// documented scale, and diff.png's worst pixel in its stop's colour.
 TEST(CliCompare, CompareWritesTheHeatMapLegend) {
   const fs::path dir = mb::cli_test::scratchDir("visibility_legend");
   const auto r = runMb("compare normal_torus -o " + quoted(dir));

@@ -16,7 +16,8 @@ using mb::cli_test::contains;
 using mb::cli_test::quoted;
 using mb::cli_test::runMb;
 
-// "`inspect /nonexistent.glb` exits 0."
+// A missing file is named with the reason, counted as a failed input (exit 1), and the inputs
+// after it are still inspected.
 TEST(CliMessages, InspectOfAMissingFileExitsNonZero) {
   const auto r = runMb("inspect /nonexistent.glb");
   EXPECT_EQ(r.rc, 1) << r.out;
@@ -29,7 +30,8 @@ TEST(CliMessages, InspectOfAMissingFileExitsNonZero) {
   EXPECT_EQ(runMb("inspect normal_torus").rc, 0);
 }
 
-// "A folder given as SCENE says 'no such file'." "Unknown scene names do not list the built-ins."
+// A folder given as a scene is named as a folder; an unknown name says it is neither a file nor
+// a built-in scene and lists the built-in names.
 TEST(CliMessages, FolderFileAndUnknownBuiltinAreToldApart) {
   const fs::path dir = mb::cli_test::scratchDir("messages_scene");
   const auto folder = runMb("render " + quoted(dir) + " -o " + quoted(dir / "x.png"));
@@ -48,7 +50,7 @@ TEST(CliMessages, FolderFileAndUnknownBuiltinAreToldApart) {
   fs::remove_all(dir);
 }
 
-// "inspect's built-in list omits s3_tiling/h3_tiling".
+// inspect's list of built-in names includes the curved scenes.
 TEST(CliInputText, BuiltinListNamesTheCurvedScenes) {
   const auto r = runMb("inspect normal_tours");
   EXPECT_EQ(r.rc, 1) << r.out;
@@ -56,7 +58,7 @@ TEST(CliInputText, BuiltinListNamesTheCurvedScenes) {
   EXPECT_TRUE(contains(r.out, "s3_tiling, h3_tiling)")) << r.out;
 }
 
-// "an empty folder yields an empty report with no warning" (and inspect says nothing either).
+// A folder without .gltf or .glb files is warned about by inspect, time and report.
 TEST(CliMessages, EmptyFolderIsWarnedAbout) {
   const fs::path dir = mb::cli_test::scratchDir("messages_empty");
   fs::create_directories(dir / "empty");

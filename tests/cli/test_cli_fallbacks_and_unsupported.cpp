@@ -127,8 +127,8 @@ TEST(CliFrameNotes, NonZeroFallbackCountersArePrintedPerPipeline) {
   fs::remove_all(dir);
 }
 
-// "loader fallbacks (an image replaced by white, 64 non-finite positions dropped) are silent
-// on render and compare"
+// The loader's fallbacks (an image replaced by white, non-finite positions dropped) are printed
+// by render and compare with their counts, and recorded in compare's metrics.json.
 TEST(CliFrameNotes, LoaderFallbacksAreWarnedOnRenderAndCompare) {
   const fs::path dir = mb::cli_test::scratchDir("visibility_fallbacks");
   const auto cases = mb::hostile::allCases();
@@ -159,8 +159,8 @@ TEST(CliFrameNotes, LoaderFallbacksAreWarnedOnRenderAndCompare) {
   fs::remove_all(dir);
 }
 
-// "`zeroScalarFrames` and other counters are not explained anywhere": every counter the JSON
-// files carry has a glossary entry (report and README show the glossary).
+// Every counter the JSON files carry has a glossary entry (report and README show the
+// glossary).
 TEST(CliGlossary, EveryCounterHasAGlossaryEntry) {
   auto keysOf = [](const nlohmann::json& j) {
     std::vector<std::string> keys;

@@ -26,7 +26,8 @@ bool sameImage(const fs::path& a, const fs::path& b) {
   return x && y && x->width == y->width && x->height == y->height && x->rgba == y->rgba;
 }
 
-// "the render/compare summary does not repeat animation, time and camera"
+// render and compare print the animation, time, camera, size and pipeline they drew; a glTF
+// camera is named by index, name and type, and an unknown one lists the file's cameras.
 TEST(CliFrameOptions, RenderAndComparePrintAnimationTimeAndCamera) {
   const fs::path dir = mb::cli_test::scratchDir("visibility_frame");
   const auto r = runMb("render skinned_tube --anim 0 --time 0.25 --size 64x64 -o " + quoted(dir / "x.png"));
@@ -62,9 +63,8 @@ TEST(CliFrameOptions, RenderAndComparePrintAnimationTimeAndCamera) {
   fs::remove_all(dir);
 }
 
-// "`render BoxAnimated.gltf --time 1.5` without `--anim` ignores the time silently (the image
-// equals the rest pose)." Now: animation 0 at 1.5 s, said on stderr, the same image as
-// --anim 0 --time 1.5 and not the rest pose.
+// render --time without --anim poses animation 0 at that time, says so on stderr, and draws the
+// same image as --anim 0 --time 1.5, not the rest pose; a scene without animations refuses it.
 TEST(CliOptions, RenderTimeWithoutAnimPosesTheFirstAnimation) {
   const fs::path corpus = corpusDir();
   if (corpus.empty()) GTEST_SKIP() << "no ../shared/corpus";
@@ -85,8 +85,8 @@ TEST(CliOptions, RenderTimeWithoutAnimPosesTheFirstAnimation) {
   fs::remove_all(dir);
 }
 
-// "`compare BoxAnimated.gltf --time 0.5` writes "time": 0.5 into metrics.json for a frame that
-// was never posed." Now the frame is posed by animation 0 and metrics.json says so.
+// compare --time without --anim poses animation 0, and metrics.json records that animation
+// beside the time.
 TEST(CliOptions, CompareTimeWithoutAnimRecordsThePosedAnimation) {
   const fs::path corpus = corpusDir();
   if (corpus.empty()) GTEST_SKIP() << "no ../shared/corpus";
@@ -104,8 +104,8 @@ TEST(CliOptions, CompareTimeWithoutAnimRecordsThePosedAnimation) {
   fs::remove_all(dir);
 }
 
-// "Repeating `--time` (as the usage line `[--anim A --time T ...]` suggests) keeps only the
-// last value." Now: rejected with the reason, and the usage no longer suggests repeating.
+// A repeated --time is refused with the reason (one frame per run), and the usage line does not
+// suggest repeating it.
 TEST(CliOptions, RepeatedTimeIsRejected) {
   const fs::path dir = mb::cli_test::scratchDir("options_repeat");
   for (const char* cmd : {"render", "compare"}) {
@@ -119,7 +119,8 @@ TEST(CliOptions, RepeatedTimeIsRejected) {
   fs::remove_all(dir);
 }
 
-// "Times outside an animation are clamped silently; negative times are accepted."
+// A negative --time is refused; a time past the end of the animation is clamped to its end and
+// said, and metrics.json records the time drawn.
 TEST(CliMessages, TimesPastTheEndAreNotedAndNegativeTimesRejected) {
   const fs::path dir = mb::cli_test::scratchDir("messages_times");
   const auto neg = runMb("render skinned_tube --anim 0 --time -1 -o " + quoted(dir / "n.png"));

@@ -73,7 +73,7 @@ TEST(CliUsage, UnknownCommandIsAnError) {
   EXPECT_NE(out.find("unknown command 'frobnicate'"), std::string::npos) << out;
 }
 
-// "`render` without `--pipeline` is an error or its default is in the usage"; "--version".
+// render's usage names its default pipeline; --version prints the version and the git commit.
 TEST(CliOptions, RenderUsageNamesTheDefaultPipelineAndVersionPrints) {
   const auto help = runMb("render --help");
   EXPECT_TRUE(contains(help.out, "--pipeline NAME (default matrix")) << help.out;
@@ -107,9 +107,9 @@ TEST(CliHelp, HelpIsaAndHelpHelp) {
   EXPECT_TRUE(contains(help.out, "commands:")) << help.out;
 }
 
-// The help is the usage line, then options and an example (test_cli_help.cpp);
-// nothing runs: none of the lines a run prints (time's machine line, report's progress, bench's
-// "Running" line) appears.
+// The help is the usage line, then options and an example (see
+// EveryCommandListsItsOptionsAndOneExample); nothing runs: none of the lines a run prints (time's
+// machine line, report's progress, bench's "Running" line) appears.
 TEST(CliUsage, CommandHelpPrintsThatCommandsUsageAndRunsNothing) {
   for (const char* c : {"time", "report", "render", "bench"}) {
     std::string out;
@@ -169,7 +169,8 @@ TEST(CliHelp, EveryCommandListsItsOptionsAndOneExample) {
   EXPECT_FALSE(contains(helps.at("inspect"), "\npipelines: "));
 }
 
-// "`--pipeline Motor` prints the pose/camera/size lines, then 'unknown pipeline'."
+// An unknown pipeline name is refused, with the registered names, before anything is framed or
+// written.
 TEST(CliHelp, PipelineNameIsCheckedBeforeTheSceneIsLoaded) {
   const fs::path dir = mb::cli_test::scratchDir("help_pipeline");
   const auto render = runMb("render skinned_tube --time 0.5 --pipeline Motor -o " + quoted(dir / "x.png"));

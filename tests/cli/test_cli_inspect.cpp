@@ -39,8 +39,8 @@ std::string block(const std::string& out, const std::string& file) {
   return out.substr(at, end == std::string::npos ? std::string::npos : end - at);
 }
 
-// "inspect lists animations (name, duration, channels) and cameras (type, name) in text and
-// JSON".
+// inspect lists animations (name, duration, channels) and cameras (type, name) in text and
+// JSON.
 TEST(CliInspect, InspectListsAnimationsAndCameras) {
   const fs::path dir = mb::cli_test::scratchDir("visibility_inspect");
   std::ofstream(dir / "camera.gltf") << kCameraGltf;
@@ -109,7 +109,7 @@ TEST(CliInspect, InspectFolderProgressSummaryAndAnEmptyFile) {
   fs::remove_all(dir);
 }
 
-// "`inspect broken/` prints '0/0 files (0.0 %)'".
+// A folder whose files all fail to load prints its aggregate without a share of zero files.
 TEST(CliInputText, InspectOfOnlyBrokenFilesPrintsNoZeroOverZero) {
   const fs::path dir = mb::cli_test::scratchDir("input_broken");
   std::ofstream(dir / "a.gltf") << "{ not json";

@@ -91,7 +91,7 @@ TEST(CliArgs, OneSizeRuleWxHBothPositive) {
 
 // --- commands as users typed them ------------------------------------------------------------
 
-// "`time BoxAnimated.gltf --frames abc` prints `error: stod`."
+// A number option given text names the option and the rule, not the conversion that failed.
 TEST(CliOptions, TimeFramesAbcNamesTheOptionAndTheRule) {
   const auto r = runMb("time normal_torus --frames abc");
   EXPECT_EQ(r.rc, 2) << r.out;
@@ -104,8 +104,7 @@ TEST(CliOptions, TimeFramesAbcNamesTheOptionAndTheRule) {
   EXPECT_TRUE(contains(box.out, "--frames: expected a whole number >= 1, got 'abc'")) << box.out;
 }
 
-// "A misspelt flag at the end of the line (`--no-bnech`) is reported as 'option --no-bnech
-// needs a value'."
+// A misspelt flag at the end of the line is an unknown option, not one missing its value.
 TEST(CliOptions, MisspeltFlagAtTheEndIsAnUnknownOption) {
   const fs::path dir = mb::cli_test::scratchDir("options_nobnech");
   for (const std::string& cmd : std::vector<std::string>{"report normal_torus -o " + quoted(dir / "r") + " --no-bnech",
@@ -120,8 +119,7 @@ TEST(CliOptions, MisspeltFlagAtTheEndIsAnUnknownOption) {
   fs::remove_all(dir);
 }
 
-// "an option missing its value (`--size -o x.png`) swallows the next flag and yields
-// 'expected one SCENE'."
+// An option missing its value does not take the next option as its value.
 TEST(CliOptions, SizeWithoutValueDoesNotSwallowTheNextOption) {
   const fs::path dir = mb::cli_test::scratchDir("options_size");
   const auto r = runMb("render normal_torus --size -o " + quoted(dir / "x.png"));
@@ -132,8 +130,7 @@ TEST(CliOptions, SizeWithoutValueDoesNotSwallowTheNextOption) {
   fs::remove_all(dir);
 }
 
-// "`--size` is checked differently by render and report (report rejects 0x0 with 'expected
-// WxH'; `--size 640` silently means 640x640)." Now one rule and one message everywhere.
+// --size is one rule with one message in every command: 0x0 and a single number are refused.
 TEST(CliMessages, SizeIsOneRuleInEveryCommand) {
   const fs::path dir = mb::cli_test::scratchDir("messages_size");
   const std::string rule = "expected WIDTHxHEIGHT, both whole numbers in 1..16384";

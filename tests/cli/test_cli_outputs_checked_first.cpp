@@ -36,8 +36,9 @@ std::string unwritableFolder() {
   return "";
 }
 
-// "`-o` to a folder or a name without extension gives an OpenImageIO message; a missing parent
-// folder is not created (compare creates it, render does not)."
+// render's -o: a folder, a name without extension or an unknown image format is refused before
+// rendering, with the reason; missing parent folders are created; compare's -o on an existing
+// file is refused, not overwritten.
 TEST(CliMessages, RenderOutputPathsAreCheckedAndParentsCreated) {
   const fs::path dir = mb::cli_test::scratchDir("messages_output");
   const auto toFolder = runMb("render normal_torus -o " + quoted(dir));
@@ -65,7 +66,8 @@ TEST(CliMessages, RenderOutputPathsAreCheckedAndParentsCreated) {
   fs::remove_all(dir);
 }
 
-// "`compare -o out.png` makes a folder named out.png."
+// compare -o with a file-like name (out.png) is refused, suggesting a folder name; report -o on
+// a file is refused before any scene is measured.
 TEST(CliOutputs, CompareRefusesAFileLikeFolderName) {
   const fs::path dir = mb::cli_test::scratchDir("outputs_compare");
   const auto r = runMb("compare normal_torus -o " + quoted(dir / "out.png"));
@@ -84,7 +86,8 @@ TEST(CliOutputs, CompareRefusesAFileLikeFolderName) {
   fs::remove_all(dir);
 }
 
-// "`time ... --json t4/time.json` measures everything, then 'cannot write t4/time.json'."
+// time --json creates missing folders, and refuses a file where a folder must be, or a folder
+// as the file, before anything is timed.
 TEST(CliOutputs, TimeCreatesTheJsonFolderAndRefusesBeforeTiming) {
   const fs::path dir = mb::cli_test::scratchDir("outputs_time");
   const fs::path json = dir / "t4" / "deeper" / "time.json";
@@ -114,7 +117,8 @@ TEST(CliOutputs, BenchOutIntoAMissingFolderCreatesIt) {
   fs::remove_all(dir);
 }
 
-// "`claims ... --json t10/x/claims.json` fails the same way after 3 minutes."
+// claims' -o and --json and inspect's --json are checked before judging or inspecting: missing
+// folders made, a file where a folder must be or a folder as the file refused.
 TEST(CliOutputs, ClaimsAndInspectCheckTheirFilesFirst) {
   const fs::path dir = mb::cli_test::scratchDir("outputs_claims");
   std::ofstream(dir / "plain") << "x";
@@ -165,8 +169,8 @@ TEST(CliOutputs, OpsAndIsaCheckTheirJsonFirst) {
   fs::remove_all(dir);
 }
 
-// "`merge -o dir/` says only 'cannot write'; merging a missing path says 'every input must be a
-// report folder' instead of 'not found'."
+// merge -o on a folder says why it cannot write there (it writes one file for inspect --json
+// inputs); a missing input is named as not found.
 TEST(CliOutputs, MergeSaysWhyItCannotWriteAndWhatIsMissing) {
   const fs::path dir = mb::cli_test::scratchDir("outputs_merge");
   for (int i : {1, 2}) {
@@ -191,7 +195,7 @@ TEST(CliOutputs, MergeSaysWhyItCannotWriteAndWhatIsMissing) {
 }
 
 // Each command that writes late checks its outputs first: a folder that cannot be made is refused
-// before the scene is loaded or drawn (before, render drew and then failed).
+// before the scene is loaded or drawn.
 TEST(CliOutputs, OutputPathsAreCheckedBeforeAnyWork) {
   const fs::path dir = mb::cli_test::scratchDir("traps_outputs");
   const std::string mb = mb::cli_test::motorbench();

@@ -166,7 +166,7 @@ TEST(CliReport, RejectsBadUsage) {
   EXPECT_EQ(runCommand(motorbench() + "report -o /tmp/x --bogus 1", &log), 2) << log;
 }
 
-// "`--bench-json` with a missing file runs the whole report and exits 0."
+// A missing --bench-json file is refused before the run starts.
 TEST(CliMessages, ReportBenchJsonMissingFailsBeforeTheRun) {
   const fs::path dir = mb::cli_test::scratchDir("messages_benchjson");
   const auto r = runMb("report normal_torus -o " + quoted(dir / "r") + " --bench-json " + quoted(dir / "missing.json"));

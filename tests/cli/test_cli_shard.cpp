@@ -145,7 +145,8 @@ TEST(Shard, BadShardSpecIsAnError) {
   }
 }
 
-// "an empty shard exits 0 silently".
+// A shard that holds none of the inputs says so (inspect, check, report); inspect still writes
+// its JSON.
 TEST(CliInputText, AnEmptyShardSaysSo) {
   const fs::path dir = mb::cli_test::scratchDir("input_shard");
   const auto r = runMb("inspect normal_torus textured_box --shard 3/3 --json " + quoted(dir / "s3.json"));

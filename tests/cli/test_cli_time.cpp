@@ -105,7 +105,7 @@ TEST(CliTime, EachSceneInItsOwnWorkerAndABadSceneDoesNotStopTheOthers) {
   fs::remove(json);
 }
 
-// "`time` accepts folders".
+// time takes a folder and times the glTF files found under it.
 TEST(CliTime, TimeAcceptsAFolder) {
   const fs::path dir = mb::cli_test::scratchDir("visibility_time");
   auto glb = mb::builtinSceneGlb("textured_box");
@@ -174,7 +174,6 @@ TEST(CliTimeText, BlockListsEveryPipelineWithSpreadsAndTheLegendSaysWhichWayIsFa
   EXPECT_TRUE(contains(timing::timingLegend(), "< 1: motor")) << timing::timingLegend();
 }
 
-// Update phases beside the whole update (Fox's motor once read 'sampling 32.78 us' beside 'whole update 3.85 us').
 // Each phase line shows its sum beside the whole update, and says so when the phase blocks ran
 // far slower than the timed update (phases then read as shares).
 TEST(CliTimeText, PhasesShowTheirSumBesideTheWholeUpdate) {
@@ -247,7 +246,7 @@ TEST(CliTimeText, JsonHasEveryRatioWithItsSpread) {
   std::filesystem::remove_all(dir);
 }
 
-// "`time nope.glb` prints '1/1 scenes timed' before failing."
+// A scene that failed is counted as done with its reason, never as timed.
 TEST(CliTimeText, AFailedSceneIsNotCountedAsTimed) {
   const auto r = runMb("time nope.glb");
   EXPECT_EQ(r.rc, 2) << r.out;
