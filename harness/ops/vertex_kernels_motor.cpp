@@ -5,9 +5,20 @@
 
 namespace mb::opsv::detail {
 
-std::vector<VertexKernel> motorKernels() {
-  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+namespace {
+
+// The counting shader every kernel below runs (one instance; static: the kernels' lambdas
+// outlive the calls that list them).
+PC& motorShader() {
   static PC P;
+  return P;
+}
+
+// motor.vs: the rigid and skinned vertex (and the paper's reference form), the joint blend,
+// world to clip (per vertex and with per-frame constants), the scaled fallback.
+std::vector<VertexKernel> motorFormKernels() {
+  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+  static PC& P = motorShader();
   const std::string motorIncl = kMotorIncl, store = kStore3;
   return {
       {"motor", "rigid vertex with frame", "motorRigidVertex",
@@ -73,6 +84,15 @@ std::vector<VertexKernel> motorKernels() {
        "mat3x4 v = motorScaledVertex(motor(u_world[0], u_world[1]), u_scale3, a_position, "
        "a_tangentRotor);" + store,
        motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n", ""},
+  };
+}
+
+// motor_c: the 4-byte rotor decode and the vertices that read it.
+std::vector<VertexKernel> compactMotorKernels() {
+  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+  static PC& P = motorShader();
+  const std::string motorIncl = kMotorIncl, store = kStore3;
+  return {
       {"motor_c", "rotor decode (4 bytes)", "compactRotor", [&] { P.compactRotor(in.compactRotor); },
        "mat2x4 r = compactRotor(a_compactFrame); o_0 = r[0]; o_1 = r[1];", motorIncl + kCompactAttribs,
        "smallest three (10, 10, 9 bits) and the reflection bit: no sign of a zero"},
@@ -109,6 +129,15 @@ std::vector<VertexKernel> motorKernels() {
        "mat3x4 v = motorCompactScaledVertex(motor(u_world[0], u_world[1]), u_scale3, a_position, "
        "a_compactFrame);" + store,
        motorIncl + kCompactAttribs + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n", ""},
+  };
+}
+
+// motor_cf: the signed rotor decode and the vertices that hand the rotor to the fragment.
+std::vector<VertexKernel> compactRotorKernels() {
+  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+  static PC& P = motorShader();
+  const std::string motorIncl = kMotorIncl, store = kStore3;
+  return {
       {"motor_cf", "signed rotor decode (4 bytes)", "compactSignedRotor",
        [&] { P.compactSignedRotor(in.compactRotor); }, "o_0 = compactSignedRotor(a_compactFrame);",
        motorIncl + kCompactAttribs, "compactRotor, then its bit negates the rotor (the sign chosen for interpolation)"},
@@ -146,8 +175,16 @@ std::vector<VertexKernel> motorKernels() {
        "a_tangentRotor, a_weights.x);" + store,
        motorIncl + kMotorAttribs + "uniform vec4 u_world[2]; uniform vec3 u_scale3;\n",
        "motorScaledVertex with the handedness given (motor_cf: the position's w)"},
-      // The exact fallback (pipelines/motor/linear_fallback.h): draws and skins whose
-      // transforms are not similarities; every motor-family pipeline (MB_LINEAR_FALLBACK).
+  };
+}
+
+// The exact fallback (pipelines/motor/linear_fallback.h): draws and skins whose transforms are
+// not similarities; every motor-family pipeline (MB_LINEAR_FALLBACK).
+std::vector<VertexKernel> linearFallbackKernels() {
+  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+  static PC& P = motorShader();
+  const std::string motorIncl = kMotorIncl, store = kStore3;
+  return {
       {"motor, motor_q, motor_c, motor_cf", "linear vertex (exact fallback)", "motorLinearRotorVertex",
        [&] {
          P.motorLinearRotorVertex(in.toWorld, in.affineNormals[0], in.affineNormals[1], in.position, in.rotor, -1.0);
@@ -166,10 +203,18 @@ std::vector<VertexKernel> motorKernels() {
        "o_0 = vec4(l[0], l[1].x); o_1 = vec4(l[1].yz, l[2].xy); o_2 = vec4(l[2].z);",
        motorIncl + kMotorAttribs + "uniform mat3 u_l[4];\n",
        "per skinned vertex on the fallback, twice (linear part and normal matrix) beside motorBlendJoints"},
-      // Morph targets: the rotor's own part of each method, per morphing vertex; the
-      // delta sums come on top (morph.glsl: per target with a non-zero weight, 1 mul + 1 add per
-      // float: 9 per target for the frame method's position + normal + tangent, 7 for the
-      // rotor method's position + rotor). shaders/motor_transform.glsl explains both.
+  };
+}
+
+// Morph targets: the rotor's own part of each method, per morphing vertex; the delta sums come
+// on top (morph.glsl: per target with a non-zero weight, 1 mul + 1 add per float: 9 per target
+// for the frame method's position + normal + tangent, 7 for the rotor method's position +
+// rotor). shaders/motor_transform.glsl explains both.
+std::vector<VertexKernel> morphRotorKernels() {
+  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+  static PC& P = motorShader();
+  const std::string motorIncl = kMotorIncl;
+  return {
       {"motor, motor_q", "morph rotor, frame method (a)", "morphRotorFrame",
        [&] { P.morphRotorFrame(in.rotor, PC::vec3(0.1, -0.2, 0.05), PC::vec3(0.0, 0.15, -0.1)); },
        "vec4 r = morphRotorFrame(a_tangentRotor, a_weights.xyz, a_position); o_0 = r; o_1 = r; o_2 = r;",
@@ -182,6 +227,16 @@ std::vector<VertexKernel> motorKernels() {
        motorIncl + kMotorAttribs,
        "rotor + summed rotor deltas, renormalised with the base rotor's handedness"},
   };
+}
+
+}  // namespace
+
+std::vector<VertexKernel> motorKernels() {
+  std::vector<VertexKernel> all;
+  for (auto group :
+       {motorFormKernels, compactMotorKernels, compactRotorKernels, linearFallbackKernels, morphRotorKernels})
+    for (VertexKernel& k : group()) all.push_back(std::move(k));
+  return all;
 }
 
 }  // namespace mb::opsv::detail
