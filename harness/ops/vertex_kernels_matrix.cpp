@@ -5,13 +5,26 @@
 
 namespace mb::opsv::detail {
 
-std::vector<VertexKernel> matrixKernels() {
-  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+namespace {
+
+// The counting shaders every kernel below runs (one instance each; static: the kernels'
+// lambdas outlive the calls that list them).
+MC& matrixShader() {
   static MC M;
+  return M;
+}
+
+AC& affineShader() {
   static AC A;
-  const auto& aj = in.affineJoints;
-  const auto& an = in.affineNormals;
-  const std::string matrixIncl = kMatrixIncl, affineIncl = kAffineIncl, affineJoints = kAffineJoints;
+  return A;
+}
+
+// matrix.vs: the Sample Viewer's mat4 forms, rigid and skinned, with and without tangent; the
+// joint blend; world to clip.
+std::vector<VertexKernel> matrixFormKernels() {
+  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+  static MC& M = matrixShader();
+  const std::string matrixIncl = kMatrixIncl;
   const std::string store = kStore3;
   return {
       {"matrix", "rigid vertex with frame", "matrixRigidVertex",
@@ -77,6 +90,19 @@ std::vector<VertexKernel> matrixKernels() {
        [&] { M.matrixWorldToClip(in.viewProj, in.world); },
        "gl_Position = matrixWorldToClip(u_viewProj, a_world);",
        matrixIncl + "uniform mat4 u_viewProj; layout(location = 0) in vec4 a_world;\n", ""},
+  };
+}
+
+// affine.vs: mat4x3 + mat3 forms (the float frame), and the two alternatives not drawn.
+std::vector<VertexKernel> affineKernels() {
+  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+  static MC& M = matrixShader();
+  static AC& A = affineShader();
+  const auto& aj = in.affineJoints;
+  const auto& an = in.affineNormals;
+  const std::string matrixIncl = kMatrixIncl, affineIncl = kAffineIncl, affineJoints = kAffineJoints;
+  const std::string store = kStore3;
+  return {
       {"matrix-affine", "rigid vertex with frame", "matrixAffineVertex",
        [&] {
          M.matrixAffineVertex(in.affine, in.affineNormal, 1.0, in.position, in.normalV, in.tangent);
@@ -129,6 +155,17 @@ std::vector<VertexKernel> matrixKernels() {
        "u_n[2], u_n[3], a_weights, u_mirror, a_position, a_normal, a_tangent);" + store,
        affineIncl + kMatrixAttribs + affineJoints + "uniform mat3 u_n[4];\n",
        "not used: 21 floats per joint and more ops than the cofactor of affineSkinnedVertex"},
+  };
+}
+
+// qtangent: the int16 quaternion frame and the vertices that read it.
+std::vector<VertexKernel> qtangentKernels() {
+  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+  static AC& A = affineShader();
+  const auto& aj = in.affineJoints;
+  const std::string affineIncl = kAffineIncl, affineJoints = kAffineJoints;
+  const std::string store = kStore3;
+  return {
       {"qtangent", "frame decode (int16 quaternion)", "qtangentFrame",
        [&] { A.qtangentFrame(in.qtangent); },
        "mat2x4 f = qtangentFrame(a_qtangent); o_0 = f[0]; o_1 = f[1];",
@@ -147,6 +184,17 @@ std::vector<VertexKernel> matrixKernels() {
        "mat3x4 v = qtangentSkinnedVertex(u_j[0], u_j[1], u_j[2], u_j[3], a_weights, u_mirror, "
        "a_position, a_qtangent);" + store,
        affineIncl + kQTangentAttribs + affineJoints, "qtangentFrame + affineSkinnedVertex"},
+  };
+}
+
+// matrix_c: the int16 position, the 4-byte frame and the vertices that read it.
+std::vector<VertexKernel> compactMatrixKernels() {
+  static const VertexInputs& in = inputs();  // static: the lambdas outlive this call
+  static AC& A = affineShader();
+  const auto& aj = in.affineJoints;
+  const std::string affineIncl = kAffineIncl, affineJoints = kAffineJoints;
+  const std::string store = kStore3;
+  return {
       {"matrix_c, motor_c", "position dequantisation (skinned, instanced)", "compactPosition",
        [&] { A.compactPosition(in.position, in.dequant); },
        "o_0 = vec4(compactPosition(a_position, u_dequant), 1.0);", affineIncl + kCompactAttribs,
@@ -170,6 +218,15 @@ std::vector<VertexKernel> matrixKernels() {
        "a_position, u_dequant, a_compactFrame);" + store,
        affineIncl + kCompactAttribs + affineJoints, "compactMatrixFrame + compactPosition + affineSkinnedVertex"},
   };
+}
+
+}  // namespace
+
+std::vector<VertexKernel> matrixKernels() {
+  std::vector<VertexKernel> all;
+  for (auto group : {matrixFormKernels, affineKernels, qtangentKernels, compactMatrixKernels})
+    for (VertexKernel& k : group()) all.push_back(std::move(k));
+  return all;
 }
 
 }  // namespace mb::opsv::detail
