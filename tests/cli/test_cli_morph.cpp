@@ -72,7 +72,7 @@ TEST(CliMorph, FiguresAreTheFramesWorstAndTheUploadsBytes) {
     EXPECT_EQ(doc["figures"][std::string("morph.worst_psnr.rigid.") + id]["n"], n) << id;
   }
   EXPECT_EQ(morphing, 3);  // the animation at 1/4, 1/2 and 3/4: the rest weights are 0
-  // The frame method is exact where matrix is: at least 50 dB on rigid morph frames.
+  // The frame method (the rotor re-formed from the morphed frame) stays at or above 50 dB on rigid morph frames.
   EXPECT_GE(figureValue(doc, "morph.worst_psnr.rigid.motor_frame"), 50.0);
   // No skinned scene here: the figures say so instead of a number.
   EXPECT_TRUE(doc["figures"]["morph.worst_psnr.skinned.motor_frame"]["value"].is_null());
