@@ -64,6 +64,36 @@ struct MotorPrograms {
   }
 };
 
+ScaleForm scaleForm(bool fallback) { return fallback ? ScaleForm::PerAxis : ScaleForm::Uniform; }
+
+// What every draw of one frame shares: the view, its camera motor and projection constants, the
+// programs of its projection, and the transform uploads counted for PipelineStats.
+struct MotorFrame {
+  const View& view;
+  motor::CameraMotor camera;
+  MK::vec4 k;  // once per frame, not per vertex as the paper listing's project() does
+  const MotorPrograms& programs;
+  uint64_t transformBytes = 0, transforms = 0, transformScaleBytes = 0;
+};
+
+// One draw item and what its kind of draw is decided by.
+struct MotorDraw {
+  const gl::DrawItem& d;
+  const gl::GpuPrimitive& g;
+  const Primitive& prim;
+  bool patch = false;  // Bezier patches: drawn rigidly by their node (never skinned)
+  bool morph = false;  // its morph deltas bound (counted per draw call)
+};
+
+// A rigid or skinned draw's transform on the paper's path: the node's world motor (motor_c's
+// rigid draws: the mesh's cube folded in) and the scale applied to the positions before it.
+struct DrawTransform {
+  motor::ScaledMotor world;
+  DrawScale scale;
+  bool dequantise = false;  // motor_c's skinned or morphing draws: u_Dequant per vertex instead
+  bool transform = false;   // uploads u_World
+};
+
 class MotorPipeline final : public gl::GltfPipeline {
 public:
   explicit MotorPipeline(const MotorVariant& variant) : variant_(variant) {}
@@ -86,6 +116,17 @@ private:
   gl::Defines defines(int kind, int form, bool morphing, bool orthographic) const;
   Status linkPrograms(bool orthographic);
   void setDequant(const gl::Program& program, const gl::DrawItem& d);
+  const gl::Program& useFrameProgram(const MotorFrame& f, gl::CachedProgram& p);
+  const gl::Program& useDrawProgram(const MotorFrame& f, DrawKind kind, ScaleForm form, bool morph);
+  const gl::Program& bindMorph(const MotorDraw& m, const gl::Program& program);
+  void drawItem(MotorFrame& f, const gl::DrawItem& d);
+  void drawGeneralInstances(MotorFrame& f, const MotorDraw& m);
+  void drawInstanceGroups(MotorFrame& f, const MotorDraw& m, const std::vector<gl::InstanceGroup>& groups);
+  void drawNode(MotorFrame& f, const MotorDraw& m);
+  DrawTransform drawTransform(const MotorDraw& m, const motor::JointPalette* palette) const;
+  uint64_t setDrawUniforms(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, const gl::Program& p,
+                           const glm::vec3& s, bool perAxis);
+  void drawByRotorHemisphere(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, DrawKind kind);
   void drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g, const Primitive& prim,
                   const motor::JointPalette* palette, GLuint paletteBuffer, const gl::Program& program,
                   uint64_t& transformBytes, uint64_t& linearBytes, const glm::mat4* world = nullptr);
@@ -175,120 +216,148 @@ void MotorPipeline::render(const View& view) {
   uploadPalettes(pose_.palettes.size(), [this](size_t i) { return uploadPalette(i); });
   streamInstances();
   const motor::CameraMotor camera = motor::cameraFromView(view);
-  const MK::vec4 k = motor::projectionConstants(camera);  // once per frame, not per vertex as the
-                                                          // paper listing's project() does
+  const MK::vec4 k = motor::projectionConstants(camera);
   // An orthographic View draws with the MB_ORTHOGRAPHIC programs (a hand-made View on a scene
   // without an orthographic camera builds them here; prepare() did for the others).
   if (view.orthographic && !programs_[1].built && !linkPrograms(true)) return;
-  const MotorPrograms& programs = programs_[view.orthographic ? 1 : 0];
+  MotorFrame frame{view, camera, k, programs_[view.orthographic ? 1 : 0]};
   gl::beginDraws();
-  auto setFrame = [&](gl::CachedProgram& p) -> const gl::Program& {
-    return use(p, [&](const gl::Program& program) {
-      gl::uniform4fv(program.uniform("u_Camera"), 2, &camera.worldToView[0][0], stats_.uniformBytesPerFrame);
-      gl::uniform4f(program.uniform("u_ProjectionK"), &k[0], stats_.uniformBytesPerFrame);
-      gl::setFrameUniforms(program, view, stats_.uniformBytesPerFrame);
-    });
-  };
-  auto useProgram = [&](DrawKind kind, ScaleForm form, bool morph) -> const gl::Program& {
-    return setFrame(programs.draw(kind, form, morph));
-  };
-  auto formOf = [](bool fallback) { return fallback ? ScaleForm::PerAxis : ScaleForm::Uniform; };
-  uint64_t transformBytes = 0, transforms = 0, transformScaleBytes = 0;
-  for (const gl::DrawItem& d : draws_) {
-    const gl::GpuPrimitive& g = geometry_.vertices.at(d);
-    const Primitive& prim = primitiveOf(d);
-    const bool patch = patches_.has(d);  // Bezier patches: drawn rigidly by their node (never skinned)
-    if (!patch && !g.indexCount) continue;
-    const bool morph = !patch && geometry_.morph.active(d);
-    // The program with d's morph deltas bound when it morphs (counted per draw call).
-    auto bindMorph = [&](const gl::Program& program) -> const gl::Program& {
-      if (morph) geometry_.morph.bind(program, d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
-      return program;
-    };
-    const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
-    if (!patch && rig_.general[size_t(d.node)] && !scene_->nodes[size_t(d.node)].instances.empty()) {
-      // Instances of a general node: one exact draw each (node world x instance, linear_fallback.h).
-      for (const TRS& instance : scene_->nodes[size_t(d.node)].instances) {
-        const glm::mat4 world = pose_.exact.world[size_t(d.node)] * trsMatrix(instance);
-        drawLinear(d, g, prim, nullptr, 0, bindMorph(useProgram(DrawKind::Rigid, ScaleForm::Linear, morph)),
-                   transformBytes, transformScaleBytes, &world);
-        ++transforms;
-      }
-      continue;
-    }
-    if (!groups.empty()) {
-      for (const gl::InstanceGroup& group : groups) {
-        const bool fallback = group.key & 1;
-        const gl::Program& program = bindMorph(useProgram(DrawKind::Instanced, formOf(fallback), morph));
-        if (variant_.compact) setDequant(program, d);
-        bindMaterial(program, prim);
-        gl::setWinding(group.key & 2);
-        stats_.drawnVertices += instances_.draw(g, group, {4, 4, fallback ? 3 : 1});
-        ++stats_.draws;
-      }
-      continue;
-    }
-    const int paletteIndex = paletteOf(pose_.palettes, g, patch, d.node);
-    const motor::JointPalette* palette = paletteIndex < 0 ? nullptr : &pose_.palettes[size_t(paletteIndex)];
-    const GLuint paletteBuffer = paletteIndex < 0 ? 0 : palettes_[size_t(paletteIndex)];
-    const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
-    if (palette ? palette->fallback : (!patch && rig_.general[size_t(d.node)])) {
-      drawLinear(d, g, prim, palette, paletteBuffer, bindMorph(useProgram(kind, ScaleForm::Linear, morph)),
-                 transformBytes, transformScaleBytes);
-      transforms += palette ? 0 : 1;
-      continue;
-    }
-    const motor::ScaledMotor* world = &pose_.world[size_t(d.node)];
-    DrawScale scale = palette ? drawScale(palette->scale, glm::vec3(1.0f))
-                              : drawScale(world->scale, world->residual);
-    motor::ScaledMotor folded;  // motor_c's rigid draws: the mesh's cube in the transform
-    const bool dequantise = variant_.compact && (palette || morph);  // u_Dequant per vertex instead
-    if (variant_.compact && !patch && !dequantise) {
-      const compact::PositionCube& cube = geometry_.cubes[size_t(d.mesh)][size_t(d.primitive)];
-      motor::composeInto({world->motor, 1.0f, glm::vec3(1.0f)},
-                         motor::fromTRS(TRS{scale.value * cube.center}, true), folded);
-      scale = drawScale(world->scale * cube.extent, world->residual);
-      world = &folded;
-    }
-    // glTF: a skinned mesh ignores its node's transform, so with a world-space palette only
-    // rigid draws upload one; the reference form composes it per vertex.
-    const bool transform = !palette || referenceSkin_;
-    // The draw's uniforms and material; returns the bytes of its u_Scale.
-    auto setDraw = [&](const gl::Program& p, const glm::vec3& s, bool perAxis) {
-      if (dequantise) setDequant(p, d);
-      if (transform) gl::uniform4fv(p.uniform("u_World"), 2, &world->motor[0][0], transformBytes);
-      uint64_t bytes = 0;
-      if (perAxis)
-        gl::uniform3f(p.uniform("u_Scale"), &s[0], bytes);
-      else
-        gl::uniform1f(p.uniform("u_Scale"), s.x, bytes);
-      stats_.uniformBytesPerFrame += bytes;
-      bindMaterial(p, prim);
-      return bytes;
-    };
-    const gl::Program& program = patch ? setFrame(*programs.patch[scale.fallback])
-                                       : bindMorph(useProgram(kind, formOf(scale.fallback), morph));
-    if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
-    const uint64_t scaleBytes = setDraw(program, scale.value, scale.fallback);
-    if (transform) ++transforms, transformScaleBytes += scaleBytes;  // draws with a transform
-    gl::setWinding(scale.mirrored);
-    // motor_cf: triangles whose corner rotors cannot share a hemisphere (rotor_signs.h) are drawn
-    // after the others by the per-vertex extraction of its scale-fallback program (motor_c's way).
-    const size_t interpolable = variant_.fragmentRotor && !patch && !scale.fallback
-                                    ? geometry_.interpolable[size_t(d.mesh)][size_t(d.primitive)] : size_t(g.indexCount);
-    if (interpolable >= size_t(g.indexCount)) {
-      drawCounted(d, g, patch);
-      continue;
-    }
-    stats_.drawnVertices += g.drawRange(0, GLsizei(interpolable));
-    setDraw(bindMorph(useProgram(kind, ScaleForm::PerAxis, morph)), glm::vec3(scale.value.x), true);
-    g.drawRange(GLsizei(interpolable), g.indexCount - GLsizei(interpolable));
-    stats_.draws += 2;
-  }
+  for (const gl::DrawItem& d : draws_) drawItem(frame, d);
   gl::endDraws();
-  stats_.uniformBytesPerFrame += transformBytes;
-  stats_.floatsPerTransform = gl::floatsPer(transformBytes, transforms);
-  stats_.floatsPerTransformWithScale = gl::floatsPer(transformBytes + transformScaleBytes, transforms);
+  stats_.uniformBytesPerFrame += frame.transformBytes;
+  stats_.floatsPerTransform = gl::floatsPer(frame.transformBytes, frame.transforms);
+  stats_.floatsPerTransformWithScale = gl::floatsPer(frame.transformBytes + frame.transformScaleBytes, frame.transforms);
+}
+
+// The program with the frame's camera, projection and view uniforms set.
+const gl::Program& MotorPipeline::useFrameProgram(const MotorFrame& f, gl::CachedProgram& p) {
+  return use(p, [&](const gl::Program& program) {
+    gl::uniform4fv(program.uniform("u_Camera"), 2, &f.camera.worldToView[0][0], stats_.uniformBytesPerFrame);
+    gl::uniform4f(program.uniform("u_ProjectionK"), &f.k[0], stats_.uniformBytesPerFrame);
+    gl::setFrameUniforms(program, f.view, stats_.uniformBytesPerFrame);
+  });
+}
+
+const gl::Program& MotorPipeline::useDrawProgram(const MotorFrame& f, DrawKind kind, ScaleForm form, bool morph) {
+  return useFrameProgram(f, f.programs.draw(kind, form, morph));
+}
+
+// The program with the draw's morph deltas bound when it morphs (counted per draw call).
+const gl::Program& MotorPipeline::bindMorph(const MotorDraw& m, const gl::Program& program) {
+  if (m.morph) geometry_.morph.bind(program, m.d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
+  return program;
+}
+
+// One draw item: the instances of a general node one exact draw each, instance groups, or the
+// node's own transform (rigid, skinned or a patch).
+void MotorPipeline::drawItem(MotorFrame& f, const gl::DrawItem& d) {
+  const gl::GpuPrimitive& g = geometry_.vertices.at(d);
+  const Primitive& prim = primitiveOf(d);
+  const bool patch = patches_.has(d);
+  if (!patch && !g.indexCount) return;
+  const MotorDraw draw{d, g, prim, patch, !patch && geometry_.morph.active(d)};
+  const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
+  if (!patch && rig_.general[size_t(d.node)] && !scene_->nodes[size_t(d.node)].instances.empty())
+    return drawGeneralInstances(f, draw);
+  if (!groups.empty()) return drawInstanceGroups(f, draw, groups);
+  drawNode(f, draw);
+}
+
+// Instances of a general node: one exact draw each (node world x instance, linear_fallback.h).
+void MotorPipeline::drawGeneralInstances(MotorFrame& f, const MotorDraw& m) {
+  for (const TRS& instance : scene_->nodes[size_t(m.d.node)].instances) {
+    const glm::mat4 world = pose_.exact.world[size_t(m.d.node)] * trsMatrix(instance);
+    drawLinear(m.d, m.g, m.prim, nullptr, 0, bindMorph(m, useDrawProgram(f, DrawKind::Rigid, ScaleForm::Linear, m.morph)),
+               f.transformBytes, f.transformScaleBytes, &world);
+    ++f.transforms;
+  }
+}
+
+// One instanced draw per group (key bit 0: vec3 scale, bit 1: mirrored winding).
+void MotorPipeline::drawInstanceGroups(MotorFrame& f, const MotorDraw& m, const std::vector<gl::InstanceGroup>& groups) {
+  for (const gl::InstanceGroup& group : groups) {
+    const bool fallback = group.key & 1;
+    const gl::Program& program = bindMorph(m, useDrawProgram(f, DrawKind::Instanced, scaleForm(fallback), m.morph));
+    if (variant_.compact) setDequant(program, m.d);
+    bindMaterial(program, m.prim);
+    gl::setWinding(group.key & 2);
+    stats_.drawnVertices += instances_.draw(m.g, group, {4, 4, fallback ? 3 : 1});
+    ++stats_.draws;
+  }
+}
+
+// A draw by its node's transform or its skin's palette: on the exact fallback when the node is
+// general or the palette is not one common positive scale, else the paper's path.
+void MotorPipeline::drawNode(MotorFrame& f, const MotorDraw& m) {
+  const int paletteIndex = paletteOf(pose_.palettes, m.g, m.patch, m.d.node);
+  const motor::JointPalette* palette = paletteIndex < 0 ? nullptr : &pose_.palettes[size_t(paletteIndex)];
+  const GLuint paletteBuffer = paletteIndex < 0 ? 0 : palettes_[size_t(paletteIndex)];
+  const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
+  if (palette ? palette->fallback : (!m.patch && rig_.general[size_t(m.d.node)])) {
+    drawLinear(m.d, m.g, m.prim, palette, paletteBuffer, bindMorph(m, useDrawProgram(f, kind, ScaleForm::Linear, m.morph)),
+               f.transformBytes, f.transformScaleBytes);
+    f.transforms += palette ? 0 : 1;
+    return;
+  }
+  const DrawTransform t = drawTransform(m, palette);
+  const gl::Program& program = m.patch ? useFrameProgram(f, *f.programs.patch[t.scale.fallback])
+                                       : bindMorph(m, useDrawProgram(f, kind, scaleForm(t.scale.fallback), m.morph));
+  if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
+  const uint64_t scaleBytes = setDrawUniforms(f, m, t, program, t.scale.value, t.scale.fallback);
+  if (t.transform) ++f.transforms, f.transformScaleBytes += scaleBytes;  // draws with a transform
+  gl::setWinding(t.scale.mirrored);
+  drawByRotorHemisphere(f, m, t, kind);
+}
+
+DrawTransform MotorPipeline::drawTransform(const MotorDraw& m, const motor::JointPalette* palette) const {
+  DrawTransform t;
+  const motor::ScaledMotor& node = pose_.world[size_t(m.d.node)];
+  t.world = node;
+  t.scale = palette ? drawScale(palette->scale, glm::vec3(1.0f)) : drawScale(node.scale, node.residual);
+  t.dequantise = variant_.compact && (palette || m.morph);
+  if (variant_.compact && !m.patch && !t.dequantise) {
+    const compact::PositionCube& cube = geometry_.cubes[size_t(m.d.mesh)][size_t(m.d.primitive)];
+    motor::composeInto({node.motor, 1.0f, glm::vec3(1.0f)}, motor::fromTRS(TRS{t.scale.value * cube.center}, true),
+                       t.world);
+    t.scale = drawScale(node.scale * cube.extent, node.residual);
+  }
+  // glTF: a skinned mesh ignores its node's transform, so with a world-space palette only
+  // rigid draws upload one; the reference form composes it per vertex.
+  t.transform = !palette || referenceSkin_;
+  return t;
+}
+
+// The draw's uniforms and material; returns the bytes of its u_Scale.
+uint64_t MotorPipeline::setDrawUniforms(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, const gl::Program& p,
+                                        const glm::vec3& s, bool perAxis) {
+  if (t.dequantise) setDequant(p, m.d);
+  if (t.transform) gl::uniform4fv(p.uniform("u_World"), 2, &t.world.motor[0][0], f.transformBytes);
+  uint64_t bytes = 0;
+  if (perAxis)
+    gl::uniform3f(p.uniform("u_Scale"), &s[0], bytes);
+  else
+    gl::uniform1f(p.uniform("u_Scale"), s.x, bytes);
+  stats_.uniformBytesPerFrame += bytes;
+  bindMaterial(p, m.prim);
+  return bytes;
+}
+
+// motor_cf: triangles whose corner rotors cannot share a hemisphere (rotor_signs.h) are drawn
+// after the others by the per-vertex extraction of its scale-fallback program (motor_c's way).
+// Every other draw is one counted draw.
+void MotorPipeline::drawByRotorHemisphere(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, DrawKind kind) {
+  const size_t interpolable = variant_.fragmentRotor && !m.patch && !t.scale.fallback
+                                  ? geometry_.interpolable[size_t(m.d.mesh)][size_t(m.d.primitive)]
+                                  : size_t(m.g.indexCount);
+  if (interpolable >= size_t(m.g.indexCount)) {
+    drawCounted(m.d, m.g, m.patch);
+    return;
+  }
+  stats_.drawnVertices += m.g.drawRange(0, GLsizei(interpolable));
+  setDrawUniforms(f, m, t, bindMorph(m, useDrawProgram(f, kind, ScaleForm::PerAxis, m.morph)), glm::vec3(t.scale.value.x),
+                  true);
+  m.g.drawRange(GLsizei(interpolable), m.g.indexCount - GLsizei(interpolable));
+  stats_.draws += 2;
 }
 
 // The variants `scene_` needs: instanced ones only for scenes with instances, MB_MORPH ones only
