@@ -10,7 +10,7 @@
 #include "harness/process/report_workers.h"
 #include "harness/timing/disturbance.h"
 
-namespace mb::report {
+namespace mb::bench {
 namespace {
 
 using json = nlohmann::json;
@@ -59,7 +59,7 @@ Status runBench(const std::string& outJson, const std::string& logPath, double m
   std::vector<std::string> args = {"bench", "--out", outJson, mt};
   if (!filter.empty()) args.push_back("--benchmark_filter=" + filter);
   // Both streams to the log: Google Benchmark prints its machine context on stderr.
-  const std::string how = runProgram(selfExecutable(), args, logPath, true, 1800);
+  const std::string how = process::runProgram(process::selfExecutable(), args, logPath, true, 1800);
   if (!how.empty()) return Status::fail("motorbench bench " + how + " (log: " + logPath + ")");
   return Status();
 }
@@ -151,4 +151,4 @@ std::string pairMachineText(const json& pair) {
   return s + ")";
 }
 
-}  // namespace mb::report
+}  // namespace mb::bench

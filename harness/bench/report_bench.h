@@ -9,7 +9,7 @@
 
 #include "pipelines/result.h"
 
-namespace mb::report {
+namespace mb::bench {
 
 // Runs `motorbench bench --out outJson --benchmark_min_time=minTime` (console output to
 // `logPath`); `filter` (a --benchmark_filter regex) may be empty.
@@ -37,4 +37,4 @@ nlohmann::json kernelPairs(const nlohmann::json& bench);
 // figure or verdict; "an unrecorded CPU" for a pair without "machine" (a report written before).
 std::string pairMachineText(const nlohmann::json& pair);
 
-}  // namespace mb::report
+}  // namespace mb::bench

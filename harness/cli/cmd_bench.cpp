@@ -144,7 +144,7 @@ void printDisturbed(const nlohmann::json& pairs) {
 // probe's bandwidth each side moves. withProbe: print the probe (measured when an out-of-cache
 // kernel ran).
 void printSummary(const SummaryReporter& rep, bool withProbe) {
-  const nlohmann::json pairs = report::kernelPairs({{"benchmarks", rep.benchmarks}})["pairs"];
+  const nlohmann::json pairs = bench::kernelPairs({{"benchmarks", rep.benchmarks}})["pairs"];
   if (pairs.empty()) return;
   std::printf("\nMeasured on %s (CPU ratios hold for this CPU).\n", bench::cpuMachineLine(bench::cpuMachine()).c_str());
   const char* sides[] = {"matrix", "motor", "glm", "simd_matrix", "simd_motor", "simd_affine", "lanes_motor"};

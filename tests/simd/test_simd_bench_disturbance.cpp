@@ -29,7 +29,7 @@ TEST(SimdBenchDisturbance, SharedCoresMarkThePairAndTakeItOutOfTheVerdicts) {
                         run("hierarchy/glm", 20, 15, 53, 1), run("hierarchy/motor", 30, 50, 50, 1),
                         // Enough CPU, but five runnable threads on two cores before and after.
                         run("point/in_cache/matrix", 40, 10, 10, 5), run("point/in_cache/motor", 50, 10, 10, 1)}}};
-  const json pairs = mb::report::kernelPairs(bench)["pairs"];
+  const json pairs = mb::bench::kernelPairs(bench)["pairs"];
   ASSERT_EQ(pairs.size(), 3u) << pairs.dump(2);
 
   const json& quiet = pairs[0];
@@ -57,7 +57,7 @@ TEST(SimdBenchDisturbance, FiguresWithoutLoadCountersAreNotJudged) {
   const json bench = {{"benchmarks",
                        {{{"name", "compose/matrix"}, {"items_per_second", 10.0}, {"cpu_time", 1.0}, {"real_time", 9.0}},
                         {{"name", "compose/motor"}, {"items_per_second", 20.0}, {"cpu_time", 1.0}, {"real_time", 1.0}}}}};
-  const json p = mb::report::kernelPairs(bench)["pairs"][0];
+  const json p = mb::bench::kernelPairs(bench)["pairs"][0];
   EXPECT_TRUE(p["matrix"]["disturbance"].is_null());
   EXPECT_EQ(p["disturbed"], false);
   EXPECT_DOUBLE_EQ(mb::bench::fastestSides(p).costRatio(), 0.5);

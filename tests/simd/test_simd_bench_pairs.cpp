@@ -18,7 +18,7 @@ TEST(SimdBenchPairs, FastestOfEachKindIsNamedAndCompared) {
                         run("vertex_frame/in_cache/glm", 40), run("vertex_frame/in_cache/simd_matrix", 30),
                         run("vertex_frame/in_cache/simd_motor", 36), run("compose/matrix", 5),
                         run("compose/motor", 6), run("compose/simd_affine", 50), run("compose/simd_motor", 25)}}};
-  const json pairs = mb::report::kernelPairs(bench)["pairs"];
+  const json pairs = mb::bench::kernelPairs(bench)["pairs"];
   ASSERT_EQ(pairs.size(), 2u) << pairs.dump(2);
   const json& v = pairs[0];
   EXPECT_EQ(v["kernel"], "vertex_frame");
@@ -41,13 +41,13 @@ TEST(SimdBenchPairs, EachPairNamesItsCpuAndSimdTarget) {
   const json bench = {{"context", {{"cpu_model", "Test CPU 9000"}, {"num_cpus", 16}}},
                       {"benchmarks", {run("skinned_vertex/out_of_cache/glm", 2), simd, run("anim_blend/glm", 1),
                                       run("anim_blend/motor", 1)}}};
-  const json pairs = mb::report::kernelPairs(bench)["pairs"];
+  const json pairs = mb::bench::kernelPairs(bench)["pairs"];
   ASSERT_EQ(pairs.size(), 2u) << pairs.dump(2);
   EXPECT_EQ(pairs[0]["machine"]["simdTarget"], "AVX2");
-  EXPECT_EQ(mb::report::pairMachineText(pairs[0]), "Test CPU 9000 (16 logical cores, Highway AVX2)");
+  EXPECT_EQ(mb::bench::pairMachineText(pairs[0]), "Test CPU 9000 (16 logical cores, Highway AVX2)");
   EXPECT_TRUE(pairs[1]["machine"]["simdTarget"].is_null());  // no SIMD side: no target to name
-  EXPECT_EQ(mb::report::pairMachineText(pairs[1]), "Test CPU 9000 (16 logical cores)");
-  EXPECT_EQ(mb::report::pairMachineText(json{{"pair", "compose"}}), "an unrecorded CPU");
+  EXPECT_EQ(mb::bench::pairMachineText(pairs[1]), "Test CPU 9000 (16 logical cores)");
+  EXPECT_EQ(mb::bench::pairMachineText(json{{"pair", "compose"}}), "an unrecorded CPU");
 }
 
 }  // namespace
