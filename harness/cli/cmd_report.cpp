@@ -43,7 +43,7 @@ json timeWorker(const report::SceneJob& job, const report::Options& o) {
   // pipeline's default.
   PipelineOptions options;
   if (scene && !scene->skins.empty()) options.skinSpace = SkinSpace::Reference;
-  json result = scene ? report::timeScene(*scene, job.pipelines, o.frames, o.timeWidth, o.timeHeight, options)
+  json result = scene ? timing::timeScene(*scene, job.pipelines, o.frames, o.timeWidth, o.timeHeight, options)
                       : json{{"error", scene.error()}};
   if (scene && !scene->skins.empty()) result["skinSpace"] = "reference (every pipeline)";
   return result;

@@ -6,7 +6,7 @@
 #include "harness/render/render_frame.h"
 #include "harness/timing/frame_timing.h"
 
-namespace mb::report {
+namespace mb::timing {
 namespace {
 
 using json = nlohmann::json;
@@ -81,7 +81,7 @@ json timeScene(const Scene& scene, const std::vector<std::string>& pipelines, in
                                           ": fewer than " + std::to_string(timing::kVertexBoundVerticesPerPixel) +
                                           " drawn vertices per pixel"}};
   }
-  if (auto m = timing::machineInfo()) out["gl"] = toJson(m->gl);  // the device every figure above is from
+  if (auto m = timing::machineInfo()) out["gl"] = mb::toJson(m->gl);  // the device every figure above is from
   out["frames"] = normal.frames;
   out["warmup"] = normal.warmup;
   out["bestOf"] = normal.bestOf;
@@ -99,4 +99,4 @@ json timeScene(const Scene& scene, const std::vector<std::string>& pipelines, in
   return out;
 }
 
-}  // namespace mb::report
+}  // namespace mb::timing

@@ -10,7 +10,7 @@
 #include "pipelines/pipeline.h"
 #include "pipelines/scene/scene.h"
 
-namespace mb::report {
+namespace mb::timing {
 
 // Times every pipeline on `scene` over `frames` frames (after warm-up) at width x height.
 // Returns {"frames", "pipelines": {name: {"medianMs", ...}}, "ratio_motor_matrix" (frame time,
@@ -19,4 +19,4 @@ namespace mb::report {
 nlohmann::json timeScene(const Scene& scene, const std::vector<std::string>& pipelines,
                          int frames, int width, int height, const PipelineOptions& options = {});
 
-}  // namespace mb::report
+}  // namespace mb::timing
