@@ -128,7 +128,7 @@ rules::WorkerRecord runSurvey(const Options& o, const std::string& file, const s
   std::remove(out.c_str());
   const auto t0 = Clock::now();
   rules::WorkerRecord rec;
-  const std::string how = report::runProgram(o.exe, args, log, true, o.timeoutS);
+  const std::string how = process::runProgram(o.exe, args, log, true, o.timeoutS);
   rec.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   readEnd(how, rec);
   rec.stderrTail = tail(log, 2000) + (rec.stderrTail.empty() ? "" : "\n" + rec.stderrTail);

@@ -231,7 +231,7 @@ void timeSceneInWorker(const std::string& name, const Args& args, const std::str
     if (auto v = args.get(key)) child.insert(child.end(), {std::string("--") + key, *v});
   std::filesystem::remove(scratch);
   std::fflush(stdout);  // the child prints its rows to the same stdout
-  const std::string how = report::runSelf(child, "", kWorkerTimeoutS);
+  const std::string how = process::runSelf(child, "", kWorkerTimeoutS);
   std::ifstream in(scratch);
   const nlohmann::json worker = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
   nlohmann::json rows = worker.is_object() ? worker.value("rows", nlohmann::json()) : nlohmann::json();

@@ -51,7 +51,7 @@ json makePlots(const std::string& pythonArg, const std::string& script, const st
   const fs::path plots = fs::path(outDir) / "plots";
   fs::create_directories(plots, ec);
   const std::string log = (plots / "plot.log").string();
-  const std::string how = runProgram(python, {s, reportJson, plots.string()}, log, true, 600);
+  const std::string how = process::runProgram(python, {s, reportJson, plots.string()}, log, true, 600);
   if (!how.empty()) {
     const std::string why = tail(log, 2);
     r["error"] = python + " " + s + ": " + how + (why.empty() ? "" : ": " + why);

@@ -21,7 +21,7 @@
 
 extern char** environ;
 
-namespace mb::report {
+namespace mb::process {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -222,4 +222,4 @@ std::string runProgram(const std::string& exe, const std::vector<std::string>& a
   return how;
 }
 
-}  // namespace mb::report
+}  // namespace mb::process

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace mb::report {
+namespace mb::process {
 
 struct WorkerTask {
   std::vector<std::string> args;  // after "motorbench"
@@ -43,4 +43,4 @@ std::string runSelf(const std::vector<std::string>& args, const std::string& std
 std::string runProgram(const std::string& exe, const std::vector<std::string>& args,
                        const std::string& outputPath, bool bothStreams, double timeoutS);
 
-}  // namespace mb::report
+}  // namespace mb::process

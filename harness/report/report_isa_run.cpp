@@ -115,7 +115,7 @@ bool isIsaDocument(const json& j) { return j.is_object() && j.value("schema", ""
 IsaEvidence measureIsa(const std::string& outDir, double timeoutS) {
   const auto start = std::chrono::steady_clock::now();
   auto secondsSince = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  const std::string key = isaCacheKey(selfExecutable());
+  const std::string key = isaCacheKey(process::selfExecutable());
   const fs::path file = isaCacheFile(key);
   const fs::path out = fs::path(outDir) / "isa.json";
   IsaEvidence e;
@@ -125,7 +125,7 @@ IsaEvidence measureIsa(const std::string& outDir, double timeoutS) {
     return e;
   }
   const fs::path log = fs::path(outDir) / "isa.txt";
-  const std::string how = runSelf({"isa", "--json", out.string()}, log.string(), timeoutS);
+  const std::string how = process::runSelf({"isa", "--json", out.string()}, log.string(), timeoutS);
   e.source = "run";
   std::ifstream in(out);
   json j = json::parse(in, nullptr, false);

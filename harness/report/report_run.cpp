@@ -93,7 +93,7 @@ json kernels(const Options& o) {
     std::snprintf(mt, sizeof mt, "%g", o.benchMinTime);
     say(std::string("running motorbench bench (--benchmark_min_time=") + mt +
         "; console output in bench.txt)");
-    Status s = runBench(path, (fs::path(o.outDir) / "bench.txt").string(), o.benchMinTime);
+    Status s = bench::runBench(path, (fs::path(o.outDir) / "bench.txt").string(), o.benchMinTime);
     k["source"] = "run";
     k["minTime"] = o.benchMinTime;
     if (!s) {
@@ -104,13 +104,13 @@ json kernels(const Options& o) {
     k["error"] = o.benchSkipped.empty() ? "not measured (--no-bench)" : o.benchSkipped;
     return k;
   }
-  auto j = readBenchJson(path);
+  auto j = bench::readBenchJson(path);
   if (!j) {
     k["error"] = j.error();
     return k;
   }
   k["file"] = fs::path(path).parent_path() == fs::path(o.outDir) ? fs::path(path).filename().string() : path;
-  json pairs = kernelPairs(*j);
+  json pairs = bench::kernelPairs(*j);
   k["context"] = pairs["context"];
   k["pairs"] = pairs["pairs"];
   k["probe"] = pairs["probe"];
@@ -259,13 +259,13 @@ void announceRun(const Options& o, const RunInputs& in) {
 // scene, a dead worker's with the step it was on.
 std::vector<json> renderPhase(const Options& o, const RunInputs& in, const fs::path& work) {
   const int total = int(in.inputs.size());
-  std::vector<WorkerTask> tasks;
+  std::vector<process::WorkerTask> tasks;
   for (int i = 0; i < total; ++i) {
     const std::string result = (work / (in.inputs[size_t(i)].id + ".render.json")).string();
     tasks.push_back({workerArgs(o, in.inputs[size_t(i)], i + 1, total, "render", result, in.anims[size_t(i)]), result,
                      {{"id", in.inputs[size_t(i)].id}, {"spec", in.inputs[size_t(i)].spec}}});
   }
-  std::vector<json> scenes = runWorkers(tasks, o.jobs, o.timeoutS, "measured");
+  std::vector<json> scenes = process::runWorkers(tasks, o.jobs, o.timeoutS, "measured");
   for (size_t i = 0; i < scenes.size(); ++i) addLastStep(scenes[i], tasks[i].resultPath);
   return scenes;
 }
@@ -275,7 +275,7 @@ std::vector<json> renderPhase(const Options& o, const RunInputs& in, const fs::p
 void timingPhase(const Options& o, const RunInputs& in, const fs::path& work, std::vector<json>& scenes) {
   if (o.frames <= 0 || interruptSignal() != 0) return;
   const int total = int(in.inputs.size());
-  std::vector<WorkerTask> timing;
+  std::vector<process::WorkerTask> timing;
   std::vector<size_t> which;
   for (int i = 0; i < total; ++i) {
     if (scenes[size_t(i)].value("status", "failed") == "failed") continue;
@@ -284,7 +284,7 @@ void timingPhase(const Options& o, const RunInputs& in, const fs::path& work, st
                       {{"id", in.inputs[size_t(i)].id}}});
     which.push_back(size_t(i));
   }
-  std::vector<json> times = runWorkers(timing, 1, o.timeoutS, "timed");
+  std::vector<json> times = process::runWorkers(timing, 1, o.timeoutS, "timed");
   for (size_t t = 0; t < times.size(); ++t) addLastStep(times[t], timing[t].resultPath);
   for (size_t t = 0; t < times.size(); ++t) scenes[which[t]]["timing"] = times[t];
 }
