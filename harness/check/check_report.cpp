@@ -14,7 +14,7 @@
 namespace mb {
 namespace {
 
-using report::html;
+using document::html;
 
 std::string metricsText(const ImageMetrics& m, const FlipResult& flip) {
   if (m.rmse == 0.0) return "identical";

@@ -56,7 +56,7 @@ void compositionRows(std::vector<ClaimRow>& rows) {
 // Composition as the paper states it (against the 4x4 product), counted and timed, each ratio
 // motor / 4x4; the same rule against the affine mat4x3 product is its own row.
 void compositionVerdictRows(std::vector<ClaimRow>& rows) {
-  const Rule cheaper{RuleKind::AtMost, report::kCheaperLimit};
+  const Rule cheaper{RuleKind::AtMost, document::kCheaperLimit};
   rows.push_back(
       {.id = "composition", .section = kComposition,
        .statement = "composing two motors (gp_mm) is cheaper than composing two 4x4 matrices",

@@ -9,7 +9,7 @@
 namespace mb::claims {
 namespace {
 
-using report::kAsCheapLimit;
+using document::kAsCheapLimit;
 
 const char* const kFamilies[] = {"tahiti", "polaris10", "vega10", "navi10", "navi21-nonggc", "navi21-ngg", "gfx1100"};
 
@@ -171,7 +171,7 @@ ClaimRow sceneGraphRow() {
                        {"hierarchy kernel, humanoid skeleton", "report:kernel_time.hierarchy_skeleton.shim_motor_over_shim_matrix", ""},
                        {"hierarchy kernel, wide", "report:kernel_time.hierarchy_wide.shim_motor_over_shim_matrix", ""},
                        ratioOf("hierarchy phase on crowd", "update.hierarchy.crowd.{p}", "matrix")},
-          .rule = {RuleKind::AtMost, report::kCheaperLimit},
+          .rule = {RuleKind::AtMost, document::kCheaperLimit},
           .note = "a gain beyond the 10 % timing tolerance (motor / matrix <= 0.9); scenes of one to few nodes are "
                   "left out: their hierarchy phase reads the timer floor"};
 }

@@ -10,7 +10,7 @@ namespace {
 
 using json = nlohmann::json;
 
-std::string s(const json& v) { return v.is_string() ? v.get<std::string>() : v.is_null() ? "-" : report::dumpJson(v); }
+std::string s(const json& v) { return v.is_string() ? v.get<std::string>() : v.is_null() ? "-" : document::dumpJson(v); }
 
 }  // namespace
 
@@ -37,8 +37,8 @@ std::string scopeText(const json& cl) {
   return s(sc["stage"]) + "; baseline: " + s(sc["baseline"]) + "; content: " + s(sc["content"]);
 }
 
-report::Document claimsDocument(const json& j) {
-  report::Document d;
+document::Document claimsDocument(const json& j) {
+  document::Document d;
   d.title = "Claims of \"Look, Ma, No Matrices!\" judged by motorbench";
   json m = j.contains("machine") && j["machine"].is_object() ? j["machine"] : json::object();
   d.paragraph("Each row below is declared once (harness/claims/claim_table.h): what it states, its scope (stage, "
@@ -73,7 +73,7 @@ report::Document claimsDocument(const json& j) {
   }
   for (const std::string& sec : order) {
     d.heading(2, sec);
-    std::vector<std::vector<report::Cell>> rows;
+    std::vector<std::vector<document::Cell>> rows;
     for (const json* cl : bySection[sec]) {
       const json& rule = cl->value("rule", json());
       rows.push_back({{s((*cl)["id"])}, {s(cl->value("origin", json("paper")))}, {s((*cl)["statement"])}, {scopeText(*cl)},

@@ -20,6 +20,6 @@ nlohmann::json claimsJson(const std::vector<Claim>& claims, const nlohmann::json
 // The tally, one verdict line per claim, then a table per section (claim | scope | paper |
 // measured | rule | verdict | note). The answer block with the scope ladder goes before it
 // (report_answer.h).
-report::Document claimsDocument(const nlohmann::json& claims);
+document::Document claimsDocument(const nlohmann::json& claims);
 
 }  // namespace mb::claims

@@ -78,16 +78,16 @@ int runClaims(const std::vector<std::string>& argv) {
   }
   const std::vector<claims::Claim> all = claims::evaluateAll(claims::claimTable(), figures);
   json j = claims::claimsJson(all, report.value("machine", json()), sources);
-  j["scopeLadder"] = report::ladderJson(report::scopeLadder(report));
-  j["answer"] = report::answerJson(report);
+  j["scopeLadder"] = document::ladderJson(document::scopeLadder(report));
+  j["answer"] = document::answerJson(report);
   const std::string mdPath = args.get("o", args.get("output", ""));
   const fs::path reportMd = fs::path(layout["report"]).parent_path() / "report.md";
   const fs::path mdDir = mdPath.empty() ? fs::current_path() : fs::absolute(mdPath).parent_path();
-  report::Document doc = claims::claimsDocument(j);
-  doc = report::withAnswerFirst(doc, report, fs::absolute(reportMd).lexically_relative(mdDir).generic_string());
+  document::Document doc = claims::claimsDocument(j);
+  doc = document::withAnswerFirst(doc, report, fs::absolute(reportMd).lexically_relative(mdDir).generic_string());
   if (auto path = args.get("json"))
-    if (Status ok = writeTextFile(*path, report::dumpJson(j, 2) + "\n"); !ok) return fail(ok.error());
-  const std::string md = report::toMarkdown(doc);
+    if (Status ok = writeTextFile(*path, document::dumpJson(j, 2) + "\n"); !ok) return fail(ok.error());
+  const std::string md = document::toMarkdown(doc);
   if (mdPath.empty()) std::fputs(md.c_str(), stdout);
   else if (Status ok = writeTextFile(mdPath, md); !ok) return fail(ok.error());
   auto tally = [](const json& c) {

@@ -77,7 +77,7 @@ int runWorker(const Args& args, const report::Options& o) {
     if (mode == "render") result.update({{"id", job.input.id}, {"spec", job.input.spec}, {"status", "failed"}});
   }
   result["complete"] = true;
-  const Status w = writeTextFile(args.get("worker-out", ""), report::dumpJson(result) + "\n");
+  const Status w = writeTextFile(args.get("worker-out", ""), document::dumpJson(result) + "\n");
   return w ? 0 : fail(w.error());
 }
 

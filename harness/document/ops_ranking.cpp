@@ -11,7 +11,7 @@
 #include "harness/document/report_layout_common.h"
 #include "harness/figures/figure.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using json = nlohmann::json;
@@ -212,4 +212,4 @@ void opsRankingSection(Document& d, const json& r) {
   }
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

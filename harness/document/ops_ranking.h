@@ -11,7 +11,7 @@
 
 #include "harness/document/report_model.h"
 
-namespace mb::report {
+namespace mb::document {
 
 // {"rigid": S, "skinned": S} from the ops room's shader variants (opsv::toJson(VertexOps)
 // "variants": pipeline, variant, counted, spirv_kernel_probes) and a `motorbench isa` JSON
@@ -34,4 +34,4 @@ std::string opsRankingTableText(const nlohmann::json& scope);
 // the three (value and rank per measure).
 void opsRankingSection(Document& d, const nlohmann::json& report);
 
-}  // namespace mb::report
+}  // namespace mb::document

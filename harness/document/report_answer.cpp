@@ -10,7 +10,7 @@
 #include "harness/document/scope_ladder.h"
 #include "harness/figures/figure.h"
 
-namespace mb::report {
+namespace mb::document {
 
 std::optional<figures::Figure> FigureQuote::get(const std::string& name) {
   line.figures.push_back(name);
@@ -270,4 +270,4 @@ Document withAnswerFirst(const Document& doc, const json& report, const std::str
   return out;
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

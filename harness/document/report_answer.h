@@ -12,7 +12,7 @@
 #include "harness/document/report_model.h"
 #include "harness/figures/figure.h"
 
-namespace mb::report {
+namespace mb::document {
 
 // One line's figures for one kind of content (report_answer_kinds.h).
 struct KindAnswer {
@@ -63,4 +63,4 @@ void answerSection(Document& d, const nlohmann::json& report, const std::string&
 // `doc` with the answer block of `report` in front (claims.md: the same lines as report.md's).
 Document withAnswerFirst(const Document& doc, const nlohmann::json& report, const std::string& reportPath);
 
-}  // namespace mb::report
+}  // namespace mb::document

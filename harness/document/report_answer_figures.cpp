@@ -15,7 +15,7 @@
 #include "harness/figures/figure.h"
 #include "pipelines/registry.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using json = nlohmann::json;
@@ -319,4 +319,4 @@ void addAnswerFigures(json& r) {
   r["scopeLadder"] = ladderJson(scopeLadder(r));
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace mb::report {
+namespace mb::document {
 
 // "motor" for the pipelines that transform with motors (their registry family: motor, motor_q,
 // motor_c, motor_cf, hybrid), "matrix" for the others (matrix, affine, qtangent, matrix_c).
@@ -31,4 +31,4 @@ std::string gpuSideOf(const std::string& pipeline);
 // and report["pipelineFamilies"] {p: family}.
 void addAnswerFigures(nlohmann::json& report);
 
-}  // namespace mb::report
+}  // namespace mb::document

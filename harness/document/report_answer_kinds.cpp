@@ -7,7 +7,7 @@
 #include "harness/document/report_kind_figures.h"
 #include "harness/figures/figure.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using json = nlohmann::json;
@@ -205,4 +205,4 @@ std::string answerHeadline(const std::vector<AnswerLine>& lines, const json& r) 
   return "The content decides the verdict (drawn vertices: " + shares + "): " + out + ".";
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

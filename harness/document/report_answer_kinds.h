@@ -10,7 +10,7 @@
 
 #include "harness/document/report_answer.h"
 
-namespace mb::report {
+namespace mb::document {
 
 // Gives each line (bytes, ops, ISA, time, image) its figures by kind (line.kinds: text and
 // marked, the names quoted in line.figures), and gives the bytes, ops and ISA lines the verdict of
@@ -26,4 +26,4 @@ void answerKindsTable(Document& d, const std::vector<AnswerLine>& lines, const n
 // (88 %); ..." over the evidence that has kinds; "" where the report recorded none.
 std::string answerHeadline(const std::vector<AnswerLine>& lines, const nlohmann::json& report);
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -7,7 +7,7 @@
 #include "harness/document/report_isa.h"
 #include "pipelines/registry.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using nlohmann::json;
@@ -148,4 +148,4 @@ void compactSection(Document& d, const json& r) {
   fragmentStageTable(d, r, pipes, families);
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -10,7 +10,7 @@
 
 #include "harness/document/report_model.h"
 
-namespace mb::report {
+namespace mb::document {
 
 void compactSection(Document& d, const nlohmann::json& report);
 
@@ -19,4 +19,4 @@ void compactSection(Document& d, const nlohmann::json& report);
 // tangent, with a normal map or without one.
 std::string shadingNormalKernel(const std::string& pipeline, bool normalMapped);
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -6,7 +6,7 @@
 #include "harness/document/report_figures.h"
 #include "harness/document/report_format.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using json = nlohmann::json;
@@ -250,4 +250,4 @@ json assembleReport(json machine, json settings, std::vector<json> scenes, json 
                      {"bench", kernels.value("file", json())}}}};
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace mb::report {
+namespace mb::document {
 
 inline constexpr const char* kReportSchema = "motorbench-report/1";
 
@@ -50,4 +50,4 @@ JudgedFrame judgedFrame(const nlohmann::json& scene, const nlohmann::json& frame
 // min / median / max of `values` ({"n": 0} when empty).
 nlohmann::json spread(std::vector<double> values);
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -8,7 +8,7 @@
 #include "harness/document/report_format.h"
 #include "pipelines/registry.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using json = nlohmann::json;
@@ -378,4 +378,4 @@ json reportFigures(const json& machine, const json& settings, const std::vector<
   return out;
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -10,7 +10,7 @@
 
 #include "harness/figures/figure.h"
 
-namespace mb::report {
+namespace mb::document {
 
 // The total ops of an ops object: mul + add + div + sqrt + other (subtraction counts as addition,
 // negation is free); NaN when `ops` is not an object.
@@ -39,4 +39,4 @@ nlohmann::json reportFigures(const nlohmann::json& machine, const nlohmann::json
 void curvedFigures(nlohmann::json& out, const std::vector<nlohmann::json>& scenes, const nlohmann::json& drift,
                    const std::string& device);
 
-}  // namespace mb::report
+}  // namespace mb::document

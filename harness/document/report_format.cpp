@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 using json = nlohmann::json;
 const json kNull = nullptr;
@@ -148,4 +148,4 @@ std::string cpuMachineText(const json& cpu, const json& cores, const json& simdT
   return "CPU: " + text(cpu) + ", " + text(cores) + " logical cores; SIMD kernels: Highway " + text(simdTarget);
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace mb::report {
+namespace mb::document {
 
 // `v` with `digits` significant digits ("-" when v is not a number); a whole number (a count)
 // in full, never in exponent notation ("3240", not "3.24e+03").
@@ -55,4 +55,4 @@ std::string figureMarksAsSpans(const std::string& s);
 // The text of `s` with its marks dropped (the quoted values kept).
 std::string withoutFigureMarks(const std::string& s);
 
-}  // namespace mb::report
+}  // namespace mb::document

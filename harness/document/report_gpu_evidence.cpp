@@ -4,7 +4,7 @@
 #include "harness/document/report_format.h"
 #include "harness/document/report_layout_common.h"
 
-namespace mb::report {
+namespace mb::document {
 
 using namespace layout;
 
@@ -55,4 +55,4 @@ void gpuEvidenceSection(Document& d, const json& r) {
           rows);
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

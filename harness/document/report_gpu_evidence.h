@@ -7,10 +7,10 @@
 
 #include "harness/document/report_model.h"
 
-namespace mb::report {
+namespace mb::document {
 
 inline constexpr const char* kGpuEvidenceAnchor = "gpu-evidence";
 
 void gpuEvidenceSection(Document& d, const nlohmann::json& report);
 
-}  // namespace mb::report
+}  // namespace mb::document

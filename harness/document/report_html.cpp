@@ -6,7 +6,7 @@
 #include "harness/document/report_format.h"
 #include "harness/document/report_model.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 const char* kStyle = R"(
@@ -113,4 +113,4 @@ std::string toHtml(const Document& doc) {
   return figureMarksAsSpans(out) + kImageCheck + "</body>\n</html>\n";
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -5,7 +5,7 @@
 
 #include "harness/document/report_format.h"
 
-namespace mb::report {
+namespace mb::document {
 
 using nlohmann::json;
 
@@ -65,4 +65,4 @@ void isaSection(Document& d, const json& r) {
   }
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -8,7 +8,7 @@
 
 #include "harness/document/report_model.h"
 
-namespace mb::report {
+namespace mb::document {
 
 void isaSection(Document& d, const nlohmann::json& report);
 
@@ -17,4 +17,4 @@ void isaSection(Document& d, const nlohmann::json& report);
 const nlohmann::json* isaRow(const nlohmann::json& isa, const std::string& pipeline, const std::string& label,
                              const std::string& family, const std::string& stage = "vertex");
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -11,7 +11,7 @@
 #include "harness/document/report_isa.h"
 #include "harness/figures/figure.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using json = nlohmann::json;
@@ -388,4 +388,4 @@ void addKindFigures(json& r) {
   }
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace mb::report {
+namespace mb::document {
 
 struct ContentKindDef {
   std::string id;     // figure key: "all", "normal_mapped", ...
@@ -38,4 +38,4 @@ bool hasBuiltInBesideFiles(const nlohmann::json& report);
 //   kind.image_identical_frames.K.p (the frames of the scenes with K).
 void addKindFigures(nlohmann::json& report);
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -16,7 +16,7 @@
 #include "harness/document/report_marks.h"
 #include "harness/figures/figure.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using namespace layout;
@@ -202,4 +202,4 @@ Document reportDocument(const json& r) {
   return d;
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -6,8 +6,8 @@
 
 #include "harness/document/report_model.h"
 
-namespace mb::report {
+namespace mb::document {
 
 Document reportDocument(const nlohmann::json& report);
 
-}  // namespace mb::report
+}  // namespace mb::document

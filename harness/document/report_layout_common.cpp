@@ -2,7 +2,7 @@
 
 #include "harness/document/report_format.h"
 
-namespace mb::report::layout {
+namespace mb::document::layout {
 
 std::vector<std::string> pipelinesOf(const json& r) {
   return at(r, {"settings", "pipelines"}).is_array() ? r["settings"]["pipelines"].get<std::vector<std::string>>()
@@ -36,4 +36,4 @@ std::string fallbacksText(const json& pj) {
   return s.empty() ? "none" : s;
 }
 
-}  // namespace mb::report::layout
+}  // namespace mb::document::layout

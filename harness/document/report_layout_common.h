@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace mb::report::layout {
+namespace mb::document::layout {
 
 using json = nlohmann::json;
 
@@ -26,4 +26,4 @@ std::string scenesText(const json& spread, const char* what = "scenes");
 // The non-zero fallback counters of a scene's pipeline ("none" when all are 0).
 std::string fallbacksText(const json& pipelineJson);
 
-}  // namespace mb::report::layout
+}  // namespace mb::document::layout

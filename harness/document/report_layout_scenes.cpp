@@ -8,7 +8,7 @@
 #include "harness/document/report_layout_common.h"
 #include "harness/document/report_marks.h"
 
-namespace mb::report {
+namespace mb::document {
 
 using namespace layout;
 
@@ -386,4 +386,4 @@ void sceneSection(Document& d, const json& r, const json& s) {
   timingParagraph(d, r, s);
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

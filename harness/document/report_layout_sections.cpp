@@ -10,7 +10,7 @@
 #include "harness/document/report_marks.h"
 #include "harness/figures/figure.h"
 
-namespace mb::report {
+namespace mb::document {
 
 using namespace layout;
 
@@ -253,4 +253,4 @@ void method(Document& d) {
       "Statistics: `motorbench inspect`'s per-file statistics (pipelines/scene/scene_stats.h)."});
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -5,7 +5,7 @@
 
 #include "harness/document/report_model.h"
 
-namespace mb::report {
+namespace mb::document {
 
 // report_layout_scenes.cpp: the scene table and one section per scene.
 void sceneTable(Document& d, const nlohmann::json& r);
@@ -18,4 +18,4 @@ void opsSection(Document& d, const nlohmann::json& r);
 void kernelSection(Document& d, const nlohmann::json& r);
 void method(Document& d);
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -5,7 +5,7 @@
 #include "harness/document/report_format.h"
 #include "harness/document/report_model.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 std::string cellText(const Cell& c) {
@@ -78,4 +78,4 @@ std::string toMarkdown(const Document& doc) {
   return figureMarksAsSpans(out);
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -2,7 +2,7 @@
 
 #include "harness/document/report_format.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using json = nlohmann::json;
@@ -72,4 +72,4 @@ void exactFallbackTable(Document& d, const json& s, const std::vector<std::strin
   d.table({"pipeline", "linear fallback draws", "skin fallback draws", "skin fallback joints", "fallback vertices"}, rows);
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

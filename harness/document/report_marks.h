@@ -10,7 +10,7 @@
 
 #include "harness/document/report_model.h"
 
-namespace mb::report {
+namespace mb::document {
 
 // "id (failed): reason" for every scene not "ok" (failed or partial), in report order.
 std::vector<std::string> failedSceneLines(const nlohmann::json& report);
@@ -31,4 +31,4 @@ int drawnFailures(const nlohmann::json& s, const std::string& p);
 // `pipes` in scene `s`; nothing when every count is 0.
 void exactFallbackTable(Document& d, const nlohmann::json& s, const std::vector<std::string>& pipes);
 
-}  // namespace mb::report
+}  // namespace mb::document

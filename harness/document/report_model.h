@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace mb::report {
+namespace mb::document {
 
 struct Cell {
   std::string text;
@@ -67,4 +67,4 @@ struct Document {
 std::string toMarkdown(const Document& doc);
 std::string toHtml(const Document& doc);
 
-}  // namespace mb::report
+}  // namespace mb::document

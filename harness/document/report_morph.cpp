@@ -7,7 +7,7 @@
 #include "harness/document/report_isa.h"
 #include "harness/figures/figure.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using nlohmann::json;
@@ -176,4 +176,4 @@ void morphSection(Document& d, const json& r) {
   d.bullets(notes);
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

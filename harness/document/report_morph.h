@@ -13,7 +13,7 @@
 
 #include "harness/document/report_model.h"
 
-namespace mb::report {
+namespace mb::document {
 
 void morphSection(Document& d, const nlohmann::json& report);
 
@@ -24,4 +24,4 @@ std::vector<std::vector<std::string>> morphTable(const nlohmann::json& report);
 // (the oldest and newest generation compiled), ids; empty without isa.
 std::vector<std::string> morphIsaFamilies(const nlohmann::json& report);
 
-}  // namespace mb::report
+}  // namespace mb::document

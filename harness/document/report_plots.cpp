@@ -7,7 +7,7 @@
 
 #include "harness/process/report_workers.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 namespace fs = std::filesystem;
@@ -76,4 +76,4 @@ json makePlots(const std::string& pythonArg, const std::string& script, const st
   return r;
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

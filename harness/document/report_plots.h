@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace mb::report {
+namespace mb::document {
 
 // scripts/plot.py of the source tree this binary was built from (MB_PLOT_SCRIPT overrides).
 std::string defaultPlotScript();
@@ -21,4 +21,4 @@ std::string defaultPython();
 nlohmann::json makePlots(const std::string& python, const std::string& script,
                          const std::string& reportJson, const std::string& outDir);
 
-}  // namespace mb::report
+}  // namespace mb::document

@@ -7,7 +7,7 @@
 #include "harness/document/report_format.h"
 #include "harness/figures/figure.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using json = nlohmann::json;
@@ -192,4 +192,4 @@ void scopeLadderSection(Document& d, const std::vector<LadderCell>& cells) {
   d.table(header, rows);
 }
 
-}  // namespace mb::report
+}  // namespace mb::document

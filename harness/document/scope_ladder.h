@@ -15,7 +15,7 @@
 
 #include "harness/document/report_model.h"
 
-namespace mb::report {
+namespace mb::document {
 
 // "As cheap": motor / baseline at most this (the paper calls 89 vs 85 ops "nearly identical").
 inline constexpr double kAsCheapLimit = 1.10;
@@ -44,4 +44,4 @@ const LadderCell* ladderCell(const std::vector<LadderCell>& cells, const std::st
 // A table: rows stage x baseline, columns measures; the paper's scope marked; the rule under it.
 void scopeLadderSection(Document& d, const std::vector<LadderCell>& cells);
 
-}  // namespace mb::report
+}  // namespace mb::document

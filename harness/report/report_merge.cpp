@@ -43,8 +43,8 @@ int mergeReports(const std::vector<std::string>& dirs, const Options& o) {
     std::ifstream in(fs::path(d) / "report.json");
     if (!in) return fail(d + ": no report.json (not a motorbench report folder)");
     json j = json::parse(in, nullptr, false);
-    if (j.is_discarded() || j.value("schema", "") != kReportSchema)
-      return fail(d + "/report.json: not a " + std::string(kReportSchema) + " document");
+    if (j.is_discarded() || j.value("schema", "") != document::kReportSchema)
+      return fail(d + "/report.json: not a " + std::string(document::kReportSchema) + " document");
     if (!j["settings"].contains("shard"))
       return fail(d + "/report.json: made without shard information (re-run it with --shard I/N)");
     runs.push_back({d, std::move(j)});
@@ -101,7 +101,7 @@ int mergeReports(const std::vector<std::string>& dirs, const Options& o) {
   json settings = first["settings"];
   settings["shard"].erase("index");
   settings["shard"]["merged"] = dirs;
-  json report = assembleReport(first["machine"], settings, std::move(scenes), first["opsPerVertex"], kernels);
+  json report = document::assembleReport(first["machine"], settings, std::move(scenes), first["opsPerVertex"], kernels);
   report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files
   // Alike in every shard that has them: the curved drift (measured by every shard with a curved
   // scene) and motorbench isa's file (--isa-json).

@@ -327,7 +327,7 @@ int finishInterrupted(json report, const Options& o, const fs::path& work, int t
 // 1 when a scene was not measured fully (listed on stderr), or the writer's error status.
 int finishComplete(json report, const Options& o, const fs::path& work) {
   std::error_code ec;
-  const std::vector<std::string> failures = failedSceneLines(report);  // as report.md lists them
+  const std::vector<std::string> failures = document::failedSceneLines(report);  // as report.md lists them
   std::vector<std::string> answer;
   const int status = writeReportFolder(std::move(report), o, &answer);
   fs::remove_all(work, ec);
@@ -381,7 +381,7 @@ int runReport(const Options& o) {
   // Phase 4: kernel throughput.
   json kernelJson = interruptSignal() == 0 ? kernels(o)
                                             : json{{"source", "skipped"}, {"error", "not measured (interrupted)"}, {"file", nullptr}};
-  json report = assembleReport(machineJson(), settingsJson(o, *in), std::move(scenes), std::move(ops),
+  json report = document::assembleReport(machineJson(), settingsJson(o, *in), std::move(scenes), std::move(ops),
                                std::move(kernelJson));
   report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files
   if (anyCurved) report["curved"] = curvedExtra;
@@ -396,26 +396,26 @@ int runReport(const Options& o) {
 }
 
 int writeReportFolder(json report, const Options& o, std::vector<std::string>* answer) {
-  addAnswerFigures(report);  // the answer block's figures: fetch, ISA, images (after isa is attached)
-  addOpsRanking(report);     // where counted ops, SPIR-V and ISA order the pipelines differently (ops and isa)
+  document::addAnswerFigures(report);  // the answer block's figures: fetch, ISA, images (after isa is attached)
+  document::addOpsRanking(report);     // where counted ops, SPIR-V and ISA order the pipelines differently (ops and isa)
   report["glossary"] = glossaryJson();    // what every counter means (shown in the documents)
   report["diffLegend"] = heatLegendJson();  // the heat maps' colour scale
   const fs::path jsonPath = fs::path(o.outDir) / "report.json";
-  if (Status s = writeText(jsonPath, dumpJson(report, 2) + "\n"); !s) {
+  if (Status s = writeText(jsonPath, document::dumpJson(report, 2) + "\n"); !s) {
     std::fprintf(stderr, "motorbench report: error: %s\n", s.error().c_str());
     return 2;
   }
   // Phase 5: plots from report.json, then the final report.json and the documents.
   if (o.plots) {
-    say("plotting (" + (o.python.empty() ? defaultPython() : o.python) + " scripts/plot.py)");
-    report["plots"] = makePlots(o.python, o.plotScript, jsonPath.string(), o.outDir);
+    say("plotting (" + (o.python.empty() ? document::defaultPython() : o.python) + " scripts/plot.py)");
+    report["plots"] = document::makePlots(o.python, o.plotScript, jsonPath.string(), o.outDir);
   } else {
     report["plots"] = {{"available", false}, {"error", "not made (--no-plots)"}, {"files", json::array()}};
   }
-  Document doc = reportDocument(report);
+  document::Document doc = document::reportDocument(report);
   if (const json& stop = report.contains("interrupted") ? report["interrupted"] : json(); stop.is_object()) {
     // A partial report says so on its first line, before anything that could read as complete.
-    Document top;
+    document::Document top;
     top.paragraph("INTERRUPTED: " + std::to_string(stop.value("measured", 0)) + " of " +
                   std::to_string(stop.value("scenes", 0)) + " scenes measured (stopped by " +
                   stop.value("signal", std::string("a signal")) +
@@ -423,12 +423,12 @@ int writeReportFolder(json report, const Options& o, std::vector<std::string>* a
     doc.blocks.insert(doc.blocks.begin(), top.blocks.begin(), top.blocks.end());
   }
   if (answer) {
-    answer->push_back("The answer: " + answerQuestion());
-    for (const AnswerLine& l : answerLines(report)) answer->push_back("  " + l.evidence + ": " + l.text + " -> " + l.verdict);
+    answer->push_back("The answer: " + document::answerQuestion());
+    for (const document::AnswerLine& l : document::answerLines(report)) answer->push_back("  " + l.evidence + ": " + l.text + " -> " + l.verdict);
   }
-  for (const auto& [path, text] : {std::pair{jsonPath, dumpJson(report, 2) + "\n"},
-                                   std::pair{fs::path(o.outDir) / "report.md", toMarkdown(doc)},
-                                   std::pair{fs::path(o.outDir) / "report.html", toHtml(doc)}}) {
+  for (const auto& [path, text] : {std::pair{jsonPath, document::dumpJson(report, 2) + "\n"},
+                                   std::pair{fs::path(o.outDir) / "report.md", document::toMarkdown(doc)},
+                                   std::pair{fs::path(o.outDir) / "report.html", document::toHtml(doc)}}) {
     if (Status s = writeText(path, text); !s) {
       std::fprintf(stderr, "motorbench report: error: %s\n", s.error().c_str());
       return 2;

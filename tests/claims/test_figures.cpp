@@ -71,7 +71,7 @@ TEST(Figures, ReportFrameTimeIsTheMedianOfThePairedRatiosNotOfTheMedians) {
                                     {{"id", "s3"}, {"space", "spherical (S3)"}, {"timing", {{"paired_ratio_motor_matrix", 9.0}}}}};
   const json machine = {{"gl", {{"renderer", "llvmpipe"}, {"realGpu", false}}}, {"cpu", "X"}, {"logicalCores", 2}};
   const json settings = {{"pipelines", {"matrix", "motor"}}};
-  const json f = mb::report::reportFigures(machine, settings, scenes, json::object(), json::object());
+  const json f = mb::document::reportFigures(machine, settings, scenes, json::object(), json::object());
   // The three Euclidean scenes' paired ratios 0.8, 0.9, 1.1: median 0.9, quartiles 0.85 and 1.0;
   // the curved scene is not a Euclidean frame time.
   const auto all = figures::figureNamed(f, "frame_time.motor_over_matrix");

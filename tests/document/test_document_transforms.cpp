@@ -26,7 +26,7 @@ TEST(DocumentTransforms, SkinnedOnlySceneIsCountedAsNoneNotDropped) {
                          {"frames", 0}, {"jobs", 1}};
   // Two rigid scenes (matrix 32, motor 8) and Fox-like: every draw skinned, matrix still sends
   // its model and normal matrices (the Sample Viewer's skin-then-model), motor sends none.
-  const json r = mb::report::assembleReport(
+  const json r = mb::document::assembleReport(
       json::object(), settings, {scene("box", 32, 8), scene("torus", 32, 8), scene("fox", 32, nullptr)}, json::object(),
       json::object());
   const json& motor = r["summary"]["pipelines"]["motor"]["floatsPerTransform"];
@@ -37,10 +37,10 @@ TEST(DocumentTransforms, SkinnedOnlySceneIsCountedAsNoneNotDropped) {
   EXPECT_EQ(matrix["n"], 3);
   EXPECT_EQ(matrix["none"], 0);
   // The summary row: the spread, how many scenes it covers, and the scenes without any.
-  EXPECT_EQ(mb::report::spreadText(motor, 3) + " over 2 scenes" +
-                mb::report::noneText(motor, "whose every draw is skinned"),
+  EXPECT_EQ(mb::document::spreadText(motor, 3) + " over 2 scenes" +
+                mb::document::noneText(motor, "whose every draw is skinned"),
             "8 over 2 scenes; none on 1 scene whose every draw is skinned");
-  EXPECT_EQ(mb::report::noneText(matrix, "x"), "");
+  EXPECT_EQ(mb::document::noneText(matrix, "x"), "");
 }
 
 // A scene of Bezier patches only (teapot) uploads control points and no mesh vertex: its 0 floats
@@ -53,7 +53,7 @@ TEST(DocumentTransforms, PatchOnlySceneHasNoFloatsPerVertex) {
   box["pipelines"]["motor"]["memory"]["floatsPerVertex"] = 9;
   teapot["pipelines"]["matrix"]["memory"]["floatsPerVertex"] = 0;
   teapot["pipelines"]["motor"]["memory"]["floatsPerVertex"] = 0;
-  const json r = mb::report::assembleReport(json::object(), settings, {box, teapot}, json::object(), json::object());
+  const json r = mb::document::assembleReport(json::object(), settings, {box, teapot}, json::object(), json::object());
   const json& matrix = r["summary"]["pipelines"]["matrix"]["floatsPerVertex"];
   EXPECT_EQ(matrix["n"], 1);
   EXPECT_EQ(matrix["min"], 12);

@@ -38,7 +38,7 @@ json isa(const json& perFamily) {
 
 TEST(OpsRanking, NamesThePairTheIsaReverses) {
   // counted and probe: A 10 < B 20 < C 30; ISA medians A (5+7)/2 = 6, B 4, C 10: B < A < C.
-  const json r = mb::report::opsRanking(variants({{"A", 10}, {"B", 20}, {"C", 30}}, {{"A", 10}, {"B", 20}, {"C", 30}}),
+  const json r = mb::document::opsRanking(variants({{"A", 10}, {"B", 20}, {"C", 30}}, {{"A", 10}, {"B", 20}, {"C", 30}}),
                                         isa({{"A", {5, 7}}, {"B", {4, 4}}, {"C", {9, 11}}}))["rigid"];
   EXPECT_EQ(r["table"]["A"]["isa"], 6.0);
   EXPECT_EQ(r["ranks"]["isa"]["B"], 1);
@@ -51,14 +51,14 @@ TEST(OpsRanking, NamesThePairTheIsaReverses) {
             "op ranking of the rigid vertex to clip: counted ops, SPIR-V probe ops and AMD ISA instructions (median over 2 families) "
             "disagree on the order of 1 of 3 pipeline pairs: A vs B: A cheaper by counted and SPIR-V probe, B "
             "cheaper by ISA");
-  EXPECT_EQ(mb::report::opsRankingTableText(r),
+  EXPECT_EQ(mb::document::opsRankingTableText(r),
             "A 10 / 10 / 6, B 20 / 20 / 4, C 30 / 30 / 10 (counted ops / SPIR-V probe ops / AMD ISA instructions "
             "(median over 2 families))");
 }
 
 TEST(OpsRanking, AgreeingMeasuresSayAlikeAndATieOrdersNothing) {
   // ISA ties A and B (8, 8): a tie is no reversal; every other pair is ordered alike.
-  const json r = mb::report::opsRanking(variants({{"A", 10}, {"B", 20}, {"C", 30}}, {{"A", 11}, {"B", 21}, {"C", 31}}),
+  const json r = mb::document::opsRanking(variants({{"A", 10}, {"B", 20}, {"C", 30}}, {{"A", 11}, {"B", 21}, {"C", 31}}),
                                         isa({{"A", {8, 8}}, {"B", {8, 8}}, {"C", {9, 9}}}))["rigid"];
   EXPECT_TRUE(r["reversed"].empty());
   EXPECT_EQ(r["ranks"]["isa"]["A"], 1);
@@ -69,21 +69,21 @@ TEST(OpsRanking, AgreeingMeasuresSayAlikeAndATieOrdersNothing) {
 
 TEST(OpsRanking, OneMeasureRanksNothing) {
   // No probes, no ISA: nothing to compare the counted order with.
-  const json r = mb::report::opsRanking(variants({{"A", 10}, {"B", 20}}, json::object()), json())["rigid"];
+  const json r = mb::document::opsRanking(variants({{"A", 10}, {"B", 20}}, json::object()), json())["rigid"];
   EXPECT_EQ(r["pairs"], 0);
   EXPECT_EQ(r["line"].get<std::string>().find("disagree"), std::string::npos);
   EXPECT_NE(r["line"].get<std::string>().find("not ranked: only counted ops measured (no ISA statistics"), std::string::npos)
       << r["line"];
   EXPECT_TRUE(r["table"]["A"]["isa"].is_null());
   // Garbage in place of the inputs: an empty ranking, no throw.
-  EXPECT_NO_THROW(mb::report::opsRanking(json("text"), json(3)));
+  EXPECT_NO_THROW(mb::document::opsRanking(json("text"), json(3)));
 }
 
 TEST(OpsRanking, ReportGetsTheRankingAndItsFigureAndPrintsTheLine) {
   json report = {{"opsPerVertex", {{"detail", {{"variants", variants({{"A", 10}, {"B", 20}, {"C", 30}},
                                                                      {{"A", 10}, {"B", 20}, {"C", 30}})}}}}},
                  {"isa", isa({{"A", {5, 7}}, {"B", {4, 4}}, {"C", {9, 11}}})}};
-  mb::report::addOpsRanking(report);
+  mb::document::addOpsRanking(report);
   const auto f = mb::figures::figureNamed(report, "ops_ranking.rigid.pairs_reversed");
   ASSERT_TRUE(f);
   EXPECT_EQ(f->value, 1);
@@ -92,9 +92,9 @@ TEST(OpsRanking, ReportGetsTheRankingAndItsFigureAndPrintsTheLine) {
   const auto s = mb::figures::figureNamed(report, "ops_ranking.skinned.pairs_reversed");
   ASSERT_TRUE(s);
   EXPECT_TRUE(std::isnan(s->value));
-  mb::report::Document d;
-  mb::report::opsRankingSection(d, report);
-  const std::string md = mb::report::toMarkdown(d);
+  mb::document::Document d;
+  mb::document::opsRankingSection(d, report);
+  const std::string md = mb::document::toMarkdown(d);
   EXPECT_NE(md.find(report["opsRanking"]["rigid"]["line"].get<std::string>()), std::string::npos) << md;
   EXPECT_NE(md.find("| B | 20 (2) | 20 (2) | 4 (1) |"), std::string::npos) << md;
 }

@@ -11,7 +11,7 @@
 #include "harness/document/report_format.h"
 #include "harness/figures/figure.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using json = nlohmann::json;
@@ -228,9 +228,9 @@ TEST(ReportAnswer, ClaimsOpenWithTheReportsAnswerLines) {
 }
 
 }  // namespace
-}  // namespace mb::report
+}  // namespace mb::document
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 // reportFigures' fallback.* figures of `scenes` into r's figures.
@@ -269,4 +269,4 @@ TEST(ReportAnswer, TheTimeLineSaysHowMuchTheMotorDrewWithItsExactFallback) {
 }
 
 }  // namespace
-}  // namespace mb::report
+}  // namespace mb::document

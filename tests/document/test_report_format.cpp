@@ -9,7 +9,7 @@
 
 namespace {
 
-using mb::report::fmt;
+using mb::document::fmt;
 
 TEST(ReportFormat, CountsPrintWholeAndMeasurementsKeepTheirDigits) {
   EXPECT_EQ(fmt(3240.0), "3240");
@@ -23,7 +23,7 @@ TEST(ReportFormat, CountsPrintWholeAndMeasurementsKeepTheirDigits) {
   EXPECT_EQ(fmt(0.000123), "0.000123");
   EXPECT_EQ(fmt(nlohmann::json("x")), "-");
   const nlohmann::json pipeline = {{"fallbacks", {{"fallbackVertices", 3240}, {"linearFallbackDraws", 12}, {"zero", 0}}}};
-  EXPECT_EQ(mb::report::layout::fallbacksText(pipeline), "fallbackVertices 3240, linearFallbackDraws 12");
+  EXPECT_EQ(mb::document::layout::fallbacksText(pipeline), "fallbackVertices 3240, linearFallbackDraws 12");
 }
 
 }  // namespace

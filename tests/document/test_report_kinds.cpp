@@ -11,7 +11,7 @@
 #include "harness/report/content_kinds.h"
 #include "pipelines/scene/loader.h"
 
-namespace mb::report {
+namespace mb::document {
 namespace {
 
 using json = nlohmann::json;
@@ -219,7 +219,7 @@ TEST(ReportKinds, AnOldReportSaysTheKindsAreNotRecorded) {
 TEST(ReportKinds, SceneMeasurementCountsTheKindsOfABuiltInScene) {
   auto tube = loadScene("skinned_tube");
   ASSERT_TRUE(tube) << tube.error();
-  const json cells = contentKindsJson(*tube)["cells"];
+  const json cells = report::contentKindsJson(*tube)["cells"];
   ASSERT_FALSE(cells.empty());
   long long vertices = 0;
   for (const json& c : cells) {
@@ -233,4 +233,4 @@ TEST(ReportKinds, SceneMeasurementCountsTheKindsOfABuiltInScene) {
 }
 
 }  // namespace
-}  // namespace mb::report
+}  // namespace mb::document

@@ -55,8 +55,8 @@ json handReport() {
 
 TEST(ReportMorph, CellsQuoteTheirFiguresAndRows) {
   const json r = handReport();
-  EXPECT_EQ(report::morphIsaFamilies(r), (std::vector<std::string>{"tahiti", "gfx1100"}));
-  const auto rows = report::morphTable(r);
+  EXPECT_EQ(document::morphIsaFamilies(r), (std::vector<std::string>{"tahiti", "gfx1100"}));
+  const auto rows = document::morphTable(r);
   ASSERT_EQ(rows.size(), 4u);  // header + three methods
   const auto& header = rows[0];
   auto col = [&](const std::string& name) {
@@ -94,23 +94,23 @@ TEST(ReportMorph, TheDefaultMethodIsDescribedByItsFigures) {
   json& f = r["morph"]["figures"];
   f["morph.worst_psnr.rigid.motor_frame"] = figureJson("morph.worst_psnr.rigid.motor_frame", 56.7, "dB");
   f["morph.max_error.rigid.motor_frame"] = figureJson("morph.max_error.rigid.motor_frame", 0.129, "of 1");
-  report::Document d;
-  report::morphSection(d, r);
+  document::Document d;
+  document::morphSection(d, r);
   std::string text;
   for (const auto& b : d.blocks) text += b.text + "\n";
   EXPECT_EQ(text.find("exact where matrix is"), std::string::npos) << text;
   EXPECT_NE(text.find("56.7 dB"), std::string::npos) << text;
   EXPECT_NE(text.find("0.129 of 1"), std::string::npos) << text;
   EXPECT_NE(text.find("over 3 frames"), std::string::npos) << text;  // the figures' n
-  const auto rows = report::morphTable(r);
+  const auto rows = document::morphTable(r);
   EXPECT_EQ(rows[2].back().rfind("exact", 0), std::string::npos) << rows[2].back();
 }
 
 TEST(ReportMorph, WithoutMorphJsonTheSectionSaysHowToMeasure) {
-  report::Document d;
-  report::morphSection(d, json{{"opsPerVertex", json::object()}});
+  document::Document d;
+  document::morphSection(d, json{{"opsPerVertex", json::object()}});
   bool told = false;
   for (const auto& b : d.blocks) told = told || b.text.find("motorbench report --morph-json") != std::string::npos;
   EXPECT_TRUE(told);
-  EXPECT_EQ(report::morphTable(json::object()).size(), 1u);  // the header only
+  EXPECT_EQ(document::morphTable(json::object()).size(), 1u);  // the header only
 }

@@ -31,21 +31,21 @@ json kernels() {
           {"source", "file"}, {"file", "bench.json"}};
 }
 
-std::string markdownOf(const report::Document& d) { return report::toMarkdown(d); }
+std::string markdownOf(const document::Document& d) { return document::toMarkdown(d); }
 
 }  // namespace
 
 TEST(ReportScopes, KernelRatiosAreTimeMotorOverMatrixWithTheirRepetitions) {
   json r = {{"kernels", kernels()}, {"machine", json::object()}};
-  r["figures"] = report::reportFigures(json::object(), json::object(), {}, json::object(), r["kernels"]);
+  r["figures"] = document::reportFigures(json::object(), json::object(), {}, json::object(), r["kernels"]);
   const auto shim = figures::figureNamed(r, "kernel_time.compose.shim_motor_over_shim_matrix");
   const auto fastest = figures::figureNamed(r, "kernel_time.compose.fastest_motor_over_fastest_matrix");
   ASSERT_TRUE(shim && fastest);
   EXPECT_DOUBLE_EQ(shim->value, 2.0);      // 2e8 / 1e8: the motor takes twice the time
   EXPECT_DOUBLE_EQ(fastest->value, 0.5);   // 4e8 / 8e8: half the time
   EXPECT_NE(shim->statistic.find("the median of 3 repetitions"), std::string::npos) << shim->statistic;
-  report::Document d;
-  report::kernelSection(d, r);
+  document::Document d;
+  document::kernelSection(d, r);
   const std::string md = markdownOf(d);
   EXPECT_NE(md.find("time motor / matrix (shim sources)"), std::string::npos) << md;
   EXPECT_NE(md.find("<span title=\"kernel_time.compose.shim_motor_over_shim_matrix\">2x</span>"), std::string::npos) << md;
@@ -58,7 +58,7 @@ TEST(ReportScopes, KernelRatiosAreTimeMotorOverMatrixWithTheirRepetitions) {
 TEST(ReportScopes, ABenchWithoutRepetitionsSaysSo) {
   json k = kernels();
   for (const char* s : {"matrix", "motor", "simd_affine", "simd_motor"}) k["pairs"][0][s].erase("repetitions");
-  const json f = report::reportFigures(json::object(), json::object(), {}, json::object(), k);
+  const json f = document::reportFigures(json::object(), json::object(), {}, json::object(), k);
   const auto shim = figures::figureNamed(f, "kernel_time.compose.shim_motor_over_shim_matrix");
   ASSERT_TRUE(shim);
   EXPECT_NE(shim->statistic.find("not recorded"), std::string::npos) << shim->statistic;
@@ -70,7 +70,7 @@ TEST(ReportScopes, ACurvedPipelinesOpsNameTheInstanceTransform) {
   json ops = {{"perPipeline", json::array({json(row), json(row)})}};
   ops["perPipeline"][0]["pipeline"] = "s3_matrix";
   ops["perPipeline"][1]["pipeline"] = "matrix";
-  const json f = report::reportFigures(json::object(), json::object(), {}, ops, json::object());
+  const json f = document::reportFigures(json::object(), json::object(), {}, ops, json::object());
   const auto curved = figures::figureNamed(f, "ops_per_vertex.to_clip.counted.s3_matrix");
   const auto euclid = figures::figureNamed(f, "ops_per_vertex.to_clip.counted.matrix");
   ASSERT_TRUE(curved && euclid);
@@ -92,7 +92,7 @@ TEST(ReportScopes, FragmentFiguresAreTheirIsaRowsAndKernels) {
        {"instructions", 570}, {"vgprs", 36}}};
   r["opsPerVertex"]["kernels"] = {{{"function", "rotorShadingNormal"}, {"counted", {{"mul", 48}, {"add", 22}, {"other", 2}}}},
                                   {{"function", "tbnShadingNormal"}, {"counted", {{"mul", 51}, {"add", 22}, {"other", 3}}}}};
-  report::addAnswerFigures(r);
+  document::addAnswerFigures(r);
   auto value = [&](const std::string& name) {
     const auto f = figures::figureNamed(r, name);
     return f ? f->value : -1.0;
@@ -109,11 +109,11 @@ TEST(ReportScopes, FragmentFiguresAreTheirIsaRowsAndKernels) {
 }
 
 TEST(ReportScopes, HybridDrawsWithQtangentsGpuSide) {
-  EXPECT_EQ(report::gpuSideOf("hybrid"), "qtangent");
+  EXPECT_EQ(document::gpuSideOf("hybrid"), "qtangent");
   for (const char* p : {"qtangent", "matrix", "affine", "motor", "motor_q", "matrix_c", "motor_c", "motor_cf", "s3_motor"})
-    EXPECT_EQ(report::gpuSideOf(p), "") << p;
+    EXPECT_EQ(document::gpuSideOf(p), "") << p;
   json r = {{"settings", {{"pipelines", {"matrix", "qtangent", "hybrid"}}}}, {"scenes", json::array()}};
-  report::addAnswerFigures(r);
+  document::addAnswerFigures(r);
   EXPECT_EQ(r["pipelineGpuSides"], json({{"hybrid", "qtangent"}}));
   EXPECT_EQ(r["pipelineFamilies"]["hybrid"], "motor");  // its CPU side: it poses with motors
 }

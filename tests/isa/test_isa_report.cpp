@@ -8,9 +8,9 @@
 namespace {
 
 using nlohmann::json;
-using mb::report::Block;
+using mb::document::Block;
 
-const Block* table(const mb::report::Document& d) {
+const Block* table(const mb::document::Document& d) {
   for (const Block& b : d.blocks)
     if (b.kind == Block::Kind::Table) return &b;
   return nullptr;
@@ -30,8 +30,8 @@ TEST(IsaReport, VariantRowsJoinTheirIsaRowsByLabel) {
            {"labels", {"skinned", "skinned, reference"}}, {"instructions", 699}, {"vgprs", 128}, {"wavesPerSimd", 4}},
           {{"pipeline", "matrix"}, {"stage", "fragment"}, {"familyId", "tahiti"},
            {"labels", {"skinned", "skinned, reference"}}, {"instructions", 495}, {"vgprs", 36}, {"wavesPerSimd", 7}}}}}}};
-  mb::report::Document d;
-  mb::report::isaSection(d, report);
+  mb::document::Document d;
+  mb::document::isaSection(d, report);
   const Block* t = table(d);
   ASSERT_NE(t, nullptr);
   ASSERT_EQ(t->header.size(), 5u);
@@ -43,8 +43,8 @@ TEST(IsaReport, VariantRowsJoinTheirIsaRowsByLabel) {
 }
 
 TEST(IsaReport, WithoutIsaJsonTheSectionSaysHowToGetIt) {
-  mb::report::Document d;
-  mb::report::isaSection(d, json{{"opsPerVertex", json::object()}});
+  mb::document::Document d;
+  mb::document::isaSection(d, json{{"opsPerVertex", json::object()}});
   EXPECT_EQ(table(d), nullptr);
   bool told = false;
   for (const Block& b : d.blocks) told = told || b.text.find("--isa-json") != std::string::npos;

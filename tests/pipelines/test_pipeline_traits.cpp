@@ -63,7 +63,7 @@ TEST(PipelineTraits, FrameDecodersAreCountedKernelsAndTheRotorPassesWhereDeclare
 TEST(PipelineTraits, TheReportsFamilyIsTheDeclaredOne) {
   const std::set<std::string> matrices = {"matrix", "affine", "qtangent", "matrix_c", "s3_matrix", "h3_matrix"};
   for (const PipelineEntry& e : registeredPipelines())
-    EXPECT_EQ(report::pipelineFamily(e.name), matrices.count(e.name) ? "matrix" : "motor") << e.name;
+    EXPECT_EQ(document::pipelineFamily(e.name), matrices.count(e.name) ? "matrix" : "motor") << e.name;
 }
 
 }  // namespace

@@ -85,15 +85,15 @@ TEST(FrameTimeDevice, TablesNameTheDeviceAndItsClock) {
   const nlohmann::json gpu = mb::toJson(h100);
   EXPECT_EQ(gpu["kind"], "gpu");
   EXPECT_EQ(gpu["device"]["drm"], "/dev/dri/renderD128");
-  EXPECT_EQ(mb::report::frameTimeOn(gpu), "Frame time on NVIDIA H100 80GB HBM3/PCIe/SSE2 (GPU timer queries)");
+  EXPECT_EQ(mb::document::frameTimeOn(gpu), "Frame time on NVIDIA H100 80GB HBM3/PCIe/SSE2 (GPU timer queries)");
   mb::gl::ContextInfo llvm;
   llvm.backend = "egl-surfaceless", llvm.renderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
   const nlohmann::json cpu = mb::toJson(llvm);
   EXPECT_EQ(cpu["kind"], "cpu-rasterizer");
   EXPECT_TRUE(cpu["device"]["index"].is_null());
-  EXPECT_EQ(mb::report::frameTimeOn(cpu),
+  EXPECT_EQ(mb::document::frameTimeOn(cpu),
             "Frame time on llvmpipe (LLVM 15.0.6, 256 bits) \u2014 a CPU rasterizer (wall clock)");
-  EXPECT_EQ(mb::report::frameTimeOn(nlohmann::json{{"error", "no context"}}), "Frame time (device not recorded)");
+  EXPECT_EQ(mb::document::frameTimeOn(nlohmann::json{{"error", "no context"}}), "Frame time (device not recorded)");
 }
 
 }  // namespace
