@@ -113,7 +113,7 @@ void readEnd(const std::string& how, rules::WorkerRecord& rec) {
     const char* abbrev = sigabbrev_np(n);
     rec.signal = abbrev ? std::string("SIG") + abbrev : "signal " + std::to_string(n);
   } else if (how.rfind("timed out", 0) == 0) rec.timeout = true, rec.signal = "SIGKILL";
-  else if (how.rfind("interrupted", 0) == 0) rec.signal = interruptName();
+  else if (how.rfind("interrupted", 0) == 0) rec.signal = process::interruptName();
   else rec.stderrTail = how;
 }
 
@@ -177,8 +177,8 @@ std::string progressLine(size_t done, size_t total, const ojson& res, double ela
   if (status != "ok") status += " (" + rules::valueText(res["error"]) + ")";
   std::string line = "check --rules: [" + std::to_string(done) + "/" + std::to_string(total) + "] " +
                      res["file"].get<std::string>() + ": " + status + rules::printed(" %.1f s", res["seconds"].get<double>()) +
-                     ", " + durationText(elapsed) + " elapsed";
-  if (done < total) line += ", about " + durationText(elapsed / double(done) * double(total - done)) + " left";
+                     ", " + process::durationText(elapsed) + " elapsed";
+  if (done < total) line += ", about " + process::durationText(elapsed / double(done) * double(total - done)) + " left";
   return line;
 }
 

@@ -53,7 +53,7 @@ int runAccuracy(const std::vector<std::string>& argv) {
     doc = accuracy::newDocument("built-in scenes: handedness rule, motor blend vs slerp, candy-wrapper skinning, "
                                 "quaternion to rotor, curved camera drift");
     const std::vector<accuracy::Step> steps = accuracy::builtinSteps(driftSteps);
-    Progress progress("accuracy", "measurements", steps.size(), false);
+    process::Progress progress("accuracy", "measurements", steps.size(), false);
     for (const accuracy::Step& s : steps) {
       s.run(doc);
       progress.done(s.name);

@@ -84,7 +84,7 @@ public:
   }
   nlohmann::json benchmarks = nlohmann::json::array();
   bool outOfCache = false;
-  std::unique_ptr<Progress> progress;  // stderr lines with an ETA (none in list mode)
+  std::unique_ptr<process::Progress> progress;  // stderr lines with an ETA (none in list mode)
 };
 
 // How many benchmarks `flags` select: Google Benchmark's list mode writes their names to the
@@ -266,7 +266,7 @@ int runBench(const std::vector<std::string>& args) {
   SummaryReporter reporter(consoleOptions(flags));
   bool listOnly = false;
   for (const std::string& f : flags) listOnly = listOnly || f == "--benchmark_list_tests" || f == "--benchmark_list_tests=true";
-  if (!listOnly) reporter.progress = std::make_unique<Progress>("bench", "benchmarks run", countSelected(flags), false);
+  if (!listOnly) reporter.progress = std::make_unique<process::Progress>("bench", "benchmarks run", countSelected(flags), false);
   const size_t ran = benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   if (ran == 0) {

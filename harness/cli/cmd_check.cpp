@@ -262,7 +262,7 @@ int check(const Selection& sel) {
   if (const std::string note = emptyShardNote(sel.shard, names.size(), mine.size()); !note.empty())
     commandNotes("check", {note});
   std::set<std::string> rendererNotes, plannedFiles;
-  std::optional<Progress> progress;
+  std::optional<process::Progress> progress;
   if (!sel.quiet) progress.emplace("check", "scenes checked", mine.size(), false);
   for (const golden::CheckInput& input : mine) {
     checkInput(input, *manifest, sel, run, rendererNotes, plannedFiles);
@@ -356,7 +356,7 @@ int update(const Selection& sel) {
   for (const golden::Entry& e : old.entries)
     if (!scenes.count(e.scene) || !pipelines.count(e.pipeline)) next.entries.push_back(e);
   int changed = 0, same = 0;
-  std::optional<Progress> progress;
+  std::optional<process::Progress> progress;
   if (!sel.quiet) progress.emplace("check --update", "scenes recorded", sel.inputs.size(), false);
   for (const golden::CheckInput& input : sel.inputs) {
     if (Status s = updateInput(input, sel, next, changed, same); !s) return fail(s.error());

@@ -177,7 +177,7 @@ int runInspect(const std::vector<std::string>& argv) {
   const bool summary = args.has("summary");
   // Per-file lines go to stdout (unless --summary): the progress is plain lines there, at most
   // one a second; with --summary it may rewrite one line on a terminal.
-  std::optional<mb::Progress> progress;
+  std::optional<mb::process::Progress> progress;
   if (mine.size() > 1) progress.emplace("inspect", "files inspected", mine.size(), summary, 1.0);
   for (size_t k : mine) {
     const std::string& file = all[k];

@@ -35,7 +35,7 @@ int runOps(const std::vector<std::string>& argv) {
     }
   // Four steps, about a minute in all (the SPIR-V and ISA compiles): a line on stderr after each,
   // so a silent terminal never looks hung.
-  mb::Progress progress("ops", "steps done", 4, false);
+  mb::process::Progress progress("ops", "steps done", 4, false);
   const std::vector<mb::ops::Row> rows = mb::ops::measureAll(mb::ops::allKernels());
   progress.done("kernels counted (" + std::to_string(rows.size()) + ")");
 

@@ -224,7 +224,7 @@ struct TimedScenes {
 
 // One scene timed in a child process (`time SCENE --worker scratch`, the timing options passed
 // on), its rows and patch memory added to `into`.
-void timeSceneInWorker(const std::string& name, const Args& args, const std::string& scratch, Progress& progress,
+void timeSceneInWorker(const std::string& name, const Args& args, const std::string& scratch, process::Progress& progress,
                        TimedScenes& into) {
   std::vector<std::string> child = {"time", name, "--worker", scratch};
   for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level", "instances", "pipelines", "anim"})
@@ -304,7 +304,7 @@ int runTime(const std::vector<std::string>& argv) {
   TimedScenes timed;
   const std::string scratch = (std::filesystem::temp_directory_path() /
                                ("motorbench-time-" + std::to_string(::getpid()) + ".json")).string();
-  Progress progress("time", "scenes done", names->size(), false);
+  process::Progress progress("time", "scenes done", names->size(), false);
   for (const std::string& name : *names) timeSceneInWorker(name, args, scratch, progress, timed);
   std::filesystem::remove(scratch);
   printRatioNote();

@@ -4,7 +4,7 @@
 
 #include <atomic>
 
-namespace mb {
+namespace mb::process {
 namespace {
 
 std::atomic<int> g_signal{0};
@@ -35,4 +35,4 @@ const char* interruptName() {
   return s == SIGINT ? "SIGINT" : s == SIGTERM ? "SIGTERM" : "a signal";
 }
 
-}  // namespace mb
+}  // namespace mb::process

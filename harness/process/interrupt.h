@@ -3,7 +3,7 @@
 // was interrupted. A second signal ends the process at once (the default action, restored).
 #pragma once
 
-namespace mb {
+namespace mb::process {
 
 // Installs the handler for SIGINT and SIGTERM (once; later calls do nothing).
 void catchInterrupts();
@@ -12,4 +12,4 @@ int interruptSignal();
 // "SIGINT" / "SIGTERM" for the message.
 const char* interruptName();
 
-}  // namespace mb
+}  // namespace mb::process

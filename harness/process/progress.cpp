@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-namespace mb {
+namespace mb::process {
 
 std::string durationText(double s) {
   char buf[64];
@@ -39,4 +39,4 @@ void Progress::done(const std::string& item) {
   std::fflush(stderr);
 }
 
-}  // namespace mb
+}  // namespace mb::process

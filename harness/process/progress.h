@@ -5,7 +5,7 @@
 #include <chrono>
 #include <string>
 
-namespace mb {
+namespace mb::process {
 
 class Progress {
 public:
@@ -30,4 +30,4 @@ private:
 // "45 s", "3 min 05 s", "1 h 02 min".
 std::string durationText(double seconds);
 
-}  // namespace mb
+}  // namespace mb::process

@@ -41,8 +41,8 @@ json measureOpsPerVertex() {
     shown = now;
     const double elapsed = std::chrono::duration<double>(now - start).count();
     std::string line = "report: counting ops per vertex: " + std::to_string(done) + "/" + std::to_string(total) +
-                       " kernels and shader variants (" + what + "), " + durationText(elapsed) + " elapsed";
-    if (done < total) line += ", about " + durationText(elapsed / double(done) * double(total - done)) + " left";
+                       " kernels and shader variants (" + what + "), " + process::durationText(elapsed) + " elapsed";
+    if (done < total) line += ", about " + process::durationText(elapsed / double(done) * double(total - done)) + " left";
     std::fprintf(stderr, "%s\n", line.c_str());
     std::fflush(stderr);
   });

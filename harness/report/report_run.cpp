@@ -273,7 +273,7 @@ std::vector<json> renderPhase(const Options& o, const RunInputs& in, const fs::p
 // Phase 2: frame timing, one scene at a time (the scenes not failed), into each scene's
 // "timing"; skipped with --frames 0 or once interrupted.
 void timingPhase(const Options& o, const RunInputs& in, const fs::path& work, std::vector<json>& scenes) {
-  if (o.frames <= 0 || interruptSignal() != 0) return;
+  if (o.frames <= 0 || process::interruptSignal() != 0) return;
   const int total = int(in.inputs.size());
   std::vector<process::WorkerTask> timing;
   std::vector<size_t> which;
@@ -309,8 +309,8 @@ json settingsJson(const Options& o, const RunInputs& in) {
 int finishInterrupted(json report, const Options& o, const fs::path& work, int total) {
   std::error_code ec;
   const int measured = scenesMeasured(report["scenes"].get<std::vector<json>>());
-  report["interrupted"] = {{"signal", interruptName()}, {"measured", measured}, {"scenes", total}};
-  const std::string line = "INTERRUPTED (" + std::string(interruptName()) + "): " + std::to_string(measured) +
+  report["interrupted"] = {{"signal", process::interruptName()}, {"measured", measured}, {"scenes", total}};
+  const std::string line = "INTERRUPTED (" + std::string(process::interruptName()) + "): " + std::to_string(measured) +
                            " of " + std::to_string(total) + " scenes measured; this report is partial";
   // The marker says it before the documents are written, and stays.
   markPartial(o.outDir, line);
@@ -348,7 +348,7 @@ int finishComplete(json report, const Options& o, const fs::path& work) {
 }  // namespace
 
 int runReport(const Options& o) {
-  catchInterrupts();  // Ctrl-C / kill: the workers are stopped and the folder says it is partial
+  process::catchInterrupts();  // Ctrl-C / kill: the workers are stopped and the folder says it is partial
   std::error_code ec;
   const std::optional<fs::path> folder = prepareFolders(o);
   if (!folder) return 2;
@@ -373,25 +373,25 @@ int runReport(const Options& o) {
   json curvedExtra = json::object();
   bool anyCurved = false;
   for (const Input& i : in->inputs) anyCurved = anyCurved || curvedSceneSpace(i.spec) != Space::Euclidean;
-  if (anyCurved && interruptSignal() == 0) {
+  if (anyCurved && process::interruptSignal() == 0) {
     say("measuring the curved camera drift (" + std::to_string(kReportDriftSteps) + " steps per space)");
     curvedExtra["drift"] = driftJson(kReportDriftSteps);
   }
 
   // Phase 4: kernel throughput.
-  json kernelJson = interruptSignal() == 0 ? kernels(o)
+  json kernelJson = process::interruptSignal() == 0 ? kernels(o)
                                             : json{{"source", "skipped"}, {"error", "not measured (interrupted)"}, {"file", nullptr}};
   json report = document::assembleReport(machineJson(), settingsJson(o, *in), std::move(scenes), std::move(ops),
                                std::move(kernelJson));
   report["summary"]["statistics"] = statisticsByOrigin(report["scenes"]);  // built-ins apart from files
   if (anyCurved) report["curved"] = curvedExtra;
-  if (interruptSignal() == 0) attachIsa(report, o);
+  if (process::interruptSignal() == 0) attachIsa(report, o);
   else report["isa"] = {{"error", "not measured (interrupted)"}};
   if (!o.morphJson.empty()) {  // checked by the command before the run (schema motorbench-morph/1)
     std::ifstream morph(o.morphJson);
     report["morph"] = json::parse(morph, nullptr, false);
   }
-  if (interruptSignal() != 0) return finishInterrupted(std::move(report), o, work, int(in->inputs.size()));
+  if (process::interruptSignal() != 0) return finishInterrupted(std::move(report), o, work, int(in->inputs.size()));
   return finishComplete(std::move(report), o, work);
 }
 

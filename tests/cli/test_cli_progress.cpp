@@ -11,10 +11,10 @@ namespace mb::cli_test {
 namespace {
 
 TEST(Progress, DurationTextReadsAsAPersonWouldSayIt) {
-  EXPECT_EQ(durationText(0.4), "0 s");
-  EXPECT_EQ(durationText(45), "45 s");
-  EXPECT_EQ(durationText(185), "3 min 05 s");
-  EXPECT_EQ(durationText(3720), "1 h 02 min");
+  EXPECT_EQ(process::durationText(0.4), "0 s");
+  EXPECT_EQ(process::durationText(45), "45 s");
+  EXPECT_EQ(process::durationText(185), "3 min 05 s");
+  EXPECT_EQ(process::durationText(3720), "1 h 02 min");
 }
 
 TEST(Progress, CheckAndReportPrintOneLinePerItemWithTimeLeft) {
