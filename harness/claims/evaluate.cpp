@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "harness/document/report_format.h"
+
 namespace mb::claims {
 namespace {
 
@@ -29,12 +31,6 @@ bool countsThings(const std::string& unit) {
                         "primitives", "pairs", "key pairs", "meshes"})
     if (unit == u) return true;
   return false;
-}
-
-std::string g3(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
 }
 
 json describe(const std::string& ref, const figures::Figure& f) {
@@ -82,15 +78,15 @@ Reading readColumns(const FigureSet& set, const Evidence& e, const ClaimRow& row
     r.columns[c] = f->value;
     r.figures.push_back(part.figures[0]);
   }
-  std::string text = g3(r.columns.value("mul", 0.0)) + " mul, " + g3(r.columns.value("add", 0.0)) + " add";
+  std::string text = document::sig3(r.columns.value("mul", 0.0)) + " mul, " + document::sig3(r.columns.value("add", 0.0)) + " add";
   for (const char* c : {"div", "sqrt", "other"})
-    if (r.columns.value(c, 0.0) != 0) text += " + " + g3(r.columns[c].get<double>()) + " " + c;
+    if (r.columns.value(c, 0.0) != 0) text += " + " + document::sig3(r.columns[c].get<double>()) + " " + c;
   r.text = text;
   std::string diff;
   for (const char* c : kColumns) {
     if (!row.paperValue.contains(c)) continue;
     const double d = r.columns.value(c, 0.0) - row.paperValue[c].get<double>();
-    if (d != 0) diff += (diff.empty() ? "" : ", ") + std::string(d > 0 ? "+" : "") + g3(d) + " " + c;
+    if (d != 0) diff += (diff.empty() ? "" : ", ") + std::string(d > 0 ? "+" : "") + document::sig3(d) + " " + c;
   }
   r.passes = diff.empty();
   if (!r.passes) r.text += " (" + diff + ")";
@@ -113,7 +109,7 @@ Reading readValue(const FigureSet& set, const Evidence& e, const Rule& rule) {
     }
     r.value = a->value / b->value;
     r.share = a->unit == b->unit && countsThings(a->unit);
-    r.text = (r.share ? g3(100 * r.value) + " %" : g3(r.value) + "x") + " (" + figures::valueText(*a) + " / " +
+    r.text = (r.share ? document::sig3(100 * r.value) + " %" : document::sig3(r.value) + "x") + " (" + figures::valueText(*a) + " / " +
              figures::valueText(*b) + ")";
   }
   if (rule.kind == RuleKind::AtMost) r.passes = r.value <= rule.limit;
@@ -125,7 +121,7 @@ std::string ruleText(const ClaimRow& row, bool shares = false) {
   const Rule& r = row.rule;
   const bool ratio = !row.evidence.empty() && !row.evidence[0].over.empty();
   const std::string what = shares ? "each share" : ratio ? "each ratio" : "each value";
-  const std::string limit = shares ? g3(100 * r.limit) + " %" : g3(r.limit);
+  const std::string limit = shares ? document::sig3(100 * r.limit) + " %" : document::sig3(r.limit);
   switch (r.kind) {
     case RuleKind::PaperColumns: return "every column the paper states, equal";
     case RuleKind::PaperColumnsOrListing: return "ours or the paper's printed listing equal in every column the paper states";

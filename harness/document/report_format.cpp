@@ -19,6 +19,12 @@ std::string fmt(double v, int digits) {
   return buf;
 }
 
+std::string sig3(double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
 std::string fmt(const json& v, int digits) { return v.is_number() ? fmt(v.get<double>(), digits) : "-"; }
 
 std::string fixed(const json& v, int decimals) {

@@ -11,6 +11,9 @@ namespace mb::document {
 // in full, never in exponent notation ("3240", not "3.24e+03").
 std::string fmt(const nlohmann::json& v, int digits = 3);
 std::string fmt(double v, int digits = 3);
+// `v` with three significant digits as printf's %.3g writes it ("3.24e+03", "nan", "inf"): the
+// claims' and the scope ladder's figures, not special-cased like fmt.
+std::string sig3(double v);
 // Fixed decimals ("-" when not a number).
 std::string fixed(const nlohmann::json& v, int decimals);
 // "0.97x" style ratio ("-" when not a number).

@@ -16,12 +16,6 @@ const char* const kStages[] = {"transform to world", "transform to clip", "whole
 const char* const kMeasures[] = {"counted ops",    "SPIR-V probe", "SPIR-V whole shader", "ISA instructions",
                                  "ISA inverse throughput", "VGPRs", "occupancy", "CPU kernel"};
 
-std::string g3(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
-
 double value(const json& figures, const std::string& name) {
   const auto f = figures::figureNamed(figures, name);
   if (!f || !std::isfinite(f->value)) return NAN;
@@ -73,7 +67,7 @@ void judge(LadderCell& c) {
   c.best = *std::min_element(c.ratios.begin(), c.ratios.end());
   const bool all = c.worst <= kAsCheapLimit, none = c.best > kAsCheapLimit;
   c.verdict = all ? "as cheap" : none ? "dearer" : "split";
-  c.text = c.best == c.worst ? g3(c.worst) + "x" : g3(c.best) + ".." + g3(c.worst) + "x";
+  c.text = c.best == c.worst ? sig3(c.worst) + "x" : sig3(c.best) + ".." + sig3(c.worst) + "x";
 }
 
 LadderCell opsCell(const json& figures, const std::string& stage, const std::string& measure, const std::string& baseline,
@@ -169,7 +163,7 @@ void scopeLadderSection(Document& d, const std::vector<LadderCell>& cells) {
   d.heading(2, "Scope ladder: is the motor vertex as cheap as the matrix one?", "scope-ladder");
   d.paragraph("Each cell is motor / baseline (< 1: motor cheaper) with its range over the samples (ISA families, the "
               "CPU kernel's two working sets) and n, judged by the one rule every \"as cheap\" claim uses: as cheap when "
-              "every sample is at most " + g3(kAsCheapLimit) + "x, dearer when none is, split otherwise. The paper's "
+              "every sample is at most " + sig3(kAsCheapLimit) + "x, dearer when none is, split otherwise. The paper's "
               "sentence covers the transform to world against the 4x4 matrix (marked *); to clip adds the camera "
               "(the motor's camera sandwich and projection), and the whole shader adds main() and what only one side "
               "does there. Counted: the op-counting scalar; compiled: SPIR-V and RADV's null-device statistics (not "
