@@ -97,9 +97,8 @@ std::vector<bool> texturesUsed(const tinygltf::Model& m) {
   return used;
 }
 
-}  // namespace
-
-Status convertMaterials(const tinygltf::Model& m, Scene& scene) {
+// Every image as RGBA8; one that does not decode is replaced by 1x1 white, named and counted.
+void convertImages(const tinygltf::Model& m, Scene& scene) {
   for (size_t i = 0; i < m.images.size(); ++i) {
     Image img;
     img.name = m.images[i].name;
@@ -113,6 +112,10 @@ Status convertMaterials(const tinygltf::Model& m, Scene& scene) {
     }
     scene.images.push_back(std::move(img));
   }
+}
+
+// Every sampler (glTF's "no filter given" leaves our default).
+void convertSamplers(const tinygltf::Model& m, Scene& scene) {
   for (const auto& s : m.samplers) {
     Sampler out;
     if (s.magFilter >= 0) out.magFilter = s.magFilter;
@@ -121,88 +124,128 @@ Status convertMaterials(const tinygltf::Model& m, Scene& scene) {
     out.wrapT = s.wrapT;
     scene.samplers.push_back(out);
   }
-  const std::vector<bool> used = texturesUsed(m);
-  for (size_t i = 0; i < m.textures.size(); ++i) {
-    const auto& t = m.textures[i];
-    const std::string who = "texture " + std::to_string(i);
-    int source = t.source;
-    for (const auto& [ext, v] : t.extensions) {
-      const int extSource = v.Has("source") && v.Get("source").IsInt() ? v.Get("source").GetNumberAsInt() : -2;
-      if (ext == "EXT_texture_webp") {  // decoded like PNG/JPEG (image_decode.h); preferred to the fallback
-        if (extSource >= 0 && extSource < int(m.images.size())) {
-          source = extSource;
-          continue;
-        }
-        // No image named (the Khronos validator passes such a texture when no material uses it):
-        // the texture's own source stands, as it does for a viewer without the extension.
-        ++scene.stats.webpTexturesWithoutSource;
-        if (used[i] && source == -1)
-          scene.unsupported.push_back(who + ": EXT_texture_webp names no image (" +
-                                      (v.Has("source") ? "source " + std::to_string(extSource) + " does not exist"
-                                                       : std::string("no source")) +
-                                      ") and the texture has no source: drawn untextured");
-      } else if (ext == "KHR_texture_basisu") {  // KTX2: no decoder in Debian
-        scene.unsupported.push_back(who + ": KHR_texture_basisu (KTX2) not decoded, no BasisU decoder: " +
-                                    (source >= 0 ? "its fallback image " + std::to_string(source) + " is used" : "drawn untextured"));
-        ++scene.stats.basisuTexturesNotDecoded;
-      } else {
-        scene.unsupported.push_back(who + ": extension " + ext + " ignored");
-      }
-    }
-    if (t.sampler < -1 || t.sampler >= int(m.samplers.size()))
-      return Status::fail(who + " refers to sampler " + std::to_string(t.sampler) + ", which does not exist (" +
-                          std::to_string(m.samplers.size()) + " samplers)");
-    if (source < -1 || source >= int(m.images.size())) {
-      const std::string missing = who + " refers to image " + std::to_string(source) + ", which does not exist (" +
-                                  std::to_string(m.images.size()) + " images)";
-      if (used[i]) return Status::fail(missing);
-      // No material samples it: nothing is drawn differently without it (three.js and the
-      // Sample Viewer load such files). Kept as a texture without image.
-      ++scene.stats.unusedTexturesWithoutImage;
-      source = -1;
-    }
-    scene.textures.push_back({source, t.sampler});
-  }
-  for (size_t i = 0; i < m.materials.size(); ++i) {
-    const auto& src = m.materials[i];
-    std::string where = "material " + std::to_string(i);
-    Material mat;
-    mat.name = src.name;
-    const auto& pbr = src.pbrMetallicRoughness;
-    for (size_t k = 0; k < 4 && k < pbr.baseColorFactor.size(); ++k) mat.baseColorFactor[int(k)] = float(pbr.baseColorFactor[k]);
-    for (size_t k = 0; k < 3 && k < src.emissiveFactor.size(); ++k) mat.emissiveFactor[int(k)] = float(src.emissiveFactor[k]);
-    mat.metallicFactor = float(pbr.metallicFactor);
-    mat.roughnessFactor = float(pbr.roughnessFactor);
-    Status s;
-    if (s = textureRef(m, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, 1.0, pbr.baseColorTexture.extensions,
-                       where + " baseColorTexture", &mat.baseColor, scene); !s) return s;
-    if (s = textureRef(m, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, 1.0,
-                       pbr.metallicRoughnessTexture.extensions, where + " metallicRoughnessTexture", &mat.metallicRoughness,
-                       scene); !s) return s;
-    if (s = textureRef(m, src.normalTexture.index, src.normalTexture.texCoord, src.normalTexture.scale,
-                       src.normalTexture.extensions, where + " normalTexture", &mat.normal, scene); !s) return s;
-    if (s = textureRef(m, src.occlusionTexture.index, src.occlusionTexture.texCoord, src.occlusionTexture.strength,
-                       src.occlusionTexture.extensions, where + " occlusionTexture", &mat.occlusion, scene); !s) return s;
-    if (s = textureRef(m, src.emissiveTexture.index, src.emissiveTexture.texCoord, 1.0, src.emissiveTexture.extensions,
-                       where + " emissiveTexture", &mat.emissive, scene); !s) return s;
-    mat.alphaMode = src.alphaMode == "MASK" ? AlphaMode::Mask : src.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
-    mat.alphaCutoff = float(src.alphaCutoff);
-    mat.doubleSided = src.doubleSided;
-    for (const auto& [ext, v] : src.extensions) {
-      if (ext != kEmissiveStrength) {
-        scene.unsupported.push_back(where + ": extension " + ext + " ignored");
+}
+
+// The image texture `i` draws after its extensions: EXT_texture_webp's image when it names
+// one, else the texture's own source (KHR_texture_basisu: its fallback); what is not decoded
+// is named and counted.
+int textureSource(const tinygltf::Model& m, size_t i, bool used, Scene& scene) {
+  const auto& t = m.textures[i];
+  const std::string who = "texture " + std::to_string(i);
+  int source = t.source;
+  for (const auto& [ext, v] : t.extensions) {
+    const int extSource = v.Has("source") && v.Get("source").IsInt() ? v.Get("source").GetNumberAsInt() : -2;
+    if (ext == "EXT_texture_webp") {  // decoded like PNG/JPEG (image_decode.h); preferred to the fallback
+      if (extSource >= 0 && extSource < int(m.images.size())) {
+        source = extSource;
         continue;
       }
-      // The emissive factor's multiplier (default 1); forward.fs draws emissive linear, unclamped
-      // until the final sRGB encoding.
-      const tinygltf::Value& k = v.IsObject() ? v.Get("emissiveStrength") : tinygltf::Value();
-      if (k.IsNumber() && std::isfinite(k.GetNumberAsDouble()) && k.GetNumberAsDouble() >= 0)
-        mat.emissiveFactor *= float(k.GetNumberAsDouble());
-      else if (!v.IsObject() || v.Has("emissiveStrength"))
-        scene.unsupported.push_back(where + ": " + kEmissiveStrength + " emissiveStrength is not a number >= 0 (ignored)");
+      // No image named (the Khronos validator passes such a texture when no material uses it):
+      // the texture's own source stands, as it does for a viewer without the extension.
+      ++scene.stats.webpTexturesWithoutSource;
+      if (used && source == -1)
+        scene.unsupported.push_back(who + ": EXT_texture_webp names no image (" +
+                                    (v.Has("source") ? "source " + std::to_string(extSource) + " does not exist"
+                                                     : std::string("no source")) +
+                                    ") and the texture has no source: drawn untextured");
+    } else if (ext == "KHR_texture_basisu") {  // KTX2: no decoder in Debian
+      scene.unsupported.push_back(who + ": KHR_texture_basisu (KTX2) not decoded, no BasisU decoder: " +
+                                  (source >= 0 ? "its fallback image " + std::to_string(source) + " is used" : "drawn untextured"));
+      ++scene.stats.basisuTexturesNotDecoded;
+    } else {
+      scene.unsupported.push_back(who + ": extension " + ext + " ignored");
     }
-    scene.materials.push_back(std::move(mat));
   }
+  return source;
+}
+
+// Texture `i`: its image and sampler, both checked (a missing image of a texture no material
+// samples is dropped and counted; of one a material samples, an error).
+Status convertTexture(const tinygltf::Model& m, size_t i, bool used, Scene& scene) {
+  const auto& t = m.textures[i];
+  const std::string who = "texture " + std::to_string(i);
+  int source = textureSource(m, i, used, scene);
+  if (t.sampler < -1 || t.sampler >= int(m.samplers.size()))
+    return Status::fail(who + " refers to sampler " + std::to_string(t.sampler) + ", which does not exist (" +
+                        std::to_string(m.samplers.size()) + " samplers)");
+  if (source < -1 || source >= int(m.images.size())) {
+    const std::string missing = who + " refers to image " + std::to_string(source) + ", which does not exist (" +
+                                std::to_string(m.images.size()) + " images)";
+    if (used) return Status::fail(missing);
+    // No material samples it: nothing is drawn differently without it (three.js and the
+    // Sample Viewer load such files). Kept as a texture without image.
+    ++scene.stats.unusedTexturesWithoutImage;
+    source = -1;
+  }
+  scene.textures.push_back({source, t.sampler});
+  return {};
+}
+
+// The material's five textureInfos, each checked against the textures.
+Status materialTextures(const tinygltf::Model& m, const tinygltf::Material& src, const std::string& where, Material& mat,
+                        Scene& scene) {
+  const auto& pbr = src.pbrMetallicRoughness;
+  Status s;
+  if (s = textureRef(m, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, 1.0, pbr.baseColorTexture.extensions,
+                     where + " baseColorTexture", &mat.baseColor, scene); !s) return s;
+  if (s = textureRef(m, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, 1.0,
+                     pbr.metallicRoughnessTexture.extensions, where + " metallicRoughnessTexture", &mat.metallicRoughness,
+                     scene); !s) return s;
+  if (s = textureRef(m, src.normalTexture.index, src.normalTexture.texCoord, src.normalTexture.scale,
+                     src.normalTexture.extensions, where + " normalTexture", &mat.normal, scene); !s) return s;
+  if (s = textureRef(m, src.occlusionTexture.index, src.occlusionTexture.texCoord, src.occlusionTexture.strength,
+                     src.occlusionTexture.extensions, where + " occlusionTexture", &mat.occlusion, scene); !s) return s;
+  return textureRef(m, src.emissiveTexture.index, src.emissiveTexture.texCoord, 1.0, src.emissiveTexture.extensions,
+                    where + " emissiveTexture", &mat.emissive, scene);
+}
+
+// The material's extensions: KHR_materials_emissive_strength applied, the others named.
+void materialExtensions(const tinygltf::Material& src, const std::string& where, Material& mat, Scene& scene) {
+  for (const auto& [ext, v] : src.extensions) {
+    if (ext != kEmissiveStrength) {
+      scene.unsupported.push_back(where + ": extension " + ext + " ignored");
+      continue;
+    }
+    // The emissive factor's multiplier (default 1); forward.fs draws emissive linear, unclamped
+    // until the final sRGB encoding.
+    const tinygltf::Value& k = v.IsObject() ? v.Get("emissiveStrength") : tinygltf::Value();
+    if (k.IsNumber() && std::isfinite(k.GetNumberAsDouble()) && k.GetNumberAsDouble() >= 0)
+      mat.emissiveFactor *= float(k.GetNumberAsDouble());
+    else if (!v.IsObject() || v.Has("emissiveStrength"))
+      scene.unsupported.push_back(where + ": " + kEmissiveStrength + " emissiveStrength is not a number >= 0 (ignored)");
+  }
+}
+
+// Material `i`: its factors, textures, alpha mode and extensions.
+Status convertMaterial(const tinygltf::Model& m, size_t i, Scene& scene) {
+  const auto& src = m.materials[i];
+  std::string where = "material " + std::to_string(i);
+  Material mat;
+  mat.name = src.name;
+  const auto& pbr = src.pbrMetallicRoughness;
+  for (size_t k = 0; k < 4 && k < pbr.baseColorFactor.size(); ++k) mat.baseColorFactor[int(k)] = float(pbr.baseColorFactor[k]);
+  for (size_t k = 0; k < 3 && k < src.emissiveFactor.size(); ++k) mat.emissiveFactor[int(k)] = float(src.emissiveFactor[k]);
+  mat.metallicFactor = float(pbr.metallicFactor);
+  mat.roughnessFactor = float(pbr.roughnessFactor);
+  if (Status s = materialTextures(m, src, where, mat, scene); !s) return s;
+  mat.alphaMode = src.alphaMode == "MASK" ? AlphaMode::Mask : src.alphaMode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
+  mat.alphaCutoff = float(src.alphaCutoff);
+  mat.doubleSided = src.doubleSided;
+  materialExtensions(src, where, mat, scene);
+  scene.materials.push_back(std::move(mat));
+  return {};
+}
+
+}  // namespace
+
+Status convertMaterials(const tinygltf::Model& m, Scene& scene) {
+  convertImages(m, scene);
+  convertSamplers(m, scene);
+  const std::vector<bool> used = texturesUsed(m);
+  for (size_t i = 0; i < m.textures.size(); ++i)
+    if (Status s = convertTexture(m, i, used[i], scene); !s) return s;
+  for (size_t i = 0; i < m.materials.size(); ++i)
+    if (Status s = convertMaterial(m, i, scene); !s) return s;
   return {};
 }
 
