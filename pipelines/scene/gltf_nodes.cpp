@@ -112,18 +112,22 @@ void addSceneRoots(const std::vector<int>& listed, Scene& scene) {
     if (scene.nodes[size_t(r)].parent == -1) scene.roots.push_back(r);
 }
 
-}  // namespace
-
-Status convertNodes(const tinygltf::Model& m, Scene& scene) {
-  size_t n = m.nodes.size();
-  scene.nodes.resize(n);
-  for (size_t i = 0; i < n; ++i) {
+// Every node: its transform and indices (convertNode), its instances, its extensions named.
+Status convertAllNodes(const tinygltf::Model& m, Scene& scene) {
+  scene.nodes.resize(m.nodes.size());
+  for (size_t i = 0; i < m.nodes.size(); ++i) {
     if (Status s = convertNode(m, i, &scene.nodes[i]); !s) return s;
     if (Status s = convertInstancing(m, i, scene); !s) return s;
     for (const auto& [ext, v] : m.nodes[i].extensions)
       if (ext != kInstancingExtension)
         scene.unsupported.push_back("node " + std::to_string(i) + ": extension " + ext + " ignored");
   }
+  return {};
+}
+
+// Parent and children links from the nodes' children lists: every child exists and has one parent.
+Status linkChildren(const tinygltf::Model& m, Scene& scene) {
+  const size_t n = m.nodes.size();
   for (size_t i = 0; i < n; ++i) {
     for (int c : m.nodes[i].children) {
       if (!inRange(c, n)) return Status::fail("node " + std::to_string(i) + ": child " + std::to_string(c) + " does not exist");
@@ -133,8 +137,13 @@ Status convertNodes(const tinygltf::Model& m, Scene& scene) {
       scene.nodes[i].children.push_back(c);
     }
   }
-  // Cycle check, linear in the node count: walk up from each node until a node already known
-  // to reach a root (2) or one on the current walk (1: a cycle).
+  return {};
+}
+
+// Cycle check, linear in the node count: walk up from each node until a node already known
+// to reach a root (2) or one on the current walk (1: a cycle).
+Status checkNoCycle(const Scene& scene) {
+  const size_t n = scene.nodes.size();
   std::vector<uint8_t> state(n, 0);
   std::vector<int> walk;
   for (size_t i = 0; i < n; ++i) {
@@ -149,59 +158,71 @@ Status convertNodes(const tinygltf::Model& m, Scene& scene) {
       return Status::fail("node hierarchy has a cycle through node " + std::to_string(p));
     for (int w : walk) state[size_t(w)] = 2;
   }
+  return {};
+}
 
-  for (size_t s = 0; s < m.skins.size(); ++s) {
-    const auto& src = m.skins[s];
-    std::string where = "skin " + std::to_string(s);
-    Skin skin;
-    skin.name = src.name;
-    skin.skeleton = src.skeleton;
-    if (src.skeleton != -1 && !inRange(src.skeleton, n)) return Status::fail(where + ": skeleton node does not exist");
-    if (src.joints.empty()) return Status::fail(where + ": skin has no joints");
-    for (int j : src.joints) {
-      if (!inRange(j, n)) return Status::fail(where + ": joint node " + std::to_string(j) + " does not exist");
-      skin.joints.push_back(j);
-    }
-    skin.inverseBind.assign(skin.joints.size(), glm::mat4(1.0f));
-    if (src.inverseBindMatrices >= 0) {
-      auto ibm = readAccessorFloat(m, src.inverseBindMatrices, "inverseBindMatrices");
-      if (!ibm) return Status::fail(ibm.error());
-      if (ibm->components != 16 || ibm->count < skin.joints.size())
-        return Status::fail(where + ": inverseBindMatrices must be MAT4 with one per joint");
-      for (size_t j = 0; j < skin.joints.size(); ++j)
-        for (int k = 0; k < 16; ++k) {
-          float v = ibm->values[16 * j + size_t(k)];
-          if (!std::isfinite(v)) return Status::fail(where + ": inverseBindMatrices has a non-finite value");
-          skin.inverseBind[j][k / 4][k % 4] = v;
-        }
-    }
-    scene.skins.push_back(std::move(skin));
+// Skin `s`: its skeleton and joints (existing nodes) and one finite inverse bind per joint
+// (identity when the file gives none).
+Status convertSkin(const tinygltf::Model& m, size_t s, Scene& scene) {
+  const size_t n = m.nodes.size();
+  const auto& src = m.skins[s];
+  std::string where = "skin " + std::to_string(s);
+  Skin skin;
+  skin.name = src.name;
+  skin.skeleton = src.skeleton;
+  if (src.skeleton != -1 && !inRange(src.skeleton, n)) return Status::fail(where + ": skeleton node does not exist");
+  if (src.joints.empty()) return Status::fail(where + ": skin has no joints");
+  for (int j : src.joints) {
+    if (!inRange(j, n)) return Status::fail(where + ": joint node " + std::to_string(j) + " does not exist");
+    skin.joints.push_back(j);
   }
-
-  for (size_t ci = 0; ci < m.cameras.size(); ++ci) {
-    const auto& c = m.cameras[ci];
-    const auto& pc = c.perspective;
-    const auto& oc = c.orthographic;
-    if (!floatRange({pc.yfov, pc.aspectRatio, pc.znear, pc.zfar, oc.xmag, oc.ymag, oc.znear, oc.zfar}))
-      return Status::fail("camera " + std::to_string(ci) + ": parameter is not finite (or out of float range)");
-    Camera cam;
-    cam.name = c.name;
-    cam.perspective = c.type != "orthographic";
-    if (cam.perspective) {
-      cam.yfov = float(c.perspective.yfov);
-      cam.aspect = float(c.perspective.aspectRatio);
-      cam.znear = float(c.perspective.znear);
-      cam.zfar = float(c.perspective.zfar);
-    } else {
-      cam.xmag = float(c.orthographic.xmag);
-      cam.ymag = float(c.orthographic.ymag);
-      cam.znear = float(c.orthographic.znear);
-      cam.zfar = float(c.orthographic.zfar);
-    }
-    scene.stats.camerasRepaired += repairCamera(cam);
-    scene.cameras.push_back(cam);
+  skin.inverseBind.assign(skin.joints.size(), glm::mat4(1.0f));
+  if (src.inverseBindMatrices >= 0) {
+    auto ibm = readAccessorFloat(m, src.inverseBindMatrices, "inverseBindMatrices");
+    if (!ibm) return Status::fail(ibm.error());
+    if (ibm->components != 16 || ibm->count < skin.joints.size())
+      return Status::fail(where + ": inverseBindMatrices must be MAT4 with one per joint");
+    for (size_t j = 0; j < skin.joints.size(); ++j)
+      for (int k = 0; k < 16; ++k) {
+        float v = ibm->values[16 * j + size_t(k)];
+        if (!std::isfinite(v)) return Status::fail(where + ": inverseBindMatrices has a non-finite value");
+        skin.inverseBind[j][k / 4][k % 4] = v;
+      }
   }
+  scene.skins.push_back(std::move(skin));
+  return {};
+}
 
+// Camera `ci`: finite parameters, then the glTF constraints made to hold (counted).
+Status convertCamera(const tinygltf::Model& m, size_t ci, Scene& scene) {
+  const auto& c = m.cameras[ci];
+  const auto& pc = c.perspective;
+  const auto& oc = c.orthographic;
+  if (!floatRange({pc.yfov, pc.aspectRatio, pc.znear, pc.zfar, oc.xmag, oc.ymag, oc.znear, oc.zfar}))
+    return Status::fail("camera " + std::to_string(ci) + ": parameter is not finite (or out of float range)");
+  Camera cam;
+  cam.name = c.name;
+  cam.perspective = c.type != "orthographic";
+  if (cam.perspective) {
+    cam.yfov = float(c.perspective.yfov);
+    cam.aspect = float(c.perspective.aspectRatio);
+    cam.znear = float(c.perspective.znear);
+    cam.zfar = float(c.perspective.zfar);
+  } else {
+    cam.xmag = float(c.orthographic.xmag);
+    cam.ymag = float(c.orthographic.ymag);
+    cam.znear = float(c.orthographic.znear);
+    cam.zfar = float(c.orthographic.zfar);
+  }
+  scene.stats.camerasRepaired += repairCamera(cam);
+  scene.cameras.push_back(cam);
+  return {};
+}
+
+// The roots drawn: the default scene's nodes (addSceneRoots), or without a scene every
+// parentless node.
+Status chooseRoots(const tinygltf::Model& m, Scene& scene) {
+  const size_t n = scene.nodes.size();
   int which = m.defaultScene >= 0 ? m.defaultScene : (m.scenes.empty() ? -1 : 0);
   if (which >= int(m.scenes.size())) return Status::fail("default scene " + std::to_string(which) + " does not exist");
   if (which < 0) {  // no scene: every parentless node is a root
@@ -214,6 +235,19 @@ Status convertNodes(const tinygltf::Model& m, Scene& scene) {
     if (!inRange(r, n)) return Status::fail("scene " + std::to_string(which) + ": node " + std::to_string(r) + " does not exist");
   addSceneRoots(listed, scene);
   return {};
+}
+
+}  // namespace
+
+Status convertNodes(const tinygltf::Model& m, Scene& scene) {
+  if (Status s = convertAllNodes(m, scene); !s) return s;
+  if (Status s = linkChildren(m, scene); !s) return s;
+  if (Status s = checkNoCycle(scene); !s) return s;
+  for (size_t s = 0; s < m.skins.size(); ++s)
+    if (Status ok = convertSkin(m, s, scene); !ok) return ok;
+  for (size_t ci = 0; ci < m.cameras.size(); ++ci)
+    if (Status ok = convertCamera(m, ci, scene); !ok) return ok;
+  return chooseRoots(m, scene);
 }
 
 }  // namespace mb
