@@ -9,7 +9,6 @@
 namespace mb::claims {
 namespace {
 
-const char* const kFamilies[] = {"tahiti", "polaris10", "vega10", "navi10", "navi21-nonggc", "navi21-ngg", "gfx1100"};
 
 ClaimRow row(std::string id, std::string section, std::string statement, std::string origin, Scope scope,
              std::string paper, std::vector<Evidence> evidence, Rule rule, std::string note = "") {
@@ -18,20 +17,16 @@ ClaimRow row(std::string id, std::string section, std::string statement, std::st
           .evidence = std::move(evidence), .rule = rule, .note = std::move(note)};
 }
 
-Evidence pair(const std::string& label, const std::string& prefix, const std::string& a, const std::string& b) {
-  return {label, prefix + a, prefix + b};
-}
-
 std::vector<ClaimRow> compact() {
   const char* s = "Compact vertices";
   const Scope vertex{"vertex data", "matrix_c, the smallest matrix vertex", "normal-mapped built-in primitives"};
   std::vector<Evidence> isa;
-  for (const char* f : kFamilies)
-    isa.push_back(pair(std::string("ISA instructions ") + f, std::string("report:isa.instructions.rigid.") + f + ".", "motor_c", "matrix_c"));
+  for (const char* f : kIsaFamilies)
+    isa.push_back(ratioOf(std::string("ISA instructions ") + f, std::string("report:isa.instructions.rigid.") + f + ".", "motor_c", "matrix_c"));
   return {
       row("compact_bytes_per_vertex", s, "the smallest motor vertex against the smallest matrix vertex", "compact", vertex,
           "- (not claimed by the paper)",
-          {pair("motor_c / matrix_c bytes", "report:kind.uploaded_bytes_per_vertex.normal_mapped.", "motor_c", "matrix_c")},
+          {ratioOf("motor_c / matrix_c bytes", "report:kind.uploaded_bytes_per_vertex.normal_mapped.", "motor_c", "matrix_c")},
           {RuleKind::Baseline}),
       row("compact_image_cost", s, "the compact formats' own image cost", "compact",
           {"frame", "matrix (each format against the frames it should match)", "built-in scenes"},
@@ -41,7 +36,7 @@ std::vector<ClaimRow> compact() {
           {RuleKind::Baseline}),
       row("compact_ops", s, "decoding and transforming the compact vertex", "compact",
           {"transform to clip", "matrix_c", "built-in scenes"}, "- (not claimed by the paper)",
-          {pair("rigid to clip, counted", "report:ops_per_vertex.to_clip.counted.", "motor_c", "matrix_c"),
+          {ratioOf("rigid to clip, counted", "report:ops_per_vertex.to_clip.counted.", "motor_c", "matrix_c"),
            {"frame decode, counted", "ops:vertex.compactRotor.total", "ops:vertex.compactMatrixFrame.total"}},
           {RuleKind::Baseline}),
       row("compact_isa", s, "the compact vertex shaders compiled", "compact",
@@ -49,7 +44,7 @@ std::vector<ClaimRow> compact() {
       row("fragment_rotor", s, "interpolating the tangent rotor and shading with it costs fewer ops", "paper",
           {"fragment stage", "motor_c (the same 16-byte vertex, TBN in the fragment)", "normal-mapped built-in primitives"},
           "fewer ops per vertex, one varying less, no orthogonalisation per fragment (not counted)",
-          {pair("vertex to clip, counted", "report:ops_per_vertex.to_clip.counted.", "motor_cf", "motor_c"),
+          {ratioOf("vertex to clip, counted", "report:ops_per_vertex.to_clip.counted.", "motor_cf", "motor_c"),
            {"normal-mapped shading normal, counted", "ops:vertex.rotorShadingNormal.total", "ops:vertex.tbnShadingNormal.total"}},
           {RuleKind::AtMost, 1.0},
           "without a normal map the fragment pays more (ops:vertex.rotorSurfaceNormal vs tbnSurfaceNormal), and the "
@@ -62,10 +57,10 @@ std::vector<ClaimRow> morph() {
   const Scope scope{"vertex data", "matrix", "the morph files of morph.json (built-in morph_torus and real files)"};
   return {
       row("morph_vertex_bytes", s, "the 9-float motor vertex survives morph targets", "morph", scope, "- (not claimed by the paper)",
-          {pair("motor / matrix bytes", "morph:morph.bytes_per_vertex.", "motor_frame", "matrix")}, {RuleKind::Baseline}),
+          {ratioOf("motor / matrix bytes", "morph:morph.bytes_per_vertex.", "motor_frame", "matrix")}, {RuleKind::Baseline}),
       row("morph_target_bytes", s, "bytes per vertex of one morph target", "morph", scope, "- (not claimed by the paper)",
-          {pair("rotor / frame method", "morph:morph.bytes_per_target_vertex.", "motor_rotor", "motor_frame"),
-           pair("frame method / matrix", "morph:morph.bytes_per_target_vertex.", "motor_frame", "matrix")},
+          {ratioOf("rotor / frame method", "morph:morph.bytes_per_target_vertex.", "motor_rotor", "motor_frame"),
+           ratioOf("frame method / matrix", "morph:morph.bytes_per_target_vertex.", "motor_frame", "matrix")},
           {RuleKind::Baseline}),
       row("morph_frame_image", s, "method (a), the frame re-formed, draws rigid morph frames as matrix does", "morph",
           {"frame", "matrix", "rigid morph frames of morph.json"}, "- (not claimed by the paper)",
@@ -83,13 +78,13 @@ std::vector<ClaimRow> curved() {
   return {
       row("curved_floats_per_instance", s, "a curved-space instance takes a motor (8 floats) instead of a 4x4 matrix", "curved",
           {"vertex data", "the 4x4 matrix of the same space", "s3_tiling and h3_tiling"}, "16 vs 8",
-          {pair("S3 motor / matrix", "report:curved.floats_per_instance.s3_tiling.", "s3_motor", "s3_matrix"),
-           pair("H3 motor / matrix", "report:curved.floats_per_instance.h3_tiling.", "h3_motor", "h3_matrix")},
+          {ratioOf("S3 motor / matrix", "report:curved.floats_per_instance.s3_tiling.", "s3_motor", "s3_matrix"),
+           ratioOf("H3 motor / matrix", "report:curved.floats_per_instance.h3_tiling.", "h3_motor", "h3_matrix")},
           {RuleKind::AtMost, 0.5}),
       row("curved_ops_per_vertex", s, "the curved vertex, counted", "curved",
           {"transform to world", "the 4x4 matrix of the same space", "s3_tiling and h3_tiling"}, "-",
-          {pair("S3 motor / matrix", "report:ops_per_vertex.rigid.counted.", "s3_motor", "s3_matrix"),
-           pair("H3 motor / matrix", "report:ops_per_vertex.rigid.counted.", "h3_motor", "h3_matrix")},
+          {ratioOf("S3 motor / matrix", "report:ops_per_vertex.rigid.counted.", "s3_motor", "s3_matrix"),
+           ratioOf("H3 motor / matrix", "report:ops_per_vertex.rigid.counted.", "h3_motor", "h3_matrix")},
           {RuleKind::Baseline}),
       row("curved_frame_time", s, "the curved scenes' frame time", "curved",
           {"frame", "the 4x4 matrix of the same space", "s3_tiling and h3_tiling, on the report's device"}, "-",
@@ -100,8 +95,8 @@ std::vector<ClaimRow> curved() {
           {RuleKind::Baseline}, "a CPU rasterizer's frame time says nothing about a GPU"),
       row("curved_update", s, "the curved scenes' CPU update (sampling, hierarchy, instances)", "curved",
           {"CPU update", "the 4x4 matrix of the same space", "s3_tiling and h3_tiling"}, "-",
-          {pair("S3 motor / matrix", "report:update.s3_tiling.", "s3_motor", "s3_matrix"),
-           pair("H3 motor / matrix", "report:update.h3_tiling.", "h3_motor", "h3_matrix")},
+          {ratioOf("S3 motor / matrix", "report:update.s3_tiling.", "s3_motor", "s3_matrix"),
+           ratioOf("H3 motor / matrix", "report:update.h3_tiling.", "h3_motor", "h3_matrix")},
           {RuleKind::Baseline}),
   };
 }

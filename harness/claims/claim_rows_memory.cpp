@@ -11,8 +11,7 @@ const char* kUploads = "buffers uploaded (PipelineStats)";
 
 Evidence bytesOf(const std::string& label, const std::string& source, const std::string& kind, const std::string& over,
                  const std::string& motor = "motor") {
-  const std::string base = source + ":kind.uploaded_bytes_per_vertex." + kind + ".";
-  return {label, base + motor, base + over};
+  return ratioOf(label, source + ":kind.uploaded_bytes_per_vertex." + kind + ".", motor, over);
 }
 
 ClaimRow row(std::string id, std::string statement, std::string origin, Scope scope, std::string paper,

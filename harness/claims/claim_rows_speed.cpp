@@ -11,25 +11,17 @@ namespace {
 
 using document::kAsCheapLimit;
 
-const char* const kFamilies[] = {"tahiti", "polaris10", "vega10", "navi10", "navi21-nonggc", "navi21-ngg", "gfx1100"};
-
-// motor / `base` of `figure` with "{p}" for the pipeline.
-Evidence ratioOf(const std::string& label, const std::string& figure, const std::string& base,
-                 const std::string& motor = "motor") {
-  auto with = [&](const std::string& p) {
-    std::string s = "report:" + figure;
-    s.replace(s.find("{p}"), 3, p);
-    return s;
-  };
-  return {label, with(motor), with(base)};
+// motor / `base` of the report figure `prefix` + pipeline.
+Evidence vs(const std::string& label, const std::string& prefix, const std::string& base) {
+  return ratioOf(label, "report:" + prefix, "motor", base);
 }
 
 // One evidence per ISA family of `measure` ("instructions", "inverse_throughput") of `variant`.
 std::vector<Evidence> perFamily(const std::string& label, const std::string& measure, const std::string& variant,
                                 const std::string& base, const std::string& motor = "motor") {
   std::vector<Evidence> out;
-  for (const char* f : kFamilies)
-    out.push_back(ratioOf(label + " " + f, "isa." + measure + "." + variant + "." + f + ".{p}", base, motor));
+  for (const char* f : kIsaFamilies)
+    out.push_back(ratioOf(label + " " + f, "report:isa." + measure + "." + variant + "." + f + ".", motor, base));
   return out;
 }
 
@@ -50,8 +42,8 @@ ClaimRow asFastRow() {
           .quote = "\"PGA motors can be just as fast as 4x4 matrices to transform your mesh vertices\" (Tangent frames)",
           .scope = {"transform to world", "the paper's 4x4", kBuiltIn},
           .paper = "as fast (47/38 vs 48/36 mul/add per vertex)",
-          .evidence = {ratioOf("counted ops", "ops_per_vertex.rigid.counted.{p}", "matrix"),
-                       ratioOf("SPIR-V probe", "ops_per_vertex.rigid.spirv_probe.{p}", "matrix"),
+          .evidence = {vs("counted ops", "ops_per_vertex.rigid.counted.", "matrix"),
+                       vs("SPIR-V probe", "ops_per_vertex.rigid.spirv_probe.", "matrix"),
                        {"CPU kernel vertex_frame in cache (motor vs 4x4 shader source)",
                         "report:kernel_time.vertex_frame/in_cache.shim_motor_over_shim_matrix", ""},
                        {"CPU kernel vertex_frame out of cache (motor vs 4x4 shader source)",
@@ -69,8 +61,8 @@ ClaimRow noCostRow() {
           .quote = "\"at virtually no cost on the vertex shader\" (Conclusion)",
           .scope = {"whole vertex shader", "the paper's 4x4", kBuiltIn},
           .paper = "virtually no cost",
-          .evidence = joined({{ratioOf("SPIR-V whole shader", "ops_per_vertex.rigid.spirv_whole_shader.{p}", "matrix"),
-                               ratioOf("counted ops to clip", "ops_per_vertex.to_clip.counted.{p}", "matrix")},
+          .evidence = joined({{vs("SPIR-V whole shader", "ops_per_vertex.rigid.spirv_whole_shader.", "matrix"),
+                               vs("counted ops to clip", "ops_per_vertex.to_clip.counted.", "matrix")},
                               perFamily("ISA instructions", "instructions", "rigid", "matrix"),
                               perFamily("ACO inverse throughput", "inverse_throughput", "rigid", "matrix")}),
           .rule = kAsCheap,
@@ -85,8 +77,8 @@ ClaimRow skinnedRow() {
           .origin = "beyond the paper",
           .scope = {"transform to world", "the paper's 4x4", kBuiltIn},
           .paper = "(not claimed: the sentence is about the rigid vertex)",
-          .evidence = joined({{ratioOf("counted ops", "ops_per_vertex.skinned.counted.{p}", "matrix"),
-                               ratioOf("SPIR-V probe", "ops_per_vertex.skinned.spirv_probe.{p}", "matrix"),
+          .evidence = joined({{vs("counted ops", "ops_per_vertex.skinned.counted.", "matrix"),
+                               vs("SPIR-V probe", "ops_per_vertex.skinned.spirv_probe.", "matrix"),
                                {"CPU kernel skinned_vertex in cache (motor vs 4x4 shader source)",
                                 "report:kernel_time.skinned_vertex/in_cache.shim_motor_over_shim_matrix", ""}},
                               perFamily("ISA instructions (whole shader)", "instructions", "skinned", "matrix")}),
@@ -112,14 +104,14 @@ std::vector<ClaimRow> strongestRows() {
   return {
       frame,
       strongestRow("ops_rigid_vs_strongest", "rigid vertex to world, counted", world,
-                   {ratioOf("counted ops", "ops_per_vertex.rigid.counted.{p}", "affine"),
-                    ratioOf("SPIR-V probe", "ops_per_vertex.rigid.spirv_probe.{p}", "affine")}),
+                   {vs("counted ops", "ops_per_vertex.rigid.counted.", "affine"),
+                    vs("SPIR-V probe", "ops_per_vertex.rigid.spirv_probe.", "affine")}),
       strongestRow("ops_clip_vs_strongest", "rigid vertex to clip, counted", clip,
-                   {ratioOf("counted ops", "ops_per_vertex.to_clip.counted.{p}", "affine"),
-                    ratioOf("SPIR-V probe", "ops_per_vertex.to_clip.spirv_probe.{p}", "affine")}),
+                   {vs("counted ops", "ops_per_vertex.to_clip.counted.", "affine"),
+                    vs("SPIR-V probe", "ops_per_vertex.to_clip.spirv_probe.", "affine")}),
       strongestRow("ops_skinned_vs_strongest", "skinned vertex, counted", world,
-                   {ratioOf("counted ops", "ops_per_vertex.skinned.counted.{p}", "affine"),
-                    ratioOf("SPIR-V probe", "ops_per_vertex.skinned.spirv_probe.{p}", "affine")}),
+                   {vs("counted ops", "ops_per_vertex.skinned.counted.", "affine"),
+                    vs("SPIR-V probe", "ops_per_vertex.skinned.spirv_probe.", "affine")}),
       strongestRow("ops_clip_vs_strongest_isa", "whole rigid vertex shader, compiled", whole,
                    joined({perFamily("ISA instructions", "instructions", "rigid", "affine"),
                            perFamily("ACO inverse throughput", "inverse_throughput", "rigid", "affine")})),
@@ -151,9 +143,9 @@ std::vector<ClaimRow> timedRows() {
   vb.rule.gpuTimed = true;
   vb.note = ft.note;
   ClaimRow cpu = strongestRow("cpu_update_vs_strongest", "Pipeline::update on crowd, the one built-in scene with real update work", update,
-                              {ratioOf("motor / affine", "update.crowd.{p}", "affine"),
-                               ratioOf("motor / qtangent", "update.crowd.{p}", "qtangent"),
-                               ratioOf("motor / matrix", "update.crowd.{p}", "matrix")});
+                              {vs("motor / affine", "update.crowd.", "affine"),
+                               vs("motor / qtangent", "update.crowd.", "qtangent"),
+                               vs("motor / matrix", "update.crowd.", "matrix")});
   cpu.note = "the other built-in scenes update in under a microsecond (one to few nodes): timer-floor readings, not evidence";
   return {ft, vb, cpu};
 }
@@ -170,7 +162,7 @@ ClaimRow sceneGraphRow() {
           .evidence = {{"hierarchy kernel, deep", "report:kernel_time.hierarchy.shim_motor_over_shim_matrix", ""},
                        {"hierarchy kernel, humanoid skeleton", "report:kernel_time.hierarchy_skeleton.shim_motor_over_shim_matrix", ""},
                        {"hierarchy kernel, wide", "report:kernel_time.hierarchy_wide.shim_motor_over_shim_matrix", ""},
-                       ratioOf("hierarchy phase on crowd", "update.hierarchy.crowd.{p}", "matrix")},
+                       vs("hierarchy phase on crowd", "update.hierarchy.crowd.", "matrix")},
           .rule = {RuleKind::AtMost, document::kCheaperLimit},
           .note = "a gain beyond the 10 % timing tolerance (motor / matrix <= 0.9); scenes of one to few nodes are "
                   "left out: their hierarchy phase reads the timer floor"};

@@ -70,6 +70,16 @@ struct ClaimRow {
   std::string note;  // a caveat printed with the verdict ("" : none)
 };
 
+// The ISA families the isa room compiles for (its figures isa.<measure>.<variant>.<family>.<p>).
+inline constexpr const char* kIsaFamilies[] = {"tahiti", "polaris10", "vega10", "navi10", "navi21-nonggc", "navi21-ngg",
+                                               "gfx1100"};
+
+// `a` / `b` of one figure family: "<prefix><a>" over "<prefix><b>", e.g.
+// ratioOf("counted ops", "report:ops_per_vertex.rigid.counted.", "motor", "matrix").
+inline Evidence ratioOf(std::string label, const std::string& prefix, const std::string& a, const std::string& b) {
+  return {std::move(label), prefix + a, prefix + b};
+}
+
 // The declared table in print order, and its parts by family (claim_rows_*.cpp).
 std::vector<ClaimRow> claimTable();
 std::vector<ClaimRow> opRows();        // arithmetic of the kernels, baselines, composition

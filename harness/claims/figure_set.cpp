@@ -33,6 +33,7 @@ FigureSet loadFigureSet(const std::map<std::string, std::string>& layout) {
     } else {
       set.figures[source] = j["figures"];
     }
+    if (source == "report" && j.is_object()) set.report = j;
   }
   return set;
 }

@@ -20,6 +20,7 @@ namespace mb::claims {
 
 struct FigureSet {
   std::map<std::string, nlohmann::json> figures;  // source -> its {name: figure}
+  nlohmann::json report;                          // report.json whole (the answer block and ladder read it)
   std::map<std::string, std::string> files;       // source -> the file it was read from
   // source -> why it is absent (not given, unreadable, no "figures")
   std::map<std::string, std::string> missing;

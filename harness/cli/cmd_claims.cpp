@@ -5,8 +5,6 @@
 // rows that read it "not measurable here", with the command that writes it.
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "harness/claims/claim_table.h"
 #include "harness/claims/claims_layout.h"
@@ -43,13 +41,6 @@ const SourceOption kSources[] = {
     {"corpus_accuracy", "corpus-accuracy", "motorbench accuracy --skinned-files ../shared/corpus --json DIR/corpus/accuracy.json"},
 };
 
-json readJson(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) return json();
-  const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  return json::parse(text, nullptr, false);
-}
-
 int runClaims(const std::vector<std::string>& argv) {
   const Args args(argv, {{"o", "output", "json", "results", "report", "ops", "morph", "accuracy", "scene-graphs",
                           "corpus-report", "corpus-accuracy"},
@@ -64,11 +55,11 @@ int runClaims(const std::vector<std::string>& argv) {
   std::map<std::string, std::string> layout = claims::resultsLayout(args.get("results", "results"));
   for (const SourceOption& s : kSources)
     if (auto path = args.get(s.option)) layout[s.source] = *path;
-  const json report = readJson(layout["report"]);
+  claims::FigureSet figures = claims::loadFigureSet(layout);
+  const json& report = figures.report;
   if (!report.is_object())
     return fail(layout["report"] + ": no report.json (claims reads a run's figures; make them with " +
                 std::string(kSources[0].makes) + ", or all of them with scripts/reproduce.sh)");
-  claims::FigureSet figures = claims::loadFigureSet(layout);
   json sources = json::object();
   for (const SourceOption& s : kSources) {
     const auto miss = figures.missing.find(s.source);
