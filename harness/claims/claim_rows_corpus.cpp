@@ -33,10 +33,10 @@ void animatedScaleRow(std::vector<ClaimRow>& rows) {
                "scale channel; models with constant scale channels only (graphs:scale.constant_channels_only.models) "
                "set a scale and animate nothing. The paper sampled almost 400 random files; this corpus "
                "(graphs:scale.files real files) is scraped from GitHub, each model counted once by content hash. "
-               "Near-duplicates survive that hash: among the 18 changing models of ../shared/corpus-graph are "
+               "Near-duplicates survive that hash: among the changing models of ../shared/corpus-graph are "
                "LittlestTokyo twice (0088, 0190), mannequiny twice (0490, 0562), three quaternius Enemy_* gun / "
-               "no-gun pairs, two kaykit Med_* on one rig, and InterpolationTest, a test asset filed as a sample: "
-               "as families about 11 of 835 (1.3 %), above 0.5 % either way. Per source kind: "
+               "no-gun pairs, two kaykit Med_* on one rig, and InterpolationTest, a test asset filed as a sample "
+               "(counted once per family the share would be smaller; this count does not merge them). Per source kind: "
                "graphs:scale.kind.<asset|sample|test>.animated.models"});
 }
 
