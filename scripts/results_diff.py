@@ -33,8 +33,13 @@ TIMING_NAMES = {"machine", "context", "date", "host_name", "cpu", "cpuOverReal",
 # Keys with a timing word that are not timings: animation times (of a frame, of a scene's
 # frames, where a skin is thinnest) and counts of keyframe times.
 NOT_TIMING = {"time", "times", "lbsTime", "motorTime", "timeWidth", "timeHeight"}
-# Figures (report.json "figures", keyed by name) that are timings.
-TIMING_FIGURE = re.compile(r"(^|\.)(frame_time|kernel_time)")
+# Figures (report.json "figures", keyed by name) that are timings: frame and kernel times, and
+# Pipeline::update's times per scene (update.<scene>.<pipeline>, update.hierarchy....).
+TIMING_FIGURE = re.compile(r"(^|\.)(frame_time|kernel_time)|^update\.")
+# What a claims evidence entry or a scope-ladder cell read from its figures: left out where those
+# figures are timings (the references themselves are still compared).
+READ_FROM_FIGURES = ("read", "passes", "leftOut", "figures", "ratios", "baselineSides", "worst", "best", "verdict",
+                     "text", "n")
 # A claim or answer line judged on a timing: its sentence, verdict and measured values move with
 # the machine's load (a timing marked disturbed leaves the verdict and drops its kind); its id,
 # origin, quote and method are still compared, and its non-timing inputs are compared where they
@@ -58,9 +63,25 @@ def judged_on_time(value):
         ("measuredValue" in value and (strip(value["measuredValue"]) != value["measuredValue"] or
                                        value.get("section") == "Speed" or
                                        bool(words(str(value.get("id", ""))) & {"time", "update"})))
+        # a claim with evidence read from a timing figure
+        or any(isinstance(e, dict) and (is_timing_reference(e.get("value")) or is_timing_reference(e.get("over")))
+               for e in value.get("evidence", []) or [] if isinstance(value.get("evidence"), list))
         # an answer line quoting a timing figure
         or any(isinstance(f, str) and TIMING_FIGURE.search(f) for f in value.get("figures", []) or []
                if isinstance(value.get("figures"), list)))
+
+
+def is_timing_reference(ref):
+    """Whether "<source>:<figure name>" (a claims evidence's reference) names a timing figure."""
+    return isinstance(ref, str) and ":" in ref and bool(TIMING_FIGURE.search(ref.split(":", 1)[1]))
+
+
+def reads_timing(value):
+    """A claims evidence entry whose figures are timings, or a scope-ladder cell of a measured
+    (timed) kind."""
+    if "label" in value and "value" in value and "read" in value:
+        return is_timing_reference(value["value"]) or is_timing_reference(value.get("over"))
+    return "samples" in value and value.get("kind") == "measured"
 
 
 def timed_claims(value, found):
@@ -87,6 +108,8 @@ def strip(value, key="", timed=frozenset(), under_timed=False):
     if not isinstance(value, dict) or key == "glossary":  # the glossary's meanings are text
         return value
     under_timed = under_timed or judged_on_time(value) or value.get("id") in timed
+    if reads_timing(value):
+        value = {k: v for k, v in value.items() if k not in READ_FROM_FIGURES}
     out = {}
     for k, v in value.items():
         if is_timing_key(k) or (key == "figures" and TIMING_FIGURE.search(k)):

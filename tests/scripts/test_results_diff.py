@@ -115,6 +115,29 @@ class ResultsDiff(unittest.TestCase):
                                              "measuredValue": None, "verdict": "not measurable here"})
         self.assertEqual(diff(old, new), (0, ""))
 
+    def test_a_claim_read_from_timing_figures_is_a_timing(self):
+        # Evidence read from a kernel-time figure (a label without a timing word): its reads,
+        # pass and the claim's verdict move with the machine; evidence read from a byte count
+        # is still compared.
+        def claim(kernel_ratio, bytes_ratio):
+            return {"id": "cpu_vertex_frame_vs_strongest", "section": "Against the strongest baseline",
+                    "measured": f"in cache {kernel_ratio}x", "measuredValue": {"in cache": kernel_ratio},
+                    "verdict": "reproduced" if kernel_ratio < 1 else "differs",
+                    "evidence": [{"label": "in cache", "read": kernel_ratio, "passes": kernel_ratio < 1,
+                                  "value": "report:kernel_time.vertex_frame/in_cache.fastest_motor_over_fastest_matrix",
+                                  "over": None},
+                                 {"label": "bytes", "read": bytes_ratio, "passes": True,
+                                  "value": "report:bytes_per_vertex.motor", "over": None}]}
+        old = report(10.0, 50.0, "reproduced")
+        new = report(10.0, 50.0, "reproduced")
+        old["claims.json"]["claims"].append(claim(0.95, 0.75))
+        new["claims.json"]["claims"].append(claim(1.56, 0.75))
+        self.assertEqual(diff(old, new), (0, ""))
+        new["claims.json"]["claims"][-1] = claim(1.56, 0.8)
+        rc, out = diff(old, new)
+        self.assertEqual(rc, 1)
+        self.assertIn("claims[cpu_vertex_frame_vs_strongest].evidence[bytes].read: 0.75 -> 0.8", out)
+
     def test_reordered_entries_are_reported(self):
         old = report(10.0, 50.0, "reproduced")
         new = report(10.0, 50.0, "reproduced")
