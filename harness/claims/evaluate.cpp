@@ -50,7 +50,7 @@ std::optional<figures::Figure> read(const FigureSet& set, const std::string& ref
   }
   r.figures.push_back(describe(ref, *f));
   if (!std::isfinite(f->value)) r.leftOut = ref + " not measured" + (f->why.empty() ? "" : ": " + f->why);
-  else if (f->disturbed.is_object() && f->disturbed.value("disturbed", false))
+  else if (figures::isDisturbed(*f))
     r.leftOut = ref + " disturbed (" + f->disturbed.value("reason", std::string("load")) + ")";
   else if (rule.gpuTimed && f->device.find("CPU rasterizer") != std::string::npos)
     r.leftOut = ref + " was timed on a CPU rasterizer, which cannot stand for a GPU";

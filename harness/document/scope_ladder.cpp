@@ -19,7 +19,7 @@ const char* const kMeasures[] = {"counted ops",    "SPIR-V probe", "SPIR-V whole
 double value(const json& figures, const std::string& name) {
   const auto f = figures::figureNamed(figures, name);
   if (!f || !std::isfinite(f->value)) return NAN;
-  if (f->disturbed.is_object() && f->disturbed.value("disturbed", false)) return NAN;
+  if (figures::isDisturbed(*f)) return NAN;
   return f->value;
 }
 

@@ -50,6 +50,8 @@ json toJson(const Figure& f) {
   return j;
 }
 
+bool isDisturbed(const Figure& f) { return f.disturbed.is_object() && f.disturbed.value("disturbed", false); }
+
 double numberOrNaN(const json& v) { return v.is_number() ? v.get<double>() : std::nan(""); }
 
 Figure figureFromJson(const std::string& name, const json& j) {
@@ -104,7 +106,7 @@ std::string figureText(const Figure& f) {
   add("", f.device);
   add("tolerance ", f.tolerance);
   // Timed on shared cores (harness/timing/disturbance.h): printed, marked, not a verdict input.
-  const std::string mark = f.disturbed.is_object() && f.disturbed.value("disturbed", false)
+  const std::string mark = isDisturbed(f)
                                ? " [disturbed: " + f.disturbed.value("reason", "") + "]"
                                : "";
   return (d.empty() ? s : s + " (" + d + ")") + mark;

@@ -35,6 +35,9 @@ struct Figure {
 // The figure with `q`'s median as its value and its quartiles as its spread.
 Figure withQuartiles(Figure f, const Quartiles& q);
 
+// Whether a timed figure's disturbance mark says it was disturbed (null: not assessed, so no).
+bool isDisturbed(const Figure& f);
+
 // A JSON number as a double; NaN for anything else (null, missing, text).
 double numberOrNaN(const nlohmann::json& v);
 
