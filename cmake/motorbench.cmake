@@ -1,5 +1,6 @@
-# mb_library(NAME [DEPS ...]): a static library from every .cpp in the current folder, or an
-# INTERFACE library while the folder has only headers. Public include root is the repo root,
+# mb_library(NAME [DEPS ...] [FOLDERS SUB ...]): a static library from every .cpp in the current
+# folder and in its sub-folders SUB (a room's stages, e.g. pipelines/scene/gltf), or an
+# INTERFACE library while they have only headers. Public include root is the repo root,
 # so code includes "pipelines/scene/scene.h", "shaders/pga.glsl" and so on.
 #
 # The harness's static libraries reuse one precompiled header (mb_pch, below): nlohmann/json,
@@ -89,11 +90,16 @@ function(mb_unity target measured)
 endfunction()
 
 function(mb_library name)
-  file(GLOB srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "FOLDERS")
+  set(globs ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  foreach(sub ${arg_FOLDERS})
+    list(APPEND globs ${CMAKE_CURRENT_SOURCE_DIR}/${sub}/*.cpp)
+  endforeach()
+  file(GLOB srcs CONFIGURE_DEPENDS ${globs})
   if(srcs)
     add_library(${name} STATIC ${srcs})
     target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
-    target_link_libraries(${name} PUBLIC ${ARGN})
+    target_link_libraries(${name} PUBLIC ${arg_UNPARSED_ARGUMENTS})
     file(RELATIVE_PATH dir ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR})
     set(measured FALSE)
     foreach(m ${MB_MEASURED_DIRS})
@@ -111,6 +117,6 @@ function(mb_library name)
   else()
     add_library(${name} INTERFACE)
     target_include_directories(${name} INTERFACE ${PROJECT_SOURCE_DIR})
-    target_link_libraries(${name} INTERFACE ${ARGN})
+    target_link_libraries(${name} INTERFACE ${arg_UNPARSED_ARGUMENTS})
   endif()
 endfunction()

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 
-#include "pipelines/scene/flat_normals.h"
+#include "pipelines/scene/repair/flat_normals.h"
 
 namespace mb::motor {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "pipelines/result.h"
-#include "pipelines/scene/gltf_writer.h"
+#include "pipelines/scene/builtin/gltf_writer.h"
 
 namespace mb {
 

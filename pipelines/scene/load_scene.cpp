@@ -4,7 +4,7 @@
 #include <cctype>
 #include <filesystem>
 
-#include "pipelines/scene/bpt_reader.h"
+#include "pipelines/scene/builtin/bpt_reader.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/curved_space.h"
 #include "pipelines/scene/loader.h"

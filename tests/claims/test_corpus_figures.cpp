@@ -16,7 +16,7 @@
 #include "harness/figures/figure.h"
 #include "harness/report/corpus_models.h"
 #include "harness/report/corpus_stats.h"
-#include "pipelines/scene/gltf_writer.h"
+#include "pipelines/scene/builtin/gltf_writer.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scale_analysis.h"
 #include "pipelines/scene/scene_stats.h"

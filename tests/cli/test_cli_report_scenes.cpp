@@ -60,7 +60,7 @@ TEST(AnimatedComparison, ReportHasOneLoopPerAnimatedScene) {
 TEST(CliReportAnim, SeveralAnimationsByNameAndIndexCommaOrRepeated) {
   const fs::path dir = mb::cli_test::scratchDir("report_anim");
   std::string log;
-  // skinned_tube: 0 bend, 1 twist, 2 candy_wrapper (pipelines/scene/builtin_tube.cpp).
+  // skinned_tube: 0 bend, 1 twist, 2 candy_wrapper (pipelines/scene/builtin/builtin_tube.cpp).
   ASSERT_EQ(runCommand(motorbench() + "report skinned_tube --anim candy_wrapper,0 --anim skinned_tube:candy_wrapper" +
                            kSmall + " -o " + quoted(dir), &log), 0) << log;
   const json r = readJson(dir / "report.json");

@@ -1,13 +1,13 @@
 // What the image fuzzer checks for one input, shared by tests/fuzz/fuzz_images.cpp (which aborts
 // on a non-empty result) and the regression replay (tests/scene/test_scene_fuzz_regressions.cpp,
-// regressions/images/): PNG/JPEG bytes through pipelines/scene/image_decode.h.
+// regressions/images/): PNG/JPEG bytes through pipelines/scene/gltf/image_decode.h.
 //   - a decoded image agrees with its header, is within the pixel limit and is w*h*4 bytes;
 //   - a refused image has a non-empty, printable one-line reason (it ends up in JSON reports).
 #pragma once
 #include <cstdint>
 #include <string>
 
-#include "pipelines/scene/image_decode.h"
+#include "pipelines/scene/gltf/image_decode.h"
 
 namespace mb::fuzz {
 

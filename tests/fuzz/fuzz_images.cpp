@@ -1,5 +1,5 @@
 // libFuzzer target for image decoding alone: PNG/JPEG bytes through exactly what the
-// loader uses for an embedded or external image, pipelines/scene/image_decode.h (our header
+// loader uses for an embedded or external image, pipelines/scene/gltf/image_decode.h (our header
 // checks, then OpenImageIO's PNG or JPEG reader from memory). What is checked:
 // tests/fuzz/fuzz_image_checks.h; a violation aborts. Seeds: tests/fuzz/seeds/images, findings
 // in tests/fuzz/regressions/images. Build and run: scripts/fuzz.sh [SECONDS] (after the loader).

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "pipelines/scene/gltf_writer.h"
+#include "pipelines/scene/builtin/gltf_writer.h"
 #include "tests/fuzz/seed_files.h"
 #include "tests/hostile/hostile_cases.h"
 

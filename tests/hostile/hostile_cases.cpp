@@ -809,7 +809,7 @@ std::vector<Case> contentCases() {
   return cs;
 }
 
-// Valid glTF 2.0 that tinygltf 2.7 refuses (pipelines/scene/conformance.h)
+// Valid glTF 2.0 that tinygltf 2.7 refuses (pipelines/scene/repair/conformance.h)
 // and the URI cases that stay errors. tests/scene/test_scene_conformance.cpp checks each
 // against its plain equivalent; here they feed the hostile corpus and the fuzz seeds.
 std::vector<Case> conformanceCases() {

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
-#include "pipelines/scene/accessors.h"
+#include "pipelines/scene/gltf/accessors.h"
 #include "pipelines/scene/loader.h"
 #include "tests/support/scene_test_gltf.h"
 

@@ -1,4 +1,4 @@
-// The BPT reader (pipelines/scene/bpt_reader.h), .bpt dispatch in loadScene, the
+// The BPT reader (pipelines/scene/builtin/bpt_reader.h), .bpt dispatch in loadScene, the
 // MB_bezier_patches glTF primitive and the built-in scene `teapot`: the project's teapot copy
 // parses to Newell's 32 patches; a generated set of malformed files fails with a message
 // naming the line, without allocating for claimed-but-absent patches.
@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "pipelines/scene/animation.h"
-#include "pipelines/scene/bpt_reader.h"
+#include "pipelines/scene/builtin/bpt_reader.h"
 #include "pipelines/scene/builtin_scenes.h"
 #include "pipelines/scene/loader.h"
 #include "pipelines/scene/scene_stats.h"

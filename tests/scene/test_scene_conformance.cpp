@@ -1,5 +1,5 @@
 // Conformance: valid glTF 2.0 files that tinygltf 2.7 refuses load and give
-// the Scene their plain equivalent gives (pipelines/scene/conformance.h); non-file URIs and
+// the Scene their plain equivalent gives (pipelines/scene/repair/conformance.h); non-file URIs and
 // minVersion > 2.0 stay errors naming the file; invalid but drawable files load with a counted
 // repair (LoadStats). Each case is one generated file.
 #include <gtest/gtest.h>

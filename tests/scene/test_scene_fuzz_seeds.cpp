@@ -10,7 +10,7 @@
 #include <map>
 #include <set>
 
-#include "pipelines/scene/image_decode.h"
+#include "pipelines/scene/gltf/image_decode.h"
 #include "pipelines/scene/loader.h"
 #include "tests/fuzz/fuzz_exercise.h"
 #include "tests/fuzz/seed_files.h"

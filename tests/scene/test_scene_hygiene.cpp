@@ -5,10 +5,10 @@
 #include <cmath>
 
 #include "pipelines/scene/builtin_scenes.h"
-#include "pipelines/scene/hygiene.h"
+#include "pipelines/scene/repair/hygiene.h"
 #include "pipelines/scene/loader.h"
-#include "pipelines/scene/skin_weights.h"
-#include "pipelines/scene/tangents.h"
+#include "pipelines/scene/repair/skin_weights.h"
+#include "pipelines/scene/repair/tangents.h"
 #include "tests/support/scene_test_gltf.h"
 
 namespace {

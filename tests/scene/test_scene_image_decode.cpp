@@ -1,4 +1,4 @@
-// Image decoding (pipelines/scene/image_decode.h): header checks against hand-built
+// Image decoding (pipelines/scene/gltf/image_decode.h): header checks against hand-built
 // headers, PNG pixels of every colour type and bit depth against values derived by hand from
 // the raw samples written, the same RGBA8 as stb_image, an independent decoder (compiled into
 // this test only, on the images the test generates), JPEG through libjpeg-turbo, and the
@@ -13,7 +13,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "pipelines/scene/image_decode.h"
+#include "pipelines/scene/gltf/image_decode.h"
 #include "pipelines/scene/loader.h"
 #include "tests/hostile/gltf_builder.h"
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "pipelines/scene/loader.h"
-#include "pipelines/scene/preflight.h"
+#include "pipelines/scene/repair/preflight.h"
 
 namespace mb {
 namespace {

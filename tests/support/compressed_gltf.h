@@ -10,7 +10,7 @@
 #pragma once
 #include <string>
 
-#include "pipelines/scene/image_decode.h"
+#include "pipelines/scene/gltf/image_decode.h"
 #include "tests/hostile/gltf_builder.h"
 
 namespace mb::compressed {

@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "pipelines/scene/bpt_reader.h"
+#include "pipelines/scene/builtin/bpt_reader.h"
 #include "shaders/shim/patch.h"
 
 namespace mbtest {
