@@ -14,42 +14,6 @@ using namespace layout;
 
 namespace {
 
-
-// Worst metrics of `p` over a scene's frames (lowest PSNR, largest changed fraction), each frame
-// against its own reference (judgedFrame); the third: "against the motor-blend reference" when a
-// skinned frame was judged against its own skinning method's, with the frames not judged.
-struct WorstImage {
-  std::string psnr = "-", over = "-", note;
-};
-WorstImage worstImage(const json& s, const std::string& p, const std::string& base) {
-  double psnr = 1e300, over = -1;
-  bool any = false, allIdentical = true;
-  int notJudged = 0;
-  std::string own;
-  for (const json& f : s.value("frames", json::array())) {
-    const JudgedFrame j = judgedFrame(s, f, p, base);
-    if (!j.compared) continue;
-    if (!j.metrics) {
-      ++notJudged;
-      continue;
-    }
-    const json& m = *j.metrics;
-    any = true;
-    if (j.skinnedOwnMethod && j.reference != base) own = j.reference;
-    if (!m.value("identical", false)) {
-      allIdentical = false;
-      if (m["psnr"].is_number()) psnr = std::min(psnr, m["psnr"].get<double>());
-    }
-    over = std::max(over, m.value("fractionOver1", 0.0));
-  }
-  WorstImage w;
-  if (any) w.psnr = allIdentical ? "identical" : fixed(json(psnr), 1) + " dB", w.over = percent(json(over), 3);
-  if (!own.empty()) w.note = " (skinned: against the " + own + ")";
-  if (notJudged) w.note += "; " + std::to_string(notJudged) + " frame(s) not judged";
-  return w;
-}
-
-
 std::vector<std::string> statsLines(const json& st) {
   if (!st.is_object() || !st.value("loaded", false)) return {};
   // inspect's JSON groups its counters: geometry, materials, skinning, animation, scale.
@@ -81,53 +45,6 @@ std::vector<std::string> statsLines(const json& st) {
   if (!un.empty()) lines.push_back("unsupported: " + un);
   return lines;
 }
-
-}  // namespace
-
-void sceneTable(Document& d, const json& r) {
-  const std::vector<std::string> pipes = pipelinesOf(r);
-  d.heading(2, "Scenes", "scenes");
-  std::vector<std::string> head = {"scene", "origin", "status", "vertices (mesh / drawn)", "triangles", "skins / joints", "animations"};
-  for (const std::string& p : pipes) head.push_back(p + " B/vertex");
-  for (const std::string& p : pipes) head.push_back(p + " ops/vertex");
-  for (const std::string& p : pipes) head.push_back(p + " frame ms");
-  head.push_back("frame time motor/matrix (median of paired per-frame ratios)");
-  for (size_t i = 1; i < pipes.size(); ++i) head.insert(head.end(), {pipes[i] + " worst PSNR", pipes[i] + " px > 1/255"});
-  d.paragraph(frameTimeOn(at(r, {"machine", "gl"})) + ": the frame ms columns and motor/matrix below.");
-  head.push_back("fallbacks (last pipeline)");
-  std::vector<std::vector<Cell>> rows;
-  for (const json& s : r["scenes"]) {
-    if (!isEuclidean(s)) continue;  // the curved scenes have their own section and pipelines
-    const json& st = s.value("stats", json::object());
-    std::vector<Cell> row = {{str(s["id"]), "", "#scene-" + str(s["id"])}, {str(s["origin"])}, {statusText(s)},
-                             {str(at(st, {"geometry", "vertices"})) + " / " + str(at(st, {"geometry", "drawnVertices"}))},
-                             {str(at(st, {"geometry", "triangles"}))},
-                             {str(at(st, {"skinning", "skins"})) + " / " + str(at(st, {"skinning", "joints"}))},
-                             {str(at(st, {"animation", "animations"}))}};
-    for (const std::string& p : pipes) row.push_back({fmt(at(s, {"pipelines"}).is_object() && s["pipelines"].contains(p) ? at(s["pipelines"][p], {"memory", "bytesPerVertex"}) : json())});
-    for (const std::string& p : pipes) {
-      const json& o = at(s, {"opsPerVertex"});
-      row.push_back({o.is_object() && o.contains(p) && o[p]["counted"].is_object()
-                         ? fmt(json(o[p]["counted"].value("mul", 0.0) + o[p]["counted"].value("add", 0.0)), 4) + " mul+add"
-                         : "-"});
-    }
-    for (const std::string& p : pipes) row.push_back({fixed(at(s, {"timing", "pipelines"}).is_object() && s["timing"]["pipelines"].contains(p) ? s["timing"]["pipelines"][p].value("medianMs", json()) : json(), 2)});
-    row.push_back({ratio(at(s, {"timing", "paired_ratio_motor_matrix"}))});  // frame_time.<scene>.motor_over_matrix
-    for (size_t i = 1; i < pipes.size(); ++i) {
-      const WorstImage w = worstImage(s, pipes[i], pipes[0]);
-      const int wrong = drawnFailures(s, pipes[i]);
-      row.push_back({w.psnr + w.note + (wrong ? "; " + std::to_string(wrong) + " frame(s) FAILED the drawn-pixel check" : "")});
-      row.push_back({w.over});
-    }
-    const json& last = at(s, {"pipelines"}).is_object() && s["pipelines"].contains(pipes.back()) ? s["pipelines"][pipes.back()] : json();
-    row.push_back({last.is_object() ? fallbacksText(last) : "-"});
-    rows.push_back(row);
-  }
-  d.table(head, rows);
-}
-
-
-namespace {
 
 // The compared pipelines (after the baseline, pipes[0]) that blend skinned vertices differently
 // from the baseline.

@@ -7,8 +7,9 @@
 
 namespace mb::document {
 
-// report_layout_scenes.cpp: the scene table and one section per scene.
+// report_layout_scene_tables.cpp: the scene facts and one table per quantity.
 void sceneTable(Document& d, const nlohmann::json& r);
+// report_layout_scenes.cpp: one section per scene.
 void sceneSection(Document& d, const nlohmann::json& r, const nlohmann::json& scene);
 // report_layout_sections.cpp
 void glossary(Document& d, const nlohmann::json& r);
