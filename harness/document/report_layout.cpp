@@ -69,6 +69,31 @@ std::string judgedText(const json& im, const std::string& baseline) {
          (notJudged ? "; " + std::to_string(notJudged) + " frame(s) not judged: " + why : std::string());
 }
 
+// Whether some Euclidean scene draws what a shader variant of the summary is for: its vertices
+// (vertexMix), its rigid primitives without a normal map (contentKinds), instances through the
+// scale fallback; true where no scene records the figure (an older report.json).
+bool variantDrawn(const json& r, const std::string& label) {
+  bool recorded = false;
+  for (const json& s : r["scenes"]) {
+    if (!isEuclidean(s)) continue;
+    const json& mix = at(s, {"vertexMix"});
+    auto drawn = [&](const char* k) { return mix.is_object() && mix.value(k, 0.0) > 0; };
+    recorded = recorded || mix.is_object();
+    if (label == "rigid" && drawn("rigid")) return true;
+    if (label.rfind("skinned", 0) == 0 && drawn("skinned")) return true;
+    if (label == "bezier patch" && drawn("bezierPatch")) return true;
+    if (label == "scaled fallback") {
+      if (drawn("scaledFallback")) return true;
+      for (const auto& [p, pj] : members(s, "pipelines").items())
+        if (const json& n = at(pj, {"fallbacks", "scaleFallbackInstances"}); n.is_number() && n.get<double>() > 0) return true;
+    }
+    if (label == "rigid, no tangent")
+      for (const json& c : at(s, {"contentKinds", "cells"}).is_array() ? s["contentKinds"]["cells"] : json::array())
+        if (c.value("deformation", "") == "rigid" && !c.value("normalMapped", true) && c.value("vertices", 0.0) > 0) return true;
+  }
+  return !recorded;
+}
+
 void summary(Document& d, const json& r) {
   const std::vector<std::string> pipes = pipelinesOf(r);
   const json& sum = r["summary"];
@@ -87,26 +112,38 @@ void summary(Document& d, const json& r) {
       return spreadText(spread, digits) + scenesText(spread);
     };
   };
-  row("bytes per vertex, shading attributes", fromSpread("bytesPerVertex", 3));
-  row("bytes per vertex, normal-mapped primitives", fromSpread("bytesPerVertexNormalMapped", 3));
-  row("bytes per vertex, primitives without normal map", fromSpread("bytesPerVertexNotNormalMapped", 3));
-  row("bytes per vertex incl. skin + extra streams", fromSpread("bytesPerVertexAll", 3));
-  row("floats per vertex", fromSpread("floatsPerVertex", 3));
-  row("floats per transform", [&sum](const std::string& p) {
-    const json& spread = at(sum, {"pipelines"})[p]["floatsPerTransform"];
-    return spreadText(spread, 3) + scenesText(spread) +
-           noneText(spread, "whose every draw is skinned or instanced (a joint palette or the per-instance stream moves the mesh)");
-  });
-  row("floats per transform incl. the per-draw float (motor scale, affine mirror)", fromSpread("floatsPerTransformWithScale", 3));
-  row("floats per joint (skinned scenes)", fromSpread("floatsPerJoint", 3));
-  row("load-time conversion [ms]", fromSpread("conversionMs", 3));
+  // A row of per-scene figures only where some pipeline has one on some scene.
+  auto anyScene = [&](const char* key) {
+    return std::any_of(pipes.begin(), pipes.end(),
+                       [&](const std::string& p) {
+                         const json& spread = at(sum, {"pipelines", p.c_str(), key});
+                         return spread.is_object() && spread.value("n", 0) > 0;
+                       });
+  };
+  using Row = std::pair<const char*, const char*>;  // label, summary.pipelines key
+  for (const auto& [label, key] : {Row{"bytes per vertex, shading attributes", "bytesPerVertex"},
+                                   Row{"bytes per vertex, normal-mapped primitives", "bytesPerVertexNormalMapped"},
+                                   Row{"bytes per vertex, primitives without normal map", "bytesPerVertexNotNormalMapped"},
+                                   Row{"bytes per vertex incl. skin + extra streams", "bytesPerVertexAll"},
+                                   Row{"floats per vertex", "floatsPerVertex"}})
+    if (anyScene(key)) row(label, fromSpread(key, 3));
+  if (anyScene("floatsPerTransform"))
+    row("floats per transform", [&sum](const std::string& p) {
+      const json& spread = at(sum, {"pipelines"})[p]["floatsPerTransform"];
+      return spreadText(spread, 3) + scenesText(spread) +
+             noneText(spread, "whose every draw is skinned or instanced (a joint palette or the per-instance stream moves the mesh)");
+    });
+  for (const auto& [label, key] : {Row{"floats per transform incl. the per-draw float (motor scale, affine mirror)", "floatsPerTransformWithScale"},
+                                   Row{"floats per joint (skinned scenes)", "floatsPerJoint"},
+                                   Row{"load-time conversion [ms]", "conversionMs"}})
+    if (anyScene(key)) row(label, fromSpread(key, 3));
   const json& ops = r["opsPerVertex"];
   for (const char* label : {"rigid", "rigid, no tangent", "skinned", "skinned, reference", "skinned, world palette",
                             "scaled fallback", "bezier patch"})
     for (const char* way : {"counted", "spirv"}) {
       bool any = false;
       for (const json& v : ops.value("variants", json::array())) any = any || v.value("label", "") == label;
-      if (!any) continue;
+      if (!any || !variantDrawn(r, label)) continue;  // no row for what no scene draws
       row(std::string("ops per vertex, ") + label + " shader (" +
               (std::string(way) == "counted" ? "counted, to clip" : "SPIR-V whole shader") + ")",
           [&](const std::string& p) {
