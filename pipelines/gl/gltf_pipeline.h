@@ -14,12 +14,14 @@
 
 #include <glm/glm.hpp>
 
+#include "pipelines/compact/compact_encoding.h"
 #include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/instance_stream.h"
 #include "pipelines/gl/morph_buffers.h"
 #include "pipelines/gl/patch_geometry.h"
 #include "pipelines/gl/program.h"
 #include "pipelines/gl/scene_textures.h"
+#include "pipelines/gl/upload.h"
 #include "pipelines/pipeline.h"
 
 namespace mb::gl {
@@ -104,6 +106,13 @@ protected:
   void drawCounted(const DrawItem& d, const GpuPrimitive& g, bool patch) {
     stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
     ++stats_.draws;
+  }
+  // The 16-byte vertex (matrix_c, motor_c): u_Dequant, the cube of `d`'s primitive, for draws
+  // that cannot fold it into their transform and dequantise per vertex.
+  void setDequant(const Program& program, const std::vector<std::vector<compact::PositionCube>>& cubes,
+                  const DrawItem& d) {
+    const glm::vec4 q = cubes[size_t(d.mesh)][size_t(d.primitive)].dequant();
+    uniform4f(program.uniform("u_Dequant"), &q[0], stats_.uniformBytesPerFrame);
   }
   const Primitive& primitiveOf(const DrawItem& d) const {
     return scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];

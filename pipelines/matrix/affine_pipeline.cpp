@@ -96,11 +96,10 @@ private:
   }
 
   void instancedUniforms(const gl::Program& program, const gl::DrawItem& d) {
-    if (format_ == FrameFormat::Compact) setDequant(program, d);
+    if (format_ == FrameFormat::Compact) setDequant(program, cubes_, d);
   }
   bool drawUniforms(const gl::Program& program, const gl::DrawItem& d, GLuint palette, bool patch, bool morph,
                     gl::TransformCounters& c);
-  void setDequant(const gl::Program& program, const gl::DrawItem& d);
 
   std::string name_;
   FrameFormat format_;
@@ -140,7 +139,7 @@ bool AffinePipeline::drawUniforms(const gl::Program& program, const gl::DrawItem
     const compact::PositionCube& cube = cubes_[size_t(d.mesh)][size_t(d.primitive)];
     model = model * glm::scale(glm::translate(glm::mat4(1.0f), cube.center), glm::vec3(cube.extent));
   }
-  if (compact && (palette || morph)) setDequant(program, d);
+  if (compact && (palette || morph)) setDequant(program, cubes_, d);
   if (palette) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
   } else {
@@ -151,12 +150,6 @@ bool AffinePipeline::drawUniforms(const gl::Program& program, const gl::DrawItem
   }
   gl::uniform1f(program.uniform("u_Mirror"), sign, palette ? stats_.uniformBytesPerFrame : c.scaleBytes);
   return sign < 0.0f;
-}
-
-// matrix_c's draws that cannot fold the mesh's cube (skinned, instanced) dequantise per vertex.
-void AffinePipeline::setDequant(const gl::Program& program, const gl::DrawItem& d) {
-  const glm::vec4 q = cubes_[size_t(d.mesh)][size_t(d.primitive)].dequant();
-  gl::uniform4f(program.uniform("u_Dequant"), &q[0], stats_.uniformBytesPerFrame);
 }
 
 }  // namespace

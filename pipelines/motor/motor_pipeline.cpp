@@ -115,7 +115,6 @@ private:
   void streamInstances();
   gl::Defines defines(int kind, int form, bool morphing, bool orthographic) const;
   Status linkPrograms(bool orthographic);
-  void setDequant(const gl::Program& program, const gl::DrawItem& d);
   const gl::Program& useFrameProgram(const MotorFrame& f, gl::CachedProgram& p);
   const gl::Program& useDrawProgram(const MotorFrame& f, DrawKind kind, ScaleForm form, bool morph);
   const gl::Program& bindMorph(const MotorDraw& m, const gl::Program& program);
@@ -278,7 +277,7 @@ void MotorPipeline::drawInstanceGroups(MotorFrame& f, const MotorDraw& m, const 
   for (const gl::InstanceGroup& group : groups) {
     const bool fallback = group.key & 1;
     const gl::Program& program = bindMorph(m, useDrawProgram(f, DrawKind::Instanced, scaleForm(fallback), m.morph));
-    if (variant_.compact) setDequant(program, m.d);
+    if (variant_.compact) setDequant(program, geometry_.cubes, m.d);
     bindMaterial(program, m.prim);
     gl::setWinding(group.key & 2);
     stats_.drawnVertices += instances_.draw(m.g, group, {4, 4, fallback ? 3 : 1});
@@ -330,7 +329,7 @@ DrawTransform MotorPipeline::drawTransform(const MotorDraw& m, const motor::Join
 // The draw's uniforms and material; returns the bytes of its u_Scale.
 uint64_t MotorPipeline::setDrawUniforms(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, const gl::Program& p,
                                         const glm::vec3& s, bool perAxis) {
-  if (t.dequantise) setDequant(p, m.d);
+  if (t.dequantise) setDequant(p, geometry_.cubes, m.d);
   if (t.transform) gl::uniform4fv(p.uniform("u_World"), 2, &t.world.motor[0][0], f.transformBytes);
   uint64_t bytes = 0;
   if (perAxis)
@@ -433,7 +432,7 @@ void MotorPipeline::drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g,
     mirrored = glm::determinant(t.linear) < 0.0f;
     ++stats_.linearFallbackDraws;
   }
-  if (variant_.compact) setDequant(program, d);
+  if (variant_.compact) setDequant(program, geometry_.cubes, d);
   bindMaterial(program, prim);
   gl::setWinding(mirrored);
   const uint64_t drawn = g.draw();
@@ -441,12 +440,6 @@ void MotorPipeline::drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g,
   stats_.fallbackVertices += drawn;
   if (palette) stats_.skinFallbackVertices += drawn;
   ++stats_.draws;
-}
-
-// motor_c's draws that cannot fold the mesh's cube (skinned, instanced, morphing) dequantise per vertex.
-void MotorPipeline::setDequant(const gl::Program& program, const gl::DrawItem& d) {
-  const glm::vec4 q = geometry_.cubes[size_t(d.mesh)][size_t(d.primitive)].dequant();
-  gl::uniform4f(program.uniform("u_Dequant"), &q[0], stats_.uniformBytesPerFrame);
 }
 
 void MotorPipeline::release() {

@@ -116,13 +116,6 @@ void localPose(const Rig& rig, const std::vector<TRS>& pose, std::vector<ScaledM
   }
 }
 
-std::vector<ScaledMotor> blendLocal(const std::vector<ScaledMotor>& a,
-                                    const std::vector<ScaledMotor>& b, float w) {
-  std::vector<ScaledMotor> out;
-  blendLocal(a, b, w, out);
-  return out;
-}
-
 void blendLocal(const std::vector<ScaledMotor>& a, const std::vector<ScaledMotor>& b, float w,
                 std::vector<ScaledMotor>& out) {
   if (&out != &a) out = a;
@@ -133,8 +126,8 @@ std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const
                                        RigCounts* counts) {
   std::vector<ScaledMotor> a = localPose(rig, sampleAnimation(scene, state.anim, state.time), counts);
   if (state.anim2 < 0) return a;
-  std::vector<ScaledMotor> b = localPose(rig, sampleAnimation(scene, state.anim2, state.time2));
-  return blendLocal(a, b, state.blend);
+  blendLocal(a, localPose(rig, sampleAnimation(scene, state.anim2, state.time2)), state.blend, a);
+  return a;
 }
 
 std::vector<ScaledMotor> worldPose(const Scene& scene, const std::vector<ScaledMotor>& local) {
@@ -183,33 +176,30 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
     p.motors.resize(skin.joints.size() * 8);
     const Motor toNode = relativeToNode ? mk().reverse_m(world[n].motor) : Motor();
     const bool general = rig.generalSkin[size_t(p.skin)] && exactWorld;
-    for (size_t j = 0; j < skin.joints.size(); ++j) {
+    // Joint j's world composed with its inverse bind, and a motor stored as joint j's 8 floats.
+    auto jointMotor = [&](size_t j) {
       const int jn = skin.joints[j];
-      const ScaledMotor joint = nodeIndexOk(scene, jn) ? world[size_t(jn)] : identityScaledMotor();
-      ScaledMotor m = compose(joint, rig.inverseBind[size_t(p.skin)][j]);
+      return compose(nodeIndexOk(scene, jn) ? world[size_t(jn)] : identityScaledMotor(), rig.inverseBind[size_t(p.skin)][j]);
+    };
+    auto store = [&](size_t j, const Motor& motor) {
+      for (int c = 0; c < 2; ++c)
+        for (int r = 0; r < 4; ++r) p.motors[8 * j + size_t(4 * c + r)] = motor[c][r];
+    };
+    for (size_t j = 0; j < skin.joints.size(); ++j) {
+      ScaledMotor m = jointMotor(j);
       if (relativeToNode) m.motor = gpMotors(toNode, m.motor);
       if (j == 0) p.scale = m.scale;
       else if (std::fabs(m.scale - p.scale) > float(kSimilarityTolerance) * std::fabs(p.scale)) p.uniform = false;
-      float* out = &p.motors[8 * j];
-      for (int c = 0; c < 2; ++c)
-        for (int r = 0; r < 4; ++r) out[4 * c + r] = m.motor[c][r];
+      store(j, m.motor);
     }
     p.fallback = general || !p.uniform || !(p.scale > 0.0f);
     if (!p.fallback) continue;
     // Every joint as motor + linear part, in world space: exact per joint (linear_fallback.h).
     p.linear.resize(skin.joints.size() * 24);
     for (size_t j = 0; j < skin.joints.size(); ++j) {
-      LinearTransform t;
-      if (general) {
-        t = linearFromAffine(jointWorld(skin, *exactWorld, j) * inverseBind(skin, j));
-      } else {
-        const int jn = skin.joints[j];
-        t = linearFromScaled(compose(nodeIndexOk(scene, jn) ? world[size_t(jn)] : identityScaledMotor(),
-                                     rig.inverseBind[size_t(p.skin)][j]));
-      }
-      float* out = &p.motors[8 * j];
-      for (int c = 0; c < 2; ++c)
-        for (int r = 0; r < 4; ++r) out[4 * c + r] = t.motor[c][r];
+      const LinearTransform t = general ? linearFromAffine(jointWorld(skin, *exactWorld, j) * inverseBind(skin, j))
+                                        : linearFromScaled(jointMotor(j));
+      store(j, t.motor);
       packLinear(t, &p.linear[24 * j]);
     }
   }

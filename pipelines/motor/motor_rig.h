@@ -55,10 +55,7 @@ void localPose(const Rig& rig, const std::vector<TRS>& pose, std::vector<ScaledM
                RigCounts* counts = nullptr);
 
 // Animation blending by blending motors: per node shortest-arc blend + normalize_m, scales
-// lerped (scaled_motor.h blend). w = weight of b.
-std::vector<ScaledMotor> blendLocal(const std::vector<ScaledMotor>& a,
-                                    const std::vector<ScaledMotor>& b, float w);
-// The same into `out` (which may be `a`).
+// lerped (scaled_motor.h blend). w = weight of b; `out` may be `a`.
 void blendLocal(const std::vector<ScaledMotor>& a, const std::vector<ScaledMotor>& b, float w,
                 std::vector<ScaledMotor>& out);
 
