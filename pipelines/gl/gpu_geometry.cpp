@@ -6,13 +6,6 @@
 
 namespace mb::gl {
 
-uint64_t GpuPrimitive::draw() const {
-  glBindVertexArray(vao);
-  extra.setDefaults();
-  glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
-  return uint64_t(vertexCount);
-}
-
 uint64_t GpuPrimitive::drawRange(GLsizei first, GLsizei count) const {
   glBindVertexArray(vao);
   extra.setDefaults();
@@ -39,12 +32,6 @@ void GpuPrimitive::release() {
 bool normalMapped(const Scene& scene, const Primitive& p) {
   return p.material >= 0 && size_t(p.material) < scene.materials.size() &&
          scene.materials[size_t(p.material)].normal.texture >= 0;
-}
-
-void countNormalMappedShare(const Scene& scene, const Primitive& p, uint64_t bytes, PipelineStats& stats) {
-  if (!normalMapped(scene, p)) return;
-  stats.normalMappedVertexBytes += bytes;
-  stats.normalMappedVertices += p.positions.size();
 }
 
 void SceneGeometry::upload(const Scene& scene, const Format& format, PipelineStats& stats) {
@@ -96,7 +83,10 @@ void SceneGeometry::uploadEach(const Scene& scene, PipelineStats& stats, const V
       glBindVertexArray(g.vao);
       const uint64_t before = stats.vertexBytes;
       vertices(p, g);
-      countNormalMappedShare(scene, p, stats.vertexBytes - before, stats);
+      if (normalMapped(scene, p)) {  // the normal-mapped share
+        stats.normalMappedVertexBytes += stats.vertexBytes - before;
+        stats.normalMappedVertices += p.positions.size();
+      }
       g.extra.upload(p, stats.extraVertexBytes, stats.skinVertexBytes);
       g.skinned = skinnedMesh[m] && g.extra.joints != 0;
       g.indices = createBuffer(GL_ELEMENT_ARRAY_BUFFER, p.indices, stats.indexBytes);

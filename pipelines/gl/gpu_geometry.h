@@ -23,7 +23,7 @@ struct GpuPrimitive {
   ExtraStreams extra;
   // Binds the VAO, sets the defaults of absent streams, draws the triangles; returns the
   // vertices drawn.
-  uint64_t draw() const;
+  uint64_t draw() const { return drawRange(0, indexCount); }
   // The same for `count` indices from `first` (motor_cf's two ranges); returns the vertices the
   // range references at most (vertexCount: the primitive's, a range shares its vertices).
   uint64_t drawRange(GLsizei first, GLsizei count) const;
@@ -79,9 +79,6 @@ private:
 // True when `p`'s material has a normal texture (the paper's 12-vs-9-float case; the split of
 // PipelineStats::normalMappedVertexBytes).
 bool normalMapped(const Scene& scene, const Primitive& p);
-// Adds `bytes` (the vertex bytes just uploaded for `p`) and p's vertices to the normal-mapped
-// share of `stats` when `p` is normal-mapped; both upload paths call it.
-void countNormalMappedShare(const Scene& scene, const Primitive& p, uint64_t bytes, PipelineStats& stats);
 
 // One shader storage buffer per joint palette, re-uploaded every frame.
 class PaletteBuffers {

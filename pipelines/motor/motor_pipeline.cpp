@@ -126,9 +126,8 @@ private:
   uint64_t setDrawUniforms(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, const gl::Program& p,
                            const glm::vec3& s, bool perAxis);
   void drawByRotorHemisphere(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, DrawKind kind);
-  void drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g, const Primitive& prim,
-                  const motor::JointPalette* palette, GLuint paletteBuffer, const gl::Program& program,
-                  uint64_t& transformBytes, uint64_t& linearBytes, const glm::mat4* world = nullptr);
+  void drawLinear(MotorFrame& f, const MotorDraw& m, const motor::JointPalette* palette, GLuint paletteBuffer,
+                  const glm::mat4* world = nullptr);
   void release();
 
   MotorVariant variant_;
@@ -266,9 +265,7 @@ void MotorPipeline::drawItem(MotorFrame& f, const gl::DrawItem& d) {
 void MotorPipeline::drawGeneralInstances(MotorFrame& f, const MotorDraw& m) {
   for (const TRS& instance : scene_->nodes[size_t(m.d.node)].instances) {
     const glm::mat4 world = pose_.exact.world[size_t(m.d.node)] * trsMatrix(instance);
-    drawLinear(m.d, m.g, m.prim, nullptr, 0, bindMorph(m, useDrawProgram(f, DrawKind::Rigid, ScaleForm::Linear, m.morph)),
-               f.transformBytes, f.transformScaleBytes, &world);
-    ++f.transforms;
+    drawLinear(f, m, nullptr, 0, &world);
   }
 }
 
@@ -292,12 +289,8 @@ void MotorPipeline::drawNode(MotorFrame& f, const MotorDraw& m) {
   const motor::JointPalette* palette = paletteIndex < 0 ? nullptr : &pose_.palettes[size_t(paletteIndex)];
   const GLuint paletteBuffer = paletteIndex < 0 ? 0 : palettes_[size_t(paletteIndex)];
   const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
-  if (palette ? palette->fallback : (!m.patch && rig_.general[size_t(m.d.node)])) {
-    drawLinear(m.d, m.g, m.prim, palette, paletteBuffer, bindMorph(m, useDrawProgram(f, kind, ScaleForm::Linear, m.morph)),
-               f.transformBytes, f.transformScaleBytes);
-    f.transforms += palette ? 0 : 1;
-    return;
-  }
+  if (palette ? palette->fallback : (!m.patch && rig_.general[size_t(m.d.node)]))
+    return drawLinear(f, m, palette, paletteBuffer);
   const DrawTransform t = drawTransform(m, palette);
   const gl::Program& program = m.patch ? useFrameProgram(f, *f.programs.patch[t.scale.fallback])
                                        : bindMorph(m, useDrawProgram(f, kind, scaleForm(t.scale.fallback), m.morph));
@@ -407,10 +400,11 @@ Status MotorPipeline::linkPrograms(bool orthographic) {
 
 // One draw on the exact fallback: a rigid draw of a general node with its exact world's polar
 // factors, or a skinned draw with its palette's motors and linear parts (world space).
-void MotorPipeline::drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g, const Primitive& prim,
-                               const motor::JointPalette* palette, GLuint paletteBuffer,
-                               const gl::Program& program, uint64_t& transformBytes,
-                               uint64_t& linearBytes, const glm::mat4* world) {
+void MotorPipeline::drawLinear(MotorFrame& f, const MotorDraw& m, const motor::JointPalette* palette,
+                               GLuint paletteBuffer, const glm::mat4* world) {
+  const gl::DrawItem& d = m.d;
+  const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
+  const gl::Program& program = bindMorph(m, useDrawProgram(f, kind, ScaleForm::Linear, m.morph));
   bool mirrored = false;
   if (palette) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
@@ -422,20 +416,21 @@ void MotorPipeline::drawLinear(const gl::DrawItem& d, const gl::GpuPrimitive& g,
     stats_.skinFallbackJoints += int(palette->motors.size() / 8);
   } else {
     const motor::LinearTransform t = motor::linearFromAffine(world ? *world : pose_.exact.world[size_t(d.node)]);
-    gl::uniform4fv(program.uniform("u_World"), 2, &t.motor[0][0], transformBytes);
+    gl::uniform4fv(program.uniform("u_World"), 2, &t.motor[0][0], f.transformBytes);
     // The motor is the transform (floatsPerTransform); the linear parts count as its scale.
     uint64_t bytes = 0;
     gl::uniformMatrix3(program.uniform("u_Linear"), 1, &t.linear[0][0], bytes);
     gl::uniformMatrix3(program.uniform("u_LinearNormal"), 1, &t.normalLinear[0][0], bytes);
-    linearBytes += bytes;
+    f.transformScaleBytes += bytes;
     stats_.uniformBytesPerFrame += bytes;
     mirrored = glm::determinant(t.linear) < 0.0f;
     ++stats_.linearFallbackDraws;
+    ++f.transforms;
   }
   if (variant_.compact) setDequant(program, geometry_.cubes, d);
-  bindMaterial(program, prim);
+  bindMaterial(program, m.prim);
   gl::setWinding(mirrored);
-  const uint64_t drawn = g.draw();
+  const uint64_t drawn = m.g.draw();
   stats_.drawnVertices += drawn;
   stats_.fallbackVertices += drawn;
   if (palette) stats_.skinFallbackVertices += drawn;
