@@ -73,9 +73,18 @@ def scenes_with(report, pred):
 
 
 def save(fig, outdir, name, right=1.0):
-    """Writes the figure; `right` is the share of its width the axes may use (a legend beside them)."""
-    fig.tight_layout(rect=(0, 0, right, 0.94))
-    fig.savefig(os.path.join(outdir, name + ".png"), dpi=DPI, metadata={"Software": None})
+    """Writes the figure; `right` is the share of its width the axes may use (a legend beside them).
+    A legend above the axes keeps them (and their titles) under it; the image is cut to what was
+    drawn, so no title, label or value is clipped at its edge."""
+    top = 0.94
+    fig.tight_layout(rect=(0, 0, right, top))
+    above = [lg for lg in fig.legends if getattr(lg, "above_axes", False)]
+    if above:
+        fig.canvas.draw()
+        bottom = min(lg.get_window_extent().transformed(fig.transFigure.inverted()).y0 for lg in above)
+        fig.tight_layout(rect=(0, 0, right, min(top, bottom - 0.01)))
+    fig.savefig(os.path.join(outdir, name + ".png"), dpi=DPI, metadata={"Software": None},
+                bbox_inches="tight", pad_inches=0.1)
 
 
 def grouped_bars(ax, labels, series, ylabel, digits=3, reference=None, bars=None, panel=None, texts=None,
@@ -126,19 +135,20 @@ def grouped_bars(ax, labels, series, ylabel, digits=3, reference=None, bars=None
     ax.set_ylabel(ylabel, fontsize=FONT + 1)
 
 
-def legend(fig, names, markers=False):
+def legend(fig, names, title, markers=False, extra=()):
     """One legend for the figure, above the axes (it never hides a bar), a patch of each
     series' colour from the table (markers: the series' point marker in its colour, for scatter
-    plots)."""
+    plots); `title` says what the colours mean, `extra` adds handles (e.g. a hatched stub)."""
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
     if markers:  # beside the axes, one entry a line: the figure keeps its height
         handles = [Line2D([], [], linestyle="none", marker=marker(n), color=colour(n), label=n) for n in names]
-        fig.legend(handles=handles, loc="center right", ncol=1, fontsize=FONT, frameon=False)
+        fig.legend(handles=handles, loc="center right", ncol=1, fontsize=FONT, frameon=False, title=title,
+                   title_fontsize=FONT)
         return
-    handles = [Patch(facecolor=colour(n), label=n) for n in names]
-    fig.legend(handles=handles, loc="upper center", ncol=min(len(names), 6), fontsize=FONT,
-               bbox_to_anchor=(0.5, 1.0), frameon=False)
+    handles = [Patch(facecolor=colour(n), label=n) for n in names] + list(extra)
+    fig.legend(handles=handles, loc="upper center", ncol=min(len(handles), 6), fontsize=FONT,
+               bbox_to_anchor=(0.5, 1.0), frameon=False, title=title, title_fontsize=FONT).above_axes = True
 
 
 def width_for(groups, per_group):
@@ -158,7 +168,7 @@ def plot_bytes_per_vertex(plt, report, outdir):
     grouped_bars(ax, [s["id"] for s in scenes], series, "bytes / vertex", bars=bars)
     ax.set_title("Vertex attribute bytes per vertex (position + frame + uv; device: the buffers uploaded)",
                  fontsize=9, pad=24)
-    legend(fig, pipes)
+    legend(fig, pipes, "colour: pipeline")
     save(fig, outdir, "bytes_per_vertex")
     return ("bytes_per_vertex", "Bytes per vertex",
             "Shading attributes uploaded per vertex (PipelineStats.vertexBytes / vertices); "
@@ -183,7 +193,7 @@ def plot_ops_per_vertex(plt, report, outdir):
     grouped_bars(ax, [s["id"] for s in scenes], series, "mul + add per vertex", bars=bars)
     ax.set_title("Counted ops per drawn vertex (vertex shader incl. world to clip, weighted rigid/skinned; "
                  "device: op-counting scalar)", fontsize=9, pad=24)
-    legend(fig, pipes)
+    legend(fig, pipes, "colour: pipeline")
     save(fig, outdir, "ops_per_vertex")
     return ("ops_per_vertex", "Ops per vertex",
             "Multiplications + additions of one drawn vertex, counted by executing the shaders' "
@@ -242,7 +252,7 @@ def plot_kernel_ratios(plt, report, outdir):
     short = reps if len(reps) < 40 else "repetitions not recorded"
     ax.set_title("CPU kernel time ratios on %s (Google Benchmark)\neach side's time: %s; no spread drawn" % (cpu, short),
                  fontsize=9)
-    ax.legend(fontsize=FONT)
+    ax.legend(fontsize=FONT, title="colour: working set", title_fontsize=FONT)
     save(fig, outdir, "kernel_ratios")
     return ("kernel_ratios", "Kernel time ratios",
             "motorbench bench: time per item of the fastest motor implementation over the fastest matrix "
@@ -292,7 +302,7 @@ def plot_frame_time_ratio(plt, report, outdir):
     grouped_bars(ax, labels, series, "motor / matrix time (%s)" % CONVENTION, digits=3, reference=1.0, bars=bars,
                  spreads=spreads)
     ax.set_title("Frame-time ratios on %s" % frame_device(report), fontsize=9, pad=24)
-    legend(fig, [name for name, _ in series])
+    legend(fig, [name for name, _ in series], "colour: what is timed, motor / matrix")
     save(fig, outdir, "frame_time_ratio")
     return ("frame_time_ratio", "Frame-time ratios",
             "Per scene, frame time motor / matrix: the median of per-frame paired ratios (both pipelines "
@@ -343,7 +353,9 @@ def plot_image_error(plt, report, outdir):
     a1.set_title("Worst PSNR against %s (curved scenes: their space's matrix); hatched stub: identical; "
                  "device: images rendered on %s" % (baseline, frame_device(report)), fontsize=9, pad=24)
     a2.set_title("Changed pixels (worst time); hatched stub: identical (0 %)", fontsize=9)
-    legend(fig, pipes)
+    from matplotlib.patches import Patch
+    stub = Patch(facecolor="#cccccc", hatch="//", edgecolor="#777777", label="identical to %s (hatched stub)" % baseline)
+    legend(fig, pipes, "colour: pipeline, against %s" % baseline, extra=[stub])
     save(fig, outdir, "image_error")
     return ("image_error", "Image error per scene",
             "Worst PSNR and largest fraction of pixels differing by more than one 8-bit step, "
@@ -456,7 +468,7 @@ def plot_design_space(plt, report, outdir):
     ax.grid(alpha=0.3)
     ax.set_title("Design space; labels: frame time / matrix on %s (vertex-bound where measured)" % frame_device(report) if gpu else
                  "Design space (no GPU timed: no frame times shown)", fontsize=9, pad=18)
-    legend(fig, sorted({p["family"] for p in points}), markers=True)
+    legend(fig, sorted({p["family"] for p in points}), "colour and marker: family", markers=True)
     save(fig, outdir, "design_space", right=0.66)
     return ("design_space", "Design space",
             "One point per pipeline: bytes fetched per vertex in meshoptimizer's fetch model with its layout "
@@ -519,7 +531,7 @@ def plot_content_kinds(plt, report, outdir):
         b["kind"] = kind_of[b["label"]]
     ax.set_title("Cost motor / matrix by kind of content (modelled: meshoptimizer's fetch model; counted: the op "
                  "counts; not timed)", fontsize=9, pad=24)
-    legend(fig, [name for name, _ in series])
+    legend(fig, [name for name, _ in series], "colour: cost compared")
     save(fig, outdir, "content_kinds")
     return ("content_kinds", "Cost by kind of content",
             "Per kind of content the report draws, cost motor / matrix (< 1: motor side cheaper): bytes fetched "
