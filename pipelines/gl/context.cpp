@@ -108,17 +108,16 @@ std::string startPlatform(Context::Impl& s, const char* extension, EGLenum platf
   return startEglContext(s, name.c_str());
 }
 
-// Mesa's surfaceless platform (llvmpipe where no hardware driver claims it).
-std::string startSurfaceless(Context::Impl& s) {
-  return startPlatform(s, "EGL_MESA_platform_surfaceless", EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
-                       "surfaceless");
-}
-
 // One EGL device (EGL_EXT_platform_device): how NVIDIA's EGL, which has no surfaceless
-// platform, offers a headless context; Mesa offers its software device the same way.
-std::string startDevice(Context::Impl& s, const EglDevice& device) {
-  return startPlatform(s, "EGL_EXT_platform_device", EGL_PLATFORM_DEVICE_EXT, device.handle,
-                       "device " + std::to_string(device.index));
+// platform, offers a headless context; Mesa offers its software device the same way. `info`
+// names the device when its context started.
+std::string startDevice(Context::Impl& s, const EglDevice& device, ContextInfo& info) {
+  std::string why = startPlatform(s, "EGL_EXT_platform_device", EGL_PLATFORM_DEVICE_EXT, device.handle,
+                                  "device " + std::to_string(device.index));
+  if (!why.empty()) return why;
+  info.backend = "egl-device " + std::to_string(device.index);
+  info.deviceIndex = device.index, info.deviceSoftware = device.software, info.drm = device.drm;
+  return "";
 }
 
 std::string startOsmesa(Context::Impl& s) {
@@ -195,21 +194,15 @@ Result<std::unique_ptr<Context>> Context::create() {
       return R::fail("GPU " + choice->text() + " (--gpu / MB_GPU): MB_GL_BACKEND=osmesa has no EGL devices");
     auto d = findEglDevice(*choice);
     if (!d) return R::fail(d.error());
-    if (std::string why = startDevice(*ctx->impl_, *d); !why.empty())
+    if (std::string why = startDevice(*ctx->impl_, *d, info); !why.empty())
       return R::fail("cannot create a GL 4.5 core context on EGL device " + choice->text() + ": " + why);
-    info.backend = "egl-device " + choice->text();
-    info.deviceIndex = d->index, info.deviceSoftware = d->software, info.drm = d->drm;
   } else {
     std::string eglWhy, osWhy;
     if (choice->kind == GpuChoice::Kind::Auto && want != "osmesa") {  // first hardware device
       for (const EglDevice& d : listEglDevices(nullptr)) {
         if (d.software) continue;
-        const std::string why = startDevice(*ctx->impl_, d);
-        if (why.empty()) {
-          info.backend = "egl-device " + std::to_string(d.index);
-          info.deviceIndex = d.index, info.deviceSoftware = false, info.drm = d.drm;
-          break;
-        }
+        const std::string why = startDevice(*ctx->impl_, d, info);
+        if (why.empty()) break;
         eglWhy += "EGL device " + std::to_string(d.index) + ": " + why + "; ";
         discardEgl(ctx->impl_);
       }
@@ -217,7 +210,11 @@ Result<std::unique_ptr<Context>> Context::create() {
     if (info.backend.empty()) {
       // llvmpipe asked for: Mesa's surfaceless platform must not pick a hardware driver.
       if (choice->kind == GpuChoice::Kind::Llvmpipe) setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
-      const std::string why = want != "osmesa" ? startSurfaceless(*ctx->impl_) : "skipped (MB_GL_BACKEND=osmesa)";
+      // Mesa's surfaceless platform (llvmpipe where no hardware driver claims it).
+      const std::string why = want != "osmesa" ? startPlatform(*ctx->impl_, "EGL_MESA_platform_surfaceless",
+                                                               EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY,
+                                                               "surfaceless")
+                                               : "skipped (MB_GL_BACKEND=osmesa)";
       eglWhy += why;
       if (why.empty()) info.backend = "egl-surfaceless";
     }

@@ -63,6 +63,17 @@ public:
   using PackedInterleave = std::function<std::vector<uint8_t>(const Primitive&)>;
   void uploadPacked(const Scene& scene, const PackedInterleave& interleave,
                     const std::vector<PackedAttribute>& attributes, PipelineStats& stats);
+  // The same for an interleave that counts its frames: stats.zeroScalarFrames, biasedFrames.
+  void uploadPacked(const Scene& scene, PackedStream (*interleave)(const Primitive&),
+                    const std::vector<PackedAttribute>& attributes, PipelineStats& stats) {
+    auto bytes = [&](const Primitive& p) {
+      PackedStream s = interleave(p);
+      stats.zeroScalarFrames += s.zeroScalarFrames;
+      stats.biasedFrames += s.biasedFrames;
+      return std::move(s.bytes);
+    };
+    uploadPacked(scene, PackedInterleave(bytes), attributes, stats);
+  }
   const GpuPrimitive& at(const DrawItem& d) const { return meshes_[size_t(d.mesh)][size_t(d.primitive)]; }
   void release();
 

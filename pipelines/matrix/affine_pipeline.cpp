@@ -112,12 +112,7 @@ private:
 Status AffinePipeline::convert(const Scene& scene) {
   if (Status posed = poser_->prepare(scene); !posed) return posed;
   if (format_ == FrameFormat::QTangent) {
-    auto interleave = [this](const Primitive& p) {
-      gl::PackedStream s = interleaveQTangent(p);
-      stats_.biasedFrames += s.biasedFrames;
-      return std::move(s.bytes);
-    };
-    geometry_.uploadPacked(scene, interleave, gl::snormFrameAttributes(), stats_);
+    geometry_.uploadPacked(scene, interleaveQTangent, gl::snormFrameAttributes(), stats_);
   } else if (format_ == FrameFormat::Compact) {
     cubes_ = compact::primitiveCubes(scene);
     geometry_.uploadPacked(scene, interleaveCompact, compact::attributes(), stats_);

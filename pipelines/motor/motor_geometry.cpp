@@ -20,20 +20,9 @@ void MotorGeometry::upload(const Scene& scene, const MotorVariant& variant, Morp
     return;
   }
   if (variant.compact) {
-    auto packed = [&stats](const Primitive& p) {
-      gl::PackedStream stream = interleaveCompact(p);
-      stats.zeroScalarFrames += stream.zeroScalarFrames;
-      return std::move(stream.bytes);
-    };
-    vertices.uploadPacked(scene, packed, compact::attributes(), stats);
+    vertices.uploadPacked(scene, interleaveCompact, compact::attributes(), stats);
   } else if (variant.quantizedFrame) {
-    auto packed = [&stats](const Primitive& p) {
-      gl::PackedStream stream = interleaveQuantized(p);
-      stats.zeroScalarFrames += stream.zeroScalarFrames;
-      stats.biasedFrames += stream.biasedFrames;
-      return std::move(stream.bytes);
-    };
-    vertices.uploadPacked(scene, packed, gl::snormFrameAttributes(), stats);
+    vertices.uploadPacked(scene, interleaveQuantized, gl::snormFrameAttributes(), stats);
   } else {
     auto format = [&stats](const Primitive& p) {
       VertexStream stream = interleaveVertices(p);

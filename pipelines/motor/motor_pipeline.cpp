@@ -116,8 +116,7 @@ private:
   gl::Defines defines(int kind, int form, bool morphing, bool orthographic) const;
   Status linkPrograms(bool orthographic);
   const gl::Program& useFrameProgram(const MotorFrame& f, gl::CachedProgram& p);
-  const gl::Program& useDrawProgram(const MotorFrame& f, DrawKind kind, ScaleForm form, bool morph);
-  const gl::Program& bindMorph(const MotorDraw& m, const gl::Program& program);
+  const gl::Program& useDrawProgram(const MotorFrame& f, const MotorDraw& m, DrawKind kind, ScaleForm form);
   void drawItem(MotorFrame& f, const gl::DrawItem& d);
   void drawGeneralInstances(MotorFrame& f, const MotorDraw& m);
   void drawInstanceGroups(MotorFrame& f, const MotorDraw& m, const std::vector<gl::InstanceGroup>& groups);
@@ -236,12 +235,9 @@ const gl::Program& MotorPipeline::useFrameProgram(const MotorFrame& f, gl::Cache
   });
 }
 
-const gl::Program& MotorPipeline::useDrawProgram(const MotorFrame& f, DrawKind kind, ScaleForm form, bool morph) {
-  return useFrameProgram(f, f.programs.draw(kind, form, morph));
-}
-
-// The program with the draw's morph deltas bound when it morphs (counted per draw call).
-const gl::Program& MotorPipeline::bindMorph(const MotorDraw& m, const gl::Program& program) {
+// The draw's program with its morph deltas bound when it morphs (counted per draw call).
+const gl::Program& MotorPipeline::useDrawProgram(const MotorFrame& f, const MotorDraw& m, DrawKind kind, ScaleForm form) {
+  const gl::Program& program = useFrameProgram(f, f.programs.draw(kind, form, m.morph));
   if (m.morph) geometry_.morph.bind(program, m.d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
   return program;
 }
@@ -273,7 +269,7 @@ void MotorPipeline::drawGeneralInstances(MotorFrame& f, const MotorDraw& m) {
 void MotorPipeline::drawInstanceGroups(MotorFrame& f, const MotorDraw& m, const std::vector<gl::InstanceGroup>& groups) {
   for (const gl::InstanceGroup& group : groups) {
     const bool fallback = group.key & 1;
-    const gl::Program& program = bindMorph(m, useDrawProgram(f, DrawKind::Instanced, scaleForm(fallback), m.morph));
+    const gl::Program& program = useDrawProgram(f, m, DrawKind::Instanced, scaleForm(fallback));
     if (variant_.compact) setDequant(program, geometry_.cubes, m.d);
     bindMaterial(program, m.prim);
     gl::setWinding(group.key & 2);
@@ -293,7 +289,7 @@ void MotorPipeline::drawNode(MotorFrame& f, const MotorDraw& m) {
     return drawLinear(f, m, palette, paletteBuffer);
   const DrawTransform t = drawTransform(m, palette);
   const gl::Program& program = m.patch ? useFrameProgram(f, *f.programs.patch[t.scale.fallback])
-                                       : bindMorph(m, useDrawProgram(f, kind, scaleForm(t.scale.fallback), m.morph));
+                                       : useDrawProgram(f, m, kind, scaleForm(t.scale.fallback));
   if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
   const uint64_t scaleBytes = setDrawUniforms(f, m, t, program, t.scale.value, t.scale.fallback);
   if (t.transform) ++f.transforms, f.transformScaleBytes += scaleBytes;  // draws with a transform
@@ -346,8 +342,7 @@ void MotorPipeline::drawByRotorHemisphere(MotorFrame& f, const MotorDraw& m, con
     return;
   }
   stats_.drawnVertices += m.g.drawRange(0, GLsizei(interpolable));
-  setDrawUniforms(f, m, t, bindMorph(m, useDrawProgram(f, kind, ScaleForm::PerAxis, m.morph)), glm::vec3(t.scale.value.x),
-                  true);
+  setDrawUniforms(f, m, t, useDrawProgram(f, m, kind, ScaleForm::PerAxis), glm::vec3(t.scale.value.x), true);
   m.g.drawRange(GLsizei(interpolable), m.g.indexCount - GLsizei(interpolable));
   stats_.draws += 2;
 }
@@ -404,7 +399,7 @@ void MotorPipeline::drawLinear(MotorFrame& f, const MotorDraw& m, const motor::J
                                GLuint paletteBuffer, const glm::mat4* world) {
   const gl::DrawItem& d = m.d;
   const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
-  const gl::Program& program = bindMorph(m, useDrawProgram(f, kind, ScaleForm::Linear, m.morph));
+  const gl::Program& program = useDrawProgram(f, m, kind, ScaleForm::Linear);
   bool mirrored = false;
   if (palette) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
