@@ -85,9 +85,6 @@ template <int K> DriftResult run(int64_t steps) {
   auto renormMotor = [&](const M& a) {
     if constexpr (K > 0) return pk.normalize_pair(a); else return pk.normalize_m_k(a);
   };
-  auto motorArray = [](const M& a, float (&out)[8]) {
-    for (int i = 0; i < 8; ++i) out[i] = float(a[i / 4][i % 4]);
-  };
   auto renormMatrix = [&](glm::mat4& m) {
     float a[4][4];
     for (int c = 0; c < 4; ++c)
@@ -109,7 +106,7 @@ template <int K> DriftResult run(int64_t steps) {
       }
     }
     float arr[8];
-    motorArray(mv, arr);
+    for (int i = 0; i < 8; ++i) arr[i] = float(mv[i / 4][i % 4]);
     (renorm ? r.matrix.renormalised : r.matrix.raw) = matrixDistance(K, v);
     (renorm ? r.motor.renormalised : r.motor.raw) = motorDistance(K, arr);
   }

@@ -90,8 +90,7 @@ Result<Motor8> motorOfMatrix(int kappa, const glm::dmat4& m) {
 }
 
 Motor8 pairOfMotor(const Motor8& m) {
-  auto q = pgaK<double, 1>.pair_from_motor(toShim<1>(m));
-  return {q[0].x, q[0].y, q[0].z, q[0].w, q[1].x, q[1].y, q[1].z, q[1].w};
+  return fromShim<1>(pgaK<double, 1>.pair_from_motor(toShim<1>(m)));
 }
 
 Motor8 viewMotor(const CurvedScene& scene, double t) {
