@@ -94,10 +94,10 @@ bool variantDrawn(const json& r, const std::string& label) {
   return !recorded;
 }
 
-void summary(Document& d, const json& r) {
-  const std::vector<std::string> pipes = pipelinesOf(r);
+// The summary table: per pipeline, the per-scene figures' spread and the ops of each shader
+// variant some scene draws.
+void summaryTable(Document& d, const json& r, const std::vector<std::string>& pipes) {
   const json& sum = r["summary"];
-  d.heading(2, "Summary", "summary");
   std::vector<std::string> head = {"quantity (median (min..max) over the N scenes that have it)"};
   for (const std::string& p : pipes) head.push_back(p);
   std::vector<std::vector<Cell>> rows;
@@ -153,6 +153,11 @@ void summary(Document& d, const json& r) {
           });
     }
   d.table(head, rows);
+}
+
+// The summary's image lines: each pipeline's frames against the first's, and the skinning
+// methods' expected difference where it was measured.
+std::vector<std::string> imageLines(const json& sum, const std::vector<std::string>& pipes) {
   std::vector<std::string> lines;
   auto imageLine = [](const json& im) {
     return str(im["comparedFrames"], "0") + " frames compared, " + str(im["identicalFrames"], "0") +
@@ -173,6 +178,14 @@ void summary(Document& d, const json& r) {
                       "linear blend skinning and the other with motors: the methods' expected difference (measured, "
                       "not an error of either, and not what judges these frames): " + imageLine(sm) + ".");
   }
+  return lines;
+}
+
+// The summary's lines on the exact fallback (where a pipeline took it), frame time and CPU
+// kernel time.
+std::vector<std::string> fallbackAndTimeLines(const json& r, const std::vector<std::string>& pipes) {
+  const json& sum = r["summary"];
+  std::vector<std::string> lines;
   for (const std::string& p : pipes) {  // the exact fallback, where a pipeline took it
     const auto scenes = figures::figureNamed(r, "fallback.scenes." + p);
     if (!scenes || !(scenes->value > 0)) continue;
@@ -202,6 +215,15 @@ void summary(Document& d, const json& r) {
                   "skinned pairs in matched configurations: skinned_vertex world palette, skinned_vertex_reference the "
                   "references' form" + (machine.empty() ? std::string() : "; on " + machine) + "): " +
                   (kr.empty() ? str(at(r, {"kernels", "error"}), "not measured") : kr) + ".");
+  return lines;
+}
+
+void summary(Document& d, const json& r) {
+  const std::vector<std::string> pipes = pipelinesOf(r);
+  d.heading(2, "Summary", "summary");
+  summaryTable(d, r, pipes);
+  std::vector<std::string> lines = imageLines(r["summary"], pipes);
+  for (std::string& line : fallbackAndTimeLines(r, pipes)) lines.push_back(std::move(line));
   d.bullets(lines);
 }
 void plots(Document& d, const json& r) {

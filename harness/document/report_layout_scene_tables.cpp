@@ -92,6 +92,28 @@ void factsTable(Document& d, const std::vector<const json*>& scenes) {
   d.table({"scene", "origin", "status", "vertices (mesh / drawn)", "triangles", "skins / joints", "animations"}, rows);
 }
 
+// Every pipeline's non-zero fallback counters per scene: a row per scene and distinct set of
+// counters, naming the pipelines that have it; scenes without any are left out.
+void fallbackTable(Document& d, const std::vector<const json*>& scenes, const std::vector<std::string>& pipes) {
+  d.heading(3, "Fallbacks: each pipeline's non-zero fallback counters (counts; scenes without any left out)");
+  std::vector<std::vector<Cell>> rows;
+  for (const json* s : scenes) {
+    std::vector<std::pair<std::string, std::string>> groups;  // counters, pipelines (first-seen order)
+    for (const std::string& p : pipes) {
+      const json& pj = pipelineOf(*s, "pipelines", p);
+      const std::string text = pj.is_object() ? fallbacksText(pj) : "none";
+      if (text == "none") continue;
+      auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& e) { return e.first == text; });
+      if (g == groups.end()) groups.push_back({text, p});
+      else g->second += ", " + p;
+    }
+    for (const auto& [text, names] : groups)
+      rows.push_back({{str((*s)["id"]), "", "#scene-" + str((*s)["id"])}, {names}, {text}});
+  }
+  if (rows.empty()) rows.push_back({{"every scene"}, {"every pipeline"}, {"none"}});
+  d.table({"scene", "pipelines", "fallback counters"}, rows);
+}
+
 }  // namespace
 
 void sceneTable(Document& d, const json& r) {
@@ -125,12 +147,7 @@ void sceneTable(Document& d, const json& r) {
                 });
   quantityTable(d, "Pixels off by more than 1/255 [%]: the largest share over the scene's frames", scenes, compared,
                 [&base](const json& s, const std::string& p) { return worstImage(s, p, base).over; });
-  const std::string last = pipes.empty() ? std::string() : pipes.back();
-  quantityTable(d, "Fallbacks of " + last + " (the last pipeline): its non-zero fallback counters (counts)", scenes, {last},
-                [](const json& s, const std::string& p) {
-                  const json& pj = pipelineOf(s, "pipelines", p);
-                  return pj.is_object() ? fallbacksText(pj) : std::string("-");
-                });
+  fallbackTable(d, scenes, pipes);
 }
 
 }  // namespace mb::document

@@ -60,7 +60,26 @@ class ReportLayout(unittest.TestCase):
                 self.assertTrue(heading, f"{folder}: a table without its heading")
                 self.assertLessEqual(len(head), MOST_COLUMNS, f"{folder}: {heading}")
                 self.assertEqual(head[0], "scene", f"{folder}: {heading}")
-                self.assertEqual(len(rows), len(euclidean), f"{folder}: {heading}: one row per scene")
+                if not heading.startswith("Fallbacks"):
+                    self.assertEqual(len(rows), len(euclidean), f"{folder}: {heading}: one row per scene")
+
+    def test_the_fallback_table_names_every_pipeline_with_a_fallback_once_per_scene(self):
+        for folder in REPORTS:
+            found = [t for t in tables(section(self.md[folder], "Scenes")) if t[0].startswith("Fallbacks")]
+            self.assertEqual(len(found), 1, folder)
+            named = {}  # scene -> pipelines named in its rows
+            for line in found[0][2]:
+                cells = [c.strip() for c in line.strip().strip("|").split(" | ")]
+                if set(cells[0]) <= {"-"}:
+                    continue  # the header's separator
+                scene = cells[0].split("]")[0].lstrip("[")
+                named.setdefault(scene, []).extend(p.strip() for p in cells[1].split(","))
+            for s in self.json[folder]["scenes"]:
+                if s.get("space", "Euclidean") != "Euclidean":
+                    continue
+                expected = [p for p, pj in s.get("pipelines", {}).items()
+                            if any(isinstance(v, (int, float)) and v != 0 for v in (pj.get("fallbacks") or {}).values())]
+                self.assertEqual(sorted(named.get(s["id"], [])), sorted(expected), f"{folder}: {s['id']}")
 
     def test_summary_has_a_variants_rows_only_where_a_scene_draws_it(self):
         for folder in REPORTS:
