@@ -5,11 +5,13 @@
 
 #include "harness/document/report_figures.h"
 #include "harness/document/report_format.h"
+#include "harness/figures/figure_statistics.h"
 
 namespace mb::document {
 namespace {
 
 using json = nlohmann::json;
+using figures::spread;
 
 // A number at `path` inside `j` (a sequence of keys), or NaN.
 double number(const json& j, std::initializer_list<const char*> path) {
@@ -131,14 +133,6 @@ json curvedRow(const json& s) {
 }
 
 }  // namespace
-
-json spread(std::vector<double> v) {
-  if (v.empty()) return {{"n", 0}};
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  const double median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-  return {{"n", n}, {"min", v.front()}, {"median", median}, {"max", v.back()}};
-}
 
 bool isEuclidean(const json& scene) { return scene.value("space", "Euclidean") == "Euclidean"; }
 

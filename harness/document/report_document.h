@@ -47,7 +47,4 @@ struct JudgedFrame {
 JudgedFrame judgedFrame(const nlohmann::json& scene, const nlohmann::json& frame, const std::string& p,
                         const std::string& baseline);
 
-// min / median / max of `values` ({"n": 0} when empty).
-nlohmann::json spread(std::vector<double> values);
-
 }  // namespace mb::document

@@ -34,4 +34,18 @@ std::vector<double> pairedRatios(const std::vector<double>& a, const std::vector
   return r;
 }
 
+double midpointMedian(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+nlohmann::json spread(std::vector<double> v) {
+  if (v.empty()) return {{"n", 0}};
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return {{"n", n}, {"min", v.front()}, {"median", midpointMedian(v)}, {"max", v.back()}};
+}
+
 }  // namespace mb::figures

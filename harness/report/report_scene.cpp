@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 
+#include "harness/figures/figure_statistics.h"
 #include "harness/render/drawn_check.h"
 #include "harness/render/flip.h"
 #include "harness/render/frame_notes.h"
@@ -76,13 +77,6 @@ std::string timeText(float t) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", double(t));
   return buf;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 // One frame's judge of skinned frames by their own skinning method (skin_judgement.h): the
@@ -384,7 +378,7 @@ void pipelineSummaries(const SceneJob& job, FrameTally& tally, json& out) {
     pj["error"] = tally.pipelineError.count(p) ? json(tally.pipelineError[p]) : json(nullptr);
     if (tally.conversion.count(p)) {
       const auto& c = tally.conversion[p];
-      pj["conversionMs"] = {{"median", median(c)},
+      pj["conversionMs"] = {{"median", figures::midpointMedian(c)},
                             {"min", *std::min_element(c.begin(), c.end())},
                             {"samples", c}};
     }
