@@ -23,6 +23,7 @@
 #include "harness/bench/report_bench.h"
 #include "harness/cli/command.h"
 #include "harness/cli/output_paths.h"
+#include "harness/figures/number_text.h"
 #include "harness/process/progress.h"
 #include "harness/timing/disturbance.h"
 
@@ -111,13 +112,6 @@ size_t countSelected(const std::vector<std::string>& flags) {
   return n;
 }
 
-std::string num(const nlohmann::json& v, const char* fmt = "%.4g") {
-  if (!v.is_number() || !(v.get<double>() > 0)) return "-";
-  char b[32];
-  std::snprintf(b, sizeof b, fmt, v.get<double>());
-  return b;
-}
-
 // Which figures were taken while other work shared the cores (harness/timing/disturbance.h):
 // their pairs are marked DISTURBED above and are not verdict inputs for report or claims.
 void printDisturbed(const nlohmann::json& pairs) {
@@ -149,7 +143,7 @@ void printSummary(const SummaryReporter& rep, bool withProbe) {
   std::printf("\nMeasured on %s (CPU ratios hold for this CPU).\n", bench::cpuMachineLine(bench::cpuMachine()).c_str());
   const char* sides[] = {"matrix", "motor", "glm", "simd_matrix", "simd_motor", "simd_affine", "lanes_motor"};
   auto ips = [](const nlohmann::json& p, const char* side) {
-    return p.contains(side) ? num(p[side].value("items_per_second", nlohmann::json())) : std::string("-");
+    return p.contains(side) ? figures::positiveOrDash(p[side].value("items_per_second", nlohmann::json())) : std::string("-");
   };
   std::printf("Throughput (items/s; the median of the repetitions where repeated). matrix, motor: the "
               "shader source through the shim; glm: GLM's operators; simd_*: kernels/simd (Highway, "
@@ -163,9 +157,9 @@ void printSummary(const SummaryReporter& rep, bool withProbe) {
     for (const char* s : sides) std::printf(" %11s", ips(p, s).c_str());
     std::string best = "-";
     if (p["ratio_motor_fastest_matrix"].is_number())
-      best = num(p["ratio_motor_fastest_matrix"], "%.3g") + " (" + p["fastest_motor"].get<std::string>() + " / " +
+      best = figures::positiveOrDash(p["ratio_motor_fastest_matrix"], "%.3g") + " (" + p["fastest_motor"].get<std::string>() + " / " +
              p["fastest_matrix"].get<std::string>() + ")";
-    std::printf(" %9s %28s%s\n", num(p["ratio_motor_matrix"], "%.3g").c_str(), best.c_str(),
+    std::printf(" %9s %28s%s\n", figures::positiveOrDash(p["ratio_motor_matrix"], "%.3g").c_str(), best.c_str(),
                 p.value("disturbed", false) ? "  DISTURBED" : "");
   }
   printDisturbed(pairs);
@@ -187,9 +181,9 @@ void printSummary(const SummaryReporter& rep, bool withProbe) {
     for (const char* s : sides) {
       std::string cell = "-";
       if (p.contains(s))
-        cell = num(p[s].value("bytes_per_second", nlohmann::json())) + "B/s " +
-               num(p[s].value("bw_fraction", nlohmann::json()), "%.2f") + " " +
-               num(p[s].value(bench::kCopyFraction, nlohmann::json()), "%.2f");
+        cell = figures::positiveOrDash(p[s].value("bytes_per_second", nlohmann::json())) + "B/s " +
+               figures::positiveOrDash(p[s].value("bw_fraction", nlohmann::json()), "%.2f") + " " +
+               figures::positiveOrDash(p[s].value(bench::kCopyFraction, nlohmann::json()), "%.2f");
       std::printf(" %23s", cell.c_str());
     }
     std::printf("\n");

@@ -9,42 +9,10 @@ using json = nlohmann::json;
 const json kNull = nullptr;
 }  // namespace
 
-std::string fmt(double v, int digits) {
-  if (!std::isfinite(v)) return "-";
-  char buf[64];
-  // %g switches to exponents past `digits` digits (3240 -> 3.24e+03): integers (counts) are
-  // printed whole, whatever `digits` says.
-  if (std::fabs(v) < 1e15 && v == std::floor(v)) std::snprintf(buf, sizeof buf, "%.0f", v);
-  else std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
-}
-
-std::string sig3(double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
-
-std::string fmt(const json& v, int digits) { return v.is_number() ? fmt(v.get<double>(), digits) : "-"; }
-
-std::string fixed(const json& v, int decimals) {
-  if (!v.is_number() || !std::isfinite(v.get<double>())) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v.get<double>());
-  return buf;
-}
-
-std::string ratio(const json& v) { return v.is_number() ? fixed(v, 2) + "x" : "-"; }
-
 std::string psnrText(const json& m) {
   if (!m.is_object()) return "-";
   if (m.value("identical", false)) return "identical";
   return fixed(m.value("psnr", json()), 1) + " dB";
-}
-
-std::string percent(const json& f, int decimals) {
-  if (!f.is_number()) return "-";
-  return fixed(100.0 * f.get<double>(), decimals) + " %";
 }
 
 std::string spreadText(const json& s, int digits) {

@@ -5,23 +5,19 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/figures/number_text.h"
+
 namespace mb::document {
 
-// `v` with `digits` significant digits ("-" when v is not a number); a whole number (a count)
-// in full, never in exponent notation ("3240", not "3.24e+03").
-std::string fmt(const nlohmann::json& v, int digits = 3);
-std::string fmt(double v, int digits = 3);
-// `v` with three significant digits as printf's %.3g writes it ("3.24e+03", "nan", "inf"): the
-// claims' and the scope ladder's figures, not special-cased like fmt.
-std::string sig3(double v);
-// Fixed decimals ("-" when not a number).
-std::string fixed(const nlohmann::json& v, int decimals);
-// "0.97x" style ratio ("-" when not a number).
-std::string ratio(const nlohmann::json& v);
+// The numbers' text (fmt, sig3, fixed, ratio, percent): harness/figures/number_text.h.
+using figures::fixed;
+using figures::fmt;
+using figures::percent;
+using figures::ratio;
+using figures::sig3;
+
 // PSNR in dB; "identical" when the images are equal (psnr null and identical true).
 std::string psnrText(const nlohmann::json& metrics);
-// Percentage of a 0..1 fraction, e.g. "0.31 %".
-std::string percent(const nlohmann::json& fraction, int decimals = 2);
 // min / median / max of report_document's spread(): "36" when all equal, else "36 (32..40)".
 std::string spreadText(const nlohmann::json& spread, int digits = 3);
 // "; none on N scene(s) <why>" for a spread's "none" count (scenes where a pipeline has no such

@@ -1,7 +1,8 @@
 #include "harness/figures/figure.h"
 
 #include <cmath>
-#include <cstdio>
+
+#include "harness/figures/number_text.h"
 
 namespace mb::figures {
 
@@ -9,18 +10,12 @@ using json = nlohmann::json;
 
 namespace {
 
-std::string g3(double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
-
 std::string withUnit(double v, const std::string& unit) {
   if (!std::isfinite(v)) return "-";
-  if (unit == "x") return g3(v) + "x";
+  if (unit == "x") return sig3(v) + "x";
   // A count (a whole number of draws, vertices, files) reads as the integer it is.
   const bool count = v == std::floor(v) && std::fabs(v) >= 1000 && std::fabs(v) < 1e15;
-  const std::string text = count ? std::to_string(static_cast<long long>(v)) : g3(v);
+  const std::string text = count ? std::to_string(static_cast<long long>(v)) : sig3(v);
   return unit.empty() ? text : text + " " + unit;
 }
 
@@ -96,7 +91,7 @@ std::string valueText(const Figure& f) { return withUnit(f.value, f.unit); }
 std::string figureText(const Figure& f) {
   if (!std::isfinite(f.value)) return "- (" + (f.why.empty() ? std::string("not measured") : f.why) + ")";
   std::string s = valueText(f);
-  if (f.q1 && f.q3) s += " [IQR " + g3(*f.q1) + ".." + g3(*f.q3) + "]";
+  if (f.q1 && f.q3) s += " [IQR " + sig3(*f.q1) + ".." + sig3(*f.q3) + "]";
   std::string d = f.statistic;
   auto add = [&](const std::string& label, const std::string& v) {
     if (!v.empty()) d += (d.empty() ? "" : "; ") + label + v;
