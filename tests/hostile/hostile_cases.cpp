@@ -127,12 +127,14 @@ std::vector<Case> jsonCases() {
   return cs;
 }
 
-// Accessors, buffer views, indices, strides, alignment, huge counts, data: URIs, sparse.
-std::vector<Case> accessorCases() {
-  using namespace detail;
-  std::vector<Case> cs;
-  auto glb = [](const std::function<void(Doc&, QuadIds&)>& e) { return toGlb(quadDoc(e)); };
+namespace {
 
+// A finished quad document modified by `edit`, as .glb.
+Bytes glb(const std::function<void(Doc&, QuadIds&)>& e) { return toGlb(detail::quadDoc(e)); }
+
+// Counts, offsets and references out of range, wrong index and element types, strides, alignment.
+void accessorRangeCases(std::vector<Case>& cs) {
+  using namespace detail;
   cs.push_back(error("accessor_count_beyond_view.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.pos]["count"] = 100; }),
                      {"range", "exceed", "bounds", "too small", "beyond", "outside", "past"}, "POSITION count 100 in a 48-byte bufferView"));
   // Past its view, inside the buffer: the next view's bytes (the uvs) are read, as the glossary
@@ -203,6 +205,11 @@ std::vector<Case> accessorCases() {
     c.check = positionsEqual(p);
     cs.push_back(c);
   }
+}
+
+// Counts and lengths that would allocate gigabytes if trusted.
+void hugeCountCases(std::vector<Case>& cs) {
+  using namespace detail;
   cs.push_back(error("huge_accessor_count_2p31.glb", glb([](Doc& d, QuadIds& q) { d.j["accessors"][q.pos]["count"] = uint64_t(1) << 31; }),
                      {"range", "exceed", "bounds", "too small", "beyond", "outside", "past", "count", "large"},
                      "POSITION count 2^31: must fail without allocating 24 GiB"));
@@ -264,7 +271,11 @@ std::vector<Case> accessorCases() {
     c.atLeast = 4;
     cs.push_back(c);
   }
-  // data: URIs.
+}
+
+// data: URIs.
+void dataUriCases(std::vector<Case>& cs) {
+  using namespace detail;
   auto uriCase = [&](const std::string& file, const std::string& uri, const std::string& why) {
     Doc d = quadDoc();
     d.j["buffers"][0]["uri"] = uri;
@@ -275,7 +286,11 @@ std::vector<Case> accessorCases() {
   uriCase("datauri_not_base64.gltf", "data:application/octet-stream,hello", "data: URI without ;base64 (percent-encoded): 5 bytes for a larger byteLength");
   uriCase("datauri_truncated.gltf", "data:application/octet-stream;base64,AAAA", "data: URI decoding to 3 bytes for a larger byteLength");
   uriCase("datauri_empty.gltf", "data:", "data: URI with nothing after the colon");
-  // Sparse accessors.
+}
+
+// Sparse accessors.
+void sparseCases(std::vector<Case>& cs) {
+  using namespace detail;
   auto sparseDoc = [](uint8_t index, int count, const std::function<void(Doc&, int)>& more = {}) {
     Doc d;
     QuadIds q = quad(d);
@@ -302,16 +317,27 @@ std::vector<Case> accessorCases() {
     c.check = positionsEqual(p);
     cs.push_back(c);
   }
+}
+
+}  // namespace
+
+// Accessors, buffer views, indices, strides, alignment, huge counts, data: URIs, sparse.
+std::vector<Case> accessorCases() {
+  std::vector<Case> cs;
+  accessorRangeCases(cs);
+  hugeCountCases(cs);
+  dataUriCases(cs);
+  sparseCases(cs);
   return cs;
 }
 
-// Numbers: NaN/Inf, zero vectors, degenerate UVs, weights.
-std::vector<Case> numericCases() {
-  using namespace detail;
-  std::vector<Case> cs;
-  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-  auto glb = [](const std::function<void(Doc&, QuadIds&)>& e) { return toGlb(quadDoc(e)); };
+namespace {
 
+constexpr float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+
+// Non-finite positions; zero, NaN and missing normals.
+void positionNormalCases(std::vector<Case>& cs) {
+  using namespace detail;
   // Vertices 2 and 3 (set to the origin) leave the triangle 0 1 2 its area: the quad still draws.
   cs.push_back(fallback("nan_positions.glb", glb([&](Doc& d, QuadIds& q) {
                           pokeBin(d, q.pos, 2, 0, nan);
@@ -330,6 +356,11 @@ std::vector<Case> numericCases() {
   cs.push_back(fallback("nan_normals.glb", glb([&](Doc& d, QuadIds& q) { pokeBin(d, q.nrm, 1, 1, nan); }),
                         &LoadStats::badNormalsReplaced, 1, "a NaN normal"));
   cs.push_back(fallback("no_normals.glb", toGlb(quadDoc({}, false)), &LoadStats::flatNormalsGenerated, 1, "no NORMAL: flat normals"));
+}
+
+// Tangents generated for normal-mapped primitives, or authored and unusable.
+void tangentCases(std::vector<Case>& cs) {
+  using namespace detail;
   {
     // Degenerate UVs on a normal-mapped primitive without TANGENT: tangent generation divides
     // by the UV determinant, which is 0 for every triangle.
@@ -379,6 +410,11 @@ std::vector<Case> numericCases() {
     c.check = hasTangents();
     cs.push_back(c);
   }
+}
+
+// Skin weights and influences.
+void weightCases(std::vector<Case>& cs) {
+  using namespace detail;
   {
     Doc d;
     skinnedRibbon(d, 2, true, false);
@@ -414,6 +450,11 @@ std::vector<Case> numericCases() {
     d.finish();
     cs.push_back(fallback("influences_8.glb", toGlb(d), &LoadStats::influencesTruncated, 10, "JOINTS_1/WEIGHTS_1: 8 influences per vertex"));
   }
+}
+
+// Huge finite coordinates; non-finite values without a repair.
+void extremeValueCases(std::vector<Case>& cs) {
+  using namespace detail;
   {
     // Huge but finite coordinates: loads; bounds arithmetic must not overflow to Inf/NaN later.
     Doc d;
@@ -466,20 +507,34 @@ std::vector<Case> numericCases() {
     d.finish();
     cs.push_back(error("camera_yfov_1e300.glb", toGlb(d), {"finite", "camera", "range"}, "camera yfov 1e300"));
   }
+}
+
+}  // namespace
+
+// Numbers: NaN/Inf, zero vectors, degenerate UVs, weights.
+std::vector<Case> numericCases() {
+  std::vector<Case> cs;
+  positionNormalCases(cs);
+  tangentCases(cs);
+  weightCases(cs);
+  extremeValueCases(cs);
   return cs;
 }
 
-// Transforms and the node graph.
-std::vector<Case> graphCases() {
+namespace {
+
+// A finished quad document modified by `e` (before finish()), as .glb.
+Bytes glbWith(const std::function<void(Doc&)>& e) {
+  Doc d;
+  quad(d);
+  e(d);
+  d.finish();
+  return toGlb(d);
+}
+
+// Scales, matrices and rotations that are valid but degenerate.
+void transformCases(std::vector<Case>& cs) {
   using namespace detail;
-  std::vector<Case> cs;
-  auto glbWith = [](const std::function<void(Doc&)>& e) {
-    Doc d;
-    quad(d);
-    e(d);
-    d.finish();
-    return toGlb(d);
-  };
   {
     Case c = loads("nonuniform_scale.glb", glbWith([](Doc& d) { d.j["nodes"][0]["scale"] = {1, 2, 3}; }),
                    "node scale (1,2,3): kept as authored (the motor pipeline falls back to a matrix)");
@@ -520,6 +575,11 @@ std::vector<Case> graphCases() {
                      "rotation (0,0,0,0): must not become NaN"));
   cs.push_back(loads("rotation_unnormalised.glb", glbWith([](Doc& d) { d.j["nodes"][0]["rotation"] = {0, 0, 3, 4}; }),
                      "rotation of length 5"));
+}
+
+// Cycles, shared children and references out of range.
+void nodeGraphErrorCases(std::vector<Case>& cs) {
+  using namespace detail;
   cs.push_back(error("cycle_self.glb", glbWith([](Doc& d) { d.j["nodes"][0]["children"] = {0}; }), {"cycle", "parent", "own"},
                      "node 0 is its own child"));
   cs.push_back(error("cycle_two_nodes.glb", glbWith([](Doc& d) {
@@ -552,6 +612,11 @@ std::vector<Case> graphCases() {
   cs.push_back(error("node_skin_out_of_range.glb", glbWith([](Doc& d) { d.j["nodes"][0]["skin"] = 2; }), {"skin"}, "node skin 2, no skins"));
   cs.push_back(error("node_camera_out_of_range.glb", glbWith([](Doc& d) { d.j["nodes"][0]["camera"] = 0; }), {"camera"},
                      "node camera 0, no cameras"));
+}
+
+// Deep chains and a file without scenes.
+void hierarchyShapeCases(std::vector<Case>& cs) {
+  using namespace detail;
   {
     // A 10,000-deep chain: recursion in the loader or pose code would blow the stack.
     Doc d;
@@ -585,13 +650,24 @@ std::vector<Case> graphCases() {
     d.finish();
     cs.push_back(loads("no_scene.glb", toGlb(d), "no scenes: nodes without a scene (roots may be empty or all parentless nodes)"));
   }
+}
+
+}  // namespace
+
+// Transforms and the node graph.
+std::vector<Case> graphCases() {
+  std::vector<Case> cs;
+  transformCases(cs);
+  nodeGraphErrorCases(cs);
+  hierarchyShapeCases(cs);
   return cs;
 }
 
-// Skins, animation, materials, textures, images, external files, primitives.
-std::vector<Case> contentCases() {
+namespace {
+
+// Skins: many joints, joint indices and inverse bind matrices.
+void skinCases(std::vector<Case>& cs) {
   using namespace detail;
-  std::vector<Case> cs;
   {
     Doc d;
     skinnedRibbon(d, 1000);
@@ -625,7 +701,11 @@ std::vector<Case> contentCases() {
                      "1 inverse bind matrix for 3 joints"));
   cs.push_back(error("inverse_bind_not_mat4.glb", skinned([](Doc& d) { d.j["accessors"][5]["type"] = "VEC4"; }), {"inverse", "bind", "mat4", "type"},
                      "inverse bind matrices of type VEC4"));
-  // Animation.
+}
+
+// Animation.
+void animationCases(std::vector<Case>& cs) {
+  using namespace detail;
   auto anim = [](const std::function<void(Doc&, Json&)>& e) {
     Doc d;
     skinnedRibbon(d, 3);
@@ -675,15 +755,21 @@ std::vector<Case> contentCases() {
     c.check = listsUnsupported("weights of a node without morph targets", "weights channel");
     cs.push_back(c);
   }
-  // Materials, textures, images.
-  auto textured = [](const std::function<void(Doc&)>& e) {
-    Doc d;
-    int mat = normalMappedMaterial(d);
-    quad(d, true, true, mat);
-    e(d);
-    d.finish();
-    return d;
-  };
+}
+
+// A normal-mapped quad document modified by `e` (before finish()).
+Doc textured(const std::function<void(Doc&)>& e) {
+  Doc d;
+  int mat = normalMappedMaterial(d);
+  quad(d, true, true, mat);
+  e(d);
+  d.finish();
+  return d;
+}
+
+// Materials and textures.
+void materialCases(std::vector<Case>& cs) {
+  using namespace detail;
   cs.push_back(error("texture_missing_image.glb", toGlb(textured([](Doc& d) { d.j["textures"][0]["source"] = 9; })), {"image", "source", "texture"},
                      "texture source 9, one image"));
   cs.push_back(fallback("texture_missing_image_unused.glb", toGlb(textured([](Doc& d) { d.j["textures"].push_back({{"source", 9}}); })),
@@ -702,6 +788,11 @@ std::vector<Case> contentCases() {
                        for (size_t i = 8; i < 40; ++i) d.bin[off + i] ^= 0x5A;
                      })),
                      {"image", "decode", "png"}, "PNG with a scrambled IHDR"));
+}
+
+// Images that cannot be decoded or are out of range.
+void imageCases(std::vector<Case>& cs) {
+  using namespace detail;
   // A quad whose base colour texture is the given PNG bytes.
   auto withPng = [](const Bytes& pngBytes) {
     Doc d;
@@ -730,7 +821,11 @@ std::vector<Case> contentCases() {
   }
   cs.push_back(error("image_bufferview_out_of_range.glb", toGlb(textured([](Doc& d) { d.j["images"][0]["bufferView"] = 40; })),
                      {"image", "bufferview", "buffer view"}, "image bufferView 40"));
-  // External files (written next to the .gltf by the test).
+}
+
+// External files (written next to the .gltf by the test).
+void externalFileCases(std::vector<Case>& cs) {
+  using namespace detail;
   {
     Doc d = quadDoc();
     cs.push_back(error("missing_external_buffer.gltf", toGltfExternal(d, "missing_buffer_file.bin"), {"missing_buffer_file.bin"},
@@ -767,7 +862,11 @@ std::vector<Case> contentCases() {
     d.j["meshes"][0]["primitives"][0]["material"] = 0;
     cs.push_back(imageFallback("image_datauri_truncated.gltf", toGltfEmbedded(d), {"image", "decode", "png"}, "image data: URI of a cut PNG"));
   }
-  // Primitives.
+}
+
+// Primitives.
+void primitiveCases(std::vector<Case>& cs) {
+  using namespace detail;
   auto prim = [](const std::function<void(Json&)>& e) {
     Doc d;
     quad(d);
@@ -806,6 +905,19 @@ std::vector<Case> contentCases() {
     };
     cs.push_back(c);
   }
+}
+
+}  // namespace
+
+// Skins, animation, materials, textures, images, external files, primitives.
+std::vector<Case> contentCases() {
+  std::vector<Case> cs;
+  skinCases(cs);
+  animationCases(cs);
+  materialCases(cs);
+  imageCases(cs);
+  externalFileCases(cs);
+  primitiveCases(cs);
   return cs;
 }
 
