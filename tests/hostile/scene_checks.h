@@ -25,12 +25,16 @@ inline bool finite(const TRS& t) {
   return finite(t.translation) && finite(t.rotation) && finite(t.scale);
 }
 
-// "" when every invariant holds, else the first violation, e.g. "mesh 0 prim 1: index 7 >= 4".
-inline std::string checkSceneInvariants(const Scene& s) {
+// The steps of checkSceneInvariants, in its order: each "" or its first violation. Later
+// steps index with values the earlier ones checked.
+namespace invariants {
+
+inline bool inRange(int i, size_t n) { return i >= -1 && i < int(n); }
+
+// Per node: references in range, parent and child links consistent, finite transforms.
+inline std::string nodeLinks(const Scene& s) {
   std::ostringstream err;
   const int nNodes = int(s.nodes.size());
-  auto inRange = [](int i, size_t n) { return i >= -1 && i < int(n); };
-
   for (int i = 0; i < nNodes; ++i) {
     const Node& n = s.nodes[size_t(i)];
     if (!inRange(n.parent, s.nodes.size())) return (err << "node " << i << ": parent " << n.parent << " out of range", err.str());
@@ -54,8 +58,14 @@ inline std::string checkSceneInvariants(const Scene& s) {
     if (!n.instances.empty() && (n.mesh < 0 || n.skin >= 0))
       return (err << "node " << i << ": instances on a node without mesh or with a skin", err.str());
   }
-  // Acyclic: walking up from any node reaches a root. Linear: each node is walked once
-  // (0 = not yet seen, 1 = on the current walk, 2 = known to reach a root).
+  return "";
+}
+
+// Acyclic: walking up from any node reaches a root. Linear: each node is walked once
+// (0 = not yet seen, 1 = on the current walk, 2 = known to reach a root). Roots are parentless.
+inline std::string parentChains(const Scene& s) {
+  std::ostringstream err;
+  const int nNodes = int(s.nodes.size());
   std::vector<char> state(size_t(nNodes), 0);
   std::vector<int> walk;
   for (int i = 0; i < nNodes; ++i) {
@@ -73,7 +83,12 @@ inline std::string checkSceneInvariants(const Scene& s) {
     if (r < 0 || r >= nNodes) return (err << "root " << r << " out of range", err.str());
     if (s.nodes[size_t(r)].parent != -1) return (err << "root " << r << " has a parent", err.str());
   }
+  return "";
+}
 
+// Stream lengths, indices, material, and unit / finite / normalised vertex data.
+inline std::string primitives(const Scene& s) {
+  std::ostringstream err;
   for (size_t m = 0; m < s.meshes.size(); ++m) {
     for (size_t k = 0; k < s.meshes[m].primitives.size(); ++k) {
       const Primitive& p = s.meshes[m].primitives[k];
@@ -110,7 +125,13 @@ inline std::string checkSceneInvariants(const Scene& s) {
       }
     }
   }
-  // Skinned nodes: every joint index of their primitives addresses a joint of their skin.
+  return "";
+}
+
+// Skinned nodes: every joint index of their primitives addresses a joint of their skin.
+inline std::string jointIndices(const Scene& s) {
+  std::ostringstream err;
+  const int nNodes = int(s.nodes.size());
   for (int i = 0; i < nNodes; ++i) {
     const Node& n = s.nodes[size_t(i)];
     if (n.mesh < 0 || n.skin < 0) continue;
@@ -120,6 +141,13 @@ inline std::string checkSceneInvariants(const Scene& s) {
         for (int c = 0; c < 4; ++c)
           if (j[c] >= nj) return (err << "node " << i << ": joint index " << j[c] << " >= skin joint count " << nj, err.str());
   }
+  return "";
+}
+
+// Skins: one inverse bind matrix per joint, joints and skeleton in range, finite matrices.
+inline std::string skins(const Scene& s) {
+  std::ostringstream err;
+  const int nNodes = int(s.nodes.size());
   for (size_t k = 0; k < s.skins.size(); ++k) {
     const Skin& sk = s.skins[k];
     if (sk.inverseBind.size() != sk.joints.size()) return (err << "skin " << k << ": inverseBind count != joint count", err.str());
@@ -130,6 +158,12 @@ inline std::string checkSceneInvariants(const Scene& s) {
       for (int c = 0; c < 4; ++c)
         if (!finite(m[c])) return (err << "skin " << k << ": non-finite inverse bind matrix", err.str());
   }
+  return "";
+}
+
+// Cameras finite; material textures, texture images and samplers in range; image sizes.
+inline std::string references(const Scene& s) {
+  std::ostringstream err;
   for (size_t k = 0; k < s.cameras.size(); ++k) {
     const Camera& c = s.cameras[k];
     for (float v : {c.yfov, c.aspect, c.znear, c.zfar, c.xmag, c.ymag})
@@ -149,6 +183,13 @@ inline std::string checkSceneInvariants(const Scene& s) {
     if (im.width < 0 || im.height < 0 || im.rgba.size() != size_t(im.width) * size_t(im.height) * 4)
       return (err << "image " << i << ": " << im.rgba.size() << " bytes for " << im.width << "x" << im.height, err.str());
   }
+  return "";
+}
+
+// Animations: finite durations, targets in range, value counts, finite ordered times.
+inline std::string animations(const Scene& s) {
+  std::ostringstream err;
+  const int nNodes = int(s.nodes.size());
   for (size_t a = 0; a < s.animations.size(); ++a) {
     const Animation& an = s.animations[a];
     if (!std::isfinite(an.duration) || an.duration < 0) return (err << "animation " << a << ": bad duration", err.str());
@@ -167,6 +208,18 @@ inline std::string checkSceneInvariants(const Scene& s) {
         if (k && ch.times[k] < ch.times[k - 1]) return (where(), err << "times decrease at key " << k, err.str());
       }
     }
+  }
+  return "";
+}
+
+}  // namespace invariants
+
+// "" when every invariant holds, else the first violation, e.g. "mesh 0 prim 1: index 7 >= 4".
+inline std::string checkSceneInvariants(const Scene& s) {
+  using namespace invariants;
+  for (auto* step : {nodeLinks, parentChains, primitives, jointIndices, skins, references, animations}) {
+    std::string e = step(s);
+    if (!e.empty()) return e;
   }
   return "";
 }
