@@ -302,44 +302,54 @@ TEST(SimdKernels, SkinnedVertexMatchesTheShader) {
   }
 }
 
-TEST(SimdKernels, ComposeAndPaletteMatchTheShader) {
-  Rng r;
-  Planar a16(kItems, 16), b16(kItems, 16), o16(kItems, 16), a12(kItems, 12), b12(kItems, 12), o12(kItems, 12);
-  Planar a8(kItems, 8), b8(kItems, 8), o8(kItems, 8);
-  std::vector<int32_t> node(kItems);
-  for (size_t i = 0; i < kItems; ++i) {
-    float ma[16], mb[16];
-    const PS::motor pa = r.motor(ma, r.u(0.5f, 2.0f)), pb = r.motor(mb, r.u(0.5f, 2.0f));
-    // A general (projective) mat4 on the mat4 kernel: it multiplies all 16 entries.
-    for (int k = 0; k < 16; ++k) a16.at(size_t(k), i) = k % 4 == 3 ? r.u(-1, 1) : ma[k], b16.at(size_t(k), i) = mb[k];
-    for (int c = 0; c < 4; ++c)
-      for (int k = 0; k < 3; ++k) a12.at(size_t(c * 3 + k), i) = ma[c * 4 + k], b12.at(size_t(c * 3 + k), i) = mb[c * 4 + k];
-    for (int k = 0; k < 4; ++k)
-      a8.at(size_t(k), i) = pa[0][k], a8.at(size_t(4 + k), i) = pa[1][k], b8.at(size_t(k), i) = pb[0][k],
-                b8.at(size_t(4 + k), i) = pb[1][k];
-    node[i] = int32_t(std::uniform_int_distribution<int>(0, int(kItems) - 1)(r.g));
+// Item i of planar operands: a mat4, an affine 4x3 as a mat4 with last row (0, 0, 0, 1), a motor.
+MS::mat4 mat4At(const Planar& p, size_t i) {
+  float m[16];
+  for (int k = 0; k < 16; ++k) m[k] = p.at(size_t(k), i);
+  return mat4Of(m);
+}
+MS::mat4 affineAt(const Planar& p, size_t i) {
+  float m[16];
+  for (int c = 0; c < 4; ++c) {
+    for (int k = 0; k < 3; ++k) m[c * 4 + k] = p.at(size_t(c * 3 + k), i);
+    m[c * 4 + 3] = c == 3 ? 1.0f : 0.0f;
   }
+  return mat4Of(m);
+}
+PS::motor motorAt(const Planar& p, size_t i) {
+  float m[8];
+  for (int k = 0; k < 8; ++k) m[k] = p.at(size_t(k), i);
+  return motorOf(m);
+}
+
+// Random operands for the compose and palette kernels: the same transforms as general mat4s
+// (a16, b16), affine 4x3s (a12, b12) and motors (a8, b8), their outputs, and a random world
+// index per palette item.
+struct ComposeCase {
+  Planar a16{kItems, 16}, b16{kItems, 16}, o16{kItems, 16}, a12{kItems, 12}, b12{kItems, 12}, o12{kItems, 12};
+  Planar a8{kItems, 8}, b8{kItems, 8}, o8{kItems, 8};
+  std::vector<int32_t> node = std::vector<int32_t>(kItems);
   MS S;
   PS P;
-  auto mat4At = [](const Planar& p, size_t i) {
-    float m[16];
-    for (int k = 0; k < 16; ++k) m[k] = p.at(size_t(k), i);
-    return mat4Of(m);
-  };
-  auto affineAt = [](const Planar& p, size_t i) {  // as a mat4 with last row (0, 0, 0, 1)
-    float m[16];
-    for (int c = 0; c < 4; ++c) {
-      for (int k = 0; k < 3; ++k) m[c * 4 + k] = p.at(size_t(c * 3 + k), i);
-      m[c * 4 + 3] = c == 3 ? 1.0f : 0.0f;
+
+  ComposeCase() {
+    Rng r;
+    for (size_t i = 0; i < kItems; ++i) {
+      float ma[16], mb[16];
+      const PS::motor pa = r.motor(ma, r.u(0.5f, 2.0f)), pb = r.motor(mb, r.u(0.5f, 2.0f));
+      // A general (projective) mat4 on the mat4 kernel: it multiplies all 16 entries.
+      for (int k = 0; k < 16; ++k) a16.at(size_t(k), i) = k % 4 == 3 ? r.u(-1, 1) : ma[k], b16.at(size_t(k), i) = mb[k];
+      for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 3; ++k) a12.at(size_t(c * 3 + k), i) = ma[c * 4 + k], b12.at(size_t(c * 3 + k), i) = mb[c * 4 + k];
+      for (int k = 0; k < 4; ++k)
+        a8.at(size_t(k), i) = pa[0][k], a8.at(size_t(4 + k), i) = pa[1][k], b8.at(size_t(k), i) = pb[0][k],
+                  b8.at(size_t(4 + k), i) = pb[1][k];
+      node[i] = int32_t(std::uniform_int_distribution<int>(0, int(kItems) - 1)(r.g));
     }
-    return mat4Of(m);
-  };
-  auto motorAt = [](const Planar& p, size_t i) {
-    float m[8];
-    for (int k = 0; k < 8; ++k) m[k] = p.at(size_t(k), i);
-    return motorOf(m);
-  };
-  forEachTarget([&](const std::string&) {
+  }
+
+  // The three compose kernels against matrixCompose (general and affine) and gp_mm.
+  void checkCompose() {
     mb::simd::composeMat4(a16.cplanes(), b16.cplanes(), o16.planes(), kItems);
     mb::simd::composeAffine(a12.cplanes(), b12.cplanes(), o12.planes(), kItems);
     mb::simd::composeMotor(a8.cplanes(), b8.cplanes(), o8.planes(), kItems);
@@ -367,7 +377,9 @@ TEST(SimdKernels, ComposeAndPaletteMatchTheShader) {
     EXPECT_LE(w4.err, kTol) << "matrixCompose " << w4.where;
     EXPECT_LE(w3.err, kTol) << "matrixCompose (affine) " << w3.where;
     EXPECT_LE(wm.err, kTol) << "gp_mm " << wm.where;
+  }
 
+  void checkPalette() {
     // Palette: world[node[j]] * inverseBind[j], the operands AoS as the pipelines hold them
     // (worlds as the hierarchy kernels write them: the affine a12 as mat4s, the motor a8 with a
     // scale that gp_mm does not apply; the inverse binds b12 as mat4s, b8 as motors), the
@@ -400,6 +412,14 @@ TEST(SimdKernels, ComposeAndPaletteMatchTheShader) {
     }
     EXPECT_LE(pa.err, kTol) << "palette affine " << pa.where;
     EXPECT_LE(pm.err, kTol) << "palette motor " << pm.where;
+  }
+};
+
+TEST(SimdKernels, ComposeAndPaletteMatchTheShader) {
+  ComposeCase c;
+  forEachTarget([&](const std::string&) {
+    c.checkCompose();
+    c.checkPalette();
   });
 }
 
