@@ -29,12 +29,10 @@ using mb::cli_test::readText;
 using mb::cli_test::runCommand;
 using mb::cli_test::runMb;
 
-TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
-  const fs::path dir = mb::cli_test::scratchDir("report");
+// Runs the report on a file that is not JSON, then textured_box; the run goes on past the bad file.
+void runWithBadFileFirst(const fs::path& dir, const fs::path& out, std::string& log) {
   const fs::path bad = dir / "broken.gltf";
   std::ofstream(bad) << "{ this is not json";
-  const fs::path out = dir / "out";
-  std::string log;
   // The bad file first: the good scene after it must still be measured.
   const int rc = runCommand(motorbench() + "report " + quoted(bad) + " textured_box -o " + quoted(out) +
                                 " --no-bench --no-isa --frames 3 --size 64x48 --jobs 2",
@@ -42,8 +40,10 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
   // Written in full, but a scene failed: exit 1, as inspect.
   ASSERT_EQ(rc, 1) << log;
   EXPECT_NE(log.find("[2/2] textured_box: rendering motor t=0"), std::string::npos) << log;
+}
 
-  const json r = readJson(out / "report.json");
+// report.json: the documented top-level and machine keys, every pipeline, both scenes.
+void checkReportKeys(const json& r, const std::string& log) {
   ASSERT_FALSE(r.is_discarded()) << log;
   for (const char* key : {"schema", "tool", "machine", "settings", "summary", "scenes", "opsPerVertex", "kernels",
                           "plots", "files"})
@@ -53,13 +53,17 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
   EXPECT_EQ(r["settings"]["pipelines"], json(mb::pipelineNames()));  // every registered one, matrix first
   EXPECT_EQ(r["settings"]["width"], 64);
   ASSERT_EQ(r["scenes"].size(), 2u);
+}
 
-  const json& broken = r["scenes"][0];
+// The bad file: failed, its error names it.
+void checkBrokenScene(const json& broken) {
   EXPECT_EQ(broken["status"], "failed");
   ASSERT_TRUE(broken["error"].is_string());
   EXPECT_NE(broken["error"].get<std::string>().find("broken.gltf"), std::string::npos) << broken["error"];
+}
 
-  const json& box = r["scenes"][1];
+// textured_box: loaded, with its sections; each frame's images and diff exist at relative paths, with metrics.
+void checkBoxFrames(const json& box, const fs::path& out) {
   EXPECT_EQ(box["id"], "textured_box");
   EXPECT_EQ(box["status"], "ok") << box.dump(1);
   for (const char* key : {"stats", "vertexMix", "times", "frames", "pipelines", "timing", "opsPerVertex"})
@@ -77,7 +81,10 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
     for (const char* key : {"rmse", "psnr", "identical", "maxError", "fractionOver1"})
       EXPECT_TRUE(f["metrics"]["motor"].contains(key)) << key;
   }
-  // Memory as uploaded: 12 vs 9 floats per vertex on this normal-mapped box.
+}
+
+// Memory as uploaded: 12 vs 9 floats per vertex on this normal-mapped box; fallbacks, conversion, timing and ops.
+void checkBoxPipelines(const json& box) {
   const json& mm = box["pipelines"]["matrix"]["memory"];
   const json& qm = box["pipelines"]["motor"]["memory"];
   for (const char* key : {"bytesPerVertex", "floatsPerVertex", "floatsPerTransform", "floatsPerJoint", "vertexBytes"})
@@ -89,13 +96,18 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
   EXPECT_TRUE(box["timing"]["ratio_motor_matrix"].is_number()) << box["timing"].dump();
   EXPECT_TRUE(box["opsPerVertex"]["motor"]["counted"]["mul"].is_number());
   EXPECT_EQ(box["stats"]["geometry"]["vertices"], 24);
+}
 
+// Kernels skipped (--no-isa); one scene failed, one ok.
+void checkKernelsAndSummary(const json& r) {
   EXPECT_EQ(r["kernels"]["source"], "skipped");
   EXPECT_TRUE(r["kernels"]["error"].is_string());
   EXPECT_EQ(r["summary"]["failed"], 1);
   EXPECT_EQ(r["summary"]["ok"], 1);
+}
 
-  // The documents: relative image paths, the failure named.
+// The documents: relative image paths, the failure named.
+void checkDocuments(const json& r, const fs::path& out) {
   for (const char* doc : {"report.md", "report.html"}) {
     const std::string text = readText(out / doc);
     EXPECT_NE(text.find("images/textured_box/t0_motor.png"), std::string::npos) << doc;
@@ -109,9 +121,11 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
     EXPECT_NE(text.find("Diff heat maps:"), std::string::npos) << doc;
   }
   EXPECT_TRUE(r["glossary"]["PipelineStats"].contains("zeroScalarFrames")) << r["glossary"].dump();
+}
 
-  // The ops step (a minute or more) reports progress up to its last item; every frame
-  // records the pixels each pipeline drew (the box covers part of the image, never all of it).
+// The ops step (a minute or more) reports progress up to its last item; every frame
+// records the pixels each pipeline drew (the box covers part of the image, never all of it).
+void checkProgressAndDrawnPixels(const json& box, const std::string& log) {
   EXPECT_TRUE(std::regex_search(log, std::regex("report: counting ops per vertex: ([0-9]+)/\\1 kernels and shader variants")))
       << log;
   for (const json& f : box["frames"])
@@ -120,8 +134,11 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
       EXPECT_GT(f["drawnPixels"][p].get<int64_t>(), 0) << p;
       EXPECT_LT(f["drawnPixels"][p].get<int64_t>(), 64 * 48) << p;
     }
-  // image_error is grouped, one bar per compared pipeline on the scene, each at its
-  // own x, read from the data plots/index.json records (when matplotlib is there).
+}
+
+// image_error is grouped, one bar per compared pipeline on the scene, each at its
+// own x, read from the data plots/index.json records (when matplotlib is there).
+void checkImageErrorBars(const json& r, const fs::path& out) {
   if (r["plots"]["available"] == true) {
     const json index = readJson(out / "plots" / "index.json");
     ASSERT_FALSE(index.is_discarded());
@@ -138,6 +155,23 @@ TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
     EXPECT_EQ(series, std::set<std::string>(compared.begin(), compared.end())) << bars.dump();
     EXPECT_EQ(xs.size(), compared.size()) << bars.dump();
   }
+}
+
+TEST(CliReport, SmallSceneWithBadFileWritesDocumentedReport) {
+  const fs::path dir = mb::cli_test::scratchDir("report");
+  const fs::path out = dir / "out";
+  std::string log;
+  ASSERT_NO_FATAL_FAILURE(runWithBadFileFirst(dir, out, log));
+  const json r = readJson(out / "report.json");
+  ASSERT_NO_FATAL_FAILURE(checkReportKeys(r, log));
+  ASSERT_NO_FATAL_FAILURE(checkBrokenScene(r["scenes"][0]));
+  const json& box = r["scenes"][1];
+  ASSERT_NO_FATAL_FAILURE(checkBoxFrames(box, out));
+  checkBoxPipelines(box);
+  checkKernelsAndSummary(r);
+  checkDocuments(r, out);
+  ASSERT_NO_FATAL_FAILURE(checkProgressAndDrawnPixels(box, log));
+  ASSERT_NO_FATAL_FAILURE(checkImageErrorBars(r, out));
   EXPECT_EQ(r["diffLegend"]["stops"].size(), 7u);
   fs::remove_all(dir);
 }
