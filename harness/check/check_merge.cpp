@@ -62,7 +62,7 @@ CheckItem itemFromJson(const json& e) {
 
 int mergeCheckRuns(const std::vector<std::string>& dirs, const std::string& outDir) {
   std::vector<json> runs;
-  std::vector<ShardPart> parts;
+  std::vector<options::ShardPart> parts;
   for (const std::string& d : dirs) {
     std::ifstream in(fs::path(d) / "check.json");
     json j = in ? json::parse(in, nullptr, false) : json();
@@ -73,7 +73,7 @@ int mergeCheckRuns(const std::vector<std::string>& dirs, const std::string& outD
                      j["shard"].value("inputs", std::vector<std::string>{})});
     runs.push_back(std::move(j));
   }
-  if (std::string why = checkShardSet(parts); !why.empty()) return fail(why);
+  if (std::string why = options::checkShardSet(parts); !why.empty()) return fail(why);
   for (size_t i = 1; i < runs.size(); ++i)
     if (runs[i]["golden"] != runs[0]["golden"])
       return fail(dirs[i] + " and " + dirs[0] + " checked different golden folders");

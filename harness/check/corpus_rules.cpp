@@ -239,7 +239,7 @@ std::string prepareFile(const std::string& option, const std::string& path) {
 // The options, or the error ("" when they parsed) in `error`.
 Options parseOptions(const std::vector<std::string>& argv, std::string& error) {
   Options o;
-  Args args(argv, OptionSpec{{"pipelines", "size", "jobs", "timeout", "min-psnr", "max-drawn-diff", "out", "o", "junit",
+  options::Args args(argv, options::OptionSpec{{"pipelines", "size", "jobs", "timeout", "min-psnr", "max-drawn-diff", "out", "o", "junit",
                               "worker-exe"},
                              {"rules", "quiet"},
                              {},
@@ -306,7 +306,7 @@ int runCheckRules(const std::vector<std::string>& argv) {
   Options o;
   try {
     o = parseOptions(argv, error);
-  } catch (const OptionError& e) {
+  } catch (const options::OptionError& e) {
     error = e.what();
   }
   if (!error.empty()) return commandError("check", error);

@@ -32,7 +32,7 @@ void printFigures(const json& doc) {
 
 int runAccuracy(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("accuracy", message); };
-  Args args(argv, {{"skinned-files", "drift-steps", "json"}, {}, {}});
+  options::Args args(argv, {{"skinned-files", "drift-steps", "json"}, {}, {}});
   if (!args.error().empty()) return fail(args.error());
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
   const int64_t driftSteps = args.integer("drift-steps", long(accuracy::kDriftSteps), 1, 1000000000);

@@ -58,7 +58,7 @@ struct Selection {
   golden::GoldenChoice goldens;
   std::string llvmpipeGoldenDir;
   std::string renderer, drawnOn;  // GL_RENDERER; the same with the device (describeGl)
-  Shard shard;  // --shard I/N: this run checks its part of `inputs` only
+  options::Shard shard;  // --shard I/N: this run checks its part of `inputs` only
 };
 
 // The selected pipelines that draw `scene`'s space (glTF pipelines for glTF scenes, s3_* for
@@ -258,8 +258,8 @@ int check(const Selection& sel) {
   for (const golden::CheckInput& in : sel.inputs) names.push_back(in.scene);
   run.shard = {{"index", sel.shard.index}, {"count", sel.shard.count}, {"inputs", names}};
   std::vector<golden::CheckInput> mine;
-  for (size_t k : shardPositions(names, sel.shard)) mine.push_back(sel.inputs[k]);
-  if (const std::string note = emptyShardNote(sel.shard, names.size(), mine.size()); !note.empty())
+  for (size_t k : options::shardPositions(names, sel.shard)) mine.push_back(sel.inputs[k]);
+  if (const std::string note = options::emptyShardNote(sel.shard, names.size(), mine.size()); !note.empty())
     commandNotes("check", {note});
   std::set<std::string> rendererNotes, plannedFiles;
   std::optional<process::Progress> progress;
@@ -385,7 +385,7 @@ std::vector<std::string> defaultScenes() {
 }
 
 // The registered, drawable pipelines of --pipelines (default: all); "" or the error.
-std::string selectPipelines(const Args& args, Selection& sel) {
+std::string selectPipelines(const options::Args& args, Selection& sel) {
   std::vector<std::string> requested =
       args.has("pipelines") ? splitList(args.get("pipelines", "")) : allPipelineNames();
   const std::vector<std::string> registered = allPipelineNames();
@@ -402,7 +402,7 @@ std::string selectPipelines(const Args& args, Selection& sel) {
 }
 
 // Where the goldens are, and whether that folder can be used: "" or the error.
-std::string goldenFolderError(const Args& args, const Selection& sel) {
+std::string goldenFolderError(const options::Args& args, const Selection& sel) {
   const bool anyFile = std::any_of(sel.inputs.begin(), sel.inputs.end(), [](const auto& in) { return in.file; });
   // A user's files never fall back to the project's own goldens: they are not there, and
   // --update would write the user's images into motorbench's tests/golden.
@@ -429,7 +429,7 @@ std::string goldenFolderError(const Args& args, const Selection& sel) {
 
 int runCheck(const std::vector<std::string>& argv) {
   if (std::find(argv.begin(), argv.end(), "--rules") != argv.end()) return runCheckRules(argv);
-  Args args(argv, {{"golden", "scenes", "pipelines", "out", "o", "shader-dir", "shard", "gpu", "junit"},
+  options::Args args(argv, {{"golden", "scenes", "pipelines", "out", "o", "shader-dir", "shard", "gpu", "junit"},
                    {"update", "quiet"},
                    {}});
   auto fail = [](const std::string& message) { return commandError("check", message); };
@@ -462,7 +462,7 @@ int runCheck(const std::vector<std::string>& argv) {
   if (auto text = args.get("shard")) {
     if (args.has("update")) return fail("--shard checks; --update writes every golden in one run");
     std::string error;
-    auto shard = parseShard(*text, &error);
+    auto shard = options::parseShard(*text, &error);
     if (!shard) return fail(error);
     sel.shard = *shard;
   }

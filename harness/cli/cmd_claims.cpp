@@ -42,7 +42,7 @@ const SourceOption kSources[] = {
 };
 
 int runClaims(const std::vector<std::string>& argv) {
-  const Args args(argv, {{"o", "output", "json", "results", "report", "ops", "morph", "accuracy", "scene-graphs",
+  const options::Args args(argv, {{"o", "output", "json", "results", "report", "ops", "morph", "accuracy", "scene-graphs",
                           "corpus-report", "corpus-accuracy"},
                          {},
                          {}});

@@ -164,7 +164,7 @@ std::string frameName(const Scene& scene, const FrameSettings& settings) {
 int compareError(const std::string& message) { return commandError("compare", message); }
 
 // --pipelines, when given: exactly two different registered names.
-Status checkComparePipelines(const Args& args) {
+Status checkComparePipelines(const options::Args& args) {
   if (!args.has("pipelines")) return {};
   const std::vector<std::string> given = splitList(args.get("pipelines", ""));
   if (given.size() != 2) return Status::fail("--pipelines needs exactly two names, e.g. matrix,motor");
@@ -174,7 +174,7 @@ Status checkComparePipelines(const Args& args) {
 
 // The outputs before the (slow) load and render: -o not a file, --size well formed, the scene's
 // name (cheap), then the folder created and --junit's place writable.
-Status prepareCompareOutputs(const Args& args, const std::string& junitPath) {
+Status prepareCompareOutputs(const options::Args& args, const std::string& junitPath) {
   namespace fs = std::filesystem;
   const std::string dir = args.get("o", args.get("output", ""));
   std::error_code ec;
@@ -219,7 +219,7 @@ int runError(CompareRun& run, const std::string& message) {
 
 // --pipelines, else the paper's pair in the scene's space (matrix,motor; s3_matrix,s3_motor;
 // h3_...): the first two registered names (the registry lists the variants after them).
-std::vector<std::string> comparedPipelines(const Args& args, const Scene& scene) {
+std::vector<std::string> comparedPipelines(const options::Args& args, const Scene& scene) {
   if (args.has("pipelines")) return splitList(args.get("pipelines", ""));
   std::vector<std::string> pair = pipelineNames(scene.curved.space);
   pair.resize(2);
@@ -405,7 +405,7 @@ int reportVerdict(CompareRun& run, const Scene& scene, const std::vector<std::st
 }
 
 int runCompare(const std::vector<std::string>& argv) {
-  Args args(argv, sceneCommandOptions({"pipelines", "fail", "failpercent", "hardfail", "junit"}, {"quiet"}));
+  options::Args args(argv, sceneCommandOptions({"pipelines", "fail", "failpercent", "hardfail", "junit"}, {"quiet"}));
   if (!args.error().empty()) return compareError(args.error());
   CompareRun run;
   run.quiet = args.has("quiet");

@@ -111,7 +111,7 @@ Status writeDiffJunit(const std::string& path, const std::string& a, const std::
 
 int runDiff(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("diff", message); };
-  const Args args(argv, {{"fail", "failpercent", "hardfail", "warn", "warnpercent", "hardwarn", "flip-mean", "flip-max",
+  const options::Args args(argv, {{"fail", "failpercent", "hardfail", "warn", "warnpercent", "hardwarn", "flip-mean", "flip-max",
                           "out", "junit"},
                          {"quiet"},
                          {},

@@ -27,7 +27,7 @@ std::string opsText(const nlohmann::json& c) {
 
 int runDrift(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("drift", message); };
-  Args args(argv, {{"steps", "json"}, {}, {}});
+  options::Args args(argv, {{"steps", "json"}, {}, {}});
   if (!args.error().empty()) return fail(args.error());
   if (!args.positional().empty()) return fail("unexpected argument '" + args.positional()[0] + "'");
   const std::optional<double> steps = double(args.integer("steps", 1000000, 1, 1000000000));

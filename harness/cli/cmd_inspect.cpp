@@ -144,16 +144,16 @@ void printAggregate(const nlohmann::json& a) {
 }
 
 int runInspect(const std::vector<std::string>& argv) {
-  mb::Args args(argv, {{"json", "shard"}, {"summary"}, {}});
+  mb::options::Args args(argv, {{"json", "shard"}, {"summary"}, {}});
   if (!args.error().empty() || args.positional().empty()) {
     std::fprintf(stderr, "usage: motorbench inspect FILE|DIR|BUILTIN... [--summary] [--json FILE] [--shard I/N]\n  %s\n",
                  args.error().empty() ? "expected at least one FILE, DIR or built-in scene name" : args.error().c_str());
     return 2;
   }
-  mb::Shard shard;
+  mb::options::Shard shard;
   if (auto text = args.get("shard")) {
     std::string error;
-    auto parsed = mb::parseShard(*text, &error);
+    auto parsed = mb::options::parseShard(*text, &error);
     if (!parsed) {
       std::fprintf(stderr, "motorbench inspect: error: %s\n", error.c_str());
       return 2;
@@ -171,8 +171,8 @@ int runInspect(const std::vector<std::string>& argv) {
   std::vector<mb::FileStats> stats;
   nlohmann::json files = nlohmann::json::array();
   int failed = 0;
-  const std::vector<size_t> mine = mb::shardPositions(all, shard);
-  if (const std::string note = mb::emptyShardNote(shard, all.size(), mine.size()); !note.empty())
+  const std::vector<size_t> mine = mb::options::shardPositions(all, shard);
+  if (const std::string note = mb::options::emptyShardNote(shard, all.size(), mine.size()); !note.empty())
     std::fprintf(stderr, "motorbench inspect: %s\n", note.c_str());
   const bool summary = args.has("summary");
   // Per-file lines go to stdout (unless --summary): the progress is plain lines there, at most

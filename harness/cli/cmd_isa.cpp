@@ -13,7 +13,7 @@
 namespace {
 
 int runIsaCommand(const std::vector<std::string>& argv) {
-  const mb::Args args(argv, {{"family", "json", "isa-text", "jobs"}, {"device"}, {}, {"family"}});
+  const mb::options::Args args(argv, {{"family", "json", "isa-text", "jobs"}, {"device"}, {}, {"family"}});
   if (!args.error().empty()) {
     std::fprintf(stderr, "motorbench isa: %s\n", args.error().c_str());
     return 2;

@@ -30,7 +30,7 @@ using json = nlohmann::json;
 // run would write it. Exit 1 when some file failed to load (as inspect), 2 when the merge failed.
 int mergeInspectRuns(const std::vector<std::string>& inputs, const std::string& out) {
   auto fail = [](const std::string& message) { return commandError("merge", message); };
-  std::vector<ShardPart> parts;
+  std::vector<options::ShardPart> parts;
   std::map<std::string, json> byFile;
   for (const std::string& path : inputs) {
     std::ifstream in(path);
@@ -42,7 +42,7 @@ int mergeInspectRuns(const std::vector<std::string>& inputs, const std::string& 
                      j["shard"].value("inputs", std::vector<std::string>{})});
     for (const json& f : j["files"]) byFile[f.value("input", f.value("file", ""))] = f;
   }
-  if (std::string why = checkShardSet(parts); !why.empty()) return fail(why);
+  if (std::string why = options::checkShardSet(parts); !why.empty()) return fail(why);
   json files = json::array();
   int failed = 0;
   for (const std::string& file : parts[0].inputs) {
@@ -64,7 +64,7 @@ int mergeInspectRuns(const std::vector<std::string>& inputs, const std::string& 
 
 int runMerge(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("merge", message); };
-  const Args args(argv, {{"o", "output", "python"}, {"no-plots"}, {}});
+  const options::Args args(argv, {{"o", "output", "python"}, {"no-plots"}, {}});
   if (!args.error().empty()) return fail(args.error());
   const std::vector<std::string>& inputs = args.positional();
   const std::string out = args.get("o", args.get("output", ""));

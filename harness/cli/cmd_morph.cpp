@@ -86,7 +86,7 @@ void countMeasuredBefore(json& doc, const std::vector<Source>& sources, const st
 }
 
 int runMorphCommand(const std::vector<std::string>& argv) {
-  const mb::Args args(argv, {{"json", "size"}, {}, {}, {}});
+  const mb::options::Args args(argv, {{"json", "size"}, {}, {}, {}});
   if (!args.error().empty()) return fail(args.error());
   int size = 0;
   try {

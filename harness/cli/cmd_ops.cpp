@@ -19,7 +19,7 @@
 namespace {
 
 int runOps(const std::vector<std::string>& argv) {
-  const mb::Args args(argv, {{"json"}, {}, {}});
+  const mb::options::Args args(argv, {{"json"}, {}, {}});
   if (!args.error().empty()) {
     std::fprintf(stderr, "motorbench ops: %s\n", args.error().c_str());
     return 2;

@@ -63,7 +63,7 @@ Status renderTo(const Scene& scene, const std::string& pipeline, const FrameSett
 
 int runRender(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return commandError("render", message); };
-  Args args(argv, sceneCommandOptions({"pipeline", "pipelines"}));
+  options::Args args(argv, sceneCommandOptions({"pipeline", "pipelines"}));
   if (!args.error().empty()) return fail(args.error());
   const bool several = args.has("pipelines");
   if (several && args.has("pipeline"))

@@ -51,7 +51,7 @@ json timeWorker(const report::SceneJob& job, const report::Options& o) {
 
 // Worker: one scene, one phase ("render" or "time"); writes --worker-out with "complete": true
 // last so the parent can tell a finished result from a crash.
-int runWorker(const Args& args, const report::Options& o) {
+int runWorker(const options::Args& args, const report::Options& o) {
   if (args.positional().size() != 1) return fail("--worker needs exactly one scene");
   const std::string mode = args.get("worker", "");
   if (mode != "render" && mode != "time") return fail("--worker " + mode + ": expected render or time");
@@ -113,7 +113,7 @@ int finishReport(int status, const report::Options& o, const std::string& junitP
 }
 
 int runReportCommand(const std::vector<std::string>& argv) {
-  const Args args(argv, {{"o", "output", "jobs", "size", "frames", "bench-json", "bench-min-time", "pipelines",
+  const options::Args args(argv, {{"o", "output", "jobs", "size", "frames", "bench-json", "bench-min-time", "pipelines",
                           "python", "plot-script", "timeout", "time-size", "worker", "worker-out", "worker-id",
                           "worker-index", "worker-total", "shard", "anim", "worker-anims", "instances", "gpu",
                           "isa-json", "morph-json", "junit"},
@@ -161,7 +161,7 @@ int runReportCommand(const std::vector<std::string>& argv) {
   o.plotScript = args.get("plot-script", "");
   if (auto text = args.get("shard")) {
     std::string error;
-    auto shard = parseShard(*text, &error);
+    auto shard = options::parseShard(*text, &error);
     if (!shard) return fail(error);
     o.shard = *shard;
   }

@@ -10,7 +10,7 @@
 namespace {
 
 int runScenes(const std::vector<std::string>& argv) {
-  mb::Args args(argv, {{"o", "out"}, {}, {}});
+  mb::options::Args args(argv, {{"o", "out"}, {}, {}});
   std::string dir = args.get("o", args.get("out", ""));
   if (!args.error().empty() || dir.empty()) {
     std::fprintf(stderr, "usage: motorbench scenes -o DIR [NAME...]\n  %s\n",

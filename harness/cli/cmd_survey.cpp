@@ -89,7 +89,7 @@ struct SurveyOptions {
 
 Result<SurveyOptions> readSurveyOptions(const std::vector<std::string>& argv) {
   auto fail = [](const std::string& message) { return Result<SurveyOptions>::fail(message); };
-  Args args(argv, OptionSpec{{"size", "pipelines", "gpu", "o", "output", "images"}, {}, {}, {}});
+  options::Args args(argv, options::OptionSpec{{"size", "pipelines", "gpu", "o", "output", "images"}, {}, {}, {}});
   if (!args.error().empty()) return fail(args.error());
   if (args.positional().size() != 1) return fail("expected one SCENE (a .gltf/.glb file or a built-in name)");
   SurveyOptions o;

@@ -54,7 +54,7 @@ void printRow(const timing::ConfigTiming& c) {
 // {"rows": [...], "patchMemory": [...] or null} to `resultPath` (patchMemory: the bytes table of
 // a Bezier patch scene timed with --level). Exit 0, or 2 when anything failed.
 int timeOneScene(const std::string& name, const timing::Settings& normal, const timing::Settings& tiny,
-                 const std::vector<int>& levels, const Args& args, const std::string& resultPath) {
+                 const std::vector<int>& levels, const options::Args& args, const std::string& resultPath) {
   nlohmann::json rows = nlohmann::json::array(), patchMemory = nullptr;
   int status = 0;
   const Status spec = checkSceneSpec(name);  // a misspelt name lists the built-ins
@@ -136,7 +136,7 @@ struct TimeConfigs {
   timing::Settings normal, tiny;
 };
 
-TimeConfigs readTimeConfigs(const Args& args) {
+TimeConfigs readTimeConfigs(const options::Args& args) {
   TimeConfigs c;
   c.normal.frames = int(args.integer("frames", 30, 1, 100000));
   c.normal.warmup = int(args.integer("warmup", 5, 0, 100000));
@@ -149,7 +149,7 @@ TimeConfigs readTimeConfigs(const Args& args) {
 }
 
 // --pipelines, checked before any scene is timed: at least one name, every one registered.
-Status checkTimePipelines(const Args& args) {
+Status checkTimePipelines(const options::Args& args) {
   auto list = args.get("pipelines");
   if (!list) return {};
   if (splitList(*list).empty()) return Status::fail("--pipelines " + *list + ": expected pipeline names, e.g. matrix,motor");
@@ -158,7 +158,7 @@ Status checkTimePipelines(const Args& args) {
 
 // --level N[,M...]: refinement levels of Bezier patch scenes (others ignore it), each timed
 // in the same worker, one after the other. Empty when not given.
-Result<std::vector<int>> readLevels(const Args& args) {
+Result<std::vector<int>> readLevels(const options::Args& args) {
   using R = Result<std::vector<int>>;
   std::vector<int> levels;
   auto list = args.get("level");
@@ -177,7 +177,7 @@ Result<std::vector<int>> readLevels(const Args& args) {
 }
 
 // The scenes named (folders expanded, their warnings printed), or every built-in scene.
-Result<std::vector<std::string>> timedSceneNames(const Args& args) {
+Result<std::vector<std::string>> timedSceneNames(const options::Args& args) {
   std::vector<std::string> warnings;
   std::vector<std::string> names = expandSceneInputs(args.positional(), &warnings);
   for (const std::string& w : warnings) std::fprintf(stderr, "motorbench time: warning: %s\n", w.c_str());
@@ -224,7 +224,7 @@ struct TimedScenes {
 
 // One scene timed in a child process (`time SCENE --worker scratch`, the timing options passed
 // on), its rows and patch memory added to `into`.
-void timeSceneInWorker(const std::string& name, const Args& args, const std::string& scratch, process::Progress& progress,
+void timeSceneInWorker(const std::string& name, const options::Args& args, const std::string& scratch, process::Progress& progress,
                        TimedScenes& into) {
   std::vector<std::string> child = {"time", name, "--worker", scratch};
   for (const char* key : {"frames", "warmup", "best-of", "size", "tiny", "level", "instances", "pipelines", "anim"})
@@ -274,7 +274,7 @@ nlohmann::json timeJson(const timing::MachineInfo& machine, const TimeConfigs& c
 }
 
 int runTime(const std::vector<std::string>& argv) {
-  const Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level",
+  const options::Args args(argv, {{"frames", "warmup", "best-of", "size", "tiny", "lp-threads", "json", "worker", "level",
                           "instances", "gpu", "pipelines", "anim"},
                          {},
                          {}});

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-namespace mb {
+namespace mb::options {
 namespace {
 
 // "-1", "-.5", "-" and anything not starting with '-' are words, not options.
@@ -143,4 +143,4 @@ std::pair<int, int> Args::size(const std::string& key, int width, int height) co
   return *wh;
 }
 
-}  // namespace mb
+}  // namespace mb::options

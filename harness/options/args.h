@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-namespace mb {
+namespace mb::options {
 
 // What a command accepts. Keys are written without dashes ("size", "o"); on the line a key is
 // given as --key or -key (the usual short form: -o).
@@ -71,4 +71,4 @@ private:
 // "WxH" -> (W, H) under Args::size's rule; std::nullopt when malformed or out of range.
 std::optional<std::pair<int, int>> parseSize(const std::string& text);
 
-}  // namespace mb
+}  // namespace mb::options

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <numeric>
 
-namespace mb {
+namespace mb::options {
 
 std::optional<Shard> parseShard(const std::string& text, std::string* error) {
   Shard s;
@@ -34,9 +34,9 @@ std::string emptyShardNote(const Shard& shard, size_t inputs, size_t mine) {
          "goes to merge with the others";
 }
 
-}  // namespace mb
+}  // namespace mb::options
 
-namespace mb {
+namespace mb::options {
 
 std::string checkShardSet(const std::vector<ShardPart>& parts) {
   if (parts.empty()) return "no shard outputs given";
@@ -60,4 +60,4 @@ std::string checkShardSet(const std::vector<ShardPart>& parts) {
   return "";
 }
 
-}  // namespace mb
+}  // namespace mb::options

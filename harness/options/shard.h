@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace mb {
+namespace mb::options {
 
 struct Shard {
   int index = 1;  // 1-based
@@ -27,9 +27,9 @@ std::vector<size_t> shardPositions(const std::vector<std::string>& items, const 
 // "" when the shard holds some input. An empty shard exits 0: it is a valid part of the set.
 std::string emptyShardNote(const Shard& shard, size_t inputs, size_t mine);
 
-}  // namespace mb
+}  // namespace mb::options
 
-namespace mb {
+namespace mb::options {
 
 // What one shard's output says about itself, for merging.
 struct ShardPart {
@@ -43,4 +43,4 @@ struct ShardPart {
 // from different input lists").
 std::string checkShardSet(const std::vector<ShardPart>& parts);
 
-}  // namespace mb
+}  // namespace mb::options

@@ -53,7 +53,7 @@ std::string animText(const Scene& scene, int index) {
 }
 
 // Reads --<timeKey> for animation `anim` (>= 0): >= 0 seconds, clamped to the duration (noted).
-Result<float> timeFor(const Args& args, const std::string& timeKey, double fallback, const Scene& scene,
+Result<float> timeFor(const options::Args& args, const std::string& timeKey, double fallback, const Scene& scene,
                       int anim, std::vector<std::string>& notes) {
   const double t = args.real(timeKey, fallback, 0.0, 1e9, "a time in seconds");
   const double duration = scene.animations[size_t(anim)].duration;
@@ -77,8 +77,8 @@ std::vector<std::string> everyBuiltinName() {
 
 }  // namespace
 
-OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags) {
-  OptionSpec spec;
+options::OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags) {
+  options::OptionSpec spec;
   spec.values = std::move(values);
   spec.values.insert({"o", "output", "anim", "time", "anim2", "time2", "blend", "camera", "size", "instances", "gpu"});
   spec.flags = std::move(flags);
@@ -110,7 +110,7 @@ Status checkPipelineNames(const std::string& option, const std::vector<std::stri
   return Status();
 }
 
-Result<ChosenAnimation> chooseAnimation(const Args& args, const Scene& scene) {
+Result<ChosenAnimation> chooseAnimation(const options::Args& args, const Scene& scene) {
   ChosenAnimation c;
   if (auto a = args.get("anim")) {
     auto i = resolveIndex("anim", *a, scene.animations.size(), [&](size_t k) { return scene.animations[k].name; },
@@ -125,7 +125,7 @@ Result<ChosenAnimation> chooseAnimation(const Args& args, const Scene& scene) {
   return c;
 }
 
-Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene, std::vector<std::string>* notesOut) {
+Result<FrameSettings> frameSettingsFromArgs(const options::Args& args, const Scene& scene, std::vector<std::string>* notesOut) {
   using R = Result<FrameSettings>;
   std::vector<std::string> notes;
   FrameSettings s;
@@ -170,7 +170,7 @@ Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene
   return s;
 }
 
-Result<int> applyInstancesOption(const Args& args, Scene& scene, std::vector<std::string>* notes) {
+Result<int> applyInstancesOption(const options::Args& args, Scene& scene, std::vector<std::string>* notes) {
   if (!args.has("instances")) return 1;
   const long n = args.integer("instances", 1, 1, kMaxInstances);
   if (scene.curved.space != Space::Euclidean)
@@ -193,7 +193,7 @@ Result<int> applyInstancesOption(const Args& args, Scene& scene, std::vector<std
   return int(n);
 }
 
-Result<SceneCommand> parseSceneCommand(const Args& args, const std::string& outputWhat) {
+Result<SceneCommand> parseSceneCommand(const options::Args& args, const std::string& outputWhat) {
   using R = Result<SceneCommand>;
   if (!args.error().empty()) return R::fail(args.error());
   if (args.positional().size() != 1)

@@ -31,13 +31,13 @@ constexpr long kMaxInstances = 1 << 20;
   "  --instances N      every mesh node drawn N times on a grid around it, one instanced draw (1..1048576,\n" \
   "                     default 1; skinned and Bezier patch nodes stay drawn once)\n"
 
-Result<int> applyInstancesOption(const Args& args, Scene& scene, std::vector<std::string>* notes);
+Result<int> applyInstancesOption(const options::Args& args, Scene& scene, std::vector<std::string>* notes);
 
 // The option spec of a command that renders one SCENE to -o/--output: `values` and `flags`
 // plus -o/--output and the frame options --anim A --time T [--anim2 B --time2 T2 --blend W]
 // --camera C --size WxH --instances N --gpu (gpu_option.h). A repeated --time is an error (one
 // frame per run).
-OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags = {});
+options::OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::string> flags = {});
 
 // Reads the frame options against `scene`. Animations and cameras are indices or names. Rules
 // (each failure is a message naming the option and value):
@@ -47,7 +47,7 @@ OptionSpec sceneCommandOptions(std::set<std::string> values, std::set<std::strin
 //  - --blend W in [0, 1] needs --anim2 (default 0.5 with --anim2).
 //  - --size WxH as Args::size.
 // `notes` receives lines for the user about choices made for them (may be nullptr).
-Result<FrameSettings> frameSettingsFromArgs(const Args& args, const Scene& scene,
+Result<FrameSettings> frameSettingsFromArgs(const options::Args& args, const Scene& scene,
                                             std::vector<std::string>* notes = nullptr);
 
 // Why `spec` cannot be a scene, checked before loading: a folder ("... is a folder; render and
@@ -69,7 +69,7 @@ struct SceneCommand {
   FrameSettings settings;
   std::vector<std::string> notes;  // from frameSettingsFromArgs
 };
-Result<SceneCommand> parseSceneCommand(const Args& args, const std::string& outputWhat);
+Result<SceneCommand> parseSceneCommand(const options::Args& args, const std::string& outputWhat);
 
 // What will be drawn, one line each, for stderr: "animation 0 'Suzanne' (1 of 1, duration
 // 3.708 s) at t = 1.5 s" or "rest pose (...)", the blend when there is one, "camera: ..."
@@ -80,7 +80,7 @@ std::vector<std::string> describeFrame(const Scene& scene, const FrameSettings& 
 // --anim, 0 when the scene has animations, else -1 (the rest pose). `text` says which, e.g.
 // "animation 1 'Run' (2 of 3, duration 0.8 s)" or "the rest pose (no animations)".
 struct ChosenAnimation { int index = -1; std::string text; };
-Result<ChosenAnimation> chooseAnimation(const Args& args, const Scene& scene);
+Result<ChosenAnimation> chooseAnimation(const options::Args& args, const Scene& scene);
 
 // Prints "motorbench <command>: error: <message>" on stderr; returns 2, the error exit code.
 int commandError(const char* command, const std::string& message);

@@ -7,7 +7,7 @@
 
 namespace mb {
 
-Status applyGpuOption(const Args& args) {
+Status applyGpuOption(const options::Args& args) {
   auto choice = args.has("gpu") ? gl::parseGpuChoice(args.get("gpu", ""), "--gpu") : gl::gpuChoiceFromEnvironment();
   if (!choice) return Status::fail(choice.error());
   if (choice->kind == gl::GpuChoice::Kind::Device)

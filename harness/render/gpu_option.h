@@ -18,6 +18,6 @@ inline constexpr const char* kGpuOptionUsage = "[--gpu auto|llvmpipe|N]";
 
 // Reads --gpu (else MB_GPU): a malformed value, or a device index that eglQueryDevicesEXT does
 // not list, is an error naming it (the latter lists the devices seen). Sets MB_GPU.
-Status applyGpuOption(const Args& args);
+Status applyGpuOption(const options::Args& args);
 
 }  // namespace mb

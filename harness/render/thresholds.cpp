@@ -28,19 +28,19 @@ std::string byteStepRefusal(const std::string& where, const std::string& shown, 
 
 }  // namespace
 
-double channelDifference(const Args& args, const std::string& key, double fallback) {
+double channelDifference(const options::Args& args, const std::string& key, double fallback) {
   const auto text = args.get(key);
   if (!text) return fallback;
   if (text->find('/') == std::string::npos) {  // a plain number: >= 1 is the byte-step trap
     char* end = nullptr;
     const double d = std::strtod(text->c_str(), &end);
     if (!text->empty() && *end == '\0' && std::isfinite(d) && d >= 1)
-      throw OptionError(byteStepRefusal("--" + key, *text, d));
+      throw options::OptionError(byteStepRefusal("--" + key, *text, d));
   }
   return args.real(key, fallback, 0.0, 1.0, kChannelDifferenceWhat);
 }
 
-double pixelPercent(const Args& args, const std::string& key, double fallback) {
+double pixelPercent(const options::Args& args, const std::string& key, double fallback) {
   return args.real(key, fallback, 0.0, 100.0, "a percentage of pixels");
 }
 
@@ -52,11 +52,11 @@ std::string channelDifferenceError(const std::string& where, double value) {
   return where + ": expected " + kChannelDifferenceWhat + " in 0..1, got '" + shown + "'";
 }
 
-bool failThresholdGiven(const Args& args) {
+bool failThresholdGiven(const options::Args& args) {
   return args.has("fail") || args.has("failpercent") || args.has("hardfail");
 }
 
-Thresholds compareThresholds(const Args& args) {
+Thresholds compareThresholds(const options::Args& args) {
   Thresholds t;
   t.fail = channelDifference(args, "fail", t.fail);
   t.failPercent = pixelPercent(args, "failpercent", args.has("fail") || !args.has("hardfail") ? 0.0 : 100.0);
@@ -64,7 +64,7 @@ Thresholds compareThresholds(const Args& args) {
   return t;
 }
 
-IdiffThresholds idiffThresholds(const Args& args) {
+IdiffThresholds idiffThresholds(const options::Args& args) {
   IdiffThresholds t;  // Thresholds' defaults are idiff's: 1e-6, 0 %, none
   t.fail.fail = channelDifference(args, "fail", t.fail.fail);
   t.fail.failPercent = pixelPercent(args, "failpercent", t.fail.failPercent);
@@ -74,7 +74,7 @@ IdiffThresholds idiffThresholds(const Args& args) {
   t.warn.hardFail = channelDifference(args, "hardwarn", t.warn.hardFail);
   for (auto [hard, soft, limits] : {std::tuple{"hardfail", "fail", &t.fail}, std::tuple{"hardwarn", "warn", &t.warn}})
     if (args.has(soft) && limits->hardFail < limits->fail)  // (below the 1e-6 default no byte step lies)
-      throw OptionError(std::string("--") + hard + " " + args.get(hard, "") + " is below --" + soft + " " +
+      throw options::OptionError(std::string("--") + hard + " " + args.get(hard, "") + " is below --" + soft + " " +
                         differenceText(limits->fail) + ": a difference between them would pass (idiff judges --" +
                         hard + " only when some pixel is over --" + soft + "); give --" + hard + " >= --" + soft);
   return t;
@@ -103,7 +103,7 @@ const char* outcomeText(IdiffOutcome outcome) {
 
 bool FlipThresholds::given() const { return std::isfinite(mean) || std::isfinite(max); }
 
-FlipThresholds flipThresholds(const Args& args) {
+FlipThresholds flipThresholds(const options::Args& args) {
   FlipThresholds t;
   t.mean = args.real("flip-mean", t.mean, 0.0, 1.0, "a FLIP error (0 = no visible difference .. 1)");
   t.max = args.real("flip-max", t.max, 0.0, 1.0, "a FLIP error (0 = no visible difference .. 1)");

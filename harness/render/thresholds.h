@@ -18,20 +18,20 @@ namespace mb {
 
 // --key as a channel difference under the rule above; `fallback` when absent. Throws OptionError
 // naming the option ("--fail 1: ... did you mean 1/255?").
-double channelDifference(const Args& args, const std::string& key, double fallback);
+double channelDifference(const options::Args& args, const std::string& key, double fallback);
 // --key as a percentage of pixels, 0..100; `fallback` when absent. Throws OptionError.
-double pixelPercent(const Args& args, const std::string& key, double fallback);
+double pixelPercent(const options::Args& args, const std::string& key, double fallback);
 
 // The rule on a value already read as a number (golden.json's "fail": 1): "" when it is a
 // fraction in 0..1 below 1, else the message, naming `where` ("golden.json normal_torus exact fail").
 std::string channelDifferenceError(const std::string& where, double value);
 
 // True when --fail, --failpercent or --hardfail is on the line.
-bool failThresholdGiven(const Args& args);
+bool failThresholdGiven(const options::Args& args);
 // compare's reading: only the thresholds given judge. --fail alone: any pixel over it fails;
 // --failpercent alone: that % of pixels may differ at all; --hardfail alone: only the largest
 // difference is judged.
-Thresholds compareThresholds(const Args& args);
+Thresholds compareThresholds(const options::Args& args);
 
 // idiff's reading, with idiff's defaults: fail 1e-6, failpercent 0, hardfail none; warn 1e-6,
 // warnpercent 0, hardwarn none (so with no option any difference fails, as idiff).
@@ -41,7 +41,7 @@ struct IdiffThresholds {
 };
 // Throws OptionError when --hardfail is below --fail (a difference between them would pass:
 // idiff's hardfail judges only pairs with a pixel over fail) or --hardwarn below --warn.
-IdiffThresholds idiffThresholds(const Args& args);
+IdiffThresholds idiffThresholds(const options::Args& args);
 
 // idiff's verdict on two images of the same size, as idiff decides it (OpenImageIO 2.4 and
 // later): PASS when no pixel is over the fail threshold; else FAILURE when more than failpercent %
@@ -64,7 +64,7 @@ struct FlipThresholds {
   double max = std::numeric_limits<double>::infinity();
   bool given() const;
 };
-FlipThresholds flipThresholds(const Args& args);
+FlipThresholds flipThresholds(const options::Args& args);
 // "" when within, else which threshold and by how much ("FLIP mean 0.0123 exceeds --flip-mean 0.01").
 std::string flipFailure(const FlipResult& flip, const FlipThresholds& t);
 

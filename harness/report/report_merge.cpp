@@ -50,14 +50,14 @@ int mergeReports(const std::vector<std::string>& dirs, const Options& o) {
     runs.push_back({d, std::move(j)});
   }
   const json& first = runs.front().report;
-  std::vector<ShardPart> parts;
+  std::vector<options::ShardPart> parts;
   for (const ShardRun& r : runs) {
     const json& sh = r.report["settings"]["shard"];
-    ShardPart p{r.dir, sh.value("index", 0), sh.value("count", 0), {}};
+    options::ShardPart p{r.dir, sh.value("index", 0), sh.value("count", 0), {}};
     for (const json& in : sh["inputs"]) p.inputs.push_back(in.value("spec", ""));
     parts.push_back(std::move(p));
   }
-  if (std::string why = checkShardSet(parts); !why.empty()) return fail(why);
+  if (std::string why = options::checkShardSet(parts); !why.empty()) return fail(why);
   for (const ShardRun& r : runs)
     if (comparable(r.report["settings"]) != comparable(first["settings"]))
       return fail(r.dir + " and " + runs.front().dir +

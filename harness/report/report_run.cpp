@@ -234,7 +234,7 @@ Result<RunInputs> runInputs(const Options& o) {
     if (!resolved) return Result<RunInputs>::fail(resolved.error());
     allAnims = *resolved;
   }
-  for (size_t k : shardPositions(specs, o.shard)) {
+  for (size_t k : options::shardPositions(specs, o.shard)) {
     r.inputs.push_back(r.all[k]);
     r.anims.push_back(allAnims[k]);
   }
@@ -248,7 +248,7 @@ void announceRun(const Options& o, const RunInputs& in) {
   if (o.shard.count > 1)
     say("shard " + std::to_string(o.shard.index) + "/" + std::to_string(o.shard.count) + ": " +
         std::to_string(total) + " of " + std::to_string(in.all.size()) + " scene(s)");
-  if (const std::string note = emptyShardNote(o.shard, in.all.size(), in.inputs.size()); !note.empty())
+  if (const std::string note = options::emptyShardNote(o.shard, in.all.size(), in.inputs.size()); !note.empty())
     say("warning: " + note);
   say(std::to_string(total) + " scene(s), pipelines " + joined(runPipelines(o)) + ", " +
       std::to_string(o.jobs) + " job(s), images " + std::to_string(o.width) + "x" +

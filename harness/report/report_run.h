@@ -34,7 +34,7 @@ struct Options {
   std::string python;                // "" = defaultPython() (report_plots.h)
   std::string plotScript;            // "" = scripts/plot.py of this source tree
   double timeoutS = 900;             // per worker process
-  Shard shard;                       // --shard I/N: this run's part of the input list
+  options::Shard shard;                       // --shard I/N: this run's part of the input list
   int instances = 1;                 // --instances N: every mesh node drawn N times (frame_options.h)
 };
 

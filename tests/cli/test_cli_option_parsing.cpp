@@ -1,6 +1,6 @@
 // The option parser every command shares (harness/options): values, flags, repeats, numbers
 // and sizes read by one set of rules with the option named in every message; in-process on
-// mb::Args, then on commands as a user typed them.
+// mb::options::Args, then on commands as a user typed them.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -21,55 +21,55 @@ using mb::cli_test::quoted;
 // --- the parser, in-process -----------------------------------------------------------------
 
 TEST(CliArgs, UnknownOptionAtTheEndIsUnknownNotMissingItsValue) {
-  mb::Args a({"scene", "--frames", "3", "--no-bnech"}, {{"frames"}, {"no-bench"}, {}});
+  mb::options::Args a({"scene", "--frames", "3", "--no-bnech"}, {{"frames"}, {"no-bench"}, {}});
   EXPECT_EQ(a.error(), "unknown option --no-bnech");
 }
 
 TEST(CliArgs, OptionFollowedByAnOptionIsMissingItsValue) {
-  mb::Args a({"normal_torus", "--size", "-o", "x.png"}, {{"size", "o"}, {}, {}});
+  mb::options::Args a({"normal_torus", "--size", "-o", "x.png"}, {{"size", "o"}, {}, {}});
   EXPECT_EQ(a.error().rfind("option --size needs a value (found the option -o", 0), 0u) << a.error();
-  mb::Args end({"--size"}, {{"size"}, {}, {}});
+  mb::options::Args end({"--size"}, {{"size"}, {}, {}});
   EXPECT_EQ(end.error(), "option --size needs a value");
 }
 
 TEST(CliArgs, NegativeNumbersAreValuesThatReachTheRangeCheck) {
-  mb::Args a({"--time", "-1"}, {{"time"}, {}, {}});
+  mb::options::Args a({"--time", "-1"}, {{"time"}, {}, {}});
   EXPECT_EQ(a.error(), "");
   EXPECT_EQ(a.get("time", ""), "-1");
-  EXPECT_THROW(a.real("time", 0, 0, 1e9, "a time in seconds"), mb::OptionError);
+  EXPECT_THROW(a.real("time", 0, 0, 1e9, "a time in seconds"), mb::options::OptionError);
 }
 
 TEST(CliArgs, RepeatedOptionIsAnErrorNamingBothValues) {
-  mb::Args a({"--time", "0.5", "--time", "1"}, {{"time"}, {}, {{"time", "one frame per run"}}});
+  mb::options::Args a({"--time", "0.5", "--time", "1"}, {{"time"}, {}, {{"time", "one frame per run"}}});
   EXPECT_EQ(a.error(), "option --time given twice ('0.5', '1'); one frame per run");
 }
 
 TEST(CliArgs, ListOptionsCollectRepeatsOthersStillRefuseThem) {
   // `report --anim a,b --anim c`: a list option joins its repeats with ','.
-  mb::Args a({"--anim", "candy_wrapper,0", "--time", "1", "--anim=twist"}, {{"anim", "time"}, {}, {}, {"anim"}});
+  mb::options::Args a({"--anim", "candy_wrapper,0", "--time", "1", "--anim=twist"}, {{"anim", "time"}, {}, {}, {"anim"}});
   EXPECT_EQ(a.error(), "");
   EXPECT_EQ(a.get("anim", ""), "candy_wrapper,0,twist");
   EXPECT_EQ(mb::splitList(a.get("anim", "")), (std::vector<std::string>{"candy_wrapper", "0", "twist"}));
-  mb::Args b({"--anim", "a", "--time", "1", "--time", "2"}, {{"anim", "time"}, {}, {}, {"anim"}});
+  mb::options::Args b({"--anim", "a", "--time", "1", "--time", "2"}, {{"anim", "time"}, {}, {}, {"anim"}});
   EXPECT_EQ(b.error(), "option --time given twice ('1', '2'); give it once");
 }
 
 TEST(CliArgs, FlagsTakeNoValueAndKeyValueFormWorks) {
-  mb::Args a({"--update=1"}, {{}, {"update"}, {}});
+  mb::options::Args a({"--update=1"}, {{}, {"update"}, {}});
   EXPECT_EQ(a.error(), "option --update takes no value");
-  mb::Args b({"--size=64x32", "--update"}, {{"size"}, {"update"}, {}});
+  mb::options::Args b({"--size=64x32", "--update"}, {{"size"}, {"update"}, {}});
   EXPECT_EQ(b.error(), "");
   EXPECT_EQ(b.size("size", 1, 1), std::make_pair(64, 32));
   EXPECT_TRUE(b.has("update"));
 }
 
 TEST(CliArgs, NumbersAreRangeCheckedWithTheOptionNamed) {
-  mb::Args a({"--frames", "abc", "--jobs", "0", "--w", "0.5", "--big", "1000000"},
+  mb::options::Args a({"--frames", "abc", "--jobs", "0", "--w", "0.5", "--big", "1000000"},
              {{"frames", "jobs", "w", "big"}, {}, {}});
   auto message = [](auto f) {
     try {
       f();
-    } catch (const mb::OptionError& e) {
+    } catch (const mb::options::OptionError& e) {
       return std::string(e.what());
     }
     return std::string("no error");
@@ -83,10 +83,10 @@ TEST(CliArgs, NumbersAreRangeCheckedWithTheOptionNamed) {
 }
 
 TEST(CliArgs, OneSizeRuleWxHBothPositive) {
-  EXPECT_EQ(mb::parseSize("640x480"), std::make_optional(std::make_pair(640, 480)));
-  EXPECT_EQ(mb::parseSize("16384x1"), std::make_optional(std::make_pair(16384, 1)));
+  EXPECT_EQ(mb::options::parseSize("640x480"), std::make_optional(std::make_pair(640, 480)));
+  EXPECT_EQ(mb::options::parseSize("16384x1"), std::make_optional(std::make_pair(16384, 1)));
   for (const char* bad : {"640", "0x0", "0x10", "10x0", "-5x5", "16385x1", "10x10x", "ax10", "", "10*10"})
-    EXPECT_FALSE(mb::parseSize(bad)) << bad;
+    EXPECT_FALSE(mb::options::parseSize(bad)) << bad;
 }
 
 // --- commands as users typed them ------------------------------------------------------------

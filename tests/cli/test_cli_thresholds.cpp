@@ -22,15 +22,15 @@ using mb::cli_test::contains;
 using mb::cli_test::quoted;
 using mb::cli_test::Ran;
 
-mb::Args thresholdArgs(const std::vector<std::string>& line) {
-  return mb::Args(line, mb::OptionSpec{{"fail", "hardfail", "warn", "hardwarn", "failpercent", "warnpercent"}, {}, {}, {}});
+mb::options::Args thresholdArgs(const std::vector<std::string>& line) {
+  return mb::options::Args(line, mb::options::OptionSpec{{"fail", "hardfail", "warn", "hardwarn", "failpercent", "warnpercent"}, {}, {}, {}});
 }
 
 // The OptionError's message of reading --key from `line`, "" when it reads.
 std::string thresholdRefusal(const std::vector<std::string>& line, const std::string& key) {
   try {
     mb::channelDifference(thresholdArgs(line), key, 0);
-  } catch (const mb::OptionError& e) {
+  } catch (const mb::options::OptionError& e) {
     return e.what();
   }
   return "";
@@ -53,7 +53,7 @@ TEST(CliThresholds, ByteStepsAndFractionsReadAlikeAndAPlainOneIsRefused) {
   EXPECT_TRUE(mb::channelDifferenceError("golden.json fail", 0.004).empty());
   EXPECT_TRUE(contains(mb::channelDifferenceError("golden.json fail", 2), "Did you mean 2/255"));
   // idiff's rule: --hardfail below --fail is refused (between them a difference would pass).
-  EXPECT_THROW(mb::idiffThresholds(thresholdArgs({"--fail", "4/255", "--hardfail", "2/255"})), mb::OptionError);
+  EXPECT_THROW(mb::idiffThresholds(thresholdArgs({"--fail", "4/255", "--hardfail", "2/255"})), mb::options::OptionError);
   EXPECT_NO_THROW(mb::idiffThresholds(thresholdArgs({"--hardfail", "0"})));  // below the 1e-6 default: no byte step
 }
 
