@@ -4,6 +4,7 @@
 #include "tests/hostile/hostile_cases.h"
 
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 
 namespace mb::hostile {
@@ -128,6 +129,13 @@ std::vector<Case> jsonCases() {
 }
 
 namespace {
+
+// The cases `steps` append to one list, in their order.
+std::vector<Case> appended(std::initializer_list<void (*)(std::vector<Case>&)> steps) {
+  std::vector<Case> cs;
+  for (auto* step : steps) step(cs);
+  return cs;
+}
 
 // A finished quad document modified by `edit`, as .glb.
 Bytes glb(const std::function<void(Doc&, QuadIds&)>& e) { return toGlb(detail::quadDoc(e)); }
@@ -322,14 +330,7 @@ void sparseCases(std::vector<Case>& cs) {
 }  // namespace
 
 // Accessors, buffer views, indices, strides, alignment, huge counts, data: URIs, sparse.
-std::vector<Case> accessorCases() {
-  std::vector<Case> cs;
-  accessorRangeCases(cs);
-  hugeCountCases(cs);
-  dataUriCases(cs);
-  sparseCases(cs);
-  return cs;
-}
+std::vector<Case> accessorCases() { return appended({accessorRangeCases, hugeCountCases, dataUriCases, sparseCases}); }
 
 namespace {
 
@@ -512,14 +513,7 @@ void extremeValueCases(std::vector<Case>& cs) {
 }  // namespace
 
 // Numbers: NaN/Inf, zero vectors, degenerate UVs, weights.
-std::vector<Case> numericCases() {
-  std::vector<Case> cs;
-  positionNormalCases(cs);
-  tangentCases(cs);
-  weightCases(cs);
-  extremeValueCases(cs);
-  return cs;
-}
+std::vector<Case> numericCases() { return appended({positionNormalCases, tangentCases, weightCases, extremeValueCases}); }
 
 namespace {
 
@@ -655,13 +649,7 @@ void hierarchyShapeCases(std::vector<Case>& cs) {
 }  // namespace
 
 // Transforms and the node graph.
-std::vector<Case> graphCases() {
-  std::vector<Case> cs;
-  transformCases(cs);
-  nodeGraphErrorCases(cs);
-  hierarchyShapeCases(cs);
-  return cs;
-}
+std::vector<Case> graphCases() { return appended({transformCases, nodeGraphErrorCases, hierarchyShapeCases}); }
 
 namespace {
 
@@ -910,16 +898,7 @@ void primitiveCases(std::vector<Case>& cs) {
 }  // namespace
 
 // Skins, animation, materials, textures, images, external files, primitives.
-std::vector<Case> contentCases() {
-  std::vector<Case> cs;
-  skinCases(cs);
-  animationCases(cs);
-  materialCases(cs);
-  imageCases(cs);
-  externalFileCases(cs);
-  primitiveCases(cs);
-  return cs;
-}
+std::vector<Case> contentCases() { return appended({skinCases, animationCases, materialCases, imageCases, externalFileCases, primitiveCases}); }
 
 // Valid glTF 2.0 that tinygltf 2.7 refuses (pipelines/scene/repair/conformance.h)
 // and the URI cases that stay errors. tests/scene/test_scene_conformance.cpp checks each
