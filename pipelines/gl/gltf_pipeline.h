@@ -14,7 +14,6 @@
 
 #include <glm/glm.hpp>
 
-#include "pipelines/compact/compact_encoding.h"
 #include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/instance_stream.h"
 #include "pipelines/gl/morph_buffers.h"
@@ -108,9 +107,10 @@ protected:
     ++stats_.draws;
   }
   // The 16-byte vertex (matrix_c, motor_c): u_Dequant, the cube of `d`'s primitive, for draws
-  // that cannot fold it into their transform and dequantise per vertex.
-  void setDequant(const Program& program, const std::vector<std::vector<compact::PositionCube>>& cubes,
-                  const DrawItem& d) {
+  // that cannot fold it into their transform and dequantise per vertex (`cubes`: per mesh, per
+  // primitive, compact::primitiveCubes).
+  template <class Cubes>
+  void setDequant(const Program& program, const Cubes& cubes, const DrawItem& d) {
     const glm::vec4 q = cubes[size_t(d.mesh)][size_t(d.primitive)].dequant();
     uniform4f(program.uniform("u_Dequant"), &q[0], stats_.uniformBytesPerFrame);
   }
