@@ -8,7 +8,7 @@
 #include "harness/render/scene_inputs.h"
 #include "pipelines/scene/builtin_scenes.h"
 
-namespace mb::golden {
+namespace mb::check {
 namespace {
 
 namespace fs = std::filesystem;
@@ -63,4 +63,4 @@ Inputs checkInputs(const std::vector<std::string>& arguments) {
   return unique;
 }
 
-}  // namespace mb::golden
+}  // namespace mb::check

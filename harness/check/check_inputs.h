@@ -8,7 +8,7 @@
 
 #include "pipelines/result.h"
 
-namespace mb::golden {
+namespace mb::check {
 
 struct CheckInput {
   std::string spec;   // what loadScene reads: the built-in name or the file's path
@@ -22,4 +22,4 @@ struct CheckInput {
 // .gltf/.glb, a folder without any, or two files whose sanitised names are the same.
 Result<std::vector<CheckInput>> checkInputs(const std::vector<std::string>& arguments);
 
-}  // namespace mb::golden
+}  // namespace mb::check

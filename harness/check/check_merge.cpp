@@ -11,7 +11,7 @@
 #include "harness/check/check_report.h"
 #include "harness/options/shard.h"
 
-namespace mb {
+namespace mb::check {
 namespace {
 
 namespace fs = std::filesystem;
@@ -114,4 +114,4 @@ int mergeCheckRuns(const std::vector<std::string>& dirs, const std::string& outD
   return exitCode(run);
 }
 
-}  // namespace mb
+}  // namespace mb::check

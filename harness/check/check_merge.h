@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace mb {
+namespace mb::check {
 
 // Reads DIR/check.json of every folder, checks they are shards 1..N of one scene list against
 // the same goldens (else exit 2 naming the folders), copies the images each shard wrote and
@@ -12,4 +12,4 @@ namespace mb {
 // failed, 1 when one failed its threshold, else 0 (as `motorbench check`).
 int mergeCheckRuns(const std::vector<std::string>& dirs, const std::string& outDir);
 
-}  // namespace mb
+}  // namespace mb::check

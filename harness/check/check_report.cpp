@@ -11,7 +11,7 @@
 #include "harness/render/render_frame.h"
 #include "harness/document/report_format.h"
 
-namespace mb {
+namespace mb::check {
 namespace {
 
 using document::html;
@@ -189,4 +189,4 @@ Status writeCheckReport(const std::string& dir, const CheckRun& run) {
   return {};
 }
 
-}  // namespace mb
+}  // namespace mb::check

@@ -12,7 +12,7 @@
 #include "harness/render/image_metrics.h"
 #include "pipelines/result.h"
 
-namespace mb {
+namespace mb::check {
 
 struct CheckItem {
   // Changed: a user's file whose content hash differs from the one its goldens were recorded
@@ -61,4 +61,4 @@ std::vector<JunitCase> junitCases(const CheckRun& run);
 // Writes summary.html and check.json into `dir`; errors name the file.
 Status writeCheckReport(const std::string& dir, const CheckRun& run);
 
-}  // namespace mb
+}  // namespace mb::check

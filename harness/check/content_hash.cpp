@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace mb::golden {
+namespace mb::check {
 namespace {
 
 namespace fs = std::filesystem;
@@ -133,4 +133,4 @@ Result<ContentHash> contentHash(const std::string& path) {
   return hash;
 }
 
-}  // namespace mb::golden
+}  // namespace mb::check

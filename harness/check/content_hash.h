@@ -12,7 +12,7 @@
 
 #include "pipelines/result.h"
 
-namespace mb::golden {
+namespace mb::check {
 
 // Lower-case hex SHA-256 of `bytes`.
 std::string sha256Hex(const std::string& bytes);
@@ -26,4 +26,4 @@ struct ContentHash {
 // JSON cannot be parsed hashes as its bytes alone (the loader will name the problem).
 Result<ContentHash> contentHash(const std::string& path);
 
-}  // namespace mb::golden
+}  // namespace mb::check

@@ -1,6 +1,6 @@
 #include "harness/check/corpus_junit.h"
 
-namespace mb::rules {
+namespace mb::check {
 namespace {
 
 // Why frame `fr` of `row` fails a rule ("" when it passes every one), as corpus_verdicts judges
@@ -91,4 +91,4 @@ Status writeRulesJunit(const std::string& path, const std::vector<ojson>& files,
   return writeJunit(path, "motorbench check --rules", junitCases(files, set));
 }
 
-}  // namespace mb::rules
+}  // namespace mb::check

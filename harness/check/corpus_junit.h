@@ -10,10 +10,10 @@
 #include "harness/check/corpus_rows.h"
 #include "harness/check/junit.h"
 
-namespace mb::rules {
+namespace mb::check {
 
 std::vector<JunitCase> junitCases(const std::vector<ojson>& files, const RuleSet& set);
 
 Status writeRulesJunit(const std::string& path, const std::vector<ojson>& files, const RuleSet& set);
 
-}  // namespace mb::rules
+}  // namespace mb::check

@@ -11,7 +11,7 @@
 #include "pipelines/registry.h"
 #include "pipelines/skin_method.h"
 
-namespace mb::rules {
+namespace mb::check {
 namespace {
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
@@ -378,4 +378,4 @@ ojson crashedRow(const std::string& rel, const std::string& pipeline, const Work
           {"fallbacks", ojson::object()}};
 }
 
-}  // namespace mb::rules
+}  // namespace mb::check

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace mb::rules {
+namespace mb::check {
 
 using ojson = nlohmann::ordered_json;
 
@@ -71,4 +71,4 @@ ojson fileResult(const std::string& rel, const WorkerRecord& rec, const std::str
 // The row of a pipeline that crashed when run alone.
 ojson crashedRow(const std::string& rel, const std::string& pipeline, const WorkerRecord& rec, const ojson& error);
 
-}  // namespace mb::rules
+}  // namespace mb::check

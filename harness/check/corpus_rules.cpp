@@ -25,8 +25,7 @@
 #include "harness/render/frame_options.h"
 #include "harness/render/scene_inputs.h"
 
-namespace mb {
-namespace rules {
+namespace mb::check {
 namespace {
 
 namespace fs = std::filesystem;
@@ -41,7 +40,7 @@ struct Options {
   std::string junit;
   std::string exe = "/proc/self/exe";  // this very binary, even if a rebuild replaces its file
   bool quiet = false;
-  rules::RuleSet set;
+  RuleSet set;
 };
 
 // The path as os.path.abspath makes it: absolute, normalised, no trailing separator.
@@ -105,7 +104,7 @@ std::string tail(const std::string& path, size_t bytes) {
 
 // How runProgram said the worker ended ("" / "exit status 2" / "killed by signal 11 (...)" /
 // "timed out after 300 s" / "could not be started" / "interrupted (SIGINT)"), as the record.
-void readEnd(const std::string& how, rules::WorkerRecord& rec) {
+void readEnd(const std::string& how, WorkerRecord& rec) {
   int n = 0;
   if (how.empty()) rec.exit = 0;
   else if (std::sscanf(how.c_str(), "exit status %d", &n) == 1) rec.exit = n;
@@ -118,7 +117,7 @@ void readEnd(const std::string& how, rules::WorkerRecord& rec) {
 }
 
 // One survey worker over `file` (`pipelines` empty: every one of its space).
-rules::WorkerRecord runSurvey(const Options& o, const std::string& file, const std::vector<std::string>& pipelines,
+WorkerRecord runSurvey(const Options& o, const std::string& file, const std::vector<std::string>& pipelines,
                               const std::string& scratch) {
   const std::string out = scratch + ".json", log = scratch + ".log";
   std::vector<std::string> args = {"survey", file, "--size", o.size, "-o", out};
@@ -127,7 +126,7 @@ rules::WorkerRecord runSurvey(const Options& o, const std::string& file, const s
   if (!pipelines.empty()) args.insert(args.end(), {"--pipelines", list});
   std::remove(out.c_str());
   const auto t0 = Clock::now();
-  rules::WorkerRecord rec;
+  WorkerRecord rec;
   const std::string how = process::runProgram(o.exe, args, log, true, o.timeoutS);
   rec.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   readEnd(how, rec);
@@ -148,23 +147,23 @@ rules::WorkerRecord runSurvey(const Options& o, const std::string& file, const s
 // baseline each is compared against), so the crash is pinned on a pipeline.
 ojson surveyFile(const Options& o, const std::string& file, const std::string& rel, const std::string& features,
                  const std::string& scratch) {
-  ojson res = rules::fileResult(rel, runSurvey(o, file, o.set.pipelines, scratch), features, o.set);
+  ojson res = fileResult(rel, runSurvey(o, file, o.set.pipelines, scratch), features, o.set);
   if (res["status"] != "crashed") return res;
   std::vector<std::string> alone = {"matrix"}, crashed;
   alone.insert(alone.end(), o.set.fullPrecision.begin(), o.set.fullPrecision.end());
   alone.insert(alone.end(), o.set.compact.begin(), o.set.compact.end());
   for (const std::string& name : alone) {
-    const rules::WorkerRecord one = runSurvey(o, file, {name}, scratch + "-" + name);
-    const ojson sub = rules::fileResult(rel, one, features, o.set);
+    const WorkerRecord one = runSurvey(o, file, {name}, scratch + "-" + name);
+    const ojson sub = fileResult(rel, one, features, o.set);
     if (sub["status"] == "crashed") {
       crashed.push_back(name);
-      res["rows"].push_back(rules::crashedRow(rel, name, one, sub["error"]));
+      res["rows"].push_back(crashedRow(rel, name, one, sub["error"]));
       continue;
     }
     for (const ojson& r : sub["rows"])
       if (r["pipeline"] == name) res["rows"].push_back(r);
     for (const char* k : {"kind", "boundPixels", "boundWorld", "envelopeRadius", "frames", "loaderFallbacks", "scene"})
-      if (!res.contains(k)) res[k] = rules::member(sub, k);
+      if (!res.contains(k)) res[k] = member(sub, k);
   }
   res["crashedPipelines"] = crashed;
   res["error"] = res["error"].get<std::string>() + " (alone: " + (crashed.empty() ? "none" : joinNames(crashed)) + " crashed)";
@@ -174,9 +173,9 @@ ojson surveyFile(const Options& o, const std::string& file, const std::string& r
 // "check --rules: [12/158] a/b.glb: ok 1.2 s, 14 s elapsed, about 5 min left".
 std::string progressLine(size_t done, size_t total, const ojson& res, double elapsed) {
   std::string status = res["status"].get<std::string>();
-  if (status != "ok") status += " (" + rules::valueText(res["error"]) + ")";
+  if (status != "ok") status += " (" + valueText(res["error"]) + ")";
   std::string line = "check --rules: [" + std::to_string(done) + "/" + std::to_string(total) + "] " +
-                     res["file"].get<std::string>() + ": " + status + rules::printed(" %.1f s", res["seconds"].get<double>()) +
+                     res["file"].get<std::string>() + ": " + status + printed(" %.1f s", res["seconds"].get<double>()) +
                      ", " + process::durationText(elapsed) + " elapsed";
   if (done < total) line += ", about " + process::durationText(elapsed / double(done) * double(total - done)) + " left";
   return line;
@@ -256,7 +255,7 @@ Options parseOptions(const std::vector<std::string>& argv, std::string& error) {
   const std::vector<std::string> only = splitList(args.get("pipelines", ""));
   if (args.has("pipelines") && only.empty()) return error = "--pipelines: expected pipeline names, e.g. matrix,motor", o;
   if (Status ok = checkPipelineNames("--pipelines", only); !ok) return error = ok.error(), o;
-  o.set = rules::defaultRuleSet(only);
+  o.set = defaultRuleSet(only);
   o.set.minPsnr = args.real("min-psnr", 50, 0, 1000, "a PSNR in dB");
   o.set.maxDrawnDiff = args.real("max-drawn-diff", 0.01, 0, 0.5, "a fraction of the drawn pixels (0.01 is 1 %)");
   o.out = args.get("out", args.get("o", o.out));
@@ -277,9 +276,9 @@ std::string folderText(const std::vector<std::string>& paths) {
 }
 
 // --quiet: the failing rules with their lines, and one summary line.
-void printQuiet(const rules::Verdicts& v, const ojson& summary) {
+void printQuiet(const Verdicts& v, const ojson& summary) {
   int failed = 0;
-  for (const rules::Rule& r : v.rules) {
+  for (const Rule& r : v.rules) {
     if (r.pass()) continue;
     ++failed;
     std::printf("FAIL: %s (%zu)\n", r.name.c_str(), r.failures.size());
@@ -298,10 +297,8 @@ bool writeText(const std::string& path, const std::string& text) {
 }
 
 }  // namespace
-}  // namespace rules
 
 int runCheckRules(const std::vector<std::string>& argv) {
-  using namespace rules;
   std::string error;
   Options o;
   try {
@@ -319,19 +316,19 @@ int runCheckRules(const std::vector<std::string>& argv) {
   }
   const auto t0 = Clock::now();
   const std::vector<ojson> results = surveyAll(o, files);
-  const rules::Verdicts v = rules::evaluate(results, o.set);
-  const ojson per = rules::totals(results, rules::pipelinesOfRows(results), o.set);
-  const rules::RunFacts facts{folderText(o.paths), o.size, o.jobs,
+  const Verdicts v = evaluate(results, o.set);
+  const ojson per = totals(results, pipelinesOfRows(results), o.set);
+  const RunFacts facts{folderText(o.paths), o.size, o.jobs,
                               std::chrono::duration<double>(Clock::now() - t0).count()};
-  const ojson summary = rules::summaryOf(facts, results, per, o.set);
-  const std::string md = rules::markdown(summary, results, per, v, o.set);
+  const ojson summary = summaryOf(facts, results, per, o.set);
+  const std::string md = markdown(summary, results, per, v, o.set);
   const std::string jsonPath = (fs::path(o.out) / "corpus-check.json").string(),
                     mdPath = (fs::path(o.out) / "corpus-check.md").string();
-  if (!writeText(jsonPath, rules::checkDocument(summary, per, v, results).dump(1) + "\n"))
+  if (!writeText(jsonPath, checkDocument(summary, per, v, results).dump(1) + "\n"))
     return commandError("check", jsonPath + ": cannot write");
   if (!writeText(mdPath, md)) return commandError("check", mdPath + ": cannot write");
   if (!o.junit.empty())
-    if (Status ok = rules::writeRulesJunit(o.junit, results, o.set); !ok) return commandError("check", ok.error());
+    if (Status ok = writeRulesJunit(o.junit, results, o.set); !ok) return commandError("check", ok.error());
   if (o.quiet) printQuiet(v, summary);
   else std::printf("%s\n", md.substr(0, md.find("\n## Files")).c_str());
   std::fflush(stdout);
@@ -340,4 +337,4 @@ int runCheckRules(const std::vector<std::string>& argv) {
   return v.pass() ? 0 : 1;
 }
 
-}  // namespace mb
+}  // namespace mb::check

@@ -44,9 +44,9 @@
   "    --quiet            the failing rules and one summary line only, no progress lines\n"                  \
   "    --worker-exe PATH  the program run as `PATH survey FILE ...` (default: this motorbench)\n"
 
-namespace mb {
+namespace mb::check {
 
 // argv: check's arguments (after "motorbench check"), --rules among them.
 int runCheckRules(const std::vector<std::string>& argv);
 
-}  // namespace mb
+}  // namespace mb::check

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace mb::rules {
+namespace mb::check {
 namespace {
 
 std::string cell(const ojson& v) { return valueText(v); }
@@ -222,4 +222,4 @@ std::string markdown(const ojson& s, const std::vector<ojson>& files, const ojso
   return text;
 }
 
-}  // namespace mb::rules
+}  // namespace mb::check

@@ -7,7 +7,7 @@
 
 #include "harness/check/corpus_verdicts.h"
 
-namespace mb::rules {
+namespace mb::check {
 
 // How the run was made, for the summary.
 struct RunFacts {
@@ -27,4 +27,4 @@ ojson checkDocument(const ojson& summary, const ojson& per, const Verdicts& v, c
 std::string markdown(const ojson& summary, const std::vector<ojson>& files, const ojson& per, const Verdicts& v,
                      const RuleSet& set);
 
-}  // namespace mb::rules
+}  // namespace mb::check

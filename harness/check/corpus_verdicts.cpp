@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace mb::rules {
+namespace mb::check {
 namespace {
 
 std::string joined(const std::vector<std::string>& names) {
@@ -228,4 +228,4 @@ ojson totals(const std::vector<ojson>& files, const std::vector<std::string>& pi
   return per;
 }
 
-}  // namespace mb::rules
+}  // namespace mb::check

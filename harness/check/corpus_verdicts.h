@@ -8,7 +8,7 @@
 
 #include "harness/check/corpus_rows.h"
 
-namespace mb::rules {
+namespace mb::check {
 
 struct Rule {
   std::string name;
@@ -39,4 +39,4 @@ ojson totals(const std::vector<ojson>& files, const std::vector<std::string>& pi
 // The fallback counters the totals sum (survey's per-pipeline maxima over frames).
 const std::vector<std::string>& fallbackCounters();
 
-}  // namespace mb::rules
+}  // namespace mb::check

@@ -10,7 +10,7 @@
 
 #include "harness/render/thresholds.h"
 
-namespace mb::golden {
+namespace mb::check {
 namespace {
 
 using nlohmann::json;
@@ -184,4 +184,4 @@ bool rendererMatches(const Entry& e, const std::string& renderer, const std::str
   return e.glRenderer == renderer && e.glVersion == version;
 }
 
-}  // namespace mb::golden
+}  // namespace mb::check

@@ -18,7 +18,7 @@
 #include "harness/render/render_frame.h"
 #include "pipelines/scene/scene.h"
 
-namespace mb::golden {
+namespace mb::check {
 
 constexpr int kWidth = 160, kHeight = 120;  // small: the committed PNGs stay well under 2 MB
 constexpr const char* kManifest = "golden.json";
@@ -89,4 +89,4 @@ Status writeManifest(const std::string& path, const Manifest& manifest);
 // True when (renderer, version) are the ones recorded for `entry`: the rule picks "exact".
 bool rendererMatches(const Entry& entry, const std::string& renderer, const std::string& version);
 
-}  // namespace mb::golden
+}  // namespace mb::check

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-namespace mb::golden {
+namespace mb::check {
 
 bool isLlvmpipe(const std::string& renderer) { return renderer.rfind("llvmpipe", 0) == 0; }
 
@@ -49,4 +49,4 @@ std::string describeChoice(const GoldenChoice& choice, const std::string& base, 
   return "";
 }
 
-}  // namespace mb::golden
+}  // namespace mb::check

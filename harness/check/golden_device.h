@@ -7,7 +7,7 @@
 #pragma once
 #include <string>
 
-namespace mb::golden {
+namespace mb::check {
 
 // GL_RENDERER names Mesa's llvmpipe (any LLVM version: its goldens are the main ones).
 bool isLlvmpipe(const std::string& renderer);
@@ -41,4 +41,4 @@ std::string deviceGoldenDir(const std::string& base, const std::string& renderer
 std::string describeChoice(const GoldenChoice& choice, const std::string& base, const std::string& renderer,
                            const std::string& drawnOn);
 
-}  // namespace mb::golden
+}  // namespace mb::check

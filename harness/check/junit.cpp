@@ -5,7 +5,7 @@
 #include <ctime>
 #include <fstream>
 
-namespace mb {
+namespace mb::check {
 namespace {
 
 constexpr const char* kReplacement = "\xEF\xBF\xBD";  // U+FFFD
@@ -123,4 +123,4 @@ Status writeJunit(const std::string& path, const std::string& suite, const std::
   return {};
 }
 
-}  // namespace mb
+}  // namespace mb::check

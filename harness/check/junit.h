@@ -11,7 +11,7 @@
 
 #include "pipelines/result.h"
 
-namespace mb {
+namespace mb::check {
 
 struct JunitCase {
   std::string classname, name;  // e.g. "check.Fox_glb", "rest.motor"
@@ -37,4 +37,4 @@ std::string junitXml(const std::string& suite, const std::vector<JunitCase>& cas
 // the error names the file.
 Status writeJunit(const std::string& path, const std::string& suite, const std::vector<JunitCase>& cases);
 
-}  // namespace mb
+}  // namespace mb::check

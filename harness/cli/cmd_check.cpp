@@ -41,6 +41,9 @@ namespace mb {
 namespace {
 
 namespace fs = std::filesystem;
+using check::ChangedSource;
+using check::CheckItem;
+using check::CheckRun;
 using Outcome = CheckItem::Outcome;
 
 std::string joined(const std::vector<std::string>& v) {
@@ -50,12 +53,12 @@ std::string joined(const std::vector<std::string>& v) {
 }
 
 struct Selection {
-  std::vector<golden::CheckInput> inputs;  // built-in scenes and users' files (check_inputs.h)
+  std::vector<check::CheckInput> inputs;  // built-in scenes and users' files (check_inputs.h)
   std::vector<std::string> pipelines;
   std::string goldenDir, outDir, junitPath;
   bool quiet = false;  // only failures, errors, changed files and the summary line
   // The device's goldens (golden_device.h): which folder goldenDir is, and the llvmpipe one.
-  golden::GoldenChoice goldens;
+  check::GoldenChoice goldens;
   std::string llvmpipeGoldenDir;
   std::string renderer, drawnOn;  // GL_RENDERER; the same with the device (describeGl)
   options::Shard shard;  // --shard I/N: this run checks its part of `inputs` only
@@ -72,18 +75,18 @@ std::vector<std::string> pipelinesFor(const Scene& scene, const Selection& sel) 
 }
 
 // Built-ins keep every animation (each shows a case); a user's file its first one.
-std::vector<golden::Pose> posesOf(const Scene& scene, const golden::CheckInput& input) {
-  return golden::posesFor(scene, input.file ? golden::kMaxFileAnimations : golden::kMaxAnimations);
+std::vector<check::Pose> posesOf(const Scene& scene, const check::CheckInput& input) {
+  return check::posesFor(scene, input.file ? check::kMaxFileAnimations : check::kMaxAnimations);
 }
 
 // Compares one planned golden; fills `item` (and writes its images into outDir unless clean).
-void checkOne(const Scene& scene, const golden::Manifest& manifest,
-              const golden::SceneThresholds& thresholds, const Selection& sel, CheckRun& run,
+void checkOne(const Scene& scene, const check::Manifest& manifest,
+              const check::SceneThresholds& thresholds, const Selection& sel, CheckRun& run,
               std::set<std::string>& rendererNotes, CheckItem& item) {
   auto error = [&](const std::string& why) { item.outcome = Outcome::Error; item.reason = why; };
   const std::string goldenPath = (fs::path(sel.goldenDir) / item.file).string();
-  const golden::Entry* entry = manifest.find(item.file);
-  if (!entry) return error(goldenPath + ": not in " + golden::kManifest + " (missing golden; run check --update)");
+  const check::Entry* entry = manifest.find(item.file);
+  if (!entry) return error(goldenPath + ": not in " + check::kManifest + " (missing golden; run check --update)");
   if (!fs::exists(goldenPath)) return error(goldenPath + ": missing golden image (run check --update)");
   auto expected = readImage(goldenPath);
   if (!expected) return error(expected.error());
@@ -96,9 +99,9 @@ void checkOne(const Scene& scene, const golden::Manifest& manifest,
     run.glVersion = frame->glVersion;
   }
   // A device compared with llvmpipe's goldens is never judged by the exact thresholds.
-  const bool exact = sel.goldens.source != golden::GoldenSource::LlvmpipeForDevice &&
-                     golden::rendererMatches(*entry, frame->glRenderer, frame->glVersion);
-  const golden::Level& level = exact ? thresholds.exact : thresholds.portable;
+  const bool exact = sel.goldens.source != check::GoldenSource::LlvmpipeForDevice &&
+                     check::rendererMatches(*entry, frame->glRenderer, frame->glVersion);
+  const check::Level& level = exact ? thresholds.exact : thresholds.portable;
   item.level = exact ? "exact" : "portable";
   if (!exact) {
     std::string note = "GL differs from the goldens' (recorded '" + entry->glRenderer + "' / '" +
@@ -143,13 +146,13 @@ void checkOne(const Scene& scene, const golden::Manifest& manifest,
 // A console line of the run: everything, or with --quiet only what fails the run.
 void printItem(const Selection& sel, const CheckItem& item) {
   if (sel.quiet && (item.outcome == Outcome::Pass || item.outcome == Outcome::Warn)) return;
-  std::printf("%s\n", consoleLine(item).c_str());
+  std::printf("%s\n", check::consoleLine(item).c_str());
   std::fflush(stdout);
 }
 
-CheckItem planned(const golden::CheckInput& input, const std::string& pose, const std::string& pipeline) {
+CheckItem planned(const check::CheckInput& input, const std::string& pose, const std::string& pipeline) {
   CheckItem item;
-  item.file = golden::fileName(input.scene, pose, pipeline);
+  item.file = check::fileName(input.scene, pose, pipeline);
   item.scene = input.scene;
   item.source = input.shown;
   item.pipeline = pipeline;
@@ -160,12 +163,12 @@ CheckItem planned(const golden::CheckInput& input, const std::string& pose, cons
 // A user's file whose bytes differ from those its goldens were made from: each of its goldens
 // (golden.json's, for the selected pipelines) is recorded as not judged. False when the file
 // is unchanged (or has no recorded hash: a folder of goldens made before hashes were kept).
-bool recordIfChanged(const golden::CheckInput& input, const golden::ContentHash& now, const golden::Manifest& manifest,
+bool recordIfChanged(const check::CheckInput& input, const check::ContentHash& now, const check::Manifest& manifest,
                      const Selection& sel, CheckRun& run) {
   const auto recorded = manifest.sources.find(input.scene);
   if (recorded == manifest.sources.end() || recorded->second.sha256 == now.sha256) return false;
   ChangedSource changed{input.scene, input.shown, recorded->second.sha256, now.sha256, 0};
-  for (const golden::Entry& e : manifest.entries) {
+  for (const check::Entry& e : manifest.entries) {
     if (e.scene != input.scene || std::find(sel.pipelines.begin(), sel.pipelines.end(), e.pipeline) == sel.pipelines.end())
       continue;
     CheckItem item = planned(input, e.pose, e.pipeline);
@@ -174,15 +177,15 @@ bool recordIfChanged(const golden::CheckInput& input, const golden::ContentHash&
     run.items.push_back(std::move(item));
     ++changed.images;
   }
-  std::printf("%s\n", changedLine(changed).c_str());
+  std::printf("%s\n", check::changedLine(changed).c_str());
   run.changed.push_back(std::move(changed));
   return true;
 }
 
 // Checks every planned golden of one input into `run`.
-void checkInput(const golden::CheckInput& input, const golden::Manifest& manifest, const Selection& sel, CheckRun& run,
+void checkInput(const check::CheckInput& input, const check::Manifest& manifest, const Selection& sel, CheckRun& run,
                 std::set<std::string>& rendererNotes, std::set<std::string>& plannedFiles) {
-  golden::SceneThresholds thresholds = golden::defaultThresholds(input.scene);
+  check::SceneThresholds thresholds = check::defaultThresholds(input.scene);
   if (auto t = manifest.thresholds.find(input.scene); t != manifest.thresholds.end()) thresholds = t->second;
   else if (!input.file) run.notes.push_back(input.scene + ": no thresholds in golden.json, using the defaults");
   auto errorItem = [&](const std::string& why) {
@@ -194,13 +197,13 @@ void checkInput(const golden::CheckInput& input, const golden::Manifest& manifes
     run.items.push_back(std::move(item));
   };
   if (input.file) {
-    auto hash = golden::contentHash(input.spec);
+    auto hash = check::contentHash(input.spec);
     if (!hash) return errorItem(hash.error());
     if (recordIfChanged(input, *hash, manifest, sel, run)) return;
   }
   auto scene = loadScene(input.spec);
   if (!scene) return errorItem(scene.error());
-  for (const golden::Pose& pose : posesOf(*scene, input)) {
+  for (const check::Pose& pose : posesOf(*scene, input)) {
     for (const std::string& pipeline : pipelinesFor(*scene, sel)) {
       CheckItem item = planned(input, pose.name, pipeline);
       plannedFiles.insert(item.file);
@@ -214,19 +217,19 @@ void checkInput(const golden::CheckInput& input, const golden::Manifest& manifes
 }
 
 // Run-wide notes on what golden.json holds but this run did not plan.
-void noteUnplanned(const golden::Manifest& manifest, const std::vector<golden::CheckInput>& mine,
+void noteUnplanned(const check::Manifest& manifest, const std::vector<check::CheckInput>& mine,
                    const Selection& sel, const std::set<std::string>& plannedFiles, CheckRun& run) {
   std::set<std::string> scenes, changed;
-  for (const golden::CheckInput& in : mine) scenes.insert(in.scene);
+  for (const check::CheckInput& in : mine) scenes.insert(in.scene);
   for (const ChangedSource& c : run.changed) changed.insert(c.scene);
   std::set<std::string> pipelines(sel.pipelines.begin(), sel.pipelines.end());
-  for (const golden::Entry& e : manifest.entries)
+  for (const check::Entry& e : manifest.entries)
     if (scenes.count(e.scene) && !changed.count(e.scene) && pipelines.count(e.pipeline) && !plannedFiles.count(e.file))
       run.notes.push_back(e.file + ": in golden.json but no longer planned (stale; --update removes it)");
   const bool anyFile = std::any_of(sel.inputs.begin(), sel.inputs.end(), [](const auto& in) { return in.file; });
   std::vector<std::string> absent;
   std::set<std::string> selected;
-  for (const golden::CheckInput& in : sel.inputs) selected.insert(in.scene);
+  for (const check::CheckInput& in : sel.inputs) selected.insert(in.scene);
   for (const auto& [scene, source] : manifest.sources)
     if (!selected.count(scene)) absent.push_back(source.path);
   if (anyFile && !absent.empty())
@@ -236,8 +239,8 @@ void noteUnplanned(const golden::Manifest& manifest, const std::vector<golden::C
 }
 
 int check(const Selection& sel) {
-  const std::string manifestPath = (fs::path(sel.goldenDir) / golden::kManifest).string();
-  auto manifest = golden::readManifest(manifestPath);
+  const std::string manifestPath = (fs::path(sel.goldenDir) / check::kManifest).string();
+  auto manifest = check::readManifest(manifestPath);
   if (!manifest) return commandError("check", manifest.error());
   std::error_code ec;
   fs::create_directories(sel.outDir, ec);
@@ -250,31 +253,32 @@ int check(const Selection& sel) {
   }
   CheckRun run;
   run.goldenDir = sel.goldenDir;
-  const bool againstLlvmpipe = sel.goldens.source == golden::GoldenSource::LlvmpipeForDevice;
+  const bool againstLlvmpipe = sel.goldens.source == check::GoldenSource::LlvmpipeForDevice;
   if (againstLlvmpipe)
-    run.notes.push_back(golden::describeChoice(sel.goldens, sel.llvmpipeGoldenDir, sel.renderer, sel.drawnOn));
+    run.notes.push_back(check::describeChoice(sel.goldens, sel.llvmpipeGoldenDir, sel.renderer, sel.drawnOn));
   run.shaderDir = gl::shaderDir();
   std::vector<std::string> names;
-  for (const golden::CheckInput& in : sel.inputs) names.push_back(in.scene);
+  for (const check::CheckInput& in : sel.inputs) names.push_back(in.scene);
   run.shard = {{"index", sel.shard.index}, {"count", sel.shard.count}, {"inputs", names}};
-  std::vector<golden::CheckInput> mine;
+  std::vector<check::CheckInput> mine;
   for (size_t k : options::shardPositions(names, sel.shard)) mine.push_back(sel.inputs[k]);
   if (const std::string note = options::emptyShardNote(sel.shard, names.size(), mine.size()); !note.empty())
     commandNotes("check", {note});
   std::set<std::string> rendererNotes, plannedFiles;
   std::optional<process::Progress> progress;
   if (!sel.quiet) progress.emplace("check", "scenes checked", mine.size(), false);
-  for (const golden::CheckInput& input : mine) {
+  for (const check::CheckInput& input : mine) {
     checkInput(input, *manifest, sel, run, rendererNotes, plannedFiles);
     if (progress) progress->done(input.shown);
   }
   noteUnplanned(*manifest, mine, sel, plannedFiles, run);
 
-  Status written = writeCheckReport(sel.outDir, run);
-  Status junit = sel.junitPath.empty() ? Status{} : writeJunit(sel.junitPath, "motorbench check", junitCases(run));
+  Status written = check::writeCheckReport(sel.outDir, run);
+  Status junit =
+      sel.junitPath.empty() ? Status{} : check::writeJunit(sel.junitPath, "motorbench check", check::junitCases(run));
   if (!sel.quiet)
     for (const std::string& n : run.notes) std::printf("warning: %s\n", n.c_str());
-  std::printf("%s\n", summaryLine(run).c_str());
+  std::printf("%s\n", check::summaryLine(run).c_str());
   const int failedImages = int(std::count_if(run.items.begin(), run.items.end(),
                                              [](const CheckItem& it) { return it.outcome == Outcome::Fail; }));
   if (againstLlvmpipe && failedImages > 0 && !sel.quiet)
@@ -285,30 +289,30 @@ int check(const Selection& sel) {
   if (!written) return commandError("check", written.error());
   if (!junit) return commandError("check", junit.error());
   if (!sel.quiet) std::printf("report: %s\n", (fs::path(sel.outDir) / "summary.html").string().c_str());
-  return exitCode(run);
+  return check::exitCode(run);
 }
 
 // Renders one input's goldens into `next` (and its source's hash, for a file).
-Status updateInput(const golden::CheckInput& input, const Selection& sel, golden::Manifest& next, int& changed,
+Status updateInput(const check::CheckInput& input, const Selection& sel, check::Manifest& next, int& changed,
                    int& same) {
   if (input.file) {
-    auto hash = golden::contentHash(input.spec);
+    auto hash = check::contentHash(input.spec);
     if (!hash) return Status::fail(hash.error());
     next.sources[input.scene] = {input.shown, hash->sha256, hash->resources};
   }
   auto scene = loadScene(input.spec);
   if (!scene) return Status::fail(scene.error());
-  if (!next.thresholds.count(input.scene)) next.thresholds[input.scene] = golden::defaultThresholds(input.scene);
-  for (const golden::Pose& pose : posesOf(*scene, input)) {
+  if (!next.thresholds.count(input.scene)) next.thresholds[input.scene] = check::defaultThresholds(input.scene);
+  for (const check::Pose& pose : posesOf(*scene, input)) {
     for (const std::string& pipeline : pipelinesFor(*scene, sel)) {
-      golden::Entry e;
-      e.file = golden::fileName(input.scene, pose.name, pipeline);
+      check::Entry e;
+      e.file = check::fileName(input.scene, pose.name, pipeline);
       e.scene = input.scene;
       e.pipeline = pipeline;
       e.pose = pose.name;
       e.settings.anim = pose.anim;
-      e.settings.width = golden::kWidth;
-      e.settings.height = golden::kHeight;
+      e.settings.width = check::kWidth;
+      e.settings.height = check::kHeight;
       auto frame = renderFrame(*scene, pipeline, e.settings);
       if (!frame) return Status::fail(frame.error());
       e.glRenderer = frame->glRenderer;
@@ -331,15 +335,15 @@ Status updateInput(const golden::CheckInput& input, const Selection& sel, golden
 
 int update(const Selection& sel) {
   auto fail = [](const std::string& message) { return commandError("check --update", message); };
-  const std::string manifestPath = (fs::path(sel.goldenDir) / golden::kManifest).string();
-  golden::Manifest old;
+  const std::string manifestPath = (fs::path(sel.goldenDir) / check::kManifest).string();
+  check::Manifest old;
   // Keep its thresholds and the images outside the selection; a device's first goldens start
   // from the thresholds of llvmpipe's.
   const std::string thresholdsFrom = fs::exists(manifestPath) || sel.llvmpipeGoldenDir.empty()
                                          ? manifestPath
-                                         : (fs::path(sel.llvmpipeGoldenDir) / golden::kManifest).string();
+                                         : (fs::path(sel.llvmpipeGoldenDir) / check::kManifest).string();
   if (fs::exists(thresholdsFrom)) {
-    auto m = golden::readManifest(thresholdsFrom);
+    auto m = check::readManifest(thresholdsFrom);
     if (!m) return fail(m.error() + " (fix or delete it; --update does not discard thresholds silently)");
     old = m.take();
     if (thresholdsFrom != manifestPath) old.entries.clear(), old.sources.clear();
@@ -348,29 +352,29 @@ int update(const Selection& sel) {
   fs::create_directories(sel.goldenDir, ec);
   if (ec) return fail(sel.goldenDir + ": cannot create folder: " + ec.message());
   std::set<std::string> scenes;
-  for (const golden::CheckInput& in : sel.inputs) scenes.insert(in.scene);
+  for (const check::CheckInput& in : sel.inputs) scenes.insert(in.scene);
   std::set<std::string> pipelines(sel.pipelines.begin(), sel.pipelines.end());
-  golden::Manifest next;
+  check::Manifest next;
   next.thresholds = old.thresholds;
   next.sources = old.sources;
-  for (const golden::Entry& e : old.entries)
+  for (const check::Entry& e : old.entries)
     if (!scenes.count(e.scene) || !pipelines.count(e.pipeline)) next.entries.push_back(e);
   int changed = 0, same = 0;
   std::optional<process::Progress> progress;
   if (!sel.quiet) progress.emplace("check --update", "scenes recorded", sel.inputs.size(), false);
-  for (const golden::CheckInput& input : sel.inputs) {
+  for (const check::CheckInput& input : sel.inputs) {
     if (Status s = updateInput(input, sel, next, changed, same); !s) return fail(s.error());
     if (progress) progress->done(input.shown);
   }
   // Images of the selection that the plan no longer makes are stale: remove them.
-  for (const golden::Entry& e : old.entries)
+  for (const check::Entry& e : old.entries)
     if (scenes.count(e.scene) && pipelines.count(e.pipeline) && !next.find(e.file)) {
       fs::remove(fs::path(sel.goldenDir) / e.file, ec);
       if (!sel.quiet) std::printf("removed  %s (no longer planned)\n", (fs::path(sel.goldenDir) / e.file).string().c_str());
     }
   std::sort(next.entries.begin(), next.entries.end(),
-            [](const golden::Entry& a, const golden::Entry& b) { return a.file < b.file; });
-  Status w = golden::writeManifest(manifestPath, next);
+            [](const check::Entry& a, const check::Entry& b) { return a.file < b.file; });
+  Status w = check::writeManifest(manifestPath, next);
   if (!w) return fail(w.error());
   std::printf("update: %d images changed, %d unchanged; %s rewritten\n", changed, same, manifestPath.c_str());
   return 0;
@@ -411,24 +415,24 @@ std::string goldenFolderError(const options::Args& args, const Selection& sel) {
            "repository; record it once with --update). The default, tests/golden, holds motorbench's own scenes only";
   // The default --golden is relative to the repository root. Elsewhere, point to --golden
   // instead of letting --update create goldens in the wrong place (or suggesting it).
-  if (!args.has("golden") && !fs::exists(fs::path("tests/golden") / golden::kManifest))
-    return "tests/golden/" + std::string(golden::kManifest) + " not found under " + fs::current_path().string() +
-           ": run check from the repository root, or pass --golden DIR (the folder holding " + golden::kManifest +
+  if (!args.has("golden") && !fs::exists(fs::path("tests/golden") / check::kManifest))
+    return "tests/golden/" + std::string(check::kManifest) + " not found under " + fs::current_path().string() +
+           ": run check from the repository root, or pass --golden DIR (the folder holding " + check::kManifest +
            ", e.g. --golden /path/to/motorbench/tests/golden)";
-  if (!args.has("golden") || args.has("update") || fs::exists(fs::path(sel.goldenDir) / golden::kManifest)) return "";
+  if (!args.has("golden") || args.has("update") || fs::exists(fs::path(sel.goldenDir) / check::kManifest)) return "";
   if (anyFile)
-    return "--golden " + sel.goldenDir + ": no " + golden::kManifest + " there: record the goldens of these files "
+    return "--golden " + sel.goldenDir + ": no " + check::kManifest + " there: record the goldens of these files "
            "first, with a build you trust: motorbench check FILE|DIR... --golden " + sel.goldenDir + " --update";
   // A --golden folder without golden.json is the wrong folder: --update there would make a golden
   // set of this renderer's own images, so the check would compare the renderer with itself.
-  return "--golden " + sel.goldenDir + ": not a golden folder (no " + golden::kManifest + " there). A golden folder holds " +
-         golden::kManifest + " (the thresholds and the list of images with the GL renderer that made them) and one PNG "
+  return "--golden " + sel.goldenDir + ": not a golden folder (no " + check::kManifest + " there). A golden folder holds " +
+         check::kManifest + " (the thresholds and the list of images with the GL renderer that made them) and one PNG "
          "per scene, pose and pipeline, e.g. tests/golden of the motorbench repository; pass that folder. Do not make "
          "one here with --update: goldens rendered by the renderer under test would compare it with itself";
 }
 
 int runCheck(const std::vector<std::string>& argv) {
-  if (std::find(argv.begin(), argv.end(), "--rules") != argv.end()) return runCheckRules(argv);
+  if (std::find(argv.begin(), argv.end(), "--rules") != argv.end()) return check::runCheckRules(argv);
   options::Args args(argv, {{"golden", "scenes", "pipelines", "out", "o", "shader-dir", "shard", "gpu", "junit"},
                    {"update", "quiet"},
                    {}});
@@ -454,7 +458,7 @@ int runCheck(const std::vector<std::string>& argv) {
     named.push_back(s);
   }
   if (!args.has("scenes") && args.positional().empty()) named = builtins;
-  auto inputs = golden::checkInputs(named);
+  auto inputs = check::checkInputs(named);
   if (!inputs) return fail(inputs.error());
   sel.inputs = inputs.take();
   if (std::string e = selectPipelines(args, sel); !e.empty()) return fail(e);
@@ -481,11 +485,11 @@ int runCheck(const std::vector<std::string>& argv) {
   sel.drawnOn = describeGl((*ctx)->info());
   sel.llvmpipeGoldenDir = sel.goldenDir;
   const bool devicePresent =
-      fs::exists(fs::path(golden::deviceGoldenDir(sel.goldenDir, sel.renderer)) / golden::kManifest);
-  sel.goldens = golden::chooseGoldens(sel.goldenDir, sel.renderer, devicePresent, args.has("update"));
+      fs::exists(fs::path(check::deviceGoldenDir(sel.goldenDir, sel.renderer)) / check::kManifest);
+  sel.goldens = check::chooseGoldens(sel.goldenDir, sel.renderer, devicePresent, args.has("update"));
   sel.goldenDir = sel.goldens.dir;
   if (!sel.quiet)
-    std::printf("%s\n", golden::describeChoice(sel.goldens, sel.llvmpipeGoldenDir, sel.renderer, sel.drawnOn).c_str());
+    std::printf("%s\n", check::describeChoice(sel.goldens, sel.llvmpipeGoldenDir, sel.renderer, sel.drawnOn).c_str());
   return args.has("update") ? update(sel) : check(sel);
 }
 

@@ -36,6 +36,8 @@ namespace mb {
 namespace {
 
 using json = nlohmann::json;
+using check::JunitCase;
+using check::writeJunit;
 
 // What decides compare's exit: the drawn-pixel check and the thresholds given, on the two images;
 // on a skinned frame of pipelines of different skinning methods, each pipeline against its own

@@ -25,6 +25,8 @@ namespace mb {
 namespace {
 
 using json = nlohmann::json;
+using check::JunitCase;
+using check::writeJunit;
 
 struct DiffInput {
   std::string path;

@@ -88,7 +88,7 @@ int runMerge(const std::vector<std::string>& argv) {
   }
   if (all([&](const fs::path& p) { return fs::exists(p / "check.json", ec); })) {
     if (Status ok = prepareOutputFolder("-o", out, "the merged check.json and summary"); !ok) return fail(ok.error());
-    return mergeCheckRuns(inputs, out);
+    return check::mergeCheckRuns(inputs, out);
   }
   if (all([&](const fs::path& p) { return fs::is_regular_file(p, ec) && p.extension() == ".json"; })) {
     if (Status ok = prepareOutputFile("-o", out); !ok)

@@ -30,6 +30,8 @@ namespace mb {
 namespace {
 
 using json = nlohmann::json;
+using check::JunitCase;
+using check::writeJunit;
 
 int fail(const std::string& message) { return commandError("report", message); }
 

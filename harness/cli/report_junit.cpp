@@ -9,6 +9,9 @@ namespace mb {
 namespace {
 
 using json = nlohmann::json;
+using check::JunitCase;
+using check::JunitCounts;
+using check::junitCounts;
 using Kind = JunitCase::Kind;
 
 std::string text(const json& j, const char* key) {

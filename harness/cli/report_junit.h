@@ -14,10 +14,10 @@
 
 namespace mb {
 
-std::vector<JunitCase> reportJunitCases(const nlohmann::json& report);
+std::vector<check::JunitCase> reportJunitCases(const nlohmann::json& report);
 
 // "report: 3 scenes: 2 ok, 1 partial, 0 failed; 81 frames x pipelines: 80 passed, 0 failed, 1 errors".
-std::string reportSummaryLine(const nlohmann::json& report, const std::vector<JunitCase>& cases);
+std::string reportSummaryLine(const nlohmann::json& report, const std::vector<check::JunitCase>& cases);
 
 // stdout and stderr (this process's and its workers') into a file while it lives: --quiet.
 class OutputToFile {

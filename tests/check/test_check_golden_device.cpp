@@ -17,22 +17,22 @@
 
 namespace {
 
-using mb::golden::GoldenSource;
+using mb::check::GoldenSource;
 
 TEST(GoldenDevice, SlugFromRenderer) {
-  EXPECT_EQ(mb::golden::deviceSlug("NVIDIA H100 80GB HBM3/PCIe/SSE2"), "nvidia-h100-80gb-hbm3-pcie-sse2");
-  EXPECT_EQ(mb::golden::deviceSlug("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.6)"),
+  EXPECT_EQ(mb::check::deviceSlug("NVIDIA H100 80GB HBM3/PCIe/SSE2"), "nvidia-h100-80gb-hbm3-pcie-sse2");
+  EXPECT_EQ(mb::check::deviceSlug("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.6)"),
             "amd-radeon-rx-7900-xtx-radeonsi-navi31-llvm-15-0-6");
-  EXPECT_EQ(mb::golden::deviceSlug("  Mali-G78  "), "mali-g78");
-  EXPECT_EQ(mb::golden::deviceSlug(""), "unknown-renderer");
-  EXPECT_EQ(mb::golden::deviceSlug("/()"), "unknown-renderer");
+  EXPECT_EQ(mb::check::deviceSlug("  Mali-G78  "), "mali-g78");
+  EXPECT_EQ(mb::check::deviceSlug(""), "unknown-renderer");
+  EXPECT_EQ(mb::check::deviceSlug("/()"), "unknown-renderer");
 }
 
 TEST(GoldenDevice, LlvmpipeOfAnyVersionIsTheMainGoldens) {
-  EXPECT_TRUE(mb::golden::isLlvmpipe("llvmpipe (LLVM 15.0.6, 256 bits)"));
-  EXPECT_TRUE(mb::golden::isLlvmpipe("llvmpipe (LLVM 17.0.6, 128 bits)"));
-  EXPECT_FALSE(mb::golden::isLlvmpipe("NVIDIA H100 80GB HBM3/PCIe/SSE2"));
-  EXPECT_FALSE(mb::golden::isLlvmpipe("zink Vulkan 1.3(llvmpipe (LLVM 15.0.6, 256 bits))"));
+  EXPECT_TRUE(mb::check::isLlvmpipe("llvmpipe (LLVM 15.0.6, 256 bits)"));
+  EXPECT_TRUE(mb::check::isLlvmpipe("llvmpipe (LLVM 17.0.6, 128 bits)"));
+  EXPECT_FALSE(mb::check::isLlvmpipe("NVIDIA H100 80GB HBM3/PCIe/SSE2"));
+  EXPECT_FALSE(mb::check::isLlvmpipe("zink Vulkan 1.3(llvmpipe (LLVM 15.0.6, 256 bits))"));
 }
 
 TEST(GoldenDevice, ChoiceRule) {
@@ -40,22 +40,22 @@ TEST(GoldenDevice, ChoiceRule) {
   const std::string llvm = "llvmpipe (LLVM 15.0.6, 256 bits)", h100 = "NVIDIA H100 80GB HBM3/PCIe/SSE2";
   for (bool present : {false, true})
     for (bool update : {false, true}) {
-      auto c = mb::golden::chooseGoldens(base, llvm, present, update);
+      auto c = mb::check::chooseGoldens(base, llvm, present, update);
       EXPECT_EQ(c.source, GoldenSource::Llvmpipe);
       EXPECT_EQ(c.dir, base);
     }
   const std::string own = "tests/golden/devices/nvidia-h100-80gb-hbm3-pcie-sse2";
-  EXPECT_EQ(mb::golden::deviceGoldenDir(base, h100), own);
-  auto present = mb::golden::chooseGoldens(base, h100, true, false);
+  EXPECT_EQ(mb::check::deviceGoldenDir(base, h100), own);
+  auto present = mb::check::chooseGoldens(base, h100, true, false);
   EXPECT_EQ(present.source, GoldenSource::Device);
   EXPECT_EQ(present.dir, own);
-  auto absent = mb::golden::chooseGoldens(base, h100, false, false);
+  auto absent = mb::check::chooseGoldens(base, h100, false, false);
   EXPECT_EQ(absent.source, GoldenSource::LlvmpipeForDevice);
   EXPECT_EQ(absent.dir, base);
-  auto update = mb::golden::chooseGoldens(base, h100, false, true);
+  auto update = mb::check::chooseGoldens(base, h100, false, true);
   EXPECT_EQ(update.source, GoldenSource::Device);
   EXPECT_EQ(update.dir, own);
-  const std::string said = mb::golden::describeChoice(absent, base, h100, h100 + " on egl-device 1");
+  const std::string said = mb::check::describeChoice(absent, base, h100, h100 + " on egl-device 1");
   EXPECT_NE(said.find("llvmpipe's"), std::string::npos) << said;
   EXPECT_NE(said.find(own), std::string::npos) << said;
   EXPECT_NE(said.find("portable"), std::string::npos) << said;
@@ -70,14 +70,14 @@ mb::RgbaImage torusFrame(double tiltDegrees) {
   for (mb::Node& n : scene->nodes)
     if (n.parent < 0) n.local.rotation = tilt * n.local.rotation;
   mb::FrameSettings s;
-  s.width = mb::golden::kWidth, s.height = mb::golden::kHeight;
+  s.width = mb::check::kWidth, s.height = mb::check::kHeight;
   auto f = mb::renderFrame(*scene, "matrix", s);
   EXPECT_TRUE(f) << f.error();
   return f ? f->image : mb::RgbaImage{};
 }
 
 mb::Thresholds portable(const std::string& scene) {
-  auto m = mb::golden::readManifest(std::string(MB_SOURCE_DIR) + "/tests/golden/golden.json");
+  auto m = mb::check::readManifest(std::string(MB_SOURCE_DIR) + "/tests/golden/golden.json");
   EXPECT_TRUE(m) << m.error();
   return m ? m->thresholds.at(scene).portable.fail : mb::Thresholds{};
 }

@@ -34,7 +34,7 @@ TEST(CheckInputs, FolderFilesAreNamedByTheirPathInsideTheFolderSorted) {
   touch(root / "assets" / "a b.gltf");
   touch(root / "assets" / "notes.txt");
   touch(root / "single.gltf");
-  auto in = mb::golden::checkInputs({(root / "assets").string(), (root / "single.gltf").string(), "normal_torus"});
+  auto in = mb::check::checkInputs({(root / "assets").string(), (root / "single.gltf").string(), "normal_torus"});
   ASSERT_TRUE(in) << in.error();
   ASSERT_EQ(in->size(), 5u);
   const std::vector<std::pair<std::string, std::string>> want = {
@@ -56,18 +56,18 @@ TEST(CheckInputs, CollidingNamesAndBadArgumentsAreRefusedByName) {
   touch(root / "b" / "x.glb");
   touch(root / "b" / "x.txt");
   fs::create_directories(root / "empty");
-  auto in = mb::golden::checkInputs({(root / "a" / "x.glb").string(), (root / "b" / "x.glb").string()});
+  auto in = mb::check::checkInputs({(root / "a" / "x.glb").string(), (root / "b" / "x.glb").string()});
   ASSERT_FALSE(in);
   EXPECT_NE(in.error().find("would share the golden name 'x_glb'"), std::string::npos) << in.error();
   EXPECT_NE(in.error().find((root / "b" / "x.glb").string()), std::string::npos) << in.error();
-  EXPECT_TRUE(mb::golden::checkInputs({(root / "a").string()}));  // x_glb vs x_glb_glb: distinct
-  in = mb::golden::checkInputs({(root / "b" / "x.txt").string()});
+  EXPECT_TRUE(mb::check::checkInputs({(root / "a").string()}));  // x_glb vs x_glb_glb: distinct
+  in = mb::check::checkInputs({(root / "b" / "x.txt").string()});
   ASSERT_FALSE(in);
   EXPECT_NE(in.error().find("not a .gltf or .glb file"), std::string::npos) << in.error();
-  in = mb::golden::checkInputs({(root / "empty").string()});
+  in = mb::check::checkInputs({(root / "empty").string()});
   ASSERT_FALSE(in);
   EXPECT_NE(in.error().find("holds no .gltf or .glb files"), std::string::npos) << in.error();
-  in = mb::golden::checkInputs({(root / "nope.glb").string()});
+  in = mb::check::checkInputs({(root / "nope.glb").string()});
   ASSERT_FALSE(in);
   EXPECT_NE(in.error().find("no such file or folder"), std::string::npos) << in.error();
   fs::remove_all(root);
@@ -80,16 +80,16 @@ TEST(CheckInputs, AFileIsPosedAtRestAndTwiceInItsFirstAnimation) {
   scene.animations[0].duration = 2.0f;
   scene.animations[1].name = "Run";
   scene.animations[1].duration = 1.0f;
-  auto poses = mb::golden::posesFor(scene, mb::golden::kMaxFileAnimations);
+  auto poses = mb::check::posesFor(scene, mb::check::kMaxFileAnimations);
   ASSERT_EQ(poses.size(), 3u);
   EXPECT_EQ(poses[0].name, "rest");
   EXPECT_EQ(poses[0].anim.anim, -1);
   EXPECT_EQ(poses[1].name, "Walk_cycle-t0.700");
   EXPECT_FLOAT_EQ(poses[1].anim.time, 0.7f);
   EXPECT_EQ(poses[2].name, "Walk_cycle-t1.400");
-  EXPECT_EQ(mb::golden::posesFor(scene).size(), 5u);  // a built-in: every animation
+  EXPECT_EQ(mb::check::posesFor(scene).size(), 5u);  // a built-in: every animation
   scene.animations[0].duration = 0.0f;                 // both times 0: one pose
-  poses = mb::golden::posesFor(scene, mb::golden::kMaxFileAnimations);
+  poses = mb::check::posesFor(scene, mb::check::kMaxFileAnimations);
   ASSERT_EQ(poses.size(), 2u);
   EXPECT_EQ(poses[1].name, "Walk_cycle-t0.000");
 }
