@@ -2,6 +2,7 @@
 // the Euclidean scenes as rows and the pipelines as columns, so each fits a page.
 #include <algorithm>
 #include <functional>
+#include <map>
 
 #include "harness/document/report_document.h"
 #include "harness/document/report_format.h"
@@ -139,14 +140,17 @@ void sceneTable(Document& d, const json& r) {
   d.paragraph(frameTimeOn(at(r, {"machine", "gl"})) + ".");
   const std::vector<std::string> compared(pipes.begin() + std::min<ptrdiff_t>(1, ptrdiff_t(pipes.size())), pipes.end());
   const std::string base = pipes.empty() ? std::string() : pipes[0];
+  std::map<std::pair<const json*, std::string>, WorstImage> worst;  // both image tables read it
+  for (const json* s : scenes)
+    for (const std::string& p : compared) worst[{s, p}] = worstImage(*s, p, base);
   quantityTable(d, "Worst PSNR [dB] over the scene's frames, each against " + base + " (or its own skinning method's reference)",
-                scenes, compared, [&base](const json& s, const std::string& p) {
-                  const WorstImage w = worstImage(s, p, base);
+                scenes, compared, [&worst](const json& s, const std::string& p) {
+                  const WorstImage& w = worst.at({&s, p});
                   const int wrong = drawnFailures(s, p);
                   return w.psnr + w.note + (wrong ? "; " + std::to_string(wrong) + " frame(s) FAILED the drawn-pixel check" : "");
                 });
   quantityTable(d, "Pixels off by more than 1/255 [%]: the largest share over the scene's frames", scenes, compared,
-                [&base](const json& s, const std::string& p) { return worstImage(s, p, base).over; });
+                [&worst](const json& s, const std::string& p) { return worst.at({&s, p}).over; });
   fallbackTable(d, scenes, pipes);
 }
 
