@@ -72,7 +72,7 @@ template <int K> DriftResult run(int64_t steps) {
   // infinity), radius atan(1/2) in S3, atanh(1/2) in H3.
   const glm::dmat4 stepD = elementaryMatrix(K, 0, 2, 2e-3) * elementaryMatrix(K, 2, 3, -1e-3);
   const Motor8 stepM8 = compose(K, elementaryMotor(K, 0, 2, 2e-3), elementaryMotor(K, 2, 3, -1e-3));
-  const Motor8 stepU = K > 0 ? pairOfMotor(stepM8) : stepM8;
+  const Motor8 stepU = shaderMotor(K, stepM8);
   using M = typename PgaOf<float, K>::mat2x4;
   using V4 = typename PgaOf<float, K>::vec4;
   auto& pk = pgaK<float, K>;

@@ -89,8 +89,8 @@ Result<Motor8> motorOfMatrix(int kappa, const glm::dmat4& m) {
   return motor;
 }
 
-Motor8 pairOfMotor(const Motor8& m) {
-  return fromShim<1>(pgaK<double, 1>.pair_from_motor(toShim<1>(m)));
+Motor8 shaderMotor(int kappa, const Motor8& m) {
+  return kappa > 0 ? fromShim<1>(pgaK<double, 1>.pair_from_motor(toShim<1>(m))) : m;
 }
 
 Motor8 viewMotor(const CurvedScene& scene, double t) {

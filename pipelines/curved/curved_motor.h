@@ -27,8 +27,9 @@ glm::dmat4 matrixOfMotor(int kappa, const Motor8& m);
 // the reason, when m is not such an isometry (residual of the round trip > 1e-6).
 Result<Motor8> motorOfMatrix(int kappa, const glm::dmat4& m);
 
-// S3 only: the quaternion pair [L, R] of a motor (pga_kappa.glsl's pair_from_motor).
-Motor8 pairOfMotor(const Motor8& m);
+// The 8 floats curved_motor.vs takes for `m`: S3 its quaternion pair [L, R] (pga_kappa.glsl's
+// pair_from_motor), H3 m itself.
+Motor8 shaderMotor(int kappa, const Motor8& m);
 
 // World -> view of `scene` at time t: the inverse moves in reverse order, composed.
 Motor8 viewMotor(const CurvedScene& scene, double t);

@@ -13,11 +13,8 @@
 namespace mb {
 namespace {
 
-// The space's perspective (column-major). S3: the reference's matrix, clip = (f x / aspect,
-// f y, -0.01 w, -z): depth = -0.01 cot(d) grows with the distance d along the view ray over
-// the whole (0, pi) (near atan(0.01), far pi - atan(0.01)), so what lies behind is seen as
-// its antipodal copy ahead. H3: the ordinary perspective of the Klein model (x, y, z) / w,
-// near tanh(0.01), far 1 (the ideal boundary).
+// The space's perspective (column-major; README.md). S3: clip = (f x / aspect, f y, -0.01 w, -z),
+// near atan(0.01), far pi - atan(0.01). H3: Klein's (x, y, z) / w, near tanh(0.01), far 1.
 glm::mat4 projection(int kappa, float yfov, float aspect) {
   const float f = 1.0f / std::tan(0.5f * yfov);
   glm::mat4 p(0.0f);
@@ -34,13 +31,21 @@ glm::mat4 projection(int kappa, float yfov, float aspect) {
   return p;
 }
 
+// Locations first, first + 1, ...: the bound buffer's n interleaved vec4s (divisor 1 if instanced).
+void vec4Attributes(GLuint first, GLuint n, bool instanced) {
+  for (GLuint k = 0; k < n; ++k) {
+    glEnableVertexAttribArray(first + k);
+    glVertexAttribPointer(first + k, 4, GL_FLOAT, GL_FALSE, GLsizei(n * 4 * sizeof(float)),
+                          reinterpret_cast<const void*>(size_t(k) * 4 * sizeof(float)));
+    if (instanced) glVertexAttribDivisor(first + k, 1);
+  }
+}
+
 class CurvedPipeline final : public Pipeline {
 public:
   CurvedPipeline(Space space, bool motor) : space_(space), kappa_(kappaOf(space)), motor_(motor) {}
   ~CurvedPipeline() override { release(); }
-  std::string name() const override {
-    return std::string(kappa_ > 0 ? "s3_" : "h3_") + (motor_ ? "motor" : "matrix");
-  }
+  std::string name() const override { return curvedEntry(space_, motor_).name; }
   Status prepare(const Scene& scene) override;
   void update(const AnimState& state) override;
   void render(const View& view) override;
@@ -75,8 +80,8 @@ Status CurvedPipeline::prepare(const Scene& scene) {
   if (c.positions.empty() || c.positions.size() != c.normals.size() || c.instances.empty() ||
       c.lights.size() != 3)
     return Status::fail(scene.source + ": curved scene without triangles, instances or 3 lights");
-  auto program = gl::Program::fromFiles(motor_ ? "curved_motor.vs" : "curved_matrix.vs", "curved.fs",
-                                        {{"MB_KAPPA", kappa_ > 0 ? "1" : "-1"}});
+  const ShaderVariant variant = curvedEntry(space_, motor_).variants[0];  // the program it declares
+  auto program = gl::Program::fromFiles(variant.stage, variant.fragment, variant.defines);
   if (!program) return Status::fail(program.error());
   program_ = program.take();
 
@@ -90,42 +95,28 @@ Status CurvedPipeline::prepare(const Scene& scene) {
   instances.reserve(c.instances.size() * (motor_ ? 8 : 16));
   for (const glm::dmat4& m : c.instances) {
     if (!motor_) {
-      const glm::mat4 f(m);
-      instances.insert(instances.end(), glm::value_ptr(f), glm::value_ptr(f) + 16);
+      instances.insert(instances.end(), glm::value_ptr(m), glm::value_ptr(m) + 16);  // double -> float
       continue;
     }
     auto mo = curved::motorOfMatrix(kappa_, m);
     if (!mo) return Status::fail(scene.source + ": instance " + std::to_string(&m - c.instances.data()) + ": " + mo.error());
-    const curved::Motor8 up = kappa_ > 0 ? curved::pairOfMotor(*mo) : *mo;
-    for (double x : up) instances.push_back(float(x));
+    for (double x : curved::shaderMotor(kappa_, *mo)) instances.push_back(float(x));
   }
   stats_.conversionMs = motor_ ? gl::msSince(t0) : 0.0;
 
   glGenVertexArrays(1, &vao_);
   glBindVertexArray(vao_);
   vertexBuffer_ = gl::createBuffer(GL_ARRAY_BUFFER, vertices, stats_.vertexBytes);
-  for (GLuint loc : {0u, 1u}) {
-    glEnableVertexAttribArray(loc);
-    glVertexAttribPointer(loc, 4, GL_FLOAT, GL_FALSE, 8 * sizeof(float),
-                          reinterpret_cast<const void*>(size_t(loc) * 4 * sizeof(float)));
-  }
-  uint64_t instanceBytes = 0;
-  instanceBuffer_ = gl::createBuffer(GL_ARRAY_BUFFER, instances, instanceBytes);
-  const GLuint columns = motor_ ? 2 : 4;
-  for (GLuint k = 0; k < columns; ++k) {
-    glEnableVertexAttribArray(2 + k);
-    glVertexAttribPointer(2 + k, 4, GL_FLOAT, GL_FALSE, GLsizei(columns * 4 * sizeof(float)),
-                          reinterpret_cast<const void*>(size_t(k) * 4 * sizeof(float)));
-    glVertexAttribDivisor(2 + k, 1);
-  }
+  vec4Attributes(0, 2, false);
+  // Instances are the curved scenes' transforms; their uploads are the floats per transform.
+  instanceBuffer_ = gl::createBuffer(GL_ARRAY_BUFFER, instances, stats_.extraVertexBytes);
+  vec4Attributes(2, motor_ ? 2 : 4, true);
   glBindVertexArray(0);
   vertexCount_ = GLsizei(c.positions.size());
   instanceCount_ = GLsizei(c.instances.size());
-  // Instances are the curved scenes' transforms; their uploads are the floats per transform.
-  stats_.extraVertexBytes = instanceBytes;
   stats_.vertices = uint64_t(vertexCount_);
   stats_.floatsPerVertex = gl::floatsPer(stats_.vertexBytes, stats_.vertices);
-  stats_.floatsPerTransform = gl::floatsPer(instanceBytes, uint64_t(instanceCount_));
+  stats_.floatsPerTransform = gl::floatsPer(stats_.extraVertexBytes, uint64_t(instanceCount_));
   scene_ = &scene;
   update(AnimState{});
   GLenum err = glGetError();
@@ -140,7 +131,7 @@ void CurvedPipeline::update(const AnimState& state) {
   const double t = state.anim >= 0 ? double(state.time) : 0.0;
   if (motor_) {
     const curved::Motor8 v = curved::viewMotor(c, t);
-    const curved::Motor8 up = kappa_ > 0 ? curved::pairOfMotor(v) : v;
+    const curved::Motor8 up = curved::shaderMotor(kappa_, v);
     for (int k = 0; k < 8; ++k) viewMotor_[size_t(k)] = float(up[size_t(k)]);
     for (int l = 0; l < 3; ++l) lights_[size_t(l)] = glm::vec4(curved::sandwich(kappa_, v, glm::dvec4(c.lights[size_t(l)])));
   } else {
