@@ -6,7 +6,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <vector>
 
 #include "pipelines/gl/egl_devices.h"
@@ -23,8 +22,6 @@ constexpr int kProfile = 0x33, kCoreProfile = 0x34, kMajor = 0x36, kMinor = 0x37
 using CreateFn = void* (*)(const int* attribs, void* share);
 using MakeCurrentFn = unsigned char (*)(void* ctx, void* buffer, GLenum type, int w, int h);
 using DestroyFn = void (*)(void* ctx);
-using GetProcFn = void* (*)(const char* name);
-GetProcFn getProc = nullptr;  // set when the OSMesa backend is in use
 }  // namespace osmesa
 
 // The GL pointers are process-global; this records which context's backend filled them, so
@@ -38,42 +35,46 @@ struct Context::Impl {
   void* osContext = nullptr;
   osmesa::MakeCurrentFn osMakeCurrent = nullptr;
   osmesa::DestroyFn osDestroy = nullptr;
+  GetProcFn osGetProc = nullptr;
   std::vector<unsigned char> osBuffer;  // OSMesa needs a colour buffer to be current
 
-  bool bind() {
-    if (context != EGL_NO_CONTEXT)
-      return eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) == EGL_TRUE;
-    if (osContext) return osMakeCurrent(osContext, osBuffer.data(), GL_UNSIGNED_BYTE, 4, 4) != 0;
-    return false;
-  }
   // Makes the context current and (re)loads the GL pointers from its backend when needed.
   // Returns "" or what went wrong.
   std::string makeCurrent();
-  // Drops the EGL context, if any (a failed attempt's half-made one, or at destruction).
-  void releaseEgl() {
-    if (context == EGL_NO_CONTEXT) return;
-    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    eglDestroyContext(display, context);
-    context = EGL_NO_CONTEXT;
+  // Drops the context: a failed attempt's half-made one, or this one at destruction. The OSMesa
+  // library stays loaded: GL pointers may still refer into it.
+  ~Impl() {
+    if (context != EGL_NO_CONTEXT) {
+      eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      eglDestroyContext(display, context);
+    }
+    if (osContext) osDestroy(osContext);
+    if (gPointersLoadedFor == this) gPointersLoadedFor = nullptr;
   }
 };
 
 namespace {
 
-std::string eglErrorText(const char* what) {
+std::string eglErrorText(const std::string& what) {
   char buf[96];
-  std::snprintf(buf, sizeof buf, "%s failed (EGL error 0x%04x)", what, eglGetError());
+  std::snprintf(buf, sizeof buf, "%s failed (EGL error 0x%04x)", what.c_str(), eglGetError());
   return buf;
 }
 
 void* eglProc(const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); }
-void* osmesaProc(const char* name) { return osmesa::getProc(name); }
 
-// The GL 4.5 core context on an EGL display of a platform without windows (surfaceless, or
-// one device): no surface at all (EGL_KHR_surfaceless_context), rendering into FBOs only.
-std::string startEglContext(Context::Impl& s, const char* platform) {
-  if (s.display == EGL_NO_DISPLAY)
-    return eglErrorText((std::string("eglGetPlatformDisplayEXT(") + platform + ")").c_str());
+// The GL 4.5 core context on the display of `platform` (client extension `extension`) for
+// `native`, a platform without windows (surfaceless, or one device): no surface at all
+// (EGL_KHR_surfaceless_context), rendering into FBOs only.
+std::string startPlatform(Context::Impl& s, const char* extension, EGLenum platform, void* native,
+                          const std::string& name) {
+  if (!eglExtensionListed(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), extension))
+    return std::string(extension) + " not available";
+  auto getPlatformDisplay =
+      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (!getPlatformDisplay) return "eglGetPlatformDisplayEXT not available";
+  s.display = getPlatformDisplay(platform, native, nullptr);
+  if (s.display == EGL_NO_DISPLAY) return eglErrorText("eglGetPlatformDisplayEXT(" + name + ")");
   EGLint major = 0, minor = 0;
   if (!eglInitialize(s.display, &major, &minor)) return eglErrorText("eglInitialize");
   const char* exts = eglQueryString(s.display, EGL_EXTENSIONS);
@@ -96,18 +97,6 @@ std::string startEglContext(Context::Impl& s, const char* platform) {
   return s.makeCurrent();
 }
 
-// The context on the display of `platform` (client extension `extension`) for `native`.
-std::string startPlatform(Context::Impl& s, const char* extension, EGLenum platform, void* native,
-                          const std::string& name) {
-  if (!eglExtensionListed(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), extension))
-    return std::string(extension) + " not available";
-  auto getPlatformDisplay =
-      reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-  if (!getPlatformDisplay) return "eglGetPlatformDisplayEXT not available";
-  s.display = getPlatformDisplay(platform, native, nullptr);
-  return startEglContext(s, name.c_str());
-}
-
 // One EGL device (EGL_EXT_platform_device): how NVIDIA's EGL, which has no surfaceless
 // platform, offers a headless context; Mesa offers its software device the same way. `info`
 // names the device when its context started.
@@ -127,8 +116,8 @@ std::string startOsmesa(Context::Impl& s) {
   auto create = reinterpret_cast<osmesa::CreateFn>(dlsym(s.osLib, "OSMesaCreateContextAttribs"));
   s.osMakeCurrent = reinterpret_cast<osmesa::MakeCurrentFn>(dlsym(s.osLib, "OSMesaMakeCurrent"));
   s.osDestroy = reinterpret_cast<osmesa::DestroyFn>(dlsym(s.osLib, "OSMesaDestroyContext"));
-  osmesa::getProc = reinterpret_cast<osmesa::GetProcFn>(dlsym(s.osLib, "OSMesaGetProcAddress"));
-  if (!create || !s.osMakeCurrent || !s.osDestroy || !osmesa::getProc)
+  s.osGetProc = reinterpret_cast<GetProcFn>(dlsym(s.osLib, "OSMesaGetProcAddress"));
+  if (!create || !s.osMakeCurrent || !s.osDestroy || !s.osGetProc)
     return "libOSMesa lacks OSMesaCreateContextAttribs/MakeCurrent/GetProcAddress";
   const int attribs[] = {osmesa::kFormat, GL_RGBA, osmesa::kDepthBits, 24,
                          osmesa::kStencilBits, 0, osmesa::kAccumBits, 0,
@@ -148,34 +137,24 @@ std::string glString(GLenum name) {
 }  // namespace
 
 std::string Context::Impl::makeCurrent() {
+  const bool egl = context != EGL_NO_CONTEXT;
   // After another backend was current, EGL (glvnd) may still consider this context current
   // and skip re-installing its dispatch; releasing first forces a full bind.
-  if (gPointersLoadedFor != this && context != EGL_NO_CONTEXT)
+  if (gPointersLoadedFor != this && egl)
     eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-  if (!bind()) return context != EGL_NO_CONTEXT ? eglErrorText("eglMakeCurrent(no surface)")
-                                                : "OSMesaMakeCurrent failed";
+  const bool bound = egl ? eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) == EGL_TRUE
+                         : osContext && osMakeCurrent(osContext, osBuffer.data(), GL_UNSIGNED_BYTE, 4, 4) != 0;
+  if (!bound) return egl ? eglErrorText("eglMakeCurrent(no surface)") : "OSMesaMakeCurrent failed";
   if (gPointersLoadedFor == this) return "";
-  std::string missing = loadGlFunctions(context != EGL_NO_CONTEXT ? eglProc : osmesaProc);
+  std::string missing = loadGlFunctions(egl ? eglProc : osGetProc);
   if (!missing.empty()) return "GL entry points missing: " + missing;
   gPointersLoadedFor = this;
   return "";
 }
 
-Context::~Context() {
-  if (!impl_) return;
-  impl_->releaseEgl();
-  if (impl_->osContext) impl_->osDestroy(impl_->osContext);
-  if (gPointersLoadedFor == impl_.get()) gPointersLoadedFor = nullptr;
-  // The OSMesa library stays loaded: GL pointers may still refer into it.
-}
+Context::~Context() = default;
 
 bool Context::makeCurrent() { return impl_ && impl_->makeCurrent().empty(); }
-
-// Drops whatever an EGL attempt got half-way, so the next one starts from a fresh state.
-static void discardEgl(std::unique_ptr<Context::Impl>& impl) {
-  impl->releaseEgl();
-  impl = std::make_unique<Context::Impl>();
-}
 
 Result<std::unique_ptr<Context>> Context::create() {
   using R = Result<std::unique_ptr<Context>>;
@@ -197,14 +176,14 @@ Result<std::unique_ptr<Context>> Context::create() {
     if (std::string why = startDevice(*ctx->impl_, *d, info); !why.empty())
       return R::fail("cannot create a GL 4.5 core context on EGL device " + choice->text() + ": " + why);
   } else {
-    std::string eglWhy, osWhy;
+    std::string eglWhy;  // why each EGL choice was passed over
     if (choice->kind == GpuChoice::Kind::Auto && want != "osmesa") {  // first hardware device
       for (const EglDevice& d : listEglDevices(nullptr)) {
         if (d.software) continue;
         const std::string why = startDevice(*ctx->impl_, d, info);
         if (why.empty()) break;
         eglWhy += "EGL device " + std::to_string(d.index) + ": " + why + "; ";
-        discardEgl(ctx->impl_);
+        ctx->impl_ = std::make_unique<Impl>();  // the next attempt starts from a fresh state
       }
     }
     if (info.backend.empty()) {
@@ -219,13 +198,12 @@ Result<std::unique_ptr<Context>> Context::create() {
       if (why.empty()) info.backend = "egl-surfaceless";
     }
     if (info.backend.empty()) {
-      discardEgl(ctx->impl_);
-      osWhy = want == "egl" ? "skipped (MB_GL_BACKEND=egl)" : startOsmesa(*ctx->impl_);
+      ctx->impl_ = std::make_unique<Impl>();
+      const std::string osWhy = want == "egl" ? "skipped (MB_GL_BACKEND=egl)" : startOsmesa(*ctx->impl_);
       if (!osWhy.empty())
         return R::fail("cannot create a GL 4.5 core context: EGL: " + eglWhy + "; OSMesa: " + osWhy);
       info.backend = "osmesa";
     }
-    info.eglError = eglWhy;  // why earlier choices were passed over ("" when none was)
   }
   info.renderer = glString(GL_RENDERER);
   info.version = glString(GL_VERSION);
@@ -244,17 +222,13 @@ std::string ContextInfo::deviceText() const {
 Result<Context*> sharedContext() {
   static Context* shared = nullptr;
   static std::string failure;
-  if (shared) {
-    if (!shared->makeCurrent()) return Result<Context*>::fail("GL context: make-current failed");
-    return shared;
+  if (shared && !shared->makeCurrent()) return Result<Context*>::fail("GL context: make-current failed");
+  if (!shared && failure.empty()) {
+    auto created = Context::create();
+    if (created) shared = created.take().release();  // intentionally kept for the process lifetime
+    else failure = created.error();
   }
-  if (!failure.empty()) return Result<Context*>::fail(failure);
-  auto created = Context::create();
-  if (!created) {
-    failure = created.error();
-    return Result<Context*>::fail(failure);
-  }
-  shared = created.take().release();  // intentionally kept for the process lifetime
+  if (!shared) return Result<Context*>::fail(failure);
   return shared;
 }
 

@@ -15,7 +15,6 @@ struct ContextInfo {
   std::string renderer;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
   std::string version;   // GL_VERSION
   std::string vendor;    // GL_VENDOR
-  std::string eglError;  // why earlier choices were passed over ("" when none was)
   int deviceIndex = -1;  // the EGL device drawn on (egl-device N), -1 for the other backends
   bool deviceSoftware = true;  // the device is a CPU rasteriser (EGL_MESA_device_software / GL_RENDERER)
   std::string drm;       // the hardware device's DRM node, "" when none

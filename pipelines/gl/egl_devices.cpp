@@ -16,23 +16,19 @@ bool eglExtensionListed(const char* list, const char* ext) {
 
 std::vector<EglDevice> listEglDevices(std::string* why) {
   std::vector<EglDevice> out;
+  auto fail = [&](const char* reason) {
+    if (why) *why = reason;
+    return out;
+  };
   const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
   auto queryString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
-  if (!eglExtensionListed(client, "EGL_EXT_device_enumeration") || !queryDevices || !queryString) {
-    if (why) *why = "EGL_EXT_device_enumeration not available";
-    return out;
-  }
+  if (!eglExtensionListed(client, "EGL_EXT_device_enumeration") || !queryDevices || !queryString)
+    return fail("EGL_EXT_device_enumeration not available");
   EGLint count = 0;
-  if (!queryDevices(0, nullptr, &count) || count <= 0) {
-    if (why) *why = "eglQueryDevicesEXT lists no devices";
-    return out;
-  }
+  if (!queryDevices(0, nullptr, &count) || count <= 0) return fail("eglQueryDevicesEXT lists no devices");
   std::vector<EGLDeviceEXT> handles(size_t(count), nullptr);
-  if (!queryDevices(count, handles.data(), &count)) {
-    if (why) *why = "eglQueryDevicesEXT failed";
-    return out;
-  }
+  if (!queryDevices(count, handles.data(), &count)) return fail("eglQueryDevicesEXT failed");
   for (int i = 0; i < count; ++i) {
     EglDevice d;
     d.index = i;

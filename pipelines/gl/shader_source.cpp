@@ -1,5 +1,6 @@
 #include "pipelines/gl/shader_source.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -47,17 +48,10 @@ struct Expander {
   std::vector<std::string> stack;  // files being expanded, for cycle detection
   std::string error;
 
-  int idOf(const std::string& file) {
-    for (size_t i = 0; i < out.files.size(); ++i)
-      if (out.files[i] == file) return int(i);
-    out.files.push_back(file);
-    return int(out.files.size()) - 1;
-  }
-
-  // Appends the body of `file` (already read as `lines`) starting at its line `first` (0-based).
-  bool expand(const std::string& file, const std::vector<std::string>& lines, size_t first) {
+  // Appends the body of `file` (source-string number `id`, already read as `lines`) starting at
+  // its line `first` (0-based).
+  bool expand(const std::string& file, size_t id, const std::vector<std::string>& lines, size_t first) {
     stack.push_back(file);
-    const int id = idOf(file);
     for (size_t i = first; i < lines.size(); ++i) {
       std::string target = includeTarget(lines[i]);
       if (target.empty()) {
@@ -70,14 +64,12 @@ struct Expander {
       fs::path local = fs::path(file).parent_path() / target;
       fs::path found = fs::exists(local) ? local : fs::path(shaderDir()) / target;
       std::string name = fs::weakly_canonical(found).string();
-      for (const std::string& open : stack)
-        if (open == name) {
-          error = where + ": #include cycle: \"" + target + "\" is already being included";
-          return false;
-        }
-      bool seen = false;
-      for (const std::string& f : out.files) seen = seen || f == name;
-      if (seen) {  // included before: once-only, keep line numbering with a blank line
+      if (std::find(stack.begin(), stack.end(), name) != stack.end()) {
+        error = where + ": #include cycle: \"" + target + "\" is already being included";
+        return false;
+      }
+      if (std::find(out.files.begin(), out.files.end(), name) != out.files.end()) {
+        // Included before: once-only, keep line numbering with a blank line
         out.text += "\n";
         continue;
       }
@@ -87,8 +79,10 @@ struct Expander {
                 local.parent_path().string() + " and " + shaderDir() + ")";
         return false;
       }
-      out.text += "#line 1 " + std::to_string(idOf(name)) + "\n";
-      if (!expand(name, splitLines(body), 0)) return false;
+      const size_t included = out.files.size();
+      out.files.push_back(name);
+      out.text += "#line 1 " + std::to_string(included) + "\n";
+      if (!expand(name, included, splitLines(body), 0)) return false;
       out.text += "#line " + std::to_string(i + 2) + " " + std::to_string(id) + "\n";
     }
     stack.pop_back();
@@ -132,7 +126,7 @@ Result<ExpandedSource> expandShaderFile(const std::string& path, const Defines& 
   for (const auto& [name, value] : defines)
     e.out.text += "#define " + name + (value.empty() ? "" : " " + value) + "\n";
   e.out.text += "#line " + std::to_string(v + 2) + " 0\n";
-  if (!e.expand(file, lines, v + 1)) return R::fail(e.error);
+  if (!e.expand(file, 0, lines, v + 1)) return R::fail(e.error);
   return e.out;
 }
 
