@@ -1,15 +1,12 @@
 // pipelines/motor/companion.h: the CPU-only part of the PGA toolbox (what never runs on the
 // GPU), header-only, built on the float instantiation of shaders/pga.glsl (mb::Pga<float>).
 //
-//   motorFromMatrix3 / motorFromMatrix   3x3 / 4x4 (column-major, GLM / glTF) -> motor, with the
+//   motorFromMatrix                      4x4 (column-major, GLM / glTF) -> motor, with the
 //                                        scale check: per-axis scales, rigid / uniform /
 //                                        non-uniform, negative (reflection), shear
 //   motorToMatrix                        motor -> 4x4 (column-major)
 //   rotorFromQuat, translator,           glTF TRS -> motor (quaternion (x,y,z,w) ->
 //   motorFromTRS                         [w,-x,-y,-z], translation t -> [1,0,0,0,-t/2,0])
-//   bivectorInverse                      1/B for any bivector with a Euclidean part
-//   euclideanFactorization               M = T R (R about the origin)
-//   invariantFactorization               M = T R = R T (Mozzi-Chasles: screw axis)
 //   encodeTangentRotor / decodeTangentRotor   (normal, tangent, handedness w) <-> 4-float rotor
 //
 // Tangent-rotor handedness rule (see encodeTangentRotor): the frame (tangent, normal x tangent,
@@ -37,7 +34,6 @@ namespace mb::companion {
 
 using P = Pga<float>;
 using Motor = P::motor;
-using Line = P::line;
 using Vec3 = P::vec3;
 using Vec4 = P::vec4;
 
@@ -47,7 +43,6 @@ inline constexpr float kShearTolerance = float(kSimilarityTolerance);
 inline constexpr float kMinTangentScalar = 1.0f / 32767.0f;
 
 inline glm::vec3 toGlm(const Vec3& v) { return glm::vec3(v.x, v.y, v.z); }
-using mb::identityMotor;  // motor_kernels.h (the same glsl::mat2x4 type)
 
 // ---- glTF TRS -------------------------------------------------------------------------------
 
@@ -63,18 +58,10 @@ inline Motor translator(const glm::vec3& t) {
 inline Motor motorFromTRS(const glm::vec3& t, const glm::quat& q) {
   return pga<float>.gp_tr(translator(t), rotorFromQuat(q));
 }
-// glTF arrays: translation [x, y, z], rotation [x, y, z, w].
-inline Motor motorFromGltf(const float t[3], const float q[4]) {
-  return motorFromTRS(glm::vec3(t[0], t[1], t[2]), glm::quat(q[3], q[0], q[1], q[2]));
-}
 
 // ---- scale check ----------------------------------------------------------------------------
 
 enum class ScaleKind { Rigid, Uniform, NonUniform };
-
-inline const char* toString(ScaleKind k) {
-  return k == ScaleKind::Rigid ? "rigid" : k == ScaleKind::Uniform ? "uniform" : "non-uniform";
-}
 
 // Rigid: every |s_i| within kScaleTolerance of 1 and no reflection. Uniform: the three scales
 // (signs included) agree within the relative tolerance. Otherwise non-uniform.
@@ -86,7 +73,7 @@ inline ScaleKind classifyScale(const glm::vec3& s) {
 }
 
 struct MatrixMotor {
-  Motor motor{Vec4(1.0f, 0.0f, 0.0f, 0.0f), Vec4(0.0f)};  // the rigid part (rotation, then translation)
+  Motor motor = identityMotor();  // the rigid part (rotation, then translation)
   glm::vec3 scale{1.0f};          // per-axis scale applied before the motor; all three are
                                   // negated when the matrix reflects (det < 0), so that
                                   // matrix = motor-matrix * diag(scale) holds
@@ -121,40 +108,28 @@ inline Vec4 rotorFromColumns(const glm::vec3& c0, const glm::vec3& c1, const glm
 
 }  // namespace detail
 
-// 3x3 linear part -> rotor + scale check. Column-major (m[i] is column i), as GLM and glTF.
-inline MatrixMotor motorFromMatrix3(const glm::mat3& m) {
-  MatrixMotor out;
-  glm::vec3 s(glm::length(m[0]), glm::length(m[1]), glm::length(m[2]));
-  if (!(s.x > 0.0f && s.y > 0.0f && s.z > 0.0f)) {
-    out.degenerate = true;
-    out.kind = ScaleKind::NonUniform;
-    out.scale = s;
-    return out;
-  }
-  out.negative = glm::determinant(m) < 0.0f;
-  if (out.negative) s = -s;
-  out.scale = s;
-  out.kind = classifyScale(s);
-  const glm::vec3 c0 = m[0] / s.x, c1 = m[1] / s.y, c2 = m[2] / s.z;
-  out.sheared = std::abs(glm::dot(c0, c1)) > kShearTolerance ||
-                std::abs(glm::dot(c1, c2)) > kShearTolerance ||
-                std::abs(glm::dot(c0, c2)) > kShearTolerance;
-  out.motor = Motor(detail::rotorFromColumns(c0, c1, c2), Vec4(0.0f));
-  return out;
-}
-
-// 4x4 affine (last row 0 0 0 1) -> motor T R + scale check of the linear part.
+// 4x4 affine (last row 0 0 0 1) -> motor T R + scale check of the linear part. Column-major
+// (m[i] is column i), as GLM and glTF.
 inline MatrixMotor motorFromMatrix(const glm::mat4& m) {
-  MatrixMotor out = motorFromMatrix3(glm::mat3(m));
+  MatrixMotor out;
+  const glm::mat3 l(m);
+  glm::vec3 s(glm::length(l[0]), glm::length(l[1]), glm::length(l[2]));
+  out.degenerate = !(s.x > 0.0f && s.y > 0.0f && s.z > 0.0f);
+  if (out.degenerate) {
+    out.kind = ScaleKind::NonUniform;
+  } else {
+    out.negative = glm::determinant(l) < 0.0f;
+    if (out.negative) s = -s;
+    out.kind = classifyScale(s);
+    const glm::vec3 c0 = l[0] / s.x, c1 = l[1] / s.y, c2 = l[2] / s.z;
+    out.sheared = std::abs(glm::dot(c0, c1)) > kShearTolerance ||
+                  std::abs(glm::dot(c1, c2)) > kShearTolerance ||
+                  std::abs(glm::dot(c0, c2)) > kShearTolerance;
+    out.motor = Motor(detail::rotorFromColumns(c0, c1, c2), Vec4(0.0f));
+  }
+  out.scale = s;
   out.motor = pga<float>.gp_tr(translator(glm::vec3(m[3])), out.motor);
   return out;
-}
-// 16 floats, column-major (glTF node.matrix, glm::value_ptr).
-inline MatrixMotor motorFromMatrix(const float* m16) {
-  glm::mat4 m;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) m[c][r] = m16[c * 4 + r];
-  return motorFromMatrix(m);
 }
 
 // Normalised motor -> 4x4 matrix: columns are the images of x, y, z (sw_mx.. doubled) and
@@ -164,42 +139,6 @@ inline glm::mat4 motorToMatrix(const Motor& M) {
   const Vec3 x = p.sw_mx(M) * 2.0f, y = p.sw_my(M) * 2.0f, z = p.sw_mz(M) * 2.0f, o = p.sw_mo(M);
   return glm::mat4(glm::vec4(toGlm(x), 0.0f), glm::vec4(toGlm(y), 0.0f),
                    glm::vec4(toGlm(z), 0.0f), glm::vec4(toGlm(o), 1.0f));
-}
-
-// ---- bivector inverse and factorisations ---------------------------------------------------
-
-// 1/B = ~B / (B ~B), where B ~B = a + b e0123 (a = u.u, b = -2 u.v) is a Study number with
-// inverse 1/a - b/a^2 e0123. Gives (-u/a, -v/a + 2 (u.v)/a^2 u). Requires u != 0.
-inline Line bivectorInverse(const Line& B) {
-  const Vec3 u = B[0], v = B[1];
-  const float a = P::dot(u, u), uv = P::dot(u, v);
-  return Line(-u / a, -v / a + (2.0f * uv / (a * a)) * u);
-}
-
-struct MotorFactors {
-  Motor T;  // translator
-  Motor R;  // rotor
-};
-
-// M = T R with R the Euclidean part (rotation about the origin) and T = M ~R. M normalised.
-inline MotorFactors euclideanFactorization(const Motor& M) {
-  P& p = pga<float>;
-  const Motor R(M[0], Vec4(0.0f));
-  const Motor t = p.gp_mr(M, p.reverse_m(R));
-  return {Motor(Vec4(1.0f, 0.0f, 0.0f, 0.0f), Vec4(Vec3(t[1].xyz), 0.0f)), R};
-}
-
-// M = T R = R T (Mozzi-Chasles): T = 1 + <M>_4 / <M>_2 translates along the screw axis and
-// commutes with R = M ~T. With e0123 B^-1 = (0, -Euclidean part of B^-1):
-// T = [1, 0, 0, 0, -m7 * (B^-1)_u, 0]. A pure translation (no Euclidean part) gives T = M.
-inline MotorFactors invariantFactorization(const Motor& M) {
-  P& p = pga<float>;
-  const Line B(Vec3(M[0].yzw), Vec3(M[1].xyz));
-  if (P::dot(B[0], B[0]) == 0.0f)
-    return {Motor(Vec4(1.0f, 0.0f, 0.0f, 0.0f), Vec4(B[1], 0.0f)), identityMotor()};
-  const Line Bi = bivectorInverse(B);
-  const Motor T(Vec4(1.0f, 0.0f, 0.0f, 0.0f), Vec4(-M[1].w * Bi[0], 0.0f));
-  return {T, p.gp_mt(M, p.reverse_m(T))};
 }
 
 // ---- tangent rotors -------------------------------------------------------------------------

@@ -48,8 +48,8 @@ inline f4 splat(float x) { return f4{x, x, x, x}; }
 // products, same order of additions), so the result is the same bits; the two lanes whose
 // trees differ from their neighbours' (the scalar part's dot, e0123's two dots) are computed
 // as scalars and put in place. 36 vector + 12 scalar arithmetic instructions.
-// bDualScale: b's dual half is taken times this first (scaleDual of scaled_motor.h: the
-// hierarchy's parent scale), in registers — a scaled copy of b built in memory by the caller
+// bDualScale: b's dual half is taken times this first (scaled_motor.h: the hierarchy's
+// parent scale), in registers — a scaled copy of b built in memory by the caller
 // would be stored as scalars and read back as vectors, a store-forwarding stall per node.
 inline void gpMotors(const Motor& a, const Motor& b, Motor& r, float bDualScale = 1.0f) {
   using lanes::f4;

@@ -14,10 +14,6 @@ namespace mb::motor {
 // (zeroScalarFrames) is kept by the reflection bit, not a sign.
 gl::PackedStream interleaveCompact(const Primitive& p);
 
-}  // namespace mb::motor
-
-namespace mb::motor {
-
 // motor_cf's vertices: motor_c's 16-byte layout with the rotor's sign chosen per
 // triangle for interpolation (signRotorsForInterpolation, which may split vertices: the
 // primitive to upload comes with its bytes), the frame word's extra bit negating the rotor

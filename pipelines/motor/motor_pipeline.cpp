@@ -1,7 +1,5 @@
-// The PGA motor pipeline ("Look, Ma, No Matrices!"). CPU: motors + one signed uniform scale
-// per node, composed with the geometric product (motor_rig.h); animation blended as motors.
-// GPU: shaders/motor.vs (9-float vertices: position, tangent rotor, uv), the shared
-// shaders/forward.fs.
+// The PGA motor pipeline ("Look, Ma, No Matrices!", README.md): the CPU side in motor_rig.h,
+// vertices and morph deltas in motor_geometry.h, shaders/motor.vs and the shared shaders/forward.fs.
 //
 // Per draw the vertex shader gets the world motor (8 floats, u_World) and the scale applied to
 // positions before it: one float on the paper's path, a vec3 on the documented fallback
@@ -12,13 +10,8 @@
 // uniformBytesPerFrame. Skinning: SkinSpace::WorldPalette by default (joint motors in world
 // space, no node motor per vertex); Reference on request (configure()): the paper's form,
 // joint motors relative to the mesh node and gp(u_World, blend) per vertex (MB_SKIN_REFERENCE).
-// Instanced nodes, motor_c, motor_cf and morph targets: README.md.
-// The exact fallback (linear_fallback.h, variant MB_LINEAR_FALLBACK): a rigid draw
-// whose node is general (its world may not be a similarity) gets its exact world's polar
-// factors, a motor and a mat3 (+ its normal matrix); a skin whose palette is not one common
-// positive scale gets a motor and 24 floats per joint (binding 1). Counted in PipelineStats
-// (linearFallbackDraws, skinFallbackDraws, skinFallbackJoints, fallbackVertices).
-// Vertices and morph deltas: motor_geometry.h.
+// Instanced nodes, motor_c, motor_cf and morph targets: README.md. General nodes and skins whose
+// palette is not one common positive scale: the exact fallback (linear_fallback.h, drawLinear).
 #include "pipelines/motor/motor_pipeline.h"
 
 #include "pipelines/gl/gltf_pipeline.h"
@@ -122,8 +115,7 @@ private:
   void drawInstanceGroups(MotorFrame& f, const MotorDraw& m, const std::vector<gl::InstanceGroup>& groups);
   void drawNode(MotorFrame& f, const MotorDraw& m);
   DrawTransform drawTransform(const MotorDraw& m, const motor::JointPalette* palette) const;
-  uint64_t setDrawUniforms(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, const gl::Program& p,
-                           const glm::vec3& s, bool perAxis);
+  uint64_t setDrawUniforms(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, const gl::Program& p, bool perAxis);
   void drawByRotorHemisphere(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, DrawKind kind);
   void drawLinear(MotorFrame& f, const MotorDraw& m, const motor::JointPalette* palette, GLuint paletteBuffer,
                   const glm::mat4* world = nullptr);
@@ -291,7 +283,7 @@ void MotorPipeline::drawNode(MotorFrame& f, const MotorDraw& m) {
   const gl::Program& program = m.patch ? useFrameProgram(f, *f.programs.patch[t.scale.fallback])
                                        : useDrawProgram(f, m, kind, scaleForm(t.scale.fallback));
   if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
-  const uint64_t scaleBytes = setDrawUniforms(f, m, t, program, t.scale.value, t.scale.fallback);
+  const uint64_t scaleBytes = setDrawUniforms(f, m, t, program, t.scale.fallback);
   if (t.transform) ++f.transforms, f.transformScaleBytes += scaleBytes;  // draws with a transform
   gl::setWinding(t.scale.mirrored);
   drawByRotorHemisphere(f, m, t, kind);
@@ -315,16 +307,16 @@ DrawTransform MotorPipeline::drawTransform(const MotorDraw& m, const motor::Join
   return t;
 }
 
-// The draw's uniforms and material; returns the bytes of its u_Scale.
+// The draw's uniforms and material (u_Scale a vec3 when perAxis); returns the bytes of its u_Scale.
 uint64_t MotorPipeline::setDrawUniforms(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, const gl::Program& p,
-                                        const glm::vec3& s, bool perAxis) {
+                                        bool perAxis) {
   if (t.dequantise) setDequant(p, geometry_.cubes, m.d);
   if (t.transform) gl::uniform4fv(p.uniform("u_World"), 2, &t.world.motor[0][0], f.transformBytes);
   uint64_t bytes = 0;
   if (perAxis)
-    gl::uniform3f(p.uniform("u_Scale"), &s[0], bytes);
+    gl::uniform3f(p.uniform("u_Scale"), &t.scale.value[0], bytes);
   else
-    gl::uniform1f(p.uniform("u_Scale"), s.x, bytes);
+    gl::uniform1f(p.uniform("u_Scale"), t.scale.value.x, bytes);
   stats_.uniformBytesPerFrame += bytes;
   bindMaterial(p, m.prim);
   return bytes;
@@ -337,12 +329,9 @@ void MotorPipeline::drawByRotorHemisphere(MotorFrame& f, const MotorDraw& m, con
   const size_t interpolable = variant_.fragmentRotor && !m.patch && !t.scale.fallback
                                   ? geometry_.interpolable[size_t(m.d.mesh)][size_t(m.d.primitive)]
                                   : size_t(m.g.indexCount);
-  if (interpolable >= size_t(m.g.indexCount)) {
-    drawCounted(m.d, m.g, m.patch);
-    return;
-  }
+  if (interpolable >= size_t(m.g.indexCount)) return drawCounted(m.d, m.g, m.patch);
   stats_.drawnVertices += m.g.drawRange(0, GLsizei(interpolable));
-  setDrawUniforms(f, m, t, useDrawProgram(f, m, kind, ScaleForm::PerAxis), glm::vec3(t.scale.value.x), true);
+  setDrawUniforms(f, m, t, useDrawProgram(f, m, kind, ScaleForm::PerAxis), true);  // t.scale is uniform here: (x, x, x)
   m.g.drawRange(GLsizei(interpolable), m.g.indexCount - GLsizei(interpolable));
   stats_.draws += 2;
 }

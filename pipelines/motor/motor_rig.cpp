@@ -12,7 +12,6 @@ namespace {
 void count(const ConversionFlags& f, RigCounts* c, int sign = 1) {
   if (!c) return;
   c->nonUniformScaleNodes += sign * f.nonUniform;
-  c->nonUniformInnerNodes += sign * f.nonUniformInner;
   c->negativeScaleNodes += sign * f.negative;
   c->shearMatrixNodes += sign * f.shear;
 }
@@ -23,7 +22,6 @@ void animatedLocalPose(const Rig& rig, const std::vector<TRS>& pose, int anim, s
   local = rig.rest;
   if (counts) {
     counts->nonUniformScaleNodes += rig.restCounts.nonUniformScaleNodes;
-    counts->nonUniformInnerNodes += rig.restCounts.nonUniformInnerNodes;
     counts->negativeScaleNodes += rig.restCounts.negativeScaleNodes;
     counts->shearMatrixNodes += rig.restCounts.shearMatrixNodes;
   }
@@ -39,6 +37,14 @@ void animatedLocalPose(const Rig& rig, const std::vector<TRS>& pose, int anim, s
 }
 
 bool nodeIndexOk(const Scene& scene, int n) { return n >= 0 && size_t(n) < scene.nodes.size(); }
+
+// Animation blending by blending motors: per node shortest-arc blend + normalize_m, scales
+// lerped (scaled_motor.h blend). w = weight of b; `out` may be `a`.
+void blendLocal(const std::vector<ScaledMotor>& a, const std::vector<ScaledMotor>& b, float w,
+                std::vector<ScaledMotor>& out) {
+  if (&out != &a) out = a;
+  for (size_t n = 0; n < out.size() && n < b.size(); ++n) out[n] = blend(out[n], b[n], w);
+}
 
 }  // namespace
 
@@ -85,7 +91,7 @@ Rig buildRig(const Scene& scene) {
       TRS approx;
       if (j < s.inverseBind.size()) decomposeMatrix(s.inverseBind[j], &approx);
       binds.push_back(j < s.inverseBind.size() ? fromMatrix(s.inverseBind[j], approx, false, &f)
-                                               : identityScaledMotor());
+                                               : ScaledMotor{});
       count(f, &rig.bindCounts);
       general = general || f.nonUniform || f.shear || (nodeIndexOk(scene, s.joints[j]) && rig.general[size_t(s.joints[j])]);
     }
@@ -114,12 +120,6 @@ void localPose(const Rig& rig, const std::vector<TRS>& pose, std::vector<ScaledM
     local[n] = !rig.matrixNode[n] && n < pose.size() ? fromTRS(pose[n], rig.leaf[n], &f) : rig.rest[n];
     count(f, counts);
   }
-}
-
-void blendLocal(const std::vector<ScaledMotor>& a, const std::vector<ScaledMotor>& b, float w,
-                std::vector<ScaledMotor>& out) {
-  if (&out != &a) out = a;
-  for (size_t n = 0; n < out.size() && n < b.size(); ++n) out[n] = blend(out[n], b[n], w);
 }
 
 std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const AnimState& state,
@@ -179,7 +179,7 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
     // Joint j's world composed with its inverse bind, and a motor stored as joint j's 8 floats.
     auto jointMotor = [&](size_t j) {
       const int jn = skin.joints[j];
-      return compose(nodeIndexOk(scene, jn) ? world[size_t(jn)] : identityScaledMotor(), rig.inverseBind[size_t(p.skin)][j]);
+      return compose(nodeIndexOk(scene, jn) ? world[size_t(jn)] : ScaledMotor{}, rig.inverseBind[size_t(p.skin)][j]);
     };
     auto store = [&](size_t j, const Motor& motor) {
       for (int c = 0; c < 2; ++c)

@@ -18,7 +18,6 @@ namespace mb::motor {
 // Fallbacks the conversion took, counted per node (PipelineStats names).
 struct RigCounts {
   int nonUniformScaleNodes = 0;  // residual on a leaf, or approximated on an inner node/joint
-  int nonUniformInnerNodes = 0;  // of those, approximated (not exact)
   int negativeScaleNodes = 0;    // a scale component < 0 (matrix: det < 0)
   int shearMatrixNodes = 0;      // sheared authored matrix: nearest rotation + mean scale
 };
@@ -53,11 +52,6 @@ std::vector<ScaledMotor> localPose(const Rig& rig, const std::vector<TRS>& pose,
 // The same into `local` (resized; storage reused). Counts are added to `counts`.
 void localPose(const Rig& rig, const std::vector<TRS>& pose, std::vector<ScaledMotor>& local,
                RigCounts* counts = nullptr);
-
-// Animation blending by blending motors: per node shortest-arc blend + normalize_m, scales
-// lerped (scaled_motor.h blend). w = weight of b; `out` may be `a`.
-void blendLocal(const std::vector<ScaledMotor>& a, const std::vector<ScaledMotor>& b, float w,
-                std::vector<ScaledMotor>& out);
 
 // The local transforms for `state`: sampleAnimation of anim (and anim2, blended by motors).
 // `counts` receives the node fallbacks of the first animation's pose.
@@ -110,8 +104,8 @@ struct PoseWork {
 };
 
 // One update: sampleAnimation, localPose (unblended: the rest motors, converting only the
-// nodes the animation drives; the same values and counts) (and for a blend the second animation, then
-// blendLocal), worldPose in rig.order, jointPalettes; results in work.world / work.palettes,
+// nodes the animation drives; the same values and counts; a blend: both animations, blended
+// by motors), worldPose in rig.order, jointPalettes; results in work.world / work.palettes,
 // the phases lapped into `clock`. `counts` receives the first animation's node fallbacks.
 void poseScene(const Scene& scene, const Rig& rig, const AnimState& state, bool relativeToNode,
                PoseWork& work, RigCounts* counts, PhaseClock& clock);

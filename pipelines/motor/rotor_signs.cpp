@@ -1,6 +1,5 @@
 #include "pipelines/motor/rotor_signs.h"
 
-#include <algorithm>
 #include <array>
 
 #include "pipelines/scene/repair/flat_normals.h"

@@ -19,8 +19,6 @@ float sgn(float x) { return x < 0.0f ? -1.0f : 1.0f; }
 
 }  // namespace
 
-ScaledMotor identityScaledMotor() { return ScaledMotor{}; }
-
 // flatten (here and in blend): the shim's motor functions inlined. Called per node per frame;
 // left to itself GCC -O2 calls normalize_m and gp_* out of line with the motors passed through
 // the stack, which cost more than the arithmetic (measured: the motor update was 1.2-1.8x the

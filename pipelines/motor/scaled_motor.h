@@ -14,7 +14,6 @@
 // only exact on a leaf (nothing below it), applied to the vertices before everything else.
 #pragma once
 #include <glm/glm.hpp>
-#include <glm/gtc/quaternion.hpp>
 
 #include "pipelines/motor/gp_motors.h"
 #include "pipelines/motor/motor_kernels.h"
@@ -36,9 +35,6 @@ struct ConversionFlags {
   bool shear = false;            // authored matrix with shear: TRS approximation used
 };
 
-// The identity: motor 1, scale 1.
-ScaledMotor identityScaledMotor();
-
 // Node TRS -> ScaledMotor. `leaf`: the node has no children (a non-uniform scale is then
 // exact as a residual; on an inner node it is approximated by the signed geometric mean).
 ScaledMotor fromTRS(const TRS& trs, bool leaf, ConversionFlags* flags = nullptr);
@@ -50,15 +46,11 @@ ScaledMotor fromTRS(const TRS& trs, bool leaf, ConversionFlags* flags = nullptr)
 ScaledMotor fromMatrix(const glm::mat4& m, const TRS& approx, bool leaf,
                        ConversionFlags* flags = nullptr);
 
-// Multiplies the dual (translation) half of `m` by s: the motor that moves s-scaled space the
-// way `m` moves unscaled space (s M = M' s with M' = scaleDual(M, s)).
-inline Motor scaleDual(const Motor& m, float s) { return Motor(m[0], m[1] * s); }
-
 // compose() written straight into `out` (which must not be `parent` or `child`): the motor is
 // stored as the two 4-float halves the children's compose reads back, so the store-to-load
 // forwarding of a parent's fresh result works (16-byte loads of scalar stores would stall).
 inline void composeInto(const ScaledMotor& parent, const ScaledMotor& child, ScaledMotor& out) {
-  gpMotors(parent.motor, child.motor, out.motor, parent.scale);  // = gp(parent, scaleDual(child))
+  gpMotors(parent.motor, child.motor, out.motor, parent.scale);  // child's dual half * parent.scale
   out.scale = parent.scale * child.scale;
   out.residual = child.residual;
 }

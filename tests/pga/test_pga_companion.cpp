@@ -1,8 +1,6 @@
 // Tests of the CPU companion (pipelines/motor/companion.h): matrix <-> motor with the scale
-// check, bivector inverse, Euclidean and invariant factorisations, and tangent rotors with the
-// handedness rule, exhaustively on frames whose rotor scalar part is exactly 0.
-#include <cstring>
-
+// check and tangent rotors with the handedness rule, exhaustively on frames whose rotor scalar
+// part is exactly 0.
 #include <gtest/gtest.h>
 
 #include "pipelines/motor/companion.h"
@@ -78,9 +76,8 @@ TEST(PgaCompanion, ScaleCheckClassifiesAndReconstructs) {
   }
   EXPECT_LE(rebuild.ratio(), 1.0) << rebuild.report();
   EXPECT_LE(motor.ratio(), 1.0) << motor.report();
-  // Rigid, uniform, non-uniform as strings and the exact-1 case.
-  EXPECT_STREQ(c::toString(c::motorFromMatrix(glm::mat4(1.0f)).kind), "rigid");
-  EXPECT_STREQ(c::toString(c::ScaleKind::NonUniform), "non-uniform");
+  // The exact-1 case.
+  EXPECT_EQ(c::motorFromMatrix(glm::mat4(1.0f)).kind, c::ScaleKind::Rigid);
 }
 
 TEST(PgaCompanion, ShearAndDegenerateMatricesAreFlagged) {
@@ -94,65 +91,6 @@ TEST(PgaCompanion, ShearAndDegenerateMatricesAreFlagged) {
   EXPECT_TRUE(d.degenerate);
   // Still the translation.
   EXPECT_EQ(glm::vec3(c::motorToMatrix(d.motor)[3]), glm::vec3(1, 2, 3));
-  // The 16-float (glTF node.matrix) entry point reads column-major.
-  const float m16[16] = {0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 4, 5, 6, 1};
-  glm::mat4 gm;
-  std::memcpy(&gm, m16, sizeof m16);
-  EXPECT_EQ(maxDiff(c::motorFromMatrix(m16).motor, c::motorFromMatrix(gm).motor), 0.0);
-}
-
-TEST(PgaCompanion, BivectorInverse) {
-  std::mt19937 g(3003);
-  Tracker tr;
-  const F::motor one(F::vec4(1, 0, 0, 0), F::vec4(0.0f));
-  for (int i = 0; i < kCases; ++i) {
-    const glm::dvec3 u = randomUnit(g) * uniform(g, 0.2, 2), v = randomVec(g, -3, 3);
-    const F::line B(vec3Of<float>(u), vec3Of<float>(v));
-    const F::line Bi = c::bivectorInverse(B);
-    const F::motor Bm(F::vec4(0.0f, B[0]), F::vec4(B[1], 0.0f)), Bim(F::vec4(0.0f, Bi[0]), F::vec4(Bi[1], 0.0f));
-    const double cond = maxAbs(Bm) * maxAbs(Bim);
-    tr.check(maxDiff(mb::pga<float>.gp_mm(Bm, Bim), one), 32 * kEps * cond, i);
-    tr.check(maxDiff(mb::pga<float>.gp_mm(Bim, Bm), one), 32 * kEps * cond, i);
-  }
-  EXPECT_LE(tr.ratio(), 1.0) << tr.report();
-}
-
-TEST(PgaCompanion, EuclideanAndInvariantFactorisations) {
-  std::mt19937 g(3004);
-  F& p = mb::pga<float>;
-  Tracker eu, inv, commute, axis;
-  for (int i = 0; i < kCases; ++i) {
-    const glm::dquat q = randomQuat(g);
-    const glm::dvec3 t = randomVec(g, -10, 10);
-    const c::Motor M = trsMotor<float>(q, t);
-    const double size = 1 + glm::length(t);
-
-    const c::MotorFactors e = c::euclideanFactorization(M);
-    EXPECT_EQ(maxDiff(e.R, c::Motor(M[0], F::vec4(0.0f))), 0.0);
-    EXPECT_TRUE(e.T[0] == F::vec4(1, 0, 0, 0) && e.T[1].w == 0.0f);
-    eu.check(maxDiff(p.gp_tr(e.T, e.R), M), 16 * kEps * size, i);
-
-    // M = T R = R T; T translates along R's axis; R is a pure rotation (e0123 = 0). The
-    // factorisation divides by |u|^2 = sin^2 of the half angle: condition 1 / |u|^2.
-    const c::MotorFactors f = c::invariantFactorization(M);
-    const double u2 = double(F::dot(M[0].yzw, M[0].yzw));
-    const double cond = size / std::max(u2, 1e-6);
-    EXPECT_TRUE(f.T[0] == F::vec4(1, 0, 0, 0) && f.T[1].w == 0.0f);
-    inv.check(maxDiff(p.gp_mm(f.T, f.R), M), 32 * kEps * cond, i);
-    commute.check(maxDiff(p.gp_mm(f.R, f.T), M), 32 * kEps * cond, i);
-    const glm::dvec3 Ru = toD<float>(F::vec3(f.R[0].yzw)), Td = toD<float>(F::vec3(f.T[1].xyz));
-    axis.check(glm::length(glm::cross(Ru, Td)), 32 * kEps * cond, i);
-    axis.check(std::abs(double(f.R[1].w)), 32 * kEps * cond, i);
-  }
-  EXPECT_LE(eu.ratio(), 1.0) << eu.report();
-  EXPECT_LE(inv.ratio(), 1.0) << inv.report();
-  EXPECT_LE(commute.ratio(), 1.0) << commute.report();
-  EXPECT_LE(axis.ratio(), 1.0) << axis.report();
-  // A pure translation factors as (M, 1).
-  const c::Motor T = c::translator(glm::vec3(1, 2, 3));
-  const c::MotorFactors f = c::invariantFactorization(T);
-  EXPECT_EQ(maxDiff(f.T, T), 0.0);
-  EXPECT_EQ(maxDiff(f.R, c::identityMotor()), 0.0);
 }
 
 // ---- tangent rotors -------------------------------------------------------------------------

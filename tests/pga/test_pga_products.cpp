@@ -180,7 +180,7 @@ TYPED_TEST(PgaProducts, ProjectEqualsGlmPerspectiveOfTheTurnedPoint) {
   EXPECT_LE(tr.ratio(), 1.0) << tr.report();
 }
 
-// The glTF mappings of the companion (float) against GLM's TRS matrix, and the arrays entry.
+// The glTF mapping of the companion (float) against GLM's TRS matrix.
 TEST(PgaGltf, CompanionTrsMotorMatchesGlmMatrix) {
   namespace c = mb::companion;
   std::mt19937 g(1008);
@@ -190,9 +190,6 @@ TEST(PgaGltf, CompanionTrsMotorMatchesGlmMatrix) {
     const glm::dvec3 t = randomVec(g, -10, 10);
     const c::Motor M = c::motorFromTRS(glm::vec3(t), glm::quat(q));
     tr.check(maxDiff(matrixOf<float>(M), trsMatrix(q, t)), 16 * eps<float>() * (1 + glm::length(t)), i);
-    const float ta[3] = {float(t.x), float(t.y), float(t.z)};
-    const float qa[4] = {float(q.x), float(q.y), float(q.z), float(q.w)};
-    EXPECT_EQ(maxDiff(c::motorFromGltf(ta, qa), M), 0.0);
   }
   EXPECT_LE(tr.ratio(), 1.0) << tr.report();
 }
