@@ -4,26 +4,18 @@
 
 namespace mb::motor {
 
-CameraMotor cameraFromView(const View& view) {
-  CameraMotor c;
+Motor worldToViewMotor(const View& view) {
   MK& k = mk();
   // Camera-to-world is T(eye) R(orientation); its reverse is world-to-camera (GL view space).
   const Motor toWorld = k.normalize_m(companion::motorFromTRS(view.eye, view.orientation));
   const Motor halfTurnY = companion::rotorFromQuat(glm::quat(0.0f, 0.0f, 1.0f, 0.0f));
-  c.worldToView = k.gp_rm(halfTurnY, k.reverse_m(toWorld));
-  c.znear = view.znear;
-  c.zfar = view.zfar;
-  c.yfov = view.yfov;
-  c.aspect = view.aspect;
-  c.orthographic = view.orthographic;
-  c.xmag = view.ymag * view.aspect;
-  c.ymag = view.ymag;
-  return c;
+  return k.gp_rm(halfTurnY, k.reverse_m(toWorld));
 }
 
-MK::vec4 projectionConstants(const CameraMotor& camera) {
-  if (camera.orthographic) return mk().motorOrthographicConstants(camera.znear, camera.zfar, camera.xmag, camera.ymag);
-  return mk().motorProjectionConstants(camera.znear, camera.zfar, camera.yfov, camera.aspect);
+MK::vec4 projectionConstants(const View& view) {
+  if (view.orthographic)
+    return mk().motorOrthographicConstants(view.znear, view.zfar, view.ymag * view.aspect, view.ymag);
+  return mk().motorProjectionConstants(view.znear, view.zfar, view.yfov, view.aspect);
 }
 
 }  // namespace mb::motor

@@ -63,7 +63,7 @@ ScaleForm scaleForm(bool fallback) { return fallback ? ScaleForm::PerAxis : Scal
 // programs of its projection, and the transform uploads counted for PipelineStats.
 struct MotorFrame {
   const View& view;
-  motor::CameraMotor camera;
+  Motor worldToView;
   MK::vec4 k;  // once per frame, not per vertex as the paper listing's project() does
   const MotorPrograms& programs;
   uint64_t transformBytes = 0, transforms = 0, transformScaleBytes = 0;
@@ -204,12 +204,12 @@ void MotorPipeline::render(const View& view) {
   beginFrame();
   uploadPalettes(pose_.palettes.size(), [this](size_t i) { return uploadPalette(i); });
   streamInstances();
-  const motor::CameraMotor camera = motor::cameraFromView(view);
-  const MK::vec4 k = motor::projectionConstants(camera);
+  const Motor worldToView = motor::worldToViewMotor(view);
+  const MK::vec4 k = motor::projectionConstants(view);
   // An orthographic View draws with the MB_ORTHOGRAPHIC programs (a hand-made View on a scene
   // without an orthographic camera builds them here; prepare() did for the others).
   if (view.orthographic && !programs_[1].built && !linkPrograms(true)) return;
-  MotorFrame frame{view, camera, k, programs_[view.orthographic ? 1 : 0]};
+  MotorFrame frame{view, worldToView, k, programs_[view.orthographic ? 1 : 0]};
   gl::beginDraws();
   for (const gl::DrawItem& d : draws_) drawItem(frame, d);
   gl::endDraws();
@@ -221,7 +221,7 @@ void MotorPipeline::render(const View& view) {
 // The program with the frame's camera, projection and view uniforms set.
 const gl::Program& MotorPipeline::useFrameProgram(const MotorFrame& f, gl::CachedProgram& p) {
   return use(p, [&](const gl::Program& program) {
-    gl::uniform4fv(program.uniform("u_Camera"), 2, &f.camera.worldToView[0][0], stats_.uniformBytesPerFrame);
+    gl::uniform4fv(program.uniform("u_Camera"), 2, &f.worldToView[0][0], stats_.uniformBytesPerFrame);
     gl::uniform4f(program.uniform("u_ProjectionK"), &f.k[0], stats_.uniformBytesPerFrame);
     gl::setFrameUniforms(program, f.view, stats_.uniformBytesPerFrame);
   });

@@ -8,7 +8,6 @@
 
 #include "pipelines/gl/context.h"
 #include "pipelines/matrix/matrix_pose.h"
-#include "pipelines/motor/motor_camera.h"
 #include "pipelines/motor/motor_rig.h"
 #include "pipelines/pipeline.h"
 #include "pipelines/scene/camera_rule.h"
@@ -39,7 +38,6 @@ TEST(UpdatePhases, DefaultMotorsAreTheIdentity) {
   for (int c = 0; c < 2; ++c)
     for (int r = 0; r < 4; ++r) EXPECT_EQ(id[c][r], c == 0 && r == 0 ? 1.0f : 0.0f) << c << "," << r;
   EXPECT_TRUE(motor::ScaledMotor{}.motor == id);
-  EXPECT_TRUE(motor::CameraMotor{}.worldToView == id);
   const glm::vec3 p(0.25f, -3.0f, 7.5f);
   const glm::vec3 q = motor::applyToPoint(motor::ScaledMotor{}, p);
   EXPECT_EQ(q.x, p.x);

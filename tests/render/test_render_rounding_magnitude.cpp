@@ -108,16 +108,16 @@ TEST(RoundingMagnitude, JitterCoversMatrixAndMotorOnSmallCellsAwayFromTheOrigin)
   // Motor: the world motors of the rig, the camera motor and the shader's vertex stage (motor.vs).
   const motor::Rig rig = motor::buildRig(scene);
   const std::vector<motor::ScaledMotor> motors = motor::worldPose(scene, motor::localPose(rig, pose));
-  const motor::CameraMotor camera = motor::cameraFromView(view);
+  const Motor worldToView = motor::worldToViewMotor(view);
   MK& k = mk();
-  const MK::vec4 constants = k.motorProjectionConstants(camera.znear, camera.zfar, camera.yfov, camera.aspect);
+  const MK::vec4 constants = k.motorProjectionConstants(view.znear, view.zfar, view.yfov, view.aspect);
 
   double worstNew = 0, worstOld = 0, largestApart = 0;
   for (size_t n = 0; n < scene.nodes.size(); ++n)
     for (const glm::vec3& p : scene.meshes[n].primitives[0].positions) {
       const glm::vec4 a = viewProjection * (world[n] * glm::vec4(p, 1.0f));
       const MK::mat3x4 v = k.motorRigidVertex(motors[n].motor, motors[n].scale, MK::vec3(p.x, p.y, p.z), MK::vec4(1, 0, 0, 0));
-      const MK::vec4 b = k.motorWorldToClipConstants(camera.worldToView, MK::vec3(v[0].x, v[0].y, v[0].z), constants);
+      const MK::vec4 b = k.motorWorldToClipConstants(worldToView, MK::vec3(v[0].x, v[0].y, v[0].z), constants);
       // Window pixels apart (the viewport maps NDC 1 to height / 2 pixels).
       const double apart = 0.5 * height * std::max(std::abs(double(a.x) / a.w - double(b.x) / b.w),
                                                    std::abs(double(a.y) / a.w - double(b.y) / b.w));
