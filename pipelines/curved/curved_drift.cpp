@@ -61,8 +61,6 @@ double motorDistance(int kappa, const float (&m)[8]) {
 
 namespace {
 
-template <class S, int K> using PgaOf = PgaK<S, K>;  // named apart from curved_motor.cpp's P (unity builds)
-
 template <int K> DriftResult run(int64_t steps) {
   DriftResult r;
   r.kappa = K;
@@ -73,17 +71,18 @@ template <int K> DriftResult run(int64_t steps) {
   const glm::dmat4 stepD = elementaryMatrix(K, 0, 2, 2e-3) * elementaryMatrix(K, 2, 3, -1e-3);
   const Motor8 stepM8 = compose(K, elementaryMotor(K, 0, 2, 2e-3), elementaryMotor(K, 2, 3, -1e-3));
   const Motor8 stepU = shaderMotor(K, stepM8);
-  using M = typename PgaOf<float, K>::mat2x4;
-  using V4 = typename PgaOf<float, K>::vec4;
+  using M = typename PgaK<float, K>::mat2x4;
+  using V4 = typename PgaK<float, K>::vec4;
   auto& pk = pgaK<float, K>;
   const M stepMotor{V4(float(stepU[0]), float(stepU[1]), float(stepU[2]), float(stepU[3])),
                     V4(float(stepU[4]), float(stepU[5]), float(stepU[6]), float(stepU[7]))};
   const glm::mat4 stepMatrix(stepD);
-  auto composeMotor = [&](const M& a, const M& b) {
-    if constexpr (K > 0) return pk.gp_pair(a, b); else return pk.gp_mm_k(a, b);
+  // The motor side's step and renormalisation on the pga of any scalar (S3: on the pair).
+  auto composeMotor = [](auto& pga, const auto& a, const auto& b) {
+    if constexpr (K > 0) return pga.gp_pair(a, b); else return pga.gp_mm_k(a, b);
   };
-  auto renormMotor = [&](const M& a) {
-    if constexpr (K > 0) return pk.normalize_pair(a); else return pk.normalize_m_k(a);
+  auto renormMotor = [](auto& pga, const auto& a) {
+    if constexpr (K > 0) return pga.normalize_pair(a); else return pga.normalize_m_k(a);
   };
   auto renormMatrix = [&](glm::mat4& m) {
     float a[4][4];
@@ -99,10 +98,10 @@ template <int K> DriftResult run(int64_t steps) {
     M mv = identity;
     for (int64_t n = 0; n < steps; ++n) {
       v = stepMatrix * v;
-      mv = composeMotor(stepMotor, mv);
+      mv = composeMotor(pk, stepMotor, mv);
       if (renorm) {
         renormMatrix(v);
-        mv = renormMotor(mv);
+        mv = renormMotor(pk, mv);
       }
     }
     float arr[8];
@@ -114,12 +113,12 @@ template <int K> DriftResult run(int64_t steps) {
   {
     using C = Counted;
     auto& pc = pgaK<C, K>;
-    using MC = typename PgaOf<C, K>::mat2x4;
-    using VC = typename PgaOf<C, K>::vec4;
+    using MC = typename PgaK<C, K>::mat2x4;
+    using VC = typename PgaK<C, K>::vec4;
     const MC a(VC(C(0.9), C(0.1), C(0.2), C(0.3)), VC(C(0.1), C(0.2), C(0.3), C(0.4)));
-    r.motor.stepOps = countOps([&] { if constexpr (K > 0) pc.gp_pair(a, a); else pc.gp_mm_k(a, a); });
-    r.motor.renormOps = countOps([&] { if constexpr (K > 0) pc.normalize_pair(a); else pc.normalize_m_k(a); });
-    using M4 = typename PgaOf<C, K>::mat4;
+    r.motor.stepOps = countOps([&] { composeMotor(pc, a, a); });
+    r.motor.renormOps = countOps([&] { renormMotor(pc, a); });
+    using M4 = typename PgaK<C, K>::mat4;
     const M4 m4(C(1.0));
     r.matrix.stepOps = countOps([&] { M4 p = m4 * m4; (void)p; });
     C g[4][4];
