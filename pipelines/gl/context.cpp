@@ -6,7 +6,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <vector>
 
 #include "pipelines/gl/egl_devices.h"
 #include "pipelines/gl/gl_api.h"
@@ -36,7 +35,7 @@ struct Context::Impl {
   osmesa::MakeCurrentFn osMakeCurrent = nullptr;
   osmesa::DestroyFn osDestroy = nullptr;
   GetProcFn osGetProc = nullptr;
-  std::vector<unsigned char> osBuffer;  // OSMesa needs a colour buffer to be current
+  unsigned char osBuffer[4 * 4 * 4] = {};  // OSMesa needs a colour buffer to be current
 
   // Makes the context current and (re)loads the GL pointers from its backend when needed.
   // Returns "" or what went wrong.
@@ -125,7 +124,6 @@ std::string startOsmesa(Context::Impl& s) {
                          osmesa::kMajor, 4, osmesa::kMinor, 5, 0};
   s.osContext = create(attribs, nullptr);
   if (!s.osContext) return "OSMesaCreateContextAttribs(GL 4.5 core) failed";
-  s.osBuffer.assign(4 * 4 * 4, 0);
   return s.makeCurrent();
 }
 
@@ -143,7 +141,7 @@ std::string Context::Impl::makeCurrent() {
   if (gPointersLoadedFor != this && egl)
     eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   const bool bound = egl ? eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) == EGL_TRUE
-                         : osContext && osMakeCurrent(osContext, osBuffer.data(), GL_UNSIGNED_BYTE, 4, 4) != 0;
+                         : osContext && osMakeCurrent(osContext, osBuffer, GL_UNSIGNED_BYTE, 4, 4) != 0;
   if (!bound) return egl ? eglErrorText("eglMakeCurrent(no surface)") : "OSMesaMakeCurrent failed";
   if (gPointersLoadedFor == this) return "";
   std::string missing = loadGlFunctions(egl ? eglProc : osGetProc);

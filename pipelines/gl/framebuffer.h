@@ -25,10 +25,6 @@ public:
   // glFinish, then reads the colour buffer as RGBA8, rows top-down (row 0 = top of image).
   std::vector<uint8_t> readRgba() const;
 
-  int width() const { return width_; }
-  int height() const { return height_; }
-  GLuint id() const { return fbo_; }
-
 private:
   Framebuffer() = default;
   int width_ = 0, height_ = 0;

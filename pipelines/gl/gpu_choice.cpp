@@ -14,19 +14,13 @@ std::string GpuChoice::text() const {
 }
 
 Result<GpuChoice> parseGpuChoice(const std::string& text, const std::string& origin) {
-  GpuChoice c;
-  if (text.empty() || text == "auto") return c;
-  if (text == "llvmpipe") {
-    c.kind = GpuChoice::Kind::Llvmpipe;
-    return c;
-  }
+  if (text.empty() || text == "auto") return GpuChoice{};
+  if (text == "llvmpipe") return GpuChoice{.kind = GpuChoice::Kind::Llvmpipe};
   const bool digits = text.size() <= 3 && text.find_first_not_of("0123456789") == std::string::npos;
   if (!digits || std::stoi(text) > 255)
     return Result<GpuChoice>::fail(origin + " " + text +
                                    ": expected auto, llvmpipe or an EGL device index 0..255");
-  c.kind = GpuChoice::Kind::Device;
-  c.index = std::stoi(text);
-  return c;
+  return GpuChoice{.kind = GpuChoice::Kind::Device, .index = std::stoi(text)};
 }
 
 Result<GpuChoice> gpuChoiceFromEnvironment() {

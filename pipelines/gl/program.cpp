@@ -36,15 +36,12 @@ GLuint compile(GLenum stage, const std::string& path, const Defines& defines, st
   return shader;
 }
 
-Defines& globalDefinesStore() {
-  static Defines defines;
-  return defines;
-}
+constinit Defines gGlobalDefines;  // setGlobalDefines()'s; constinit, so usable before main()
 
 }  // namespace
 
-void setGlobalDefines(Defines defines) { globalDefinesStore() = std::move(defines); }
-const Defines& globalDefines() { return globalDefinesStore(); }
+void setGlobalDefines(Defines defines) { gGlobalDefines = std::move(defines); }
+const Defines& globalDefines() { return gGlobalDefines; }
 
 Result<std::unique_ptr<Program>> Program::fromFiles(const std::string& vsPath,
                                                     const std::string& fsPath,

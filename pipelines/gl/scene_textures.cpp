@@ -1,6 +1,5 @@
 #include "pipelines/gl/scene_textures.h"
 
-#include <cmath>
 #include <string>
 
 #include "pipelines/gl/upload.h"
