@@ -6,15 +6,11 @@ Result<CachedProgram*> ProgramCache::get(const std::string& vs, const std::strin
                                          const std::vector<StorageBlock>& blocks) {
   std::string key = vs + '\n' + fs;
   for (const auto& [name, value] : defines) key += '\n' + name + '=' + value;
-  std::unique_ptr<CachedProgram>& cached = programs_[key];
-  if (cached) return cached.get();
+  if (auto found = programs_.find(key); found != programs_.end()) return found->second.get();
   auto program = Program::fromFiles(vs, fs, defines);
-  if (!program) {
-    programs_.erase(key);
-    return Result<CachedProgram*>::fail(program.error());
-  }
-  cached = std::make_unique<CachedProgram>();
-  cached->program = program.take();
+  if (!program) return Result<CachedProgram*>::fail(program.error());
+  std::unique_ptr<CachedProgram>& cached = programs_[key];
+  cached = std::make_unique<CachedProgram>(CachedProgram{program.take()});
   for (const StorageBlock& b : blocks) cached->program->bindStorageBlock(b.name, b.binding);
   return cached.get();
 }
