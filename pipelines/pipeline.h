@@ -1,8 +1,6 @@
-// The interface every renderer implements, and the name -> factory registry.
-// A pipeline owns its GPU representation of a Scene: prepare() converts and uploads,
-// update() poses it for an animation state on the CPU, render() draws into the bound
-// framebuffer. Adding a variant = its class and its registry entry (registry.h), one line in
-// registry.cpp.
+// The interface every renderer implements (README.md), and the name -> factory registry. A
+// pipeline owns its GPU representation of a Scene. Adding a variant = its class and its registry
+// entry (registry.h), one line in registry.cpp.
 #pragma once
 #include <cstdint>
 #include <memory>

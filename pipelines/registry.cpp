@@ -2,6 +2,7 @@
 #include "pipelines/registry.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "pipelines/matrix/affine_pipeline.h"
 #include "pipelines/curved/curved_pipeline.h"
@@ -66,6 +67,25 @@ std::vector<std::string> pipelineNames(Space space) {
   for (const PipelineEntry& e : entries())
     if (e.space == space) names.push_back(e.name);
   return names;
+}
+
+std::vector<std::pair<std::string, std::string>> defines(const std::string& names) {
+  std::vector<std::pair<std::string, std::string>> out;
+  std::istringstream in(names);
+  for (std::string word; in >> word;) {
+    const size_t eq = word.find('=');
+    out.push_back({word.substr(0, eq), eq == std::string::npos ? "" : word.substr(eq + 1)});
+  }
+  return out;
+}
+
+std::vector<ShaderVariant> programs(const std::string& stage, const std::string& clip,
+                                    std::vector<ShaderVariant> rows) {
+  for (ShaderVariant& v : rows) {
+    if (v.stage.empty()) v.stage = stage;
+    v.kernels.push_back(clip);
+  }
+  return rows;
 }
 
 std::vector<std::string> allPipelineNames() {

@@ -1,8 +1,5 @@
-// What each pipeline declares beside its factory (one registry line per pipeline, registry.cpp):
-// the scenes it draws, how it blends joints, its family, its vertex and frame encoding, and the
-// shader variants it links. The harness reads these instead of naming pipelines: harness/ops
-// counts the variants, harness/isa compiles them, and the report's tables take their rows and
-// columns from the traits.
+// What each pipeline declares beside its factory (README.md: what reads each): the harness reads
+// these instead of naming pipelines.
 #pragma once
 #include <memory>
 #include <string>
@@ -26,6 +23,14 @@ struct ShaderVariant {
   std::string fragment = "forward.fs";  // the fragment stage it is linked with
 };
 
+// #defines as a compiler's -D options name them: "NAME NAME=VALUE ..." (a name alone: value "").
+std::vector<std::pair<std::string, std::string>> defines(const std::string& names);
+
+// A family's programs: `rows` with `stage` where a row names none, and `clip` (the transform to
+// clip space every program of the family ends with) after each row's kernels.
+std::vector<ShaderVariant> programs(const std::string& stage, const std::string& clip,
+                                    std::vector<ShaderVariant> rows);
+
 // Which side of the paper's comparison a pipeline is on: what it transforms with on the CPU
 // (hybrid poses with motors and hands matrices to the GPU: Motor).
 enum class PipelineFamily { Matrix, Motor };
@@ -40,10 +45,10 @@ struct FrameEncoding {
 struct PipelineEntry {
   std::string name;
   std::unique_ptr<Pipeline> (*make)();
-  Space space;                 // the scenes it draws
-  SkinMethod skin;             // how its vertex shader blends joints (skin_method.h)
+  Space space = Space::Euclidean;  // the scenes it draws
+  SkinMethod skin;                 // how its vertex shader blends joints (skin_method.h)
   PipelineFamily family;
-  int vertexBytes = 0;         // shading attributes of a normal-mapped vertex (0: no glTF vertex)
+  int vertexBytes = 0;  // shading attributes of a normal-mapped vertex (0: no glTF vertex)
   FrameEncoding frame = {};
   std::vector<ShaderVariant> variants = {};
 };
@@ -88,8 +93,6 @@ inline constexpr const char* kMorphSums =
     "morph.glsl's delta sums, per target with a non-zero weight 1 mul + 1 add per float of the target "
     "(storage-buffer reads by the vertex index), before the transform";
 // A morphing rigid vertex beside the rigid one (shaders/morph.glsl), two targets as morph_torus.
-inline std::vector<std::pair<std::string, std::string>> morphDefines() {
-  return {{"MB_MORPH", ""}, {"MB_MORPH_TARGETS", "2"}};
-}
+inline constexpr const char* kMorph = "MB_MORPH MB_MORPH_TARGETS=2";
 
 }  // namespace mb::variant_notes

@@ -79,13 +79,9 @@ std::unique_ptr<Pipeline> makeHybridPipeline() {
                               std::make_unique<hybrid::MotorPoser>());
 }
 
-}  // namespace mb
-
-namespace mb {
-
 // Drawn exactly as qtangent: the same vertex and programs.
 PipelineEntry hybridEntry() {
-  return {.name = "hybrid", .make = makeHybridPipeline, .space = Space::Euclidean, .skin = SkinMethod::LinearBlend,
+  return {.name = "hybrid", .make = makeHybridPipeline, .skin = SkinMethod::LinearBlend,
           .family = PipelineFamily::Motor, .vertexBytes = 28, .frame = {.decodeKernel = "qtangentFrame"},
           .variants = affine::qtangentVariants("; the GPU side of qtangent")};
 }

@@ -2,13 +2,9 @@
 // (mat3, 9 floats) for rigid draws (PipelineStats::floatsPerTransform = 21), u_Mirror
 // (sign(det), in uniformBytesPerFrame) for every draw; skinned draws read the joint palette (12
 // floats per joint, stored as rows) and upload no transform, as glTF ignores a skinned node's
-// own transform. The projection matrix is built once per frame. Bezier patch primitives are
-// drawn rigidly by their node with affine_patch.vs (the same per-draw uniforms). Instanced
-// nodes and matrix_c's quantisation cube: README.md. Morph targets: a draw (instanced too)
-// whose node has a non-zero weight uses the MB_MORPH variant of its program, the glTF deltas as
-// matrix does (morph_buffers.h); qtangent, hybrid and matrix_c decode their frame and add the
-// deltas to it (affine.vs), and matrix_c's morphing rigid draws dequantise per vertex instead
-// of folding the cube into the model.
+// own transform. Bezier patch primitives are drawn rigidly by their node with affine_patch.vs
+// (the same per-draw uniforms). Instanced nodes and matrix_c's quantisation cube: README.md;
+// morph targets: pipelines/README.md.
 #include "pipelines/matrix/affine_pipeline.h"
 
 #include <glm/gtc/matrix_transform.hpp>

@@ -10,34 +10,32 @@ PipelineEntry matrixEntry() {
                            "(motor.vs leaves normalisation to forward.fs, which normalises both anyway)";
   const std::string ref = "the Sample Viewer's: skin, then u_ModelMatrix per vertex";
   const std::string world = "joint world * inverse bind; no model matrix per vertex";
-  const std::string clip = "matrixWorldToClip", vs = "matrix.vs";
-  return {.name = "matrix", .make = makeMatrixPipeline, .space = Space::Euclidean, .skin = SkinMethod::LinearBlend,
+  return {.name = "matrix", .make = makeMatrixPipeline, .skin = SkinMethod::LinearBlend,
           .family = PipelineFamily::Matrix, .vertexBytes = 48, .frame = {.fetched = "float frame"},
-          .variants = {
-              {.stage = vs, .draws = "rigid", .kernels = {"matrixRigidVertex", clip}, .note = main},
-              {.stage = vs, .defines = {{"SKINNED", ""}}, .draws = "skinned", .kernels = {"matrixSkinnedVertex", clip},
+          .variants = programs("matrix.vs", "matrixWorldToClip", {
+              {.draws = "rigid", .kernels = {"matrixRigidVertex"}, .note = main},
+              {.defines = defines("SKINNED"), .draws = "skinned", .kernels = {"matrixSkinnedVertex"},
                .note = main + "; = skinned, reference"},
-              {.stage = vs, .defines = {{"SKINNED", ""}}, .draws = "skinned, reference",
-               .kernels = {"matrixSkinnedVertex", clip}, .note = ref},
-              {.stage = vs, .defines = {{"SKINNED", ""}, {"MB_WORLD_PALETTE", ""}}, .draws = "skinned, world palette",
-               .kernels = {"matrixSkinnedVertexWorld", clip}, .note = world},
-              {.stage = vs, .defines = {{"MB_NO_TANGENT", ""}}, .draws = "rigid, no tangent",
-               .kernels = {"matrixRigidVertexNoTangent", clip}},
-              {.stage = vs, .defines = {{"SKINNED", ""}, {"MB_NO_TANGENT", ""}}, .draws = "skinned, no tangent",
-               .kernels = {"matrixSkinnedVertexNoTangent", clip}, .note = ref},
-              {.stage = vs, .defines = {{"SKINNED", ""}, {"MB_WORLD_PALETTE", ""}, {"MB_NO_TANGENT", ""}},
-               .draws = "skinned, world palette, no tangent", .kernels = {"matrixSkinnedVertexWorldNoTangent", clip},
+              {.defines = defines("SKINNED"), .draws = "skinned, reference", .kernels = {"matrixSkinnedVertex"},
+               .note = ref},
+              {.defines = defines("SKINNED MB_WORLD_PALETTE"), .draws = "skinned, world palette",
+               .kernels = {"matrixSkinnedVertexWorld"}, .note = world},
+              {.defines = defines("MB_NO_TANGENT"), .draws = "rigid, no tangent",
+               .kernels = {"matrixRigidVertexNoTangent"}},
+              {.defines = defines("SKINNED MB_NO_TANGENT"), .draws = "skinned, no tangent",
+               .kernels = {"matrixSkinnedVertexNoTangent"}, .note = ref},
+              {.defines = defines("SKINNED MB_WORLD_PALETTE MB_NO_TANGENT"),
+               .draws = "skinned, world palette, no tangent", .kernels = {"matrixSkinnedVertexWorldNoTangent"},
                .note = world},
-              {.stage = "matrix_patch.vs", .draws = "bezier patch", .kernels = {"bezierPatch", "matrixPatchVertex", clip},
+              {.stage = "matrix_patch.vs", .draws = "bezier patch", .kernels = {"bezierPatch", "matrixPatchVertex"},
                .note = main + "; " + kTexels},
-              {.stage = vs, .defines = {{"MB_INSTANCED", ""}}, .draws = "rigid, instanced",
-               .kernels = {"matrixRigidVertex", clip}, .note = main + "; " + kInstanced},
-              {.stage = vs, .defines = {{"MB_INSTANCED", ""}, {"MB_NO_TANGENT", ""}},
-               .draws = "rigid, no tangent, instanced", .kernels = {"matrixRigidVertexNoTangent", clip},
-               .note = kInstanced},
-              {.stage = vs, .defines = morphDefines(), .draws = "rigid, morph", .kernels = {"matrixRigidVertex", clip},
+              {.defines = defines("MB_INSTANCED"), .draws = "rigid, instanced", .kernels = {"matrixRigidVertex"},
+               .note = main + "; " + kInstanced},
+              {.defines = defines("MB_INSTANCED MB_NO_TANGENT"), .draws = "rigid, no tangent, instanced",
+               .kernels = {"matrixRigidVertexNoTangent"}, .note = kInstanced},
+              {.defines = defines(kMorph), .draws = "rigid, morph", .kernels = {"matrixRigidVertex"},
                .note = main + "; " + kMorphSums},
-          }};
+          })};
 }
 
 }  // namespace mb

@@ -1,14 +1,11 @@
-// The matrix/TBN pipeline: the Khronos glTF-Sample-Viewer baseline the paper compares with.
-// CPU: GLM matrices and quaternions for the hierarchy, animation and skin palettes. GPU:
-// shaders/matrix.vs (+ SKINNED variant) and the shared shaders/forward.fs. Per draw it uploads
-// u_ModelMatrix and u_NormalMatrix (2 x mat4 = 32 floats, skinned draws included, as the Sample
-// Viewer does); per joint a joint matrix and a joint normal matrix. Vertex format per primitive
-// as the Sample Viewer's (pipelines/gl/frame_vertices.h): a tangent only where the primitive
-// has one (authored, or generated for a normal map); the MB_NO_TANGENT shader variant draws the
-// others. Skinning: SkinSpace::Reference by default (the Sample Viewer's); WorldPalette on
-// request (configure()). Instanced nodes: README.md. Morph targets: the MB_MORPH variants
-// (shaders/morph.glsl) for draws whose node has a non-zero weight, the glTF deltas as they are
-// (pipelines/gl/morph_buffers.h), instanced draws too (every instance with its node's weights).
+// The matrix/TBN pipeline: the Khronos glTF-Sample-Viewer baseline the paper compares with
+// (README.md: its CPU side, vertex shader and instanced nodes). Per draw it uploads u_ModelMatrix
+// and u_NormalMatrix (2 x mat4 = 32 floats, skinned draws included, as the Sample Viewer does);
+// per joint a joint matrix and a joint normal matrix. Vertex format per primitive as the Sample
+// Viewer's (pipelines/gl/frame_vertices.h): a tangent only where the primitive has one
+// (authored, or generated for a normal map); the MB_NO_TANGENT shader variant draws the others.
+// Skinning: SkinSpace::Reference by default (the Sample Viewer's); WorldPalette on request
+// (configure()). Morph targets: pipelines/README.md.
 #include "pipelines/matrix/matrix_pipeline.h"
 
 #include <glm/gtc/type_ptr.hpp>
