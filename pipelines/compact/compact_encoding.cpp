@@ -158,7 +158,17 @@ glm::vec4 decodeSignedRotorFrame(uint32_t word) {
 }
 
 std::vector<gl::PackedAttribute> attributes() {
-  return {{4, GL_SHORT, true}, {4, GL_UNSIGNED_INT_2_10_10_10_REV, false}, {2, GL_HALF_FLOAT, false}};
+  return {{0, 4, GL_SHORT, true}, {1, 4, GL_UNSIGNED_INT_2_10_10_10_REV, false}, {2, 2, GL_HALF_FLOAT, false}};
+}
+
+void appendVertex(std::vector<uint8_t>& out, const glm::vec3& position, const PositionCube& cube, uint32_t frame,
+                  const glm::vec2& uv0, float positionW) {
+  int16_t p[4];
+  quantizePosition(position, cube, p, positionW);
+  const uint16_t uv[2] = {uint16_t(glm::packHalf1x16(uv0.x)), uint16_t(glm::packHalf1x16(uv0.y))};
+  gl::appendBytes(out, p, 4);
+  gl::appendBytes(out, &frame, 1);
+  gl::appendBytes(out, uv, 2);
 }
 
 std::vector<uint8_t> interleave(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& frames,
@@ -166,14 +176,8 @@ std::vector<uint8_t> interleave(const std::vector<glm::vec3>& positions, const s
                                 const std::vector<float>& positionW) {
   std::vector<uint8_t> out;
   out.reserve(positions.size() * kVertexBytes);
-  for (size_t v = 0; v < positions.size(); ++v) {
-    int16_t p[4];
-    quantizePosition(positions[v], cube, p, positionW.empty() ? 0.0f : positionW[v]);
-    const uint16_t uv[2] = {uint16_t(glm::packHalf1x16(uv0[v].x)), uint16_t(glm::packHalf1x16(uv0[v].y))};
-    gl::appendBytes(out, p, 4);
-    gl::appendBytes(out, &frames[v], 1);
-    gl::appendBytes(out, uv, 2);
-  }
+  for (size_t v = 0; v < positions.size(); ++v)
+    appendVertex(out, positions[v], cube, frames[v], uv0[v], positionW.empty() ? 0.0f : positionW[v]);
   return out;
 }
 

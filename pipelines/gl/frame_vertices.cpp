@@ -8,11 +8,8 @@ bool uploadsTangent(const Primitive& p) { return !p.tangents.empty(); }
 
 std::vector<float> interleaveVertices(const Primitive& p) {
   const bool tangent = uploadsTangent(p);
-  std::vector<float> out;
-  out.reserve(p.positions.size() * size_t(tangent ? kFloatsWithTangent : kFloatsWithoutTangent));
-  for (size_t v = 0; v < p.positions.size(); ++v) {
-    glm::vec3 n = v < p.normals.size() ? p.normals[v] : glm::vec3(0, 0, 1);
-    glm::vec2 uv = v < p.uv0.size() ? p.uv0[v] : glm::vec2(0.0f);
+  return interleave<float>(p, size_t(tangent ? kFloatsWithTangent : kFloatsWithoutTangent), [&](auto& out, size_t v) {
+    const glm::vec3 n = v < p.normals.size() ? p.normals[v] : glm::vec3(0, 0, 1);
     const glm::vec3& x = p.positions[v];
     out.insert(out.end(), {x.x, x.y, x.z, n.x, n.y, n.z});
     if (tangent) {
@@ -20,9 +17,9 @@ std::vector<float> interleaveVertices(const Primitive& p) {
       const glm::vec4 t = v < p.tangents.size() ? p.tangents[v] : glm::vec4(1, 0, 0, 1);
       out.insert(out.end(), {t.x, t.y, t.z, t.w});
     }
+    const glm::vec2 uv = vertexUv(p, v);
     out.insert(out.end(), {uv.x, uv.y});
-  }
-  return out;
+  });
 }
 
 VertexFrame vertexFrame(const Primitive& p, size_t v) {
@@ -41,7 +38,7 @@ VertexFrame vertexFrame(const Primitive& p, size_t v) {
 
 VertexFormat floatFrameFormat(const Primitive& p) {
   const bool tangent = uploadsTangent(p);
-  std::vector<VertexAttribute> attributes{{0, 3}, {1, 3}};
+  std::vector<PackedAttribute> attributes{{0, 3}, {1, 3}};
   if (tangent) attributes.push_back({2, 4});
   attributes.push_back({3, 2});
   return VertexFormat{interleaveVertices(p), attributes, tangent ? 0 : 1};

@@ -33,6 +33,18 @@ struct VertexFrame {
 };
 VertexFrame vertexFrame(const Primitive& p, size_t v);
 
+// uv0 of vertex v, (0, 0) where `p` has none.
+inline glm::vec2 vertexUv(const Primitive& p, size_t v) { return v < p.uv0.size() ? p.uv0[v] : glm::vec2(0.0f); }
+
+// The loop every vertex format shares: `p`'s vertices, encode(out, v) appending vertex v's
+// `perVertex` values to `out`. Each format's encoder holds only its own encoding.
+template <class T, class Encode> std::vector<T> interleave(const Primitive& p, size_t perVertex, Encode&& encode) {
+  std::vector<T> out;
+  out.reserve(p.positions.size() * perVertex);
+  for (size_t v = 0; v < p.positions.size(); ++v) encode(out, v);
+  return out;
+}
+
 // interleaveVertices(p) with its attributes (locations 0 position, 1 normal, 2 tangent when
 // uploaded, 3 uv0) and variant 1 when it has no tangent (the shaders' MB_NO_TANGENT).
 VertexFormat floatFrameFormat(const Primitive& p);

@@ -29,6 +29,23 @@ void GpuPrimitive::release() {
   vao = vertices = indices = 0;
 }
 
+namespace {
+
+// Points the bound vertex array's attributes at `attributes`, tightly interleaved in that order.
+void pointAttributes(const std::vector<PackedAttribute>& attributes) {
+  GLsizei stride = 0;
+  for (const PackedAttribute& a : attributes) stride += GLsizei(a.bytes());
+  size_t offset = 0;
+  for (const PackedAttribute& a : attributes) {
+    glEnableVertexAttribArray(a.location);
+    glVertexAttribPointer(a.location, a.size, a.type, a.normalized ? GL_TRUE : GL_FALSE, stride,
+                          reinterpret_cast<const void*>(offset));
+    offset += a.bytes();
+  }
+}
+
+}  // namespace
+
 bool normalMapped(const Scene& scene, const Primitive& p) {
   return p.material >= 0 && size_t(p.material) < scene.materials.size() &&
          scene.materials[size_t(p.material)].normal.texture >= 0;
@@ -39,32 +56,15 @@ void SceneGeometry::upload(const Scene& scene, const Format& format, PipelineSta
     VertexFormat f = format(p);
     g.variant = f.variant;
     g.vertices = createBuffer(GL_ARRAY_BUFFER, f.data, stats.vertexBytes);
-    GLsizei stride = 0;
-    for (const VertexAttribute& a : f.attributes) stride += GLsizei(a.size) * GLsizei(sizeof(float));
-    size_t offset = 0;
-    for (const VertexAttribute& a : f.attributes) {
-      glEnableVertexAttribArray(a.location);
-      glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, stride,
-                            reinterpret_cast<const void*>(offset * sizeof(float)));
-      offset += size_t(a.size);
-    }
+    pointAttributes(f.attributes);
   });
 }
 
 void SceneGeometry::uploadPacked(const Scene& scene, const PackedInterleave& interleave,
                                  const std::vector<PackedAttribute>& attributes, PipelineStats& stats) {
-  GLsizei stride = 0;
-  for (const PackedAttribute& a : attributes) stride += GLsizei(a.bytes());
   uploadEach(scene, stats, [&](const Primitive& p, GpuPrimitive& g) {
     g.vertices = createBuffer(GL_ARRAY_BUFFER, interleave(p), stats.vertexBytes);
-    GLuint loc = 0;
-    size_t offset = 0;
-    for (const PackedAttribute& a : attributes) {
-      glEnableVertexAttribArray(loc);
-      glVertexAttribPointer(loc++, a.size, a.type, a.normalized ? GL_TRUE : GL_FALSE, stride,
-                            reinterpret_cast<const void*>(offset));
-      offset += a.bytes();
-    }
+    pointAttributes(attributes);
   });
 }
 

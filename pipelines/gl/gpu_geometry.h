@@ -32,19 +32,13 @@ struct GpuPrimitive {
   void release();
 };
 
-// One float attribute of an interleaved vertex: shader location and component count.
-struct VertexAttribute {
-  GLuint location = 0;
-  GLint size = 0;
-};
-
 // A primitive's vertex format when it may differ per primitive (e.g. the matrix pipeline
 // uploads a tangent only where the glTF-Sample-Viewer would): the interleaved floats, the
 // attributes in interleave order, and a pipeline-defined variant number kept on GpuPrimitive
 // so the pipeline can pick the matching program.
 struct VertexFormat {
   std::vector<float> data;
-  std::vector<VertexAttribute> attributes;
+  std::vector<PackedAttribute> attributes;  // GL_FLOAT ones
   int variant = 0;
 };
 
@@ -58,8 +52,7 @@ public:
   using Format = std::function<VertexFormat(const Primitive&)>;
   void upload(const Scene& scene, const Format& format, PipelineStats& stats);
   // The same for a vertex layout of mixed component types (pipelines/gl/packed_vertices.h):
-  // interleave(p) returns the bytes of p's vertices, `attributes` their formats in order on
-  // locations 0, 1, ...
+  // interleave(p) returns the bytes of p's vertices, `attributes` their formats in order.
   using PackedInterleave = std::function<std::vector<uint8_t>(const Primitive&)>;
   void uploadPacked(const Scene& scene, const PackedInterleave& interleave,
                     const std::vector<PackedAttribute>& attributes, PipelineStats& stats);

@@ -1,6 +1,6 @@
 // Vertex layouts with mixed component types (float positions and uvs next to int16 SNORM
-// frames): the attribute formats, the SNORM rule and byte appending. Used by the quantized-frame
-// pipelines (qtangent, hybrid, motor_q) through SceneGeometry::uploadPacked.
+// frames): the attribute formats (the float layouts' too), the SNORM rule and byte appending.
+// Used by the quantized-frame pipelines (qtangent, hybrid, motor_q) through SceneGeometry::uploadPacked.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -8,13 +8,16 @@
 #include <cstring>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "pipelines/gl/gl_api.h"
 
 namespace mb::gl {
 
-// One vertex attribute: `size` components of `type`, normalised to -1..1 / 0..1 when
-// `normalized` (GL's SNORM / UNORM), read by the shader as floats.
+// One vertex attribute at shader `location`: `size` components of `type`, normalised to
+// -1..1 / 0..1 when `normalized` (GL's SNORM / UNORM), read by the shader as floats.
 struct PackedAttribute {
+  GLuint location = 0;
   GLint size = 4;
   GLenum type = GL_FLOAT;
   bool normalized = false;
@@ -31,7 +34,7 @@ struct PackedAttribute {
 // The 28-byte vertex of qtangent and motor_q: position float3, the frame (quaternion or rotor)
 // int16x4 SNORM, uv0 float2.
 inline std::vector<PackedAttribute> snormFrameAttributes() {
-  return {{3, GL_FLOAT, false}, {4, GL_SHORT, true}, {2, GL_FLOAT, false}};
+  return {{0, 3, GL_FLOAT, false}, {1, 4, GL_SHORT, true}, {2, 2, GL_FLOAT, false}};
 }
 
 // A primitive's packed vertices and what their frame encoding counted.
@@ -53,6 +56,14 @@ template <class T> void appendBytes(std::vector<uint8_t>& out, const T* v, size_
   const size_t at = out.size();
   out.resize(at + n * sizeof(T));
   std::memcpy(out.data() + at, v, n * sizeof(T));
+}
+
+// Appends one vertex of snormFrameAttributes' layout, its frame already SNORM16.
+inline void appendSnormFrameVertex(std::vector<uint8_t>& out, const glm::vec3& position, const int16_t frame[4],
+                                   const glm::vec2& uv) {
+  appendBytes(out, &position.x, 3);
+  appendBytes(out, frame, 4);
+  appendBytes(out, &uv.x, 2);
 }
 
 }  // namespace mb::gl

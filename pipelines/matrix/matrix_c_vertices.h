@@ -9,7 +9,7 @@
 namespace mb::affine {
 
 // `p`'s vertices in matrix_c's layout, quantised in compact::positionCube(p.positions);
-// absent streams filled as interleaveFullFrame fills them (the frames qtangent packs).
+// frames as gl::vertexFrame fills them (those qtangent packs), a missing uv0 (0, 0).
 std::vector<uint8_t> interleaveCompact(const Primitive& p);
 
 }  // namespace mb::affine

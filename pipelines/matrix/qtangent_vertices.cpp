@@ -4,7 +4,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "pipelines/matrix/affine_vertices.h"
+#include "pipelines/gl/frame_vertices.h"
 
 namespace mb::affine {
 
@@ -28,20 +28,14 @@ QTangent encodeQTangent(const glm::vec3& normal, const glm::vec3& tangent, float
 }
 
 gl::PackedStream interleaveQTangent(const Primitive& p) {
-  const std::vector<float> f = interleaveFullFrame(p);  // pos 3, normal 3, tangent 4, uv 2
-  const size_t stride = size_t(kFloatsPerVertex);
   gl::PackedStream out;
-  out.bytes.reserve(p.positions.size() * 28);
-  for (size_t v = 0; v + stride <= f.size(); v += stride) {
-    const float* x = &f[v];
-    const QTangent q = encodeQTangent({x[3], x[4], x[5]}, {x[6], x[7], x[8]}, x[9]);
+  out.bytes = gl::interleave<uint8_t>(p, 28, [&](auto& bytes, size_t v) {
+    const auto [n, t] = gl::vertexFrame(p, v);
+    const QTangent q = encodeQTangent(n, glm::vec3(t), t.w);
     out.biasedFrames += q.biased;
-    const int16_t s[4] = {gl::snorm16(q.q.x), gl::snorm16(q.q.y), gl::snorm16(q.q.z),
-                          gl::snorm16(q.q.w)};
-    gl::appendBytes(out.bytes, x, 3);
-    gl::appendBytes(out.bytes, s, 4);
-    gl::appendBytes(out.bytes, x + 10, 2);
-  }
+    const int16_t s[4] = {gl::snorm16(q.q.x), gl::snorm16(q.q.y), gl::snorm16(q.q.z), gl::snorm16(q.q.w)};
+    gl::appendSnormFrameVertex(bytes, p.positions[v], s, gl::vertexUv(p, v));
+  });
   return out;
 }
 

@@ -25,8 +25,8 @@ struct QTangent {
 // (Gram-Schmidt: the normal wins); w < 0 means handedness -1.
 QTangent encodeQTangent(const glm::vec3& normal, const glm::vec3& tangent, float w);
 
-// `p`'s vertices in the QTangent layout (gl::snormFrameAttributes, 28 bytes per vertex). Absent streams are filled exactly as the matrix
-// pipelines fill them (affine_vertices.h), so all shade the same frames.
+// `p`'s vertices in the QTangent layout (gl::snormFrameAttributes, 28 bytes per vertex); frames
+// as gl::vertexFrame fills them, a missing uv0 (0, 0).
 gl::PackedStream interleaveQTangent(const Primitive& p);
 
 }  // namespace mb::affine

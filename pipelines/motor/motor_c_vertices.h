@@ -9,8 +9,8 @@
 
 namespace mb::motor {
 
-// `p`'s vertices in motor_c's layout, quantised in compact::positionCube(p.positions); frames
-// and absent streams as motor::interleaveVertices fills them. A rotor scalar of exactly 0
+// `p`'s vertices in motor_c's layout, quantised in compact::positionCube(p.positions); rotors
+// as motor::vertexRotor encodes them, a missing uv0 (0, 0). A rotor scalar of exactly 0
 // (zeroScalarFrames) is kept by the reflection bit, not a sign.
 gl::PackedStream interleaveCompact(const Primitive& p);
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "pipelines/gl/frame_vertices.h"
 #include "pipelines/motor/companion.h"
 #include "pipelines/motor/motor_vertices.h"
 
@@ -23,22 +24,16 @@ int countBiasedFrames(const std::vector<float>& motorVertices) {
 }
 
 gl::PackedStream interleaveQuantized(const Primitive& p) {
-  // motor::interleaveVertices encodes with the bias rule already (companion::encodeTangentRotor);
-  // a biased rotor's scalar is exactly +-kMinTangentScalar.
-  const VertexStream f = interleaveVertices(p);
-  const size_t stride = size_t(kFloatsPerVertex);
   gl::PackedStream out;
-  out.zeroScalarFrames = f.zeroScalarFrames;
-  out.biasedFrames = countBiasedFrames(f.data);
-  out.bytes.reserve(p.positions.size() * 28);
-  for (size_t v = 0; v + stride <= f.data.size(); v += stride) {
-    const float* x = &f.data[v];
+  out.bytes = gl::interleave<uint8_t>(p, 28, [&](auto& bytes, size_t v) {
+    const glm::vec4 r = vertexRotor(p, v, out.zeroScalarFrames);
+    // vertexRotor applies the bias rule already: a biased rotor's scalar is exactly
+    // +-kMinTangentScalar (as countBiasedFrames counts it).
+    out.biasedFrames += std::abs(r.x) == companion::kMinTangentScalar;
     int16_t q[4];
-    quantizeRotor({x[3], x[4], x[5], x[6]}, q);
-    gl::appendBytes(out.bytes, x, 3);
-    gl::appendBytes(out.bytes, q, 4);
-    gl::appendBytes(out.bytes, x + 7, 2);
-  }
+    quantizeRotor(r, q);
+    gl::appendSnormFrameVertex(bytes, p.positions[v], q, gl::vertexUv(p, v));
+  });
   return out;
 }
 

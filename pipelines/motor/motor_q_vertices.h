@@ -26,8 +26,8 @@ glm::vec4 dequantizeRotor(const int16_t q[4]);
 // is exactly +-1/32767, where companion::encodeTangentRotor puts a clamped one).
 int countBiasedFrames(const std::vector<float>& motorVertices);
 
-// `p`'s vertices in motor_q's layout (gl::snormFrameAttributes, 28 bytes per vertex; frames
-// filled as motor::interleaveVertices fills them).
+// `p`'s vertices in motor_q's layout (gl::snormFrameAttributes, 28 bytes per vertex; rotors as
+// motor::vertexRotor encodes them, a missing uv0 (0, 0)).
 gl::PackedStream interleaveQuantized(const Primitive& p);
 
 }  // namespace mb::motor

@@ -5,18 +5,21 @@
 
 namespace mb::motor {
 
+glm::vec4 vertexRotor(const Primitive& p, size_t v, int& zeroScalarFrames) {
+  const auto [n, t] = gl::vertexFrame(p, v);
+  const companion::TangentRotor r = companion::encodeTangentRotor(n, glm::vec3(t), t.w);
+  zeroScalarFrames += r.scalarWasZero;
+  return r.rotor;
+}
+
 VertexStream interleaveVertices(const Primitive& p) {
   VertexStream out;
-  out.data.reserve(p.positions.size() * kFloatsPerVertex);
-  for (size_t v = 0; v < p.positions.size(); ++v) {
-    const auto [n, t] = gl::vertexFrame(p, v);
-    const companion::TangentRotor r = companion::encodeTangentRotor(n, glm::vec3(t), t.w);
-    out.zeroScalarFrames += r.scalarWasZero;
-    const glm::vec2 uv = v < p.uv0.size() ? p.uv0[v] : glm::vec2(0.0f);
+  out.data = gl::interleave<float>(p, kFloatsPerVertex, [&](auto& data, size_t v) {
+    const glm::vec4 r = vertexRotor(p, v, out.zeroScalarFrames);
+    const glm::vec2 uv = gl::vertexUv(p, v);
     const glm::vec3& x = p.positions[v];
-    out.data.insert(out.data.end(),
-                    {x.x, x.y, x.z, r.rotor.x, r.rotor.y, r.rotor.z, r.rotor.w, uv.x, uv.y});
-  }
+    data.insert(data.end(), {x.x, x.y, x.z, r.x, r.y, r.z, r.w, uv.x, uv.y});
+  });
   return out;
 }
 

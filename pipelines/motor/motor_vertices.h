@@ -4,6 +4,8 @@
 #pragma once
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "pipelines/scene/scene.h"
 
 namespace mb::motor {
@@ -15,8 +17,11 @@ struct VertexStream {
   int zeroScalarFrames = 0;   // frames whose rotor scalar part was exactly 0 (see companion.h)
 };
 
-// Interleaves `p`'s streams, converting (normal, tangent, w) to tangent rotors
-// (companion::encodeTangentRotor). Frames as gl::vertexFrame fills them, a missing uv0 (0, 0).
+// Vertex v's tangent rotor: companion::encodeTangentRotor of the frame gl::vertexFrame fills;
+// a scalar part of exactly 0 counts into `zeroScalarFrames`.
+glm::vec4 vertexRotor(const Primitive& p, size_t v, int& zeroScalarFrames);
+
+// Interleaves `p`'s streams: position, vertexRotor, uv0 (a missing uv0 (0, 0)).
 VertexStream interleaveVertices(const Primitive& p);
 
 }  // namespace mb::motor
