@@ -52,7 +52,8 @@ public:
   using Format = std::function<VertexFormat(const Primitive&)>;
   void upload(const Scene& scene, const Format& format, PipelineStats& stats);
   // The same for a vertex layout of mixed component types (pipelines/gl/packed_vertices.h):
-  // interleave(p) returns the bytes of p's vertices, `attributes` their formats in order.
+  // interleave(p) returns the bytes of p's vertices, `attributes` their formats in order. Both
+  // uploads ask for the primitives once each, mesh by mesh, in order.
   using PackedInterleave = std::function<std::vector<uint8_t>(const Primitive&)>;
   void uploadPacked(const Scene& scene, const PackedInterleave& interleave,
                     const std::vector<PackedAttribute>& attributes, PipelineStats& stats);

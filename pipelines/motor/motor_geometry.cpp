@@ -1,7 +1,5 @@
 #include "pipelines/motor/motor_geometry.h"
 
-#include <map>
-
 #include "pipelines/motor/morph_rotors.h"
 #include "pipelines/motor/motor_c_vertices.h"
 #include "pipelines/motor/motor_q_vertices.h"
@@ -41,9 +39,7 @@ void MotorGeometry::uploadSignedCompact(const Scene& scene, const gl::MorphPacke
   Scene split;
   split.nodes = scene.nodes;
   split.materials = scene.materials;
-  // Keyed by the split primitive's address, taken once every primitive is in place (a vector
-  // that grows moves its elements: keys taken while pushing dangle on multi-primitive meshes).
-  std::vector<std::vector<uint8_t>> streams;
+  std::vector<std::vector<uint8_t>> streams;  // mesh by mesh, primitive by primitive
   for (const Mesh& mesh : scene.meshes) {
     split.meshes.push_back({mesh.name, {}, mesh.weights});
     interpolable.emplace_back();
@@ -57,11 +53,8 @@ void MotorGeometry::uploadSignedCompact(const Scene& scene, const gl::MorphPacke
       streams.push_back(std::move(s.bytes));
     }
   }
-  std::map<const Primitive*, std::vector<uint8_t>> bytes;
-  size_t next = 0;
-  for (const Mesh& mesh : split.meshes)
-    for (const Primitive& p : mesh.primitives) bytes[&p] = std::move(streams[next++]);
-  vertices.uploadPacked(split, [&bytes](const Primitive& p) { return std::move(bytes.at(&p)); },
+  size_t next = 0;  // uploadPacked asks for the primitives in that order
+  vertices.uploadPacked(split, [&](const Primitive&) { return std::move(streams[next++]); },
                         compact::attributes(), stats);
   if (gl::maxMorphTargets(split)) morph.upload(split, packer, stats);
 }
