@@ -42,16 +42,6 @@ CachedProgram* GltfPipeline::link(Status& status, const std::string& vs, const D
   return *program;
 }
 
-void GltfPipeline::beginFrame() {
-  stats_.uniformBytesPerFrame = 0;
-  stats_.draws = 0;
-  stats_.morphDraws = 0;
-  stats_.drawnVertices = 0;
-  stats_.linearFallbackDraws = stats_.skinFallbackDraws = stats_.skinFallbackJoints = 0;
-  stats_.fallbackVertices = stats_.skinFallbackVertices = 0;
-  ++frame_;
-}
-
 void GltfPipeline::releaseShared() {
   patches_.release();
   palettes_.release();

@@ -1,10 +1,10 @@
 // The draw path every glTF pipeline shares (matrix, affine, motor and their variants): the
 // guards of prepare() (the curved-space refusal, the palette limit, the GL error check), the
 // programs (linked once per define set, as the Khronos Sample Viewer's shader cache keys them),
-// textures, Bezier patches, the draw list, the per-frame stat resets, the joint palette and
-// instance buffers, material binding, winding and the draw counts, and release(). A pipeline
-// derives from it and supplies what is its own: its vertex layout and encoding, its vertex
-// shader and defines, its per-draw uniforms and its CPU update.
+// textures, Bezier patches, the draw list and the frame's loop over it, the per-frame stat
+// resets, the joint palette and instance buffers, material binding, winding and the draw counts,
+// and release(). A pipeline derives from it and supplies what is its own: its vertex layout and
+// encoding, its vertex shader and defines, its draws' programs and uniforms and its CPU update.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -49,6 +49,22 @@ private:
   std::map<std::string, std::unique_ptr<CachedProgram>> programs_;
 };
 
+// What the per-draw uniforms of a frame added up to: the transforms, the bytes of their
+// uniforms and of what a transform adds beside them (affine's mirror float, motor's scale).
+struct TransformCounters {
+  uint64_t transformBytes = 0, scaleBytes = 0, transforms = 0;
+};
+
+// One item of the draw list as a frame draws it.
+struct Draw {
+  const DrawItem& d;
+  const GpuPrimitive& g;
+  const Primitive& prim;
+  bool patch = false;  // Bezier patches: drawn rigidly by their node (never skinned)
+  bool morph = false;  // its morph deltas bound (counted per draw call)
+  int palette = -1;    // the index of its node's joint palette (and of its buffer), -1: none
+};
+
 class GltfPipeline : public Pipeline {
 public:
   void timeUpdatePhases(bool on) override { timePhases_ = on; }
@@ -65,9 +81,6 @@ protected:
   // The program of a define set (see ProgramCache::get); nullptr with `status` set on failure.
   CachedProgram* link(Status& status, const std::string& vs, const Defines& defines,
                       const std::vector<StorageBlock>& blocks = {});
-  // render()'s shared start: the per-frame counters reset, a new frame for the programs'
-  // per-frame uniforms.
-  void beginFrame();
   // Makes `p` current; the first time in a frame, setFrame(program) uploads its per-frame
   // uniforms (a program the frame does not use uploads nothing, so uniformBytesPerFrame
   // counts what a frame needs).
@@ -80,30 +93,64 @@ protected:
     }
     return *p.program;
   }
-  // The frame's joint palettes: upload(i) uploads palette i of `count` (adding its bytes to
-  // skinBytesPerFrame) and returns its joints.
+  // render()'s shared start: the per-frame counters reset, a new frame for the programs'
+  // per-frame uniforms, the joint palettes uploaded (upload(i) uploads palette i of `palettes`,
+  // adding its bytes to skinBytesPerFrame, and returns its joints).
   template <class Upload>
-  void uploadPalettes(size_t count, Upload upload) {
+  void beginFrame(size_t palettes, Upload upload) {
+    stats_.uniformBytesPerFrame = 0;
+    stats_.draws = 0;
+    stats_.morphDraws = 0;
+    stats_.drawnVertices = 0;
+    stats_.linearFallbackDraws = stats_.skinFallbackDraws = stats_.skinFallbackJoints = 0;
+    stats_.fallbackVertices = stats_.skinFallbackVertices = 0;
+    ++frame_;
     stats_.skinBytesPerFrame = 0;
     uint64_t joints = 0;
-    for (size_t i = 0; i < count; ++i) joints += upload(i);
+    for (size_t i = 0; i < palettes; ++i) joints += upload(i);
     stats_.floatsPerJoint = floatsPer(stats_.skinBytesPerFrame, joints);
   }
-  // The index in `palettes` of node `node`'s palette, or -1 (a mesh shared by a skinned and an
-  // unskinned node is drawn rigidly on the latter; patches are never skinned).
-  template <class Palette>
-  static int paletteOf(const std::vector<Palette>& palettes, const GpuPrimitive& g, bool patch, int node) {
-    int found = -1;
-    for (size_t i = 0; !patch && g.skinned && i < palettes.size(); ++i)
-      if (palettes[i].node == node) found = int(i);
-    return found;
+  // The frame's draw list, each item with something to draw handed to `self` (no virtual call
+  // per draw): self.drawInstanceGroups(frame, draw, groups) for an instanced node,
+  // self.drawNode(frame, draw) for the others. `frame`, the pipeline's per-frame context, counts
+  // the transforms. Draw::palette: the palette in `palettes` of the item's node (a mesh shared by
+  // a skinned and an unskinned node is drawn rigidly on the latter; patches are never skinned).
+  template <class Self, class Frame, class Palette>
+  void drawList(Self& self, Frame& frame, const SceneGeometry& geometry, const MorphBuffers& morph,
+                const std::vector<Palette>& palettes) {
+    beginDraws();
+    for (const DrawItem& d : draws_) {
+      const GpuPrimitive& g = geometry.at(d);
+      const bool patch = patches_.has(d);
+      if (!patch && !g.indexCount) continue;
+      int palette = -1;
+      for (size_t i = 0; !patch && g.skinned && i < palettes.size(); ++i)
+        if (palettes[i].node == d.node) palette = int(i);
+      const Draw draw{d, g, primitiveOf(d), patch, !patch && morph.active(d), palette};
+      const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
+      if (groups.empty())
+        self.drawNode(frame, draw);
+      else
+        self.drawInstanceGroups(frame, draw, groups);
+    }
+    endDraws();
+    const TransformCounters& c = frame;
+    stats_.uniformBytesPerFrame += c.transformBytes + c.scaleBytes;
+    stats_.floatsPerTransform = floatsPer(c.transformBytes, c.transforms);
+    stats_.floatsPerTransformWithScale = floatsPer(c.transformBytes + c.scaleBytes, c.transforms);
   }
   void bindMaterial(const Program& program, const Primitive& prim) {
     textures_.bindMaterial(program, prim.material, stats_.uniformBytesPerFrame);
   }
-  // One draw of `d` (its patch or its triangles), counted.
-  void drawCounted(const DrawItem& d, const GpuPrimitive& g, bool patch) {
-    stats_.drawnVertices += patch ? patches_.draw(d) : g.draw();
+  // One draw of `m` (its patch or its triangles), counted.
+  void drawCounted(const Draw& m) {
+    stats_.drawnVertices += m.patch ? patches_.draw(m.d) : m.g.draw();
+    ++stats_.draws;
+  }
+  // One instanced draw of `group` (the winding flipped when `mirrored`), counted.
+  void drawGroup(const GpuPrimitive& g, const InstanceGroup& group, const InstanceLayout& layout, bool mirrored) {
+    setWinding(mirrored);
+    stats_.drawnVertices += instances_.draw(g, group, layout);
     ++stats_.draws;
   }
   // The 16-byte vertex (matrix_c, motor_c): u_Dequant, the cube of `d`'s primitive, for draws

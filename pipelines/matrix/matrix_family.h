@@ -30,10 +30,11 @@ namespace mb::gl {
 enum DrawKind { kRigid = 0, kSkinned = 1, kInstanced = 2, kDrawKinds = 3 };
 using ProgramTable = CachedProgram* [kDrawKinds][2];  // [kind][frame variant]
 
-// What the per-draw uniforms of a frame added up to: the transforms, the bytes of their
-// matrices and of what a transform adds beside them (affine's mirror float).
-struct TransformCounters {
-  uint64_t transformBytes = 0, scaleBytes = 0, transforms = 0;
+// What every draw of one frame shares: the view, its view-projection matrix and the transform
+// uploads counted for PipelineStats.
+struct MatrixFrame : TransformCounters {
+  const View& view;
+  glm::mat4 viewProjection;
 };
 
 template <class Self>
@@ -68,54 +69,12 @@ public:
 
   void render(const View& view) override {
     if (!scene_) return;
-    beginFrame();
-    uploadPalettes(self().palettes().size(), [this](size_t i) { return self().uploadPalette(i); });
+    beginFrame(self().palettes().size(), [this](size_t i) { return self().uploadPalette(i); });
     streamInstances();
     const glm::mat4 viewMatrix =
         glm::inverse(glm::translate(glm::mat4(1.0f), view.eye) * glm::mat4_cast(view.orientation));
-    const glm::mat4 viewProjection = projectionMatrix(view) * viewMatrix;
-    beginDraws();
-    auto useProgram = [&](CachedProgram* p) -> const Program& {
-      return use(*p, [&](const Program& program) {
-        uniformMatrix4(program.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(viewProjection),
-                       stats_.uniformBytesPerFrame);
-        setFrameUniforms(program, view, stats_.uniformBytesPerFrame);
-      });
-    };
-    TransformCounters counters;
-    for (const DrawItem& d : draws_) {
-      const GpuPrimitive& g = geometry_.at(d);
-      const bool patch = patches_.has(d);  // Bezier patches: drawn rigidly by their node (never skinned)
-      if (!patch && !g.indexCount) continue;
-      const int paletteIndex = paletteOf(self().palettes(), g, patch, d.node);
-      const GLuint palette = paletteIndex < 0 ? 0 : palettes_[size_t(paletteIndex)];
-      const bool morph = !patch && morph_.active(d);
-      const int frame = g.variant == 1 ? 1 : 0;
-      const ProgramTable& table = morph ? morphing_ : programs_;
-      const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
-      const Program& program = useProgram(!groups.empty() ? table[kInstanced][frame]
-                                          : patch          ? patch_
-                                                           : table[palette ? kSkinned : kRigid][frame]);
-      if (!groups.empty()) self().instancedUniforms(program, d);
-      if (morph) morph_.bind(program, d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
-      if (!groups.empty()) {
-        bindMaterial(program, primitiveOf(d));
-        for (const InstanceGroup& group : groups) {  // key 1: mirrored
-          setWinding(group.key == 1);
-          stats_.drawnVertices += instances_.draw(g, group, Self::kInstanceLayout);
-          ++stats_.draws;
-        }
-        continue;
-      }
-      const bool mirrored = self().drawUniforms(program, d, palette, patch, morph, counters);
-      bindMaterial(program, primitiveOf(d));
-      setWinding(mirrored);
-      drawCounted(d, g, patch);
-    }
-    endDraws();
-    stats_.uniformBytesPerFrame += counters.transformBytes + counters.scaleBytes;
-    stats_.floatsPerTransform = floatsPer(counters.transformBytes, counters.transforms);
-    stats_.floatsPerTransformWithScale = floatsPer(counters.transformBytes + counters.scaleBytes, counters.transforms);
+    MatrixFrame frame{{}, view, projectionMatrix(view) * viewMatrix};
+    drawList(*this, frame, geometry_, morph_, self().palettes());
   }
 
 protected:
@@ -129,7 +88,43 @@ protected:
   MorphBuffers morph_;
 
 private:
+  friend class GltfPipeline;  // drawList() calls the draw hooks below
   Self& self() { return static_cast<Self&>(*this); }
+
+  // An instanced node: its program, uniforms, morph deltas and material once, then one instanced
+  // draw per group (key 1: mirrored).
+  void drawInstanceGroups(const MatrixFrame& f, const Draw& m, const std::vector<InstanceGroup>& groups) {
+    const Program& program = useProgram(f, tableProgram(m, kInstanced));
+    self().instancedUniforms(program, m.d);
+    if (m.morph) morph_.bind(program, m.d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
+    bindMaterial(program, m.prim);
+    for (const InstanceGroup& group : groups) drawGroup(m.g, group, Self::kInstanceLayout, group.key == 1);
+  }
+
+  // A draw by its node's transform or its skin's palette, or a Bezier patch (kPatchShader).
+  void drawNode(MatrixFrame& f, const Draw& m) {
+    const GLuint palette = m.palette < 0 ? 0 : palettes_[size_t(m.palette)];
+    const Program& program = useProgram(f, m.patch ? patch_ : tableProgram(m, palette ? kSkinned : kRigid));
+    if (m.morph) morph_.bind(program, m.d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
+    const bool mirrored = self().drawUniforms(program, m.d, palette, m.patch, m.morph, f);
+    bindMaterial(program, m.prim);
+    setWinding(mirrored);
+    drawCounted(m);
+  }
+
+  // The program of `kind` for the draw's frame variant, from morphing_ when the draw morphs.
+  CachedProgram* tableProgram(const Draw& m, DrawKind kind) const {
+    return (m.morph ? morphing_ : programs_)[kind][m.g.variant == 1 ? 1 : 0];
+  }
+
+  // `p` made current, the frame's view-projection and view uniforms set (see use()).
+  const Program& useProgram(const MatrixFrame& f, CachedProgram* p) {
+    return use(*p, [&](const Program& program) {
+      uniformMatrix4(program.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(f.viewProjection),
+                     stats_.uniformBytesPerFrame);
+      setFrameUniforms(program, f.view, stats_.uniformBytesPerFrame);
+    });
+  }
 
   // Links kVertexShader for each draw kind (instanced only for scenes with instances) and each of
   // its frames() frame variants (0, 1: MB_NO_TANGENT where the pipeline has it) with

@@ -61,21 +61,11 @@ ScaleForm scaleForm(bool fallback) { return fallback ? ScaleForm::PerAxis : Scal
 
 // What every draw of one frame shares: the view, its camera motor and projection constants, the
 // programs of its projection, and the transform uploads counted for PipelineStats.
-struct MotorFrame {
+struct MotorFrame : gl::TransformCounters {
   const View& view;
   Motor worldToView;
   MK::vec4 k;  // once per frame, not per vertex as the paper listing's project() does
   const MotorPrograms& programs;
-  uint64_t transformBytes = 0, transforms = 0, transformScaleBytes = 0;
-};
-
-// One draw item and what its kind of draw is decided by.
-struct MotorDraw {
-  const gl::DrawItem& d;
-  const gl::GpuPrimitive& g;
-  const Primitive& prim;
-  bool patch = false;  // Bezier patches: drawn rigidly by their node (never skinned)
-  bool morph = false;  // its morph deltas bound (counted per draw call)
 };
 
 // A rigid or skinned draw's transform on the paper's path: the node's world motor (motor_c's
@@ -109,15 +99,16 @@ private:
   gl::Defines defines(int kind, int form, bool morphing, bool orthographic) const;
   Status linkPrograms(bool orthographic);
   const gl::Program& useFrameProgram(const MotorFrame& f, gl::CachedProgram& p);
-  const gl::Program& useDrawProgram(const MotorFrame& f, const MotorDraw& m, DrawKind kind, ScaleForm form);
-  void drawItem(MotorFrame& f, const gl::DrawItem& d);
-  void drawGeneralInstances(MotorFrame& f, const MotorDraw& m);
-  void drawInstanceGroups(MotorFrame& f, const MotorDraw& m, const std::vector<gl::InstanceGroup>& groups);
-  void drawNode(MotorFrame& f, const MotorDraw& m);
-  DrawTransform drawTransform(const MotorDraw& m, const motor::JointPalette* palette) const;
-  uint64_t setDrawUniforms(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, const gl::Program& p, bool perAxis);
-  void drawByRotorHemisphere(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, DrawKind kind);
-  void drawLinear(MotorFrame& f, const MotorDraw& m, const motor::JointPalette* palette, GLuint paletteBuffer,
+  const gl::Program& useDrawProgram(const MotorFrame& f, const gl::Draw& m, DrawKind kind, ScaleForm form);
+  friend class gl::GltfPipeline;  // drawList() calls drawInstanceGroups() and drawNode()
+  void drawGeneralInstances(MotorFrame& f, const gl::Draw& m);
+  void drawInstanceGroups(MotorFrame& f, const gl::Draw& m, const std::vector<gl::InstanceGroup>& groups);
+  void drawNode(MotorFrame& f, const gl::Draw& m);
+  DrawTransform drawTransform(const gl::Draw& m, const motor::JointPalette* palette) const;
+  void setDrawUniforms(MotorFrame& f, const gl::Draw& m, const DrawTransform& t, const gl::Program& p, bool perAxis,
+                       uint64_t& scaleBytes);
+  void drawByRotorHemisphere(MotorFrame& f, const gl::Draw& m, const DrawTransform& t, DrawKind kind);
+  void drawLinear(MotorFrame& f, const gl::Draw& m, const motor::JointPalette* palette,
                   const glm::mat4* world = nullptr);
   void release();
 
@@ -201,21 +192,15 @@ void MotorPipeline::streamInstances() {
 
 void MotorPipeline::render(const View& view) {
   if (!scene_) return;
-  beginFrame();
-  uploadPalettes(pose_.palettes.size(), [this](size_t i) { return uploadPalette(i); });
+  beginFrame(pose_.palettes.size(), [this](size_t i) { return uploadPalette(i); });
   streamInstances();
   const Motor worldToView = motor::worldToViewMotor(view);
   const MK::vec4 k = motor::projectionConstants(view);
   // An orthographic View draws with the MB_ORTHOGRAPHIC programs (a hand-made View on a scene
   // without an orthographic camera builds them here; prepare() did for the others).
   if (view.orthographic && !programs_[1].built && !linkPrograms(true)) return;
-  MotorFrame frame{view, worldToView, k, programs_[view.orthographic ? 1 : 0]};
-  gl::beginDraws();
-  for (const gl::DrawItem& d : draws_) drawItem(frame, d);
-  gl::endDraws();
-  stats_.uniformBytesPerFrame += frame.transformBytes;
-  stats_.floatsPerTransform = gl::floatsPer(frame.transformBytes, frame.transforms);
-  stats_.floatsPerTransformWithScale = gl::floatsPer(frame.transformBytes + frame.transformScaleBytes, frame.transforms);
+  MotorFrame frame{{}, view, worldToView, k, programs_[view.orthographic ? 1 : 0]};
+  drawList(*this, frame, geometry_.vertices, geometry_.morph, pose_.palettes);
 }
 
 // The program with the frame's camera, projection and view uniforms set.
@@ -228,68 +213,53 @@ const gl::Program& MotorPipeline::useFrameProgram(const MotorFrame& f, gl::Cache
 }
 
 // The draw's program with its morph deltas bound when it morphs (counted per draw call).
-const gl::Program& MotorPipeline::useDrawProgram(const MotorFrame& f, const MotorDraw& m, DrawKind kind, ScaleForm form) {
+const gl::Program& MotorPipeline::useDrawProgram(const MotorFrame& f, const gl::Draw& m, DrawKind kind, ScaleForm form) {
   const gl::Program& program = useFrameProgram(f, f.programs.draw(kind, form, m.morph));
   if (m.morph) geometry_.morph.bind(program, m.d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
   return program;
 }
 
-// One draw item: the instances of a general node one exact draw each, instance groups, or the
-// node's own transform (rigid, skinned or a patch).
-void MotorPipeline::drawItem(MotorFrame& f, const gl::DrawItem& d) {
-  const gl::GpuPrimitive& g = geometry_.vertices.at(d);
-  const Primitive& prim = primitiveOf(d);
-  const bool patch = patches_.has(d);
-  if (!patch && !g.indexCount) return;
-  const MotorDraw draw{d, g, prim, patch, !patch && geometry_.morph.active(d)};
-  const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
-  if (!patch && rig_.general[size_t(d.node)] && !scene_->nodes[size_t(d.node)].instances.empty())
-    return drawGeneralInstances(f, draw);
-  if (!groups.empty()) return drawInstanceGroups(f, draw, groups);
-  drawNode(f, draw);
-}
-
 // Instances of a general node: one exact draw each (node world x instance, linear_fallback.h).
-void MotorPipeline::drawGeneralInstances(MotorFrame& f, const MotorDraw& m) {
+void MotorPipeline::drawGeneralInstances(MotorFrame& f, const gl::Draw& m) {
   for (const TRS& instance : scene_->nodes[size_t(m.d.node)].instances) {
     const glm::mat4 world = pose_.exact.world[size_t(m.d.node)] * trsMatrix(instance);
-    drawLinear(f, m, nullptr, 0, &world);
+    drawLinear(f, m, nullptr, &world);
   }
 }
 
 // One instanced draw per group (key bit 0: vec3 scale, bit 1: mirrored winding).
-void MotorPipeline::drawInstanceGroups(MotorFrame& f, const MotorDraw& m, const std::vector<gl::InstanceGroup>& groups) {
+void MotorPipeline::drawInstanceGroups(MotorFrame& f, const gl::Draw& m, const std::vector<gl::InstanceGroup>& groups) {
   for (const gl::InstanceGroup& group : groups) {
     const bool fallback = group.key & 1;
     const gl::Program& program = useDrawProgram(f, m, DrawKind::Instanced, scaleForm(fallback));
     if (variant_.compact) setDequant(program, geometry_.cubes, m.d);
     bindMaterial(program, m.prim);
-    gl::setWinding(group.key & 2);
-    stats_.drawnVertices += instances_.draw(m.g, group, {4, 4, fallback ? 3 : 1});
-    ++stats_.draws;
+    drawGroup(m.g, group, {4, 4, fallback ? 3 : 1}, group.key & 2);
   }
 }
 
-// A draw by its node's transform or its skin's palette: on the exact fallback when the node is
-// general or the palette is not one common positive scale, else the paper's path.
-void MotorPipeline::drawNode(MotorFrame& f, const MotorDraw& m) {
-  const int paletteIndex = paletteOf(pose_.palettes, m.g, m.patch, m.d.node);
-  const motor::JointPalette* palette = paletteIndex < 0 ? nullptr : &pose_.palettes[size_t(paletteIndex)];
-  const GLuint paletteBuffer = paletteIndex < 0 ? 0 : palettes_[size_t(paletteIndex)];
+// A draw by its node's transform or its skin's palette: the instances of a general node one
+// exact draw each; on the exact fallback when the node is general or the palette is not one
+// common positive scale, else the paper's path.
+void MotorPipeline::drawNode(MotorFrame& f, const gl::Draw& m) {
+  if (!m.patch && rig_.general[size_t(m.d.node)] && !scene_->nodes[size_t(m.d.node)].instances.empty())
+    return drawGeneralInstances(f, m);  // (streamInstances() gives a general node no groups)
+  const motor::JointPalette* palette = m.palette < 0 ? nullptr : &pose_.palettes[size_t(m.palette)];
   const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
   if (palette ? palette->fallback : (!m.patch && rig_.general[size_t(m.d.node)]))
-    return drawLinear(f, m, palette, paletteBuffer);
+    return drawLinear(f, m, palette);
   const DrawTransform t = drawTransform(m, palette);
   const gl::Program& program = m.patch ? useFrameProgram(f, *f.programs.patch[t.scale.fallback])
                                        : useDrawProgram(f, m, kind, scaleForm(t.scale.fallback));
-  if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
-  const uint64_t scaleBytes = setDrawUniforms(f, m, t, program, t.scale.fallback);
-  if (t.transform) ++f.transforms, f.transformScaleBytes += scaleBytes;  // draws with a transform
+  if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palettes_[size_t(m.palette)]);
+  // A draw with a transform counts its scale with it, the others in the per-frame bytes.
+  setDrawUniforms(f, m, t, program, t.scale.fallback, t.transform ? f.scaleBytes : stats_.uniformBytesPerFrame);
+  if (t.transform) ++f.transforms;
   gl::setWinding(t.scale.mirrored);
   drawByRotorHemisphere(f, m, t, kind);
 }
 
-DrawTransform MotorPipeline::drawTransform(const MotorDraw& m, const motor::JointPalette* palette) const {
+DrawTransform MotorPipeline::drawTransform(const gl::Draw& m, const motor::JointPalette* palette) const {
   DrawTransform t;
   const motor::ScaledMotor& node = pose_.world[size_t(m.d.node)];
   t.world = node;
@@ -307,31 +277,29 @@ DrawTransform MotorPipeline::drawTransform(const MotorDraw& m, const motor::Join
   return t;
 }
 
-// The draw's uniforms and material (u_Scale a vec3 when perAxis); returns the bytes of its u_Scale.
-uint64_t MotorPipeline::setDrawUniforms(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, const gl::Program& p,
-                                        bool perAxis) {
+// The draw's uniforms and material (u_Scale a vec3 when perAxis, its bytes counted in `scaleBytes`).
+void MotorPipeline::setDrawUniforms(MotorFrame& f, const gl::Draw& m, const DrawTransform& t, const gl::Program& p,
+                                    bool perAxis, uint64_t& scaleBytes) {
   if (t.dequantise) setDequant(p, geometry_.cubes, m.d);
   if (t.transform) gl::uniform4fv(p.uniform("u_World"), 2, &t.world.motor[0][0], f.transformBytes);
-  uint64_t bytes = 0;
   if (perAxis)
-    gl::uniform3f(p.uniform("u_Scale"), &t.scale.value[0], bytes);
+    gl::uniform3f(p.uniform("u_Scale"), &t.scale.value[0], scaleBytes);
   else
-    gl::uniform1f(p.uniform("u_Scale"), t.scale.value.x, bytes);
-  stats_.uniformBytesPerFrame += bytes;
+    gl::uniform1f(p.uniform("u_Scale"), t.scale.value.x, scaleBytes);
   bindMaterial(p, m.prim);
-  return bytes;
 }
 
 // motor_cf: triangles whose corner rotors cannot share a hemisphere (rotor_signs.h) are drawn
 // after the others by the per-vertex extraction of its scale-fallback program (motor_c's way).
 // Every other draw is one counted draw.
-void MotorPipeline::drawByRotorHemisphere(MotorFrame& f, const MotorDraw& m, const DrawTransform& t, DrawKind kind) {
+void MotorPipeline::drawByRotorHemisphere(MotorFrame& f, const gl::Draw& m, const DrawTransform& t, DrawKind kind) {
   const size_t interpolable = variant_.fragmentRotor && !m.patch && !t.scale.fallback
                                   ? geometry_.interpolable[size_t(m.d.mesh)][size_t(m.d.primitive)]
                                   : size_t(m.g.indexCount);
-  if (interpolable >= size_t(m.g.indexCount)) return drawCounted(m.d, m.g, m.patch);
+  if (interpolable >= size_t(m.g.indexCount)) return drawCounted(m);
   stats_.drawnVertices += m.g.drawRange(0, GLsizei(interpolable));
-  setDrawUniforms(f, m, t, useDrawProgram(f, m, kind, ScaleForm::PerAxis), true);  // t.scale is uniform here: (x, x, x)
+  setDrawUniforms(f, m, t, useDrawProgram(f, m, kind, ScaleForm::PerAxis), true,  // t.scale is uniform here: (x, x, x)
+                  stats_.uniformBytesPerFrame);
   m.g.drawRange(GLsizei(interpolable), m.g.indexCount - GLsizei(interpolable));
   stats_.draws += 2;
 }
@@ -384,15 +352,15 @@ Status MotorPipeline::linkPrograms(bool orthographic) {
 
 // One draw on the exact fallback: a rigid draw of a general node with its exact world's polar
 // factors, or a skinned draw with its palette's motors and linear parts (world space).
-void MotorPipeline::drawLinear(MotorFrame& f, const MotorDraw& m, const motor::JointPalette* palette,
-                               GLuint paletteBuffer, const glm::mat4* world) {
+void MotorPipeline::drawLinear(MotorFrame& f, const gl::Draw& m, const motor::JointPalette* palette,
+                               const glm::mat4* world) {
   const gl::DrawItem& d = m.d;
   const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
   const gl::Program& program = useDrawProgram(f, m, kind, ScaleForm::Linear);
   bool mirrored = false;
   if (palette) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, paletteBuffer);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, linearBuffers_[size_t(palette - pose_.palettes.data())]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palettes_[size_t(m.palette)]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, linearBuffers_[size_t(m.palette)]);
     // Winding as the matrix pipeline's skinned draw: the sign of the mesh node's world.
     mirrored = rig_.exact ? glm::determinant(glm::mat3(pose_.exact.world[size_t(d.node)])) < 0.0f
                           : drawScale(pose_.world[size_t(d.node)].scale, pose_.world[size_t(d.node)].residual).mirrored;
@@ -402,11 +370,8 @@ void MotorPipeline::drawLinear(MotorFrame& f, const MotorDraw& m, const motor::J
     const motor::LinearTransform t = motor::linearFromAffine(world ? *world : pose_.exact.world[size_t(d.node)]);
     gl::uniform4fv(program.uniform("u_World"), 2, &t.motor[0][0], f.transformBytes);
     // The motor is the transform (floatsPerTransform); the linear parts count as its scale.
-    uint64_t bytes = 0;
-    gl::uniformMatrix3(program.uniform("u_Linear"), 1, &t.linear[0][0], bytes);
-    gl::uniformMatrix3(program.uniform("u_LinearNormal"), 1, &t.normalLinear[0][0], bytes);
-    f.transformScaleBytes += bytes;
-    stats_.uniformBytesPerFrame += bytes;
+    gl::uniformMatrix3(program.uniform("u_Linear"), 1, &t.linear[0][0], f.scaleBytes);
+    gl::uniformMatrix3(program.uniform("u_LinearNormal"), 1, &t.normalLinear[0][0], f.scaleBytes);
     mirrored = glm::determinant(t.linear) < 0.0f;
     ++stats_.linearFallbackDraws;
     ++f.transforms;
