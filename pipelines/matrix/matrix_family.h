@@ -20,7 +20,6 @@
 
 #include "pipelines/gl/frame_vertices.h"
 #include "pipelines/gl/gltf_pipeline.h"
-#include "pipelines/gl/morph_buffers.h"
 #include "pipelines/gl/upload.h"
 #include "pipelines/scene/transform.h"
 

@@ -19,8 +19,6 @@
 #include "pipelines/motor/linear_fallback.h"
 #include "pipelines/motor/motor_camera.h"
 #include "pipelines/motor/motor_geometry.h"
-#include "pipelines/gl/instance_stream.h"
-#include "pipelines/gl/morph_buffers.h"
 #include "pipelines/motor/motor_rig.h"
 #include "pipelines/scene/transform.h"
 
