@@ -171,14 +171,4 @@ void appendVertex(std::vector<uint8_t>& out, const glm::vec3& position, const Po
   gl::appendBytes(out, uv, 2);
 }
 
-std::vector<uint8_t> interleave(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& frames,
-                                const std::vector<glm::vec2>& uv0, const PositionCube& cube,
-                                const std::vector<float>& positionW) {
-  std::vector<uint8_t> out;
-  out.reserve(positions.size() * kVertexBytes);
-  for (size_t v = 0; v < positions.size(); ++v)
-    appendVertex(out, positions[v], cube, frames[v], uv0[v], positionW.empty() ? 0.0f : positionW[v]);
-  return out;
-}
-
 }  // namespace mb::compact

@@ -63,9 +63,4 @@ std::vector<gl::PackedAttribute> attributes();
 void appendVertex(std::vector<uint8_t>& out, const glm::vec3& position, const PositionCube& cube, uint32_t frame,
                   const glm::vec2& uv0, float positionW = 0.0f);
 
-// The 16-byte stream. `frames`, `uv0` and a non-empty `positionW` have positions.size() entries.
-std::vector<uint8_t> interleave(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& frames,
-                                const std::vector<glm::vec2>& uv0, const PositionCube& cube,
-                                const std::vector<float>& positionW = {});
-
 }  // namespace mb::compact

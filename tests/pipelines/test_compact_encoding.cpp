@@ -152,8 +152,10 @@ TEST(CompactEncoding, SixteenBytesPerVertexInTheWordLayoutGlReads) {
   EXPECT_EQ(bytes, compact::kVertexBytes);
   EXPECT_EQ(compact::wordFields(compact::packWord(1, 1023, 512, 3)), glm::vec4(1, 1023, 512, 3));
   EXPECT_EQ(compact::packWord(1, 2, 3, 2), 1u | 2u << 10 | 3u << 20 | 2u << 30);
-  const std::vector<uint8_t> s = compact::interleave({{0, 0, 0}, {1, 1, 1}}, {7, 9}, {{0.5f, 2.0f}, {0, 0}},
-                                                     compact::positionCube({{0, 0, 0}, {1, 1, 1}}));
+  const compact::PositionCube cube = compact::positionCube({{0, 0, 0}, {1, 1, 1}});
+  std::vector<uint8_t> s;
+  compact::appendVertex(s, {0, 0, 0}, cube, 7, {0.5f, 2.0f});
+  compact::appendVertex(s, {1, 1, 1}, cube, 9, {0, 0});
   ASSERT_EQ(s.size(), 2 * compact::kVertexBytes);
   uint32_t frame = 0;
   uint16_t uv[2];

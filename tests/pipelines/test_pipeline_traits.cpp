@@ -53,8 +53,12 @@ TEST(PipelineTraits, FrameDecodersAreCountedKernelsAndTheRotorPassesWhereDeclare
     EXPECT_EQ(e.frame.perFragment, definesAny(e, "MB_FRAGMENT_ROTOR")) << e.name;
     perFragment += e.frame.perFragment;
     // Blending motors is the motor side's; hybrid poses with motors and blends matrices.
-    if (e.skin == SkinMethod::MotorBlend) EXPECT_EQ(e.family, PipelineFamily::Motor) << e.name;
-    if (e.family == PipelineFamily::Matrix) EXPECT_EQ(e.skin, SkinMethod::LinearBlend) << e.name;
+    if (e.skin == SkinMethod::MotorBlend) {
+      EXPECT_EQ(e.family, PipelineFamily::Motor) << e.name;
+    }
+    if (e.family == PipelineFamily::Matrix) {
+      EXPECT_EQ(e.skin, SkinMethod::LinearBlend) << e.name;
+    }
   }
   EXPECT_EQ(perFragment, 1);  // motor_cf
 }
