@@ -15,24 +15,6 @@
 
 namespace mb::motor {
 
-// gp_mm written out in scalars, operation for operation in the order of shaders/pga.glsl
-// (tests/pipelines/test_update_phases.cpp checks it bit for bit on 100k motors); the
-// reference for gpMotors and the fallback where vector extensions are missing.
-inline void gpMotorsScalar(const Motor& a, const Motor& b, Motor& r) {
-  const float as = a[0][0], Ax = a[0][1], Ay = a[0][2], Az = a[0][3];
-  const float Adx = a[1][0], Ady = a[1][1], Adz = a[1][2], ap = a[1][3];
-  const float bs = b[0][0], Bx = b[0][1], By = b[0][2], Bz = b[0][3];
-  const float Bdx = b[1][0], Bdy = b[1][1], Bdz = b[1][2], bp = b[1][3];
-  r[0][0] = as * bs - (Ax * Bx + Ay * By + Az * Bz);                      // s - dot(A, B)
-  r[0][1] = as * Bx + bs * Ax + (By * Az - Bz * Ay);                      // + cross(B, A)
-  r[0][2] = as * By + bs * Ay + (Bz * Ax - Bx * Az);
-  r[0][3] = as * Bz + bs * Az + (Bx * Ay - By * Ax);
-  r[1][0] = as * Bdx + bs * Adx + (By * Adz - Bz * Ady) + (Bdy * Az - Bdz * Ay) - bp * Ax - ap * Bx;
-  r[1][1] = as * Bdy + bs * Ady + (Bz * Adx - Bx * Adz) + (Bdz * Ax - Bdx * Az) - bp * Ay - ap * By;
-  r[1][2] = as * Bdz + bs * Adz + (Bx * Ady - By * Adx) + (Bdx * Ay - Bdy * Ax) - bp * Az - ap * Bz;
-  r[1][3] = as * bp + bs * ap + (Ax * Bdx + Ay * Bdy + Az * Bdz) + (Adx * Bx + Ady * By + Adz * Bz);
-}
-
 #if defined(__GNUC__) && (defined(__clang__) || __GNUC__ >= 12)
 namespace lanes {
 typedef float f4 __attribute__((vector_size(16)));
@@ -44,10 +26,10 @@ inline f4 load(const Motor& m, int half) {
 inline f4 splat(float x) { return f4{x, x, x, x}; }
 }  // namespace lanes
 
-// gp_mm 4 lanes at a time. Every lane evaluates the scalar form's expression tree (same
-// products, same order of additions), so the result is the same bits; the two lanes whose
-// trees differ from their neighbours' (the scalar part's dot, e0123's two dots) are computed
-// as scalars and put in place. 36 vector + 12 scalar arithmetic instructions.
+// gp_mm 4 lanes at a time. Every lane evaluates gp_mm's expression tree (same products, same
+// order of additions), so the result is the same bits (test_update_phases checks 100k motors);
+// the two lanes whose trees differ from their neighbours' (the scalar part's dot, e0123's two
+// dots) are computed as scalars and put in place. 36 vector + 12 scalar arithmetic instructions.
 // bDualScale: b's dual half is taken times this first (scaled_motor.h: the hierarchy's
 // parent scale), in registers — a scaled copy of b built in memory by the caller
 // would be stored as scalars and read back as vectors, a store-forwarding stall per node.
@@ -79,8 +61,9 @@ inline void gpMotors(const Motor& a, const Motor& b, Motor& r, float bDualScale 
   std::memcpy(&r[1][0], &r1, sizeof r1);
 }
 #else
+// Without vector extensions: the shim's gp_mm itself (slower, the same bits).
 inline void gpMotors(const Motor& a, const Motor& b, Motor& r, float bDualScale = 1.0f) {
-  gpMotorsScalar(a, Motor(b[0], b[1] * bDualScale), r);
+  r = mk().gp_mm(a, Motor(b[0], b[1] * bDualScale));
 }
 #endif
 
