@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "pipelines/motor/linear_fallback.h"
+#include "pipelines/scene/drawn_skins.h"
 #include "pipelines/scene/scale_analysis.h"
 #include "pipelines/scene/transform.h"
 
@@ -162,14 +163,7 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
 [[gnu::flatten]] void jointPalettes(const Scene& scene, const Rig& rig, const std::vector<ScaledMotor>& world,
                                     bool relativeToNode, std::vector<JointPalette>& palettes,
                                     const std::vector<glm::mat4>* exactWorld) {
-  size_t count = 0;
-  for (size_t n = 0; n < scene.nodes.size(); ++n) {
-    const Skin* drawn = drawnSkin(scene, n);
-    if (!drawn) continue;
-    const Skin& skin = *drawn;
-    if (palettes.size() <= count) palettes.emplace_back();
-    JointPalette& p = palettes[count++];
-    p.node = int(n);
+  forEachDrawnSkin(scene, palettes, [&](JointPalette& p, const Skin& skin, size_t n) {
     p.skin = scene.nodes[n].skin;
     p.scale = 1.0f;
     p.uniform = true;
@@ -193,7 +187,7 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
       store(j, m.motor);
     }
     p.fallback = general || !p.uniform || !(p.scale > 0.0f);
-    if (!p.fallback) continue;
+    if (!p.fallback) return;
     // Every joint as motor + linear part, in world space: exact per joint (linear_fallback.h).
     p.linear.resize(skin.joints.size() * 24);
     for (size_t j = 0; j < skin.joints.size(); ++j) {
@@ -202,8 +196,7 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
       store(j, t.motor);
       packLinear(t, &p.linear[24 * j]);
     }
-  }
-  palettes.resize(count);
+  });
 }
 
 void poseScene(const Scene& scene, const Rig& rig, const AnimState& state, bool relativeToNode,
