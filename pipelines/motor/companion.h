@@ -7,7 +7,8 @@
 //   motorToMatrix                        motor -> 4x4 (column-major)
 //   rotorFromQuat, translator,           glTF TRS -> motor (quaternion (x,y,z,w) ->
 //   motorFromTRS                         [w,-x,-y,-z], translation t -> [1,0,0,0,-t/2,0])
-//   encodeTangentRotor / decodeTangentRotor   (normal, tangent, handedness w) <-> 4-float rotor
+//   encodeTangentRotor                   (normal, tangent, handedness w) -> 4-float rotor
+//                                        (the shaders' decoder: motor_transform.glsl rotorFrame)
 //
 // Tangent-rotor handedness rule (see encodeTangentRotor): the frame (tangent, normal x tangent,
 // normal) is a proper rotation; its rotor R and -R give the same frame, and the sign of R's
@@ -169,25 +170,6 @@ inline TangentRotor encodeTangentRotor(const glm::vec3& normal, const glm::vec3&
   }
   out.rotor = glm::vec4(r.x, r.y, r.z, r.w);
   return out;
-}
-
-struct TangentFrame {
-  glm::vec3 normal{0.0f, 0.0f, 1.0f};
-  glm::vec3 tangent{1.0f, 0.0f, 0.0f};
-  float w = 1.0f;
-};
-
-// What the GPU does with a vertex rotor: extractNormalTangent (0.5-scaled, normalised here as
-// the fragment shader does) and handedness sign(1.0 / s) (IEEE: +-0 -> +-inf), which for the
-// never-zero scalars of encodeTangentRotor equals sign(s).
-inline TangentFrame decodeTangentRotor(const glm::vec4& rotor) {
-  const Motor R(Vec4(rotor.x, rotor.y, rotor.z, rotor.w), Vec4(0.0f));
-  const P::mat2x3 nt = pga<float>.extractNormalTangent(R);
-  TangentFrame f;
-  f.normal = glm::normalize(toGlm(nt[0]));
-  f.tangent = glm::normalize(toGlm(nt[1]));
-  f.w = std::signbit(rotor.x) ? -1.0f : 1.0f;
-  return f;
 }
 
 }  // namespace mb::companion

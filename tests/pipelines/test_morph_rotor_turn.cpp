@@ -16,9 +16,9 @@ namespace {
 
 constexpr float kDeg = 3.14159265f / 180.0f;
 
-// The angle of the tangent a rotor encodes, about +z from +x.
+// The angle of the tangent a rotor encodes (the shader's rotorFrame), about +z from +x.
 float tangentAngle(const glm::vec4& rotor) {
-  const glm::vec3 t = companion::decodeTangentRotor(rotor).tangent;
+  const MK::vec3 t = mk().rotorFrame(MK::vec4(rotor.x, rotor.y, rotor.z, rotor.w))[1];
   return std::atan2(t.y, t.x);
 }
 
