@@ -2,8 +2,7 @@
 
 namespace mb::gl {
 
-Result<CachedProgram*> ProgramCache::get(const std::string& vs, const std::string& fs, const Defines& defines,
-                                         const std::vector<StorageBlock>& blocks) {
+Result<CachedProgram*> ProgramCache::get(const std::string& vs, const std::string& fs, const Defines& defines) {
   std::string key = vs + '\n' + fs;
   for (const auto& [name, value] : defines) key += '\n' + name + '=' + value;
   if (auto found = programs_.find(key); found != programs_.end()) return found->second.get();
@@ -11,7 +10,6 @@ Result<CachedProgram*> ProgramCache::get(const std::string& vs, const std::strin
   if (!program) return Result<CachedProgram*>::fail(program.error());
   std::unique_ptr<CachedProgram>& cached = programs_[key];
   cached = std::make_unique<CachedProgram>(CachedProgram{program.take()});
-  for (const StorageBlock& b : blocks) cached->program->bindStorageBlock(b.name, b.binding);
   return cached.get();
 }
 
@@ -32,14 +30,28 @@ Status GltfPipeline::endPrepare(const Scene& scene) {
   return {};
 }
 
-CachedProgram* GltfPipeline::link(Status& status, const std::string& vs, const Defines& defines,
-                                  const std::vector<StorageBlock>& blocks) {
-  auto program = cache_.get(vs, "forward.fs", defines, blocks);
+CachedProgram* GltfPipeline::link(Status& status, const std::string& vs, const Defines& defines) {
+  auto program = cache_.get(vs, "forward.fs", defines);
   if (!program) {
     status = Status::fail(program.error());
     return nullptr;
   }
   return *program;
+}
+
+Status GltfPipeline::linkGrid(ProgramGrid& grid, const std::string& vs, const std::function<int(int)>& variants,
+                              const std::function<Defines(int, int, bool)>& defines) {
+  Status linked;
+  const int kinds = hasInstances(*scene_) ? kDrawKinds : kInstanced, morphs = maxMorphTargets(*scene_) ? 2 : 1;
+  for (int kind = 0; kind < kinds; ++kind)
+    for (int variant = 0; variant < variants(kind); ++variant)
+      for (int morphing = 0; morphing < morphs; ++morphing) {
+        Defines d = defines(kind, variant, morphing);
+        if (morphing)
+          for (auto& m : morphDefines(*scene_)) d.push_back(m);
+        if (!(grid.at[kind][variant][morphing] = link(linked, vs, d))) return linked;
+      }
+  return linked;
 }
 
 void GltfPipeline::releaseShared() {
@@ -48,6 +60,7 @@ void GltfPipeline::releaseShared() {
   textures_.release();
   instances_.release();
   cache_.release();
+  programs_ = {};
   draws_.clear();
   scene_ = nullptr;
 }

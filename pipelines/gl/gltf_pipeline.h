@@ -7,6 +7,7 @@
 // encoding, its vertex shader and defines, its draws' programs and uniforms and its CPU update.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -31,18 +32,12 @@ struct CachedProgram {
   uint64_t frame = 0;
 };
 
-// A shader storage block a program reads and the binding point it is bound to.
-struct StorageBlock {
-  const char* name;
-  GLuint binding;
-};
-
-// Programs keyed by (vertex shader, fragment shader, define set): one link per key.
+// Programs keyed by (vertex shader, fragment shader, define set): one link per key. (Their
+// storage blocks name their binding points in the shaders: layout(binding = N).)
 class ProgramCache {
 public:
-  // The program of the key, linked (its storage blocks bound) the first time it is asked for.
-  Result<CachedProgram*> get(const std::string& vs, const std::string& fs, const Defines& defines,
-                             const std::vector<StorageBlock>& blocks = {});
+  // The program of the key, linked the first time it is asked for.
+  Result<CachedProgram*> get(const std::string& vs, const std::string& fs, const Defines& defines);
   void release() { programs_.clear(); }
 
 private:
@@ -65,6 +60,18 @@ struct Draw {
   int palette = -1;    // the index of its node's joint palette (and of its buffer), -1: none
 };
 
+// How a draw reaches world space: the first index of a ProgramGrid.
+enum DrawKind { kRigid = 0, kSkinned = 1, kInstanced = 2, kDrawKinds = 3 };
+
+// A pipeline's programs (owned by the program cache), only those a scene can use linked: its
+// vertex shader's by draw kind, by what the pipeline varies beside it (matrix family: the frame
+// variant; motor: the scale form) and by whether the draw morphs; its patch shader's.
+struct ProgramGrid {
+  CachedProgram* at[kDrawKinds][3][2] = {};  // [kind][variant][MB_MORPH]
+  CachedProgram* patch[2] = {};              // motor: [per-axis scale]
+  CachedProgram& of(const Draw& m, DrawKind kind, int variant) const { return *at[kind][variant][m.morph ? 1 : 0]; }
+};
+
 class GltfPipeline : public Pipeline {
 public:
   void timeUpdatePhases(bool on) override { timePhases_ = on; }
@@ -79,17 +86,26 @@ protected:
   // error check naming the scene and the pipeline.
   Status endPrepare(const Scene& scene);
   // The program of a define set (see ProgramCache::get); nullptr with `status` set on failure.
-  CachedProgram* link(Status& status, const std::string& vs, const Defines& defines,
-                      const std::vector<StorageBlock>& blocks = {});
-  // Makes `p` current; the first time in a frame, setFrame(program) uploads its per-frame
-  // uniforms (a program the frame does not use uploads nothing, so uniformBytesPerFrame
-  // counts what a frame needs).
+  CachedProgram* link(Status& status, const std::string& vs, const Defines& defines);
+  // Links `vs` into `grid`: each draw kind (instanced only for a scene with instances), each of
+  // its variants(kind) variants, morphing (for a scene with morph targets: morphDefines added)
+  // or not, with defines(kind, variant, morphing).
+  Status linkGrid(ProgramGrid& grid, const std::string& vs, const std::function<int(int)>& variants,
+                  const std::function<Defines(int, int, bool)>& defines);
+  // Makes `p` current for draw `m`; the first time in a frame, setFrame(program) uploads its
+  // per-frame uniforms (a program the frame does not use uploads nothing, so
+  // uniformBytesPerFrame counts what a frame needs). A morphing draw's deltas are bound
+  // (counted per draw call).
   template <class SetFrame>
-  const Program& use(CachedProgram& p, SetFrame&& setFrame) {
+  const Program& use(CachedProgram& p, const Draw& m, const MorphBuffers& morph, SetFrame&& setFrame) {
     p.program->use();
     if (p.frame != frame_) {
       p.frame = frame_;
       setFrame(*p.program);
+    }
+    if (m.morph) {
+      morph.bind(*p.program, m.d, stats_.uniformBytesPerFrame);
+      ++stats_.morphDraws;
     }
     return *p.program;
   }
@@ -171,6 +187,7 @@ protected:
   PipelineStats stats_;
   bool timePhases_ = false;
   ProgramCache cache_;
+  ProgramGrid programs_;
   PatchGeometry patches_;
   SceneTextures textures_;
   PaletteBuffers palettes_;  // one per palette of the pose (same order every update)

@@ -49,7 +49,6 @@ private:
   friend class gl::MatrixFamily<AffinePipeline>;
   static constexpr const char* kVertexShader = "affine.vs";
   static constexpr const char* kPatchShader = "affine_patch.vs";
-  static constexpr const char* kJointBlock = "AffineJoints";
   static constexpr size_t kBytesPerJoint = 12 * sizeof(float);  // mat4x3
   static inline const gl::InstanceLayout kInstanceLayout{3, 3, 3, 3, 3, 3, 3, 1};  // model, normal, mirror
 

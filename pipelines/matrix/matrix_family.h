@@ -2,7 +2,7 @@
 // pipelines/hybrid): one prepare, update and render over the shared draw path, the pipeline
 // (`Self`, CRTP so that no virtual call is made per draw or per instance) supplying what is its
 // own:
-//   kVertexShader, kPatchShader, kJointBlock, kBytesPerJoint, kInstanceLayout, frames(),
+//   kVertexShader, kPatchShader, kBytesPerJoint, kInstanceLayout, frames(),
 //   defines(kind, frame)                                   its programs
 //   convert(scene) (timed as conversionMs), preparePose(scene)   its vertices and pose set-up
 //   pose(state, clock), posed(clock)                       its CPU update
@@ -10,7 +10,7 @@
 //   instanceWorld(node), writeInstance(model, out) -> key  its per-instance data
 //   instancedUniforms(program, d), drawUniforms(program, d, palette, patch, morph, counters)
 //                                                          its per-draw uniforms (-> mirrored)
-// Every draw's program is picked from the table by draw kind (rigid, skinned, instanced), frame
+// Every draw's program is picked from the grid by draw kind (rigid, skinned, instanced), frame
 // variant (GpuPrimitive::variant 1: MB_NO_TANGENT) and whether the draw morphs (MB_MORPH).
 #pragma once
 #include <vector>
@@ -25,10 +25,6 @@
 
 namespace mb::gl {
 
-// How a draw reaches world space; the rows of a pipeline's program table.
-enum DrawKind { kRigid = 0, kSkinned = 1, kInstanced = 2, kDrawKinds = 3 };
-using ProgramTable = CachedProgram* [kDrawKinds][2];  // [kind][frame variant]
-
 // What every draw of one frame shares: the view, its view-projection matrix and the transform
 // uploads counted for PipelineStats.
 struct MatrixFrame : TransformCounters {
@@ -42,8 +38,9 @@ public:
   Status prepare(const Scene& scene) override {
     release();
     if (Status begun = beginPrepare(scene, Self::kBytesPerJoint); !begun) return begun;
-    Status linked = linkTable(scene);
-    if (linked && hasPatches(scene)) patch_ = link(linked, Self::kPatchShader, {});
+    Status linked = linkGrid(programs_, Self::kVertexShader, [this](int) { return self().frames(); },
+                             [this](int kind, int frame, bool) { return self().defines(kind, frame); });
+    if (linked && hasPatches(scene)) programs_.patch[0] = link(linked, Self::kPatchShader, {});
     if (!linked) return linked;
     instanceMatrices_.assign(scene.nodes.size(), {});
     for (size_t n = 0; n < scene.nodes.size(); ++n)
@@ -93,9 +90,8 @@ private:
   // An instanced node: its program, uniforms, morph deltas and material once, then one instanced
   // draw per group (key 1: mirrored).
   void drawInstanceGroups(const MatrixFrame& f, const Draw& m, const std::vector<InstanceGroup>& groups) {
-    const Program& program = useProgram(f, tableProgram(m, kInstanced));
+    const Program& program = useProgram(f, m, tableProgram(m, kInstanced));
     self().instancedUniforms(program, m.d);
-    if (m.morph) morph_.bind(program, m.d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
     bindMaterial(program, m.prim);
     for (const InstanceGroup& group : groups) drawGroup(m.g, group, Self::kInstanceLayout, group.key == 1);
   }
@@ -103,46 +99,26 @@ private:
   // A draw by its node's transform or its skin's palette, or a Bezier patch (kPatchShader).
   void drawNode(MatrixFrame& f, const Draw& m) {
     const GLuint palette = m.palette < 0 ? 0 : palettes_[size_t(m.palette)];
-    const Program& program = useProgram(f, m.patch ? patch_ : tableProgram(m, palette ? kSkinned : kRigid));
-    if (m.morph) morph_.bind(program, m.d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
+    CachedProgram& p = m.patch ? *programs_.patch[0] : tableProgram(m, palette ? kSkinned : kRigid);
+    const Program& program = useProgram(f, m, p);
     const bool mirrored = self().drawUniforms(program, m.d, palette, m.patch, m.morph, f);
     bindMaterial(program, m.prim);
     setWinding(mirrored);
     drawCounted(m);
   }
 
-  // The program of `kind` for the draw's frame variant, from morphing_ when the draw morphs.
-  CachedProgram* tableProgram(const Draw& m, DrawKind kind) const {
-    return (m.morph ? morphing_ : programs_)[kind][m.g.variant == 1 ? 1 : 0];
+  // The program of `kind` for the draw's frame variant.
+  CachedProgram& tableProgram(const Draw& m, DrawKind kind) const {
+    return programs_.of(m, kind, m.g.variant == 1 ? 1 : 0);
   }
 
-  // `p` made current, the frame's view-projection and view uniforms set (see use()).
-  const Program& useProgram(const MatrixFrame& f, CachedProgram* p) {
-    return use(*p, [&](const Program& program) {
+  // `p` made current for `m`, the frame's view-projection and view uniforms set (see use()).
+  const Program& useProgram(const MatrixFrame& f, const Draw& m, CachedProgram& p) {
+    return use(p, m, morph_, [&](const Program& program) {
       uniformMatrix4(program.uniform("u_ViewProjectionMatrix"), 1, glm::value_ptr(f.viewProjection),
                      stats_.uniformBytesPerFrame);
       setFrameUniforms(program, f.view, stats_.uniformBytesPerFrame);
     });
-  }
-
-  // Links kVertexShader for each draw kind (instanced only for scenes with instances) and each of
-  // its frames() frame variants (0, 1: MB_NO_TANGENT where the pipeline has it) with
-  // defines(kind, frame), into programs_; for scenes with morph targets the same with the morph
-  // defines into morphing_. Skinned programs read kJointBlock at binding 0.
-  Status linkTable(const Scene& scene) {
-    Status linked;
-    for (int kind = 0; kind < (hasInstances(scene) ? 3 : 2); ++kind)
-      for (int frame = 0; frame < self().frames(); ++frame) {
-        Defines defines = self().defines(kind, frame);
-        std::vector<StorageBlock> blocks;
-        if (kind == kSkinned) blocks.push_back({Self::kJointBlock, 0});
-        if (!(programs_[kind][frame] = link(linked, Self::kVertexShader, defines, blocks))) return linked;
-        if (!maxMorphTargets(scene)) continue;
-        for (const auto& d : morphDefines(scene)) defines.push_back(d);
-        blocks.push_back({"MorphDeltas", kMorphBinding});
-        if (!(morphing_[kind][frame] = link(linked, Self::kVertexShader, defines, blocks))) return linked;
-      }
-    return linked;
   }
 
   // Per instance: model = node world * instance, written by the pipeline, which returns its
@@ -163,16 +139,9 @@ private:
   void release() {
     geometry_.release();
     morph_.release();
-    for (auto* table : {&programs_, &morphing_})
-      for (auto& row : *table)
-        for (auto& p : row) p = nullptr;
-    patch_ = nullptr;
     releaseShared();
   }
 
-  ProgramTable programs_ = {};  // [rigid, skinned, instanced][frame variant]
-  ProgramTable morphing_ = {};  // the same with MB_MORPH, for scenes with morph targets
-  CachedProgram* patch_ = nullptr;  // kPatchShader, for scenes with Bezier patches
   std::vector<std::vector<glm::mat4>> instanceMatrices_;  // per node: trsMatrix(instance)
 };
 

@@ -31,7 +31,6 @@ private:
   friend class gl::MatrixFamily<MatrixPipeline>;
   static constexpr const char* kVertexShader = "matrix.vs";
   static constexpr const char* kPatchShader = "matrix_patch.vs";
-  static constexpr const char* kJointBlock = "JointPalette";
   static constexpr size_t kBytesPerJoint = 2 * sizeof(glm::mat4);  // joint and joint normal matrix
   static inline const gl::InstanceLayout kInstanceLayout{4, 4, 4, 4, 4, 4, 4, 4};  // model, normal
 

@@ -40,22 +40,10 @@ DrawScale drawScale(float uniform, const glm::vec3& residual) {
   return s;
 }
 
-enum class DrawKind { Rigid = 0, Skinned = 1, Instanced = 2 };
-enum class ScaleForm { Uniform = 0, PerAxis = 1, Linear = 2 };  // MB_SCALE_FALLBACK, MB_LINEAR_FALLBACK
+// The scale form of a draw's transform: the variant of its program (ProgramGrid).
+enum ScaleForm { kUniform = 0, kPerAxis = 1, kLinear = 2 };  // MB_SCALE_FALLBACK, MB_LINEAR_FALLBACK
 
-// The motor.vs / motor_patch.vs programs of one projection (owned by the program cache): one
-// per way a draw reaches world space, scale form of its transform and whether it morphs; only
-// those a scene can use are linked.
-struct MotorPrograms {
-  gl::CachedProgram* table[3][3][2] = {};  // [kind][form][morph]
-  gl::CachedProgram* patch[2] = {};        // [per-axis scale]
-  bool built = false;
-  gl::CachedProgram& draw(DrawKind kind, ScaleForm form, bool morph) const {
-    return *table[int(kind)][int(form)][morph ? 1 : 0];
-  }
-};
-
-ScaleForm scaleForm(bool fallback) { return fallback ? ScaleForm::PerAxis : ScaleForm::Uniform; }
+ScaleForm scaleForm(bool fallback) { return fallback ? kPerAxis : kUniform; }
 
 // What every draw of one frame shares: the view, its camera motor and projection constants, the
 // programs of its projection, and the transform uploads counted for PipelineStats.
@@ -63,7 +51,7 @@ struct MotorFrame : gl::TransformCounters {
   const View& view;
   Motor worldToView;
   MK::vec4 k;  // once per frame, not per vertex as the paper listing's project() does
-  const MotorPrograms& programs;
+  const gl::ProgramGrid& programs;
 };
 
 // A rigid or skinned draw's transform on the paper's path: the node's world motor (motor_c's
@@ -96,8 +84,7 @@ private:
   void streamInstances();
   gl::Defines defines(int kind, int form, bool morphing, bool orthographic) const;
   Status linkPrograms(bool orthographic);
-  const gl::Program& useFrameProgram(const MotorFrame& f, gl::CachedProgram& p);
-  const gl::Program& useDrawProgram(const MotorFrame& f, const gl::Draw& m, DrawKind kind, ScaleForm form);
+  const gl::Program& useProgram(const MotorFrame& f, const gl::Draw& m, gl::CachedProgram& p);
   friend class gl::GltfPipeline;  // drawList() calls drawInstanceGroups() and drawNode()
   void drawGeneralInstances(MotorFrame& f, const gl::Draw& m);
   void drawInstanceGroups(MotorFrame& f, const gl::Draw& m, const std::vector<gl::InstanceGroup>& groups);
@@ -105,13 +92,14 @@ private:
   DrawTransform drawTransform(const gl::Draw& m, const motor::JointPalette* palette) const;
   void setDrawUniforms(MotorFrame& f, const gl::Draw& m, const DrawTransform& t, const gl::Program& p, bool perAxis,
                        uint64_t& scaleBytes);
-  void drawByRotorHemisphere(MotorFrame& f, const gl::Draw& m, const DrawTransform& t, DrawKind kind);
+  void drawByRotorHemisphere(MotorFrame& f, const gl::Draw& m, const DrawTransform& t, gl::DrawKind kind);
   void drawLinear(MotorFrame& f, const gl::Draw& m, const motor::JointPalette* palette,
                   const glm::mat4* world = nullptr);
   void release();
 
   MotorVariant variant_;
-  MotorPrograms programs_[2];  // [MB_ORTHOGRAPHIC: for an orthographic View]
+  gl::ProgramGrid orthographic_;  // programs_ with MB_ORTHOGRAPHIC, for an orthographic View
+  bool orthographicLinked_ = false;
   MorphMethod morphMethod_ = MorphMethod::PipelineDefault;
   gl::PaletteBuffers linearBuffers_;             // per palette: the fallback's 24 floats per joint
   std::vector<std::vector<motor::ScaledMotor>> instanceMotors_;  // per node: fromTRS(instance)
@@ -196,25 +184,18 @@ void MotorPipeline::render(const View& view) {
   const MK::vec4 k = motor::projectionConstants(view);
   // An orthographic View draws with the MB_ORTHOGRAPHIC programs (a hand-made View on a scene
   // without an orthographic camera builds them here; prepare() did for the others).
-  if (view.orthographic && !programs_[1].built && !linkPrograms(true)) return;
-  MotorFrame frame{{}, view, worldToView, k, programs_[view.orthographic ? 1 : 0]};
+  if (view.orthographic && !orthographicLinked_ && !linkPrograms(true)) return;
+  MotorFrame frame{{}, view, worldToView, k, view.orthographic ? orthographic_ : programs_};
   drawList(*this, frame, geometry_.vertices, geometry_.morph, pose_.palettes);
 }
 
-// The program with the frame's camera, projection and view uniforms set.
-const gl::Program& MotorPipeline::useFrameProgram(const MotorFrame& f, gl::CachedProgram& p) {
-  return use(p, [&](const gl::Program& program) {
+// `p` made current for `m`, the frame's camera, projection and view uniforms set (see use()).
+const gl::Program& MotorPipeline::useProgram(const MotorFrame& f, const gl::Draw& m, gl::CachedProgram& p) {
+  return use(p, m, geometry_.morph, [&](const gl::Program& program) {
     gl::uniform4fv(program.uniform("u_Camera"), 2, &f.worldToView[0][0], stats_.uniformBytesPerFrame);
     gl::uniform4f(program.uniform("u_ProjectionK"), &f.k[0], stats_.uniformBytesPerFrame);
     gl::setFrameUniforms(program, f.view, stats_.uniformBytesPerFrame);
   });
-}
-
-// The draw's program with its morph deltas bound when it morphs (counted per draw call).
-const gl::Program& MotorPipeline::useDrawProgram(const MotorFrame& f, const gl::Draw& m, DrawKind kind, ScaleForm form) {
-  const gl::Program& program = useFrameProgram(f, f.programs.draw(kind, form, m.morph));
-  if (m.morph) geometry_.morph.bind(program, m.d, stats_.uniformBytesPerFrame), ++stats_.morphDraws;
-  return program;
 }
 
 // Instances of a general node: one exact draw each (node world x instance, linear_fallback.h).
@@ -229,7 +210,7 @@ void MotorPipeline::drawGeneralInstances(MotorFrame& f, const gl::Draw& m) {
 void MotorPipeline::drawInstanceGroups(MotorFrame& f, const gl::Draw& m, const std::vector<gl::InstanceGroup>& groups) {
   for (const gl::InstanceGroup& group : groups) {
     const bool fallback = group.key & 1;
-    const gl::Program& program = useDrawProgram(f, m, DrawKind::Instanced, scaleForm(fallback));
+    const gl::Program& program = useProgram(f, m, f.programs.of(m, gl::kInstanced, scaleForm(fallback)));
     if (variant_.compact) setDequant(program, geometry_.cubes, m.d);
     bindMaterial(program, m.prim);
     drawGroup(m.g, group, {4, 4, fallback ? 3 : 1}, group.key & 2);
@@ -243,12 +224,12 @@ void MotorPipeline::drawNode(MotorFrame& f, const gl::Draw& m) {
   if (!m.patch && rig_.general[size_t(m.d.node)] && !scene_->nodes[size_t(m.d.node)].instances.empty())
     return drawGeneralInstances(f, m);  // (streamInstances() gives a general node no groups)
   const motor::JointPalette* palette = m.palette < 0 ? nullptr : &pose_.palettes[size_t(m.palette)];
-  const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
+  const gl::DrawKind kind = palette ? gl::kSkinned : gl::kRigid;
   if (palette ? palette->fallback : (!m.patch && rig_.general[size_t(m.d.node)]))
     return drawLinear(f, m, palette);
   const DrawTransform t = drawTransform(m, palette);
-  const gl::Program& program = m.patch ? useFrameProgram(f, *f.programs.patch[t.scale.fallback])
-                                       : useDrawProgram(f, m, kind, scaleForm(t.scale.fallback));
+  const gl::Program& program = useProgram(f, m, m.patch ? *f.programs.patch[t.scale.fallback]
+                                                        : f.programs.of(m, kind, scaleForm(t.scale.fallback)));
   if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palettes_[size_t(m.palette)]);
   // A draw with a transform counts its scale with it, the others in the per-frame bytes.
   setDrawUniforms(f, m, t, program, t.scale.fallback, t.transform ? f.scaleBytes : stats_.uniformBytesPerFrame);
@@ -290,61 +271,49 @@ void MotorPipeline::setDrawUniforms(MotorFrame& f, const gl::Draw& m, const Draw
 // motor_cf: triangles whose corner rotors cannot share a hemisphere (rotor_signs.h) are drawn
 // after the others by the per-vertex extraction of its scale-fallback program (motor_c's way).
 // Every other draw is one counted draw.
-void MotorPipeline::drawByRotorHemisphere(MotorFrame& f, const gl::Draw& m, const DrawTransform& t, DrawKind kind) {
+void MotorPipeline::drawByRotorHemisphere(MotorFrame& f, const gl::Draw& m, const DrawTransform& t, gl::DrawKind kind) {
   const size_t interpolable = variant_.fragmentRotor && !m.patch && !t.scale.fallback
                                   ? geometry_.interpolable[size_t(m.d.mesh)][size_t(m.d.primitive)]
                                   : size_t(m.g.indexCount);
   if (interpolable >= size_t(m.g.indexCount)) return drawCounted(m);
   stats_.drawnVertices += m.g.drawRange(0, GLsizei(interpolable));
-  setDrawUniforms(f, m, t, useDrawProgram(f, m, kind, ScaleForm::PerAxis), true,  // t.scale is uniform here: (x, x, x)
+  setDrawUniforms(f, m, t, useProgram(f, m, f.programs.of(m, kind, kPerAxis)), true,  // t.scale is uniform: (x, x, x)
                   stats_.uniformBytesPerFrame);
   m.g.drawRange(GLsizei(interpolable), m.g.indexCount - GLsizei(interpolable));
   stats_.draws += 2;
 }
 
-// The variants `scene_` needs: instanced ones only for scenes with instances, MB_MORPH ones only
-// for scenes with morph targets (method (b), MB_MORPH_ROTOR, for the float and int16 rotors when
-// the morph method is Rotor; the compact rotors morph by method (a) always), patch programs only
-// for scenes with Bezier patches. orthographic: every program with MB_ORTHOGRAPHIC.
+// The defines of a program (linkGrid adds the MB_MORPH ones): morph method (b), MB_MORPH_ROTOR,
+// for the float and int16 rotors when the morph method is Rotor (the compact rotors morph by
+// method (a) always); orthographic: every program with MB_ORTHOGRAPHIC.
 gl::Defines MotorPipeline::defines(int kind, int form, bool morphing, bool orthographic) const {
   gl::Defines d;
-  if (morphing) d = gl::morphDefines(*scene_);
   if (morphing && morphMethod_ == MorphMethod::Rotor && !variant_.compact) d.push_back({"MB_MORPH_ROTOR", ""});
-  if (kind == 1) d.push_back({"MB_SKINNED", ""});
-  if (kind == 1 && referenceSkin_ && form < 2) d.push_back({"MB_SKIN_REFERENCE", ""});
-  if (kind == 2) d.push_back({"MB_INSTANCED", ""});
-  if (form == 1) d.push_back({"MB_SCALE_FALLBACK", ""});
-  if (form == 2) d.push_back({"MB_LINEAR_FALLBACK", ""});
+  if (kind == gl::kSkinned) d.push_back({"MB_SKINNED", ""});
+  if (kind == gl::kSkinned && referenceSkin_ && form != kLinear) d.push_back({"MB_SKIN_REFERENCE", ""});
+  if (kind == gl::kInstanced) d.push_back({"MB_INSTANCED", ""});
+  if (form == kPerAxis) d.push_back({"MB_SCALE_FALLBACK", ""});
+  if (form == kLinear) d.push_back({"MB_LINEAR_FALLBACK", ""});
   if (variant_.compact) d.push_back({"MB_COMPACT", ""});
   if (variant_.fragmentRotor) d.push_back({"MB_SIGNED_ROTOR", ""});
-  if (variant_.fragmentRotor && form == 0) d.push_back({"MB_FRAGMENT_ROTOR", ""});
+  if (variant_.fragmentRotor && form == kUniform) d.push_back({"MB_FRAGMENT_ROTOR", ""});
   if (orthographic) d.push_back({"MB_ORTHOGRAPHIC", ""});
   return d;
 }
 
+// The programs of one projection (orthographic: the MB_ORTHOGRAPHIC ones): every draw kind and
+// scale form (instanced draws have no linear form), patch programs for scenes with Bezier patches.
 Status MotorPipeline::linkPrograms(bool orthographic) {
-  MotorPrograms& programs = programs_[orthographic ? 1 : 0];
-  programs = MotorPrograms{};
-  const bool instanced = gl::hasInstances(*scene_), morphs = gl::maxMorphTargets(*scene_) > 0;
-  Status linked;
-  for (int kind = 0; kind < 3; ++kind)
-    for (int form = 0; form < 3; ++form)
-      for (int morphing = 0; morphing < 2; ++morphing) {
-        if ((kind == 2 && (!instanced || form == 2)) || (morphing && !morphs)) continue;
-        std::vector<gl::StorageBlock> blocks;
-        if (kind == 1) blocks.push_back({"MotorJoints", 0});
-        if (kind == 1 && form == 2) blocks.push_back({"MotorJointLinear", 1});
-        if (morphing) blocks.push_back({"MorphDeltas", gl::kMorphBinding});
-        gl::CachedProgram*& p = programs.table[kind][form][morphing];
-        if (!(p = link(linked, "motor.vs", defines(kind, form, morphing, orthographic), blocks))) return linked;
-      }
-  for (int fallback = 0; fallback < 2 && gl::hasPatches(*scene_); ++fallback) {
+  gl::ProgramGrid& grid = orthographic ? orthographic_ : programs_;
+  Status linked = linkGrid(grid, "motor.vs", [](int kind) { return kind == gl::kInstanced ? 2 : 3; },
+                           [&](int kind, int form, bool morph) { return defines(kind, form, morph, orthographic); });
+  for (int fallback = 0; linked && fallback < 2 && gl::hasPatches(*scene_); ++fallback) {
     gl::Defines d;
     if (fallback) d.push_back({"MB_SCALE_FALLBACK", ""});
     if (orthographic) d.push_back({"MB_ORTHOGRAPHIC", ""});
-    if (!(programs.patch[fallback] = link(linked, "motor_patch.vs", d))) return linked;
+    grid.patch[fallback] = link(linked, "motor_patch.vs", d);
   }
-  programs.built = true;
+  if (orthographic) orthographicLinked_ = bool(linked);
   return linked;
 }
 
@@ -353,8 +322,7 @@ Status MotorPipeline::linkPrograms(bool orthographic) {
 void MotorPipeline::drawLinear(MotorFrame& f, const gl::Draw& m, const motor::JointPalette* palette,
                                const glm::mat4* world) {
   const gl::DrawItem& d = m.d;
-  const DrawKind kind = palette ? DrawKind::Skinned : DrawKind::Rigid;
-  const gl::Program& program = useDrawProgram(f, m, kind, ScaleForm::Linear);
+  const gl::Program& program = useProgram(f, m, f.programs.of(m, palette ? gl::kSkinned : gl::kRigid, kLinear));
   bool mirrored = false;
   if (palette) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palettes_[size_t(m.palette)]);
@@ -387,7 +355,8 @@ void MotorPipeline::drawLinear(MotorFrame& f, const gl::Draw& m, const motor::Jo
 void MotorPipeline::release() {
   geometry_.release();
   linearBuffers_.release();
-  programs_[0] = programs_[1] = MotorPrograms{};
+  orthographic_ = {};
+  orthographicLinked_ = false;
   releaseShared();
 }
 
