@@ -12,10 +12,6 @@ void quantizeRotor(const glm::vec4& rotor, int16_t out[4]) {
   for (int i = 0; i < 4; ++i) out[i] = gl::snorm16(rotor[i]);
 }
 
-glm::vec4 dequantizeRotor(const int16_t q[4]) {
-  return {gl::fromSnorm16(q[0]), gl::fromSnorm16(q[1]), gl::fromSnorm16(q[2]), gl::fromSnorm16(q[3])};
-}
-
 int countBiasedFrames(const std::vector<float>& motorVertices) {
   int n = 0;
   for (size_t v = 3; v < motorVertices.size(); v += size_t(kFloatsPerVertex))

@@ -19,8 +19,6 @@ namespace mb::motor {
 
 // The rotor as int16 SNORM, component order (s, e23, e31, e12).
 void quantizeRotor(const glm::vec4& rotor, int16_t out[4]);
-// What the GPU reads back from quantizeRotor's values (GL's SNORM rule).
-glm::vec4 dequantizeRotor(const int16_t q[4]);
 
 // Frames of motor::interleaveVertices' float stream that the bias rule changed (their scalar
 // is exactly +-1/32767, where companion::encodeTangentRotor puts a clamped one).

@@ -50,10 +50,11 @@ float shaderHandedness(const glm::vec4& rotor) {
   return mk().motorHandedness(MK::vec4(rotor.x, rotor.y, rotor.z, rotor.w));
 }
 
+// motor_q's rotor as the vertex fetch reads it back (GL's SNORM rule).
 glm::vec4 throughInt16(const glm::vec4& rotor) {
   int16_t q[4];
   motor::quantizeRotor(rotor, q);
-  return motor::dequantizeRotor(q);
+  return {gl::fromSnorm16(q[0]), gl::fromSnorm16(q[1]), gl::fromSnorm16(q[2]), gl::fromSnorm16(q[3])};
 }
 
 }  // namespace
