@@ -2,17 +2,6 @@
 
 namespace mb::gl {
 
-Result<CachedProgram*> ProgramCache::get(const std::string& vs, const std::string& fs, const Defines& defines) {
-  std::string key = vs + '\n' + fs;
-  for (const auto& [name, value] : defines) key += '\n' + name + '=' + value;
-  if (auto found = programs_.find(key); found != programs_.end()) return found->second.get();
-  auto program = Program::fromFiles(vs, fs, defines);
-  if (!program) return Result<CachedProgram*>::fail(program.error());
-  std::unique_ptr<CachedProgram>& cached = programs_[key];
-  cached = std::make_unique<CachedProgram>(CachedProgram{program.take()});
-  return cached.get();
-}
-
 Status GltfPipeline::beginPrepare(const Scene& scene, size_t bytesPerJoint) {
   if (Status curved = refuseCurvedScene(scene, name()); !curved) return curved;
   scene_ = &scene;
@@ -31,12 +20,17 @@ Status GltfPipeline::endPrepare(const Scene& scene) {
 }
 
 CachedProgram* GltfPipeline::link(Status& status, const std::string& vs, const Defines& defines) {
-  auto program = cache_.get(vs, "forward.fs", defines);
+  std::string key = vs;
+  for (const auto& [name, value] : defines) key += '\n' + name + '=' + value;
+  std::unique_ptr<CachedProgram>& cached = cache_[key];
+  if (cached) return cached.get();
+  auto program = Program::fromFiles(vs, "forward.fs", defines);
   if (!program) {
     status = Status::fail(program.error());
     return nullptr;
   }
-  return *program;
+  cached = std::make_unique<CachedProgram>(CachedProgram{program.take()});
+  return cached.get();
 }
 
 Status GltfPipeline::linkGrid(ProgramGrid& grid, const std::string& vs, const std::function<int(int)>& variants,
@@ -59,7 +53,7 @@ void GltfPipeline::releaseShared() {
   palettes_.release();
   textures_.release();
   instances_.release();
-  cache_.release();
+  cache_.clear();
   programs_ = {};
   draws_.clear();
   scene_ = nullptr;

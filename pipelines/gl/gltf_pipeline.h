@@ -32,18 +32,6 @@ struct CachedProgram {
   uint64_t frame = 0;
 };
 
-// Programs keyed by (vertex shader, fragment shader, define set): one link per key. (Their
-// storage blocks name their binding points in the shaders: layout(binding = N).)
-class ProgramCache {
-public:
-  // The program of the key, linked the first time it is asked for.
-  Result<CachedProgram*> get(const std::string& vs, const std::string& fs, const Defines& defines);
-  void release() { programs_.clear(); }
-
-private:
-  std::map<std::string, std::unique_ptr<CachedProgram>> programs_;
-};
-
 // What the per-draw uniforms of a frame added up to: the transforms, the bytes of their
 // uniforms and of what a transform adds beside them (affine's mirror float, motor's scale).
 struct TransformCounters {
@@ -78,14 +66,16 @@ public:
   PipelineStats stats() const override { return stats_; }
 
 protected:
-  // prepare()'s shared start: the previous scene released, a curved-space scene refused, the
+  // prepare()'s shared start (after the pipeline's release()): a curved-space scene refused, the
   // stats reset, the palette checked against the storage block limit at `bytesPerJoint`, the
   // textures and Bezier patches uploaded.
   Status beginPrepare(const Scene& scene, size_t bytesPerJoint);
   // prepare()'s shared end: the draw list, the rest pose (update(AnimState{})) and the GL
   // error check naming the scene and the pipeline.
   Status endPrepare(const Scene& scene);
-  // The program of a define set (see ProgramCache::get); nullptr with `status` set on failure.
+  // The program of `vs` (with forward.fs) and a define set, linked the first time that key is
+  // asked for (its storage blocks name their binding points: layout(binding = N)); nullptr with
+  // `status` set on failure.
   CachedProgram* link(Status& status, const std::string& vs, const Defines& defines);
   // Links `vs` into `grid`: each draw kind (instanced only for a scene with instances), each of
   // its variants(kind) variants, morphing (for a scene with morph targets: morphDefines added)
@@ -125,6 +115,20 @@ protected:
     uint64_t joints = 0;
     for (size_t i = 0; i < palettes; ++i) joints += upload(i);
     stats_.floatsPerJoint = floatsPer(stats_.skinBytesPerFrame, joints);
+  }
+  // The frame's instances streamed: node n's when local[n] (its instances' transforms, converted
+  // by prepare()) has any, instance i written by write(world, local[n][i], out), which returns its
+  // key, with world = worldOf(n) read once per node.
+  template <class Local, class WorldOf, class Write>
+  void streamInstances(const std::vector<std::vector<Local>>& local, WorldOf worldOf, Write write) {
+    instances_.begin(scene_->nodes.size());
+    for (size_t n = 0; n < local.size(); ++n) {
+      if (local[n].empty()) continue;
+      const auto& world = worldOf(n);
+      instances_.addNode(int(n), local[n].size(),
+                         [&](size_t i, std::vector<float>& out) { return write(world, local[n][i], out); });
+    }
+    instances_.upload(stats_);
   }
   // The frame's draw list, each item with something to draw handed to `self` (no virtual call
   // per draw): self.drawInstanceGroups(frame, draw, groups) for an instanced node,
@@ -186,7 +190,7 @@ protected:
   const Scene* scene_ = nullptr;
   PipelineStats stats_;
   bool timePhases_ = false;
-  ProgramCache cache_;
+  std::map<std::string, std::unique_ptr<CachedProgram>> cache_;  // by vertex shader and define set
   ProgramGrid programs_;
   PatchGeometry patches_;
   SceneTextures textures_;

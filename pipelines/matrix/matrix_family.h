@@ -66,7 +66,12 @@ public:
   void render(const View& view) override {
     if (!scene_) return;
     beginFrame(self().palettes().size(), [this](size_t i) { return self().uploadPalette(i); });
-    streamInstances();
+    // Per instance: model = node world * instance, written by the pipeline, which returns its
+    // key (1: mirrored, the winding flips).
+    streamInstances(instanceMatrices_, [this](size_t n) { return self().instanceWorld(n); },
+                    [this](const glm::mat4& world, const glm::mat4& local, std::vector<float>& out) {
+                      return self().writeInstance(world * local, out);
+                    });
     const glm::mat4 viewMatrix =
         glm::inverse(glm::translate(glm::mat4(1.0f), view.eye) * glm::mat4_cast(view.orientation));
     MatrixFrame frame{{}, view, projectionMatrix(view) * viewMatrix};
@@ -119,21 +124,6 @@ private:
                      stats_.uniformBytesPerFrame);
       setFrameUniforms(program, f.view, stats_.uniformBytesPerFrame);
     });
-  }
-
-  // Per instance: model = node world * instance, written by the pipeline, which returns its
-  // key (1: mirrored, the winding flips).
-  void streamInstances() {
-    instances_.begin(scene_->nodes.size());
-    for (size_t n = 0; n < instanceMatrices_.size(); ++n) {
-      const std::vector<glm::mat4>& local = instanceMatrices_[n];
-      if (local.empty()) continue;
-      const glm::mat4 world = self().instanceWorld(n);
-      instances_.addNode(int(n), local.size(), [&](size_t i, std::vector<float>& out) {
-        return self().writeInstance(world * local[i], out);
-      });
-    }
-    instances_.upload(stats_);
   }
 
   void release() {

@@ -81,12 +81,10 @@ public:
 
 private:
   uint64_t uploadPalette(size_t i);
-  void streamInstances();
   gl::Defines defines(int kind, int form, bool morphing, bool orthographic) const;
   Status linkPrograms(bool orthographic);
   const gl::Program& useProgram(const MotorFrame& f, const gl::Draw& m, gl::CachedProgram& p);
   friend class gl::GltfPipeline;  // drawList() calls drawInstanceGroups() and drawNode()
-  void drawGeneralInstances(MotorFrame& f, const gl::Draw& m);
   void drawInstanceGroups(MotorFrame& f, const gl::Draw& m, const std::vector<gl::InstanceGroup>& groups);
   void drawNode(MotorFrame& f, const gl::Draw& m);
   DrawTransform drawTransform(const gl::Draw& m, const motor::JointPalette* palette) const;
@@ -120,8 +118,11 @@ Status MotorPipeline::prepare(const Scene& scene) {
   auto t0 = gl::Clock::now();
   rig_ = motor::buildRig(scene);
   instanceMotors_.assign(scene.nodes.size(), {});
-  for (size_t n = 0; n < scene.nodes.size(); ++n)  // an instance is a leaf: its residual is exact
-    for (const TRS& t : scene.nodes[n].instances) instanceMotors_[n].push_back(motor::fromTRS(t, true));
+  // An instance is a leaf: its residual is exact. A general node streams none: drawNode() draws
+  // each of its instances exactly.
+  for (size_t n = 0; n < scene.nodes.size(); ++n)
+    for (const TRS& t : scene.nodes[n].instances)
+      if (!rig_.general[n]) instanceMotors_[n].push_back(motor::fromTRS(t, true));
   geometry_.upload(scene, variant_, morphMethod_, stats_);
   stats_.conversionMs = gl::msSince(t0);
   return endPrepare(scene);
@@ -155,31 +156,22 @@ uint64_t MotorPipeline::uploadPalette(size_t i) {
   return scene_->skins[size_t(pose_.palettes[i].skin)].joints.size();
 }
 
-// Per instance: node world composed with the instance (composeInto), then its motor and the
-// scale a draw would get; key bit 0: scale fallback (vec3 scale), bit 1: mirrored winding.
-void MotorPipeline::streamInstances() {
-  instances_.begin(scene_->nodes.size());
-  stats_.scaleFallbackInstances = 0;
-  motor::ScaledMotor composed;
-  for (size_t n = 0; n < instanceMotors_.size(); ++n) {
-    const std::vector<motor::ScaledMotor>& local = instanceMotors_[n];
-    if (local.empty() || rig_.general[n]) continue;  // a general node draws each instance exactly
-    instances_.addNode(int(n), local.size(), [&](size_t i, std::vector<float>& out) {
-      motor::composeInto(pose_.world[n], local[i], composed);
-      const DrawScale scale = drawScale(composed.scale, composed.residual);
-      out.insert(out.end(), &composed.motor[0][0], &composed.motor[0][0] + 8);
-      out.insert(out.end(), &scale.value[0], &scale.value[0] + (scale.fallback ? 3 : 1));
-      stats_.scaleFallbackInstances += scale.fallback;
-      return (scale.fallback ? 1 : 0) | (scale.mirrored ? 2 : 0);
-    });
-  }
-  instances_.upload(stats_);
-}
-
 void MotorPipeline::render(const View& view) {
   if (!scene_) return;
   beginFrame(pose_.palettes.size(), [this](size_t i) { return uploadPalette(i); });
-  streamInstances();
+  // Per instance: node world composed with the instance (composeInto), then its motor and the
+  // scale a draw would get; key bit 0: scale fallback (vec3 scale), bit 1: mirrored winding.
+  stats_.scaleFallbackInstances = 0;
+  motor::ScaledMotor composed;
+  streamInstances(instanceMotors_, [this](size_t n) -> const motor::ScaledMotor& { return pose_.world[n]; },
+                  [&](const motor::ScaledMotor& world, const motor::ScaledMotor& local, std::vector<float>& out) {
+                    motor::composeInto(world, local, composed);
+                    const DrawScale scale = drawScale(composed.scale, composed.residual);
+                    out.insert(out.end(), &composed.motor[0][0], &composed.motor[0][0] + 8);
+                    out.insert(out.end(), &scale.value[0], &scale.value[0] + (scale.fallback ? 3 : 1));
+                    stats_.scaleFallbackInstances += scale.fallback;
+                    return (scale.fallback ? 1 : 0) | (scale.mirrored ? 2 : 0);
+                  });
   const Motor worldToView = motor::worldToViewMotor(view);
   const MK::vec4 k = motor::projectionConstants(view);
   // An orthographic View draws with the MB_ORTHOGRAPHIC programs (a hand-made View on a scene
@@ -198,14 +190,6 @@ const gl::Program& MotorPipeline::useProgram(const MotorFrame& f, const gl::Draw
   });
 }
 
-// Instances of a general node: one exact draw each (node world x instance, linear_fallback.h).
-void MotorPipeline::drawGeneralInstances(MotorFrame& f, const gl::Draw& m) {
-  for (const TRS& instance : scene_->nodes[size_t(m.d.node)].instances) {
-    const glm::mat4 world = pose_.exact.world[size_t(m.d.node)] * trsMatrix(instance);
-    drawLinear(f, m, nullptr, &world);
-  }
-}
-
 // One instanced draw per group (key bit 0: vec3 scale, bit 1: mirrored winding).
 void MotorPipeline::drawInstanceGroups(MotorFrame& f, const gl::Draw& m, const std::vector<gl::InstanceGroup>& groups) {
   for (const gl::InstanceGroup& group : groups) {
@@ -218,11 +202,17 @@ void MotorPipeline::drawInstanceGroups(MotorFrame& f, const gl::Draw& m, const s
 }
 
 // A draw by its node's transform or its skin's palette: the instances of a general node one
-// exact draw each; on the exact fallback when the node is general or the palette is not one
-// common positive scale, else the paper's path.
+// exact draw each (node world x instance, linear_fallback.h); on the exact fallback when the node
+// is general or the palette is not one common positive scale, else the paper's path.
 void MotorPipeline::drawNode(MotorFrame& f, const gl::Draw& m) {
-  if (!m.patch && rig_.general[size_t(m.d.node)] && !scene_->nodes[size_t(m.d.node)].instances.empty())
-    return drawGeneralInstances(f, m);  // (streamInstances() gives a general node no groups)
+  const std::vector<TRS>& instances = scene_->nodes[size_t(m.d.node)].instances;
+  if (!m.patch && rig_.general[size_t(m.d.node)] && !instances.empty()) {
+    for (const TRS& instance : instances) {
+      const glm::mat4 world = pose_.exact.world[size_t(m.d.node)] * trsMatrix(instance);
+      drawLinear(f, m, nullptr, &world);
+    }
+    return;
+  }
   const motor::JointPalette* palette = m.palette < 0 ? nullptr : &pose_.palettes[size_t(m.palette)];
   const gl::DrawKind kind = palette ? gl::kSkinned : gl::kRigid;
   if (palette ? palette->fallback : (!m.patch && rig_.general[size_t(m.d.node)]))
