@@ -31,16 +31,6 @@ glm::mat4 projection(int kappa, float yfov, float aspect) {
   return p;
 }
 
-// Locations first, first + 1, ...: the bound buffer's n interleaved vec4s (divisor 1 if instanced).
-void vec4Attributes(GLuint first, GLuint n, bool instanced) {
-  for (GLuint k = 0; k < n; ++k) {
-    glEnableVertexAttribArray(first + k);
-    glVertexAttribPointer(first + k, 4, GL_FLOAT, GL_FALSE, GLsizei(n * 4 * sizeof(float)),
-                          reinterpret_cast<const void*>(size_t(k) * 4 * sizeof(float)));
-    if (instanced) glVertexAttribDivisor(first + k, 1);
-  }
-}
-
 class CurvedPipeline final : public Pipeline {
 public:
   CurvedPipeline(Space space, bool motor) : space_(space), kappa_(kappaOf(space)), motor_(motor) {}
@@ -107,10 +97,12 @@ Status CurvedPipeline::prepare(const Scene& scene) {
   glGenVertexArrays(1, &vao_);
   glBindVertexArray(vao_);
   vertexBuffer_ = gl::createBuffer(GL_ARRAY_BUFFER, vertices, stats_.vertexBytes);
-  vec4Attributes(0, 2, false);
+  gl::pointAttributes({{0}, {1}});  // vec4s: position, normal
   // Instances are the curved scenes' transforms; their uploads are the floats per transform.
   instanceBuffer_ = gl::createBuffer(GL_ARRAY_BUFFER, instances, stats_.extraVertexBytes);
-  vec4Attributes(2, motor_ ? 2 : 4, true);
+  std::vector<gl::PackedAttribute> columns{{2}, {3}, {4}, {5}};  // vec4s: the matrix's, the motor's 2
+  columns.resize(motor_ ? 2 : 4);
+  gl::pointAttributes(columns, true);
   glBindVertexArray(0);
   vertexCount_ = GLsizei(c.positions.size());
   instanceCount_ = GLsizei(c.instances.size());

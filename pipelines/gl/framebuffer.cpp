@@ -46,20 +46,17 @@ Framebuffer::~Framebuffer() {
   if (color_) glDeleteTextures(1, &color_);
 }
 
+// The framebuffer's draw and read buffer (its colour attachment 0), the colour mask and the
+// clear depth (1) stay at GL's defaults: nothing sets them.
 void Framebuffer::bind() const {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  const GLenum attachment = GL_COLOR_ATTACHMENT0;
-  glDrawBuffers(1, &attachment);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
   glViewport(0, 0, width_, height_);
 }
 
 void Framebuffer::clear(float r, float g, float b, float a) const {
   bind();
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glDepthMask(GL_TRUE);
   glClearColor(r, g, b, a);
-  glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 

@@ -29,10 +29,7 @@ void GpuPrimitive::release() {
   vao = vertices = indices = 0;
 }
 
-namespace {
-
-// Points the bound vertex array's attributes at `attributes`, tightly interleaved in that order.
-void pointAttributes(const std::vector<PackedAttribute>& attributes) {
+void pointAttributes(const std::vector<PackedAttribute>& attributes, bool instanced) {
   GLsizei stride = 0;
   for (const PackedAttribute& a : attributes) stride += GLsizei(a.bytes());
   size_t offset = 0;
@@ -40,11 +37,10 @@ void pointAttributes(const std::vector<PackedAttribute>& attributes) {
     glEnableVertexAttribArray(a.location);
     glVertexAttribPointer(a.location, a.size, a.type, a.normalized ? GL_TRUE : GL_FALSE, stride,
                           reinterpret_cast<const void*>(offset));
+    if (instanced) glVertexAttribDivisor(a.location, 1);
     offset += a.bytes();
   }
 }
-
-}  // namespace
 
 bool normalMapped(const Scene& scene, const Primitive& p) {
   return p.material >= 0 && size_t(p.material) < scene.materials.size() &&

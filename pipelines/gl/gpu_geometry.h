@@ -81,6 +81,10 @@ private:
   std::vector<std::vector<GpuPrimitive>> meshes_;  // [mesh][primitive]
 };
 
+// Points the bound vertex array's attributes at the bound GL_ARRAY_BUFFER's `attributes`,
+// tightly interleaved in that order; read per instance (divisor 1) when `instanced`.
+void pointAttributes(const std::vector<PackedAttribute>& attributes, bool instanced = false);
+
 // True when `p`'s material has a normal texture (the paper's 12-vs-9-float case; the split of
 // PipelineStats::normalMappedVertexBytes).
 bool normalMapped(const Scene& scene, const Primitive& p);
