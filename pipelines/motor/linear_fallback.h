@@ -7,7 +7,7 @@
 // with the motor the rotation and translation of A's polar decomposition (A = R S, S
 // symmetric) and linear = S. It is exact for every A (nothing is approximated), reduces to
 // (motor, s I) for a similarity s R, and so to the paper's path when all joints of a skin
-// share one scale. Shaders: motorLinearVertex (shaders/motor_transform.glsl), MB_LINEAR_FALLBACK.
+// share one scale. Shaders: motorLinearRotorVertex (shaders/motor_transform.glsl), MB_LINEAR_FALLBACK.
 #pragma once
 #include <glm/glm.hpp>
 

@@ -137,7 +137,7 @@ std::vector<ScaledMotor> worldPose(const Scene& scene, const std::vector<ScaledM
   return world;
 }
 
-// flatten: compose's geometric product inlined into the loop (the GLM side gets the same,
+// flatten: composeInto's geometric product inlined into the loop (the GLM side gets the same,
 // pipelines/scene/matrix_world.cpp).
 [[gnu::flatten]] void worldPose(const HierarchyOrder& order, const std::vector<ScaledMotor>& local,
                                 std::vector<ScaledMotor>& world) {
@@ -173,7 +173,9 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
     // Joint j's world composed with its inverse bind, and a motor stored as joint j's 8 floats.
     auto jointMotor = [&](size_t j) {
       const int jn = skin.joints[j];
-      return compose(nodeIndexOk(scene, jn) ? world[size_t(jn)] : ScaledMotor{}, rig.inverseBind[size_t(p.skin)][j]);
+      ScaledMotor m;
+      composeInto(nodeIndexOk(scene, jn) ? world[size_t(jn)] : ScaledMotor{}, rig.inverseBind[size_t(p.skin)][j], m);
+      return m;
     };
     auto store = [&](size_t j, const Motor& motor) {
       for (int c = 0; c < 2; ++c)

@@ -58,7 +58,7 @@ void localPose(const Rig& rig, const std::vector<TRS>& pose, std::vector<ScaledM
 std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const AnimState& state,
                                        RigCounts* counts = nullptr);
 
-// World transform of every node: parent world composed with local (compose()). Nodes not
+// World transform of every node: parent world composed with local (composeInto()). Nodes not
 // reachable from a root get the chain up to their topmost ancestor.
 std::vector<ScaledMotor> worldPose(const Scene& scene, const std::vector<ScaledMotor>& local);
 // The same in a precomputed `order` (Rig::order), into `world` (storage reused).

@@ -46,22 +46,16 @@ ScaledMotor fromTRS(const TRS& trs, bool leaf, ConversionFlags* flags = nullptr)
 ScaledMotor fromMatrix(const glm::mat4& m, const TRS& approx, bool leaf,
                        ConversionFlags* flags = nullptr);
 
-// compose() written straight into `out` (which must not be `parent` or `child`): the motor is
-// stored as the two 4-float halves the children's compose reads back, so the store-to-load
-// forwarding of a parent's fresh result works (16-byte loads of scalar stores would stall).
+// Parent then child, into `out` (which must not be `parent` or `child`): the child's transform
+// expressed in the parent's space. Contract: the parent's residual is (1,1,1) (residuals live on
+// leaves only). The motor is stored as the two 4-float halves the children's composition reads
+// back, so the store-to-load forwarding of a parent's fresh result works (16-byte loads of
+// scalar stores would stall). Inline, so that the per-frame loops (hierarchy, palettes) inline
+// it as they inline GLM's matrix product.
 inline void composeInto(const ScaledMotor& parent, const ScaledMotor& child, ScaledMotor& out) {
   gpMotors(parent.motor, child.motor, out.motor, parent.scale);  // child's dual half * parent.scale
   out.scale = parent.scale * child.scale;
   out.residual = child.residual;
-}
-
-// Parent then child: the child's transform expressed in the parent's space. Contract: the
-// parent's residual is (1,1,1) (residuals live on leaves only). Inline, so that the per-frame
-// loops (hierarchy, palettes) inline it as they inline GLM's matrix product.
-inline ScaledMotor compose(const ScaledMotor& parent, const ScaledMotor& child) {
-  ScaledMotor out;
-  composeInto(parent, child, out);
-  return out;
 }
 
 // Shortest-arc blend of two node transforms: (1-w) a + w (+-b) on the motors (b negated when
