@@ -1,11 +1,9 @@
 // motor_q's vertex layout: position float3, the tangent rotor in int16x4 SNORM, TEXCOORD_0
 // float2: 28 bytes per vertex against motor's 36.
 //
-// The paper keeps the handedness in the sign of the rotor's scalar part, relying on IEEE
-// signed zero when that scalar is exactly 0 (axis-aligned frames turned half a turn). An
-// integer has no -0: SNORM16 stores -0 as 0, which decodes as +1. The bias rule
-// (companion::encodeTangentRotor: |s| >= 1/32767, one SNORM16 step) keeps the sign in a
-// non-zero value that survives quantisation; gl::PackedStream counts the frames it changed.
+// The handedness is the sign of the rotor's scalar part, and SNORM16 has no -0: companion.h's
+// bias rule (|s| >= 1/32767, one SNORM16 step) keeps a zero scalar's sign through quantisation;
+// gl::PackedStream counts the frames it changed.
 #pragma once
 #include <cstdint>
 #include <vector>
