@@ -17,20 +17,17 @@ Result<std::unique_ptr<Framebuffer>> Framebuffer::create(int width, int height) 
   std::unique_ptr<Framebuffer> fb(new Framebuffer());
   fb->width_ = width;
   fb->height_ = height;
-  glGenTextures(1, &fb->color_);
-  glBindTexture(GL_TEXTURE_2D, fb->color_);
-  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, width, height);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glGenRenderbuffers(1, &fb->depth_);
-  glBindRenderbuffer(GL_RENDERBUFFER, fb->depth_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, 0);
   glGenFramebuffers(1, &fb->fbo_);
   glBindFramebuffer(GL_FRAMEBUFFER, fb->fbo_);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, fb->color_, 0);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, fb->depth_);
+  glGenRenderbuffers(2, fb->buffers_);
+  const GLenum formats[2] = {GL_RGBA8, GL_DEPTH_COMPONENT24};
+  const GLenum attachments[2] = {GL_COLOR_ATTACHMENT0, GL_DEPTH_ATTACHMENT};
+  for (int i = 0; i < 2; ++i) {
+    glBindRenderbuffer(GL_RENDERBUFFER, fb->buffers_[i]);
+    glRenderbufferStorage(GL_RENDERBUFFER, formats[i], width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachments[i], GL_RENDERBUFFER, fb->buffers_[i]);
+  }
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
   GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     char hex[16];
@@ -40,10 +37,9 @@ Result<std::unique_ptr<Framebuffer>> Framebuffer::create(int width, int height) 
   return fb;
 }
 
-Framebuffer::~Framebuffer() {
-  if (fbo_) glDeleteFramebuffers(1, &fbo_);
-  if (depth_) glDeleteRenderbuffers(1, &depth_);
-  if (color_) glDeleteTextures(1, &color_);
+Framebuffer::~Framebuffer() {  // create() generated both
+  glDeleteFramebuffers(1, &fbo_);
+  glDeleteRenderbuffers(2, buffers_);
 }
 
 // The framebuffer's draw and read buffer (its colour attachment 0), the colour mask and the

@@ -1,4 +1,4 @@
-// An offscreen render target: RGBA8 colour texture + 24-bit depth renderbuffer, one sample,
+// An offscreen render target: RGBA8 colour and 24-bit depth renderbuffers, one sample,
 // fixed size. Every pipeline draws into one of these; readRgba() returns the image top-down.
 #pragma once
 #include <cstdint>
@@ -28,7 +28,7 @@ public:
 private:
   Framebuffer() = default;
   int width_ = 0, height_ = 0;
-  GLuint fbo_ = 0, color_ = 0, depth_ = 0;
+  GLuint fbo_ = 0, buffers_[2] = {};  // colour, depth
 };
 
 }  // namespace mb::gl

@@ -129,10 +129,7 @@ Status checkPaletteSize(const Scene& scene, size_t bytesPerJoint) {
   return {};
 }
 
-void beginDraws() {
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-}
+void beginDraws() { glEnable(GL_DEPTH_TEST); }  // GL_LESS, GL's default depth function
 
 void endDraws() {
   glBindVertexArray(0);

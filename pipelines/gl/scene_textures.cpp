@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "pipelines/gl/gpu_geometry.h"
 #include "pipelines/gl/upload.h"
 
 namespace mb::gl {
@@ -28,11 +29,6 @@ GLuint makeSampler(const Sampler& s) {
   glSamplerParameteri(id, GL_TEXTURE_WRAP_S, s.wrapS);
   glSamplerParameteri(id, GL_TEXTURE_WRAP_T, s.wrapT);
   return id;
-}
-
-const Material& defaultMaterial() {
-  static const Material m;  // glTF default: white, metallic 1, roughness 1
-  return m;
 }
 
 // The view-space direction rotated into world space by the camera orientation.
@@ -105,9 +101,10 @@ GLuint SceneTextures::textureFor(int textureIndex, bool srgb) const {
 
 void SceneTextures::bindMaterial(const Program& program, int materialIndex,
                                  uint64_t& counter) const {
+  static const Material kDefault;  // glTF default: white, metallic 1, roughness 1
   const Material& m = (scene_ && materialIndex >= 0 && size_t(materialIndex) < scene_->materials.size())
                           ? scene_->materials[size_t(materialIndex)]
-                          : defaultMaterial();
+                          : kDefault;
   // Binds one texture slot and sets its u_<name>UV: the uv set forward.fs should sample, -1 for
   // none, set + 2 with a KHR_texture_transform, whose matrix then goes to u_<name>UVTransform
   // (only then: a material without transforms sets, and counts, what it did before them).
@@ -143,11 +140,7 @@ void SceneTextures::bindMaterial(const Program& program, int materialIndex,
   uniform1i(program.uniform("u_AlphaMode"), mode, counter);
   uniform1f(program.uniform("u_AlphaCutoff"), m.alphaCutoff, counter);
 
-  if (m.doubleSided) glDisable(GL_CULL_FACE);
-  else {
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-  }
+  (m.doubleSided ? glDisable : glEnable)(GL_CULL_FACE);  // back faces: GL's default glCullFace
   if (m.alphaMode == AlphaMode::Blend) {
     // Straight alpha over the framebuffer; destination alpha stays 1 (opaque image).
     glEnable(GL_BLEND);
@@ -188,24 +181,20 @@ std::vector<DrawItem> buildDrawList(const Scene& scene) {
 }
 
 void ExtraStreams::upload(const Primitive& p, uint64_t& extraBytes, uint64_t& skinBytes) {
-  auto floats = [](GLuint loc, GLint size) {
-    glEnableVertexAttribArray(loc);
-    glVertexAttribPointer(loc, size, GL_FLOAT, GL_FALSE, 0, nullptr);
-  };
   if (!p.uv1.empty()) {
     uv1 = createBuffer(GL_ARRAY_BUFFER, p.uv1, extraBytes);
-    floats(kAttribUv1, 2);
+    pointAttributes({{kAttribUv1, 2}});
   }
   if (!p.colors.empty()) {
     color = createBuffer(GL_ARRAY_BUFFER, p.colors, extraBytes);
-    floats(kAttribColor, 4);
+    pointAttributes({{kAttribColor, 4}});
   }
   if (!p.joints.empty() && p.weights.size() == p.joints.size()) {
     joints = createBuffer(GL_ARRAY_BUFFER, p.joints, skinBytes);
     glEnableVertexAttribArray(kAttribJoints);
     glVertexAttribIPointer(kAttribJoints, 4, GL_UNSIGNED_SHORT, 0, nullptr);
     weights = createBuffer(GL_ARRAY_BUFFER, p.weights, skinBytes);
-    floats(kAttribWeights, 4);
+    pointAttributes({{kAttribWeights, 4}});
   }
 }
 

@@ -12,23 +12,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool readText(const fs::path& p, std::string& out) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  out = ss.str();
-  return true;
-}
-
-std::vector<std::string> splitLines(const std::string& text) {
+// The lines of `in` without their "\n" or "\r\n".
+std::vector<std::string> splitLines(std::istream& in) {
   std::vector<std::string> lines;
-  std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     lines.push_back(line);
   }
   return lines;
+}
+
+// The lines of file `p`; false when it cannot be opened.
+bool readLines(const fs::path& p, std::vector<std::string>& lines) {
+  std::ifstream in(p, std::ios::binary);
+  lines = splitLines(in);
+  return in.is_open();
 }
 
 // The quoted name of an `#include "name"` line, or "" when the line is no include.
@@ -73,8 +71,8 @@ struct Expander {
         out.text += "\n";
         continue;
       }
-      std::string body;
-      if (!readText(found, body)) {
+      std::vector<std::string> body;
+      if (!readLines(found, body)) {
         error = where + ": cannot open #include \"" + target + "\" (looked in " +
                 local.parent_path().string() + " and " + shaderDir() + ")";
         return false;
@@ -82,7 +80,7 @@ struct Expander {
       const size_t included = out.files.size();
       out.files.push_back(name);
       out.text += "#line 1 " + std::to_string(included) + "\n";
-      if (!expand(name, included, splitLines(body), 0)) return false;
+      if (!expand(name, included, body, 0)) return false;
       out.text += "#line " + std::to_string(i + 2) + " " + std::to_string(id) + "\n";
     }
     stack.pop_back();
@@ -105,19 +103,15 @@ std::string shaderDir() {
 Result<ExpandedSource> expandShaderFile(const std::string& path, const Defines& defines) {
   using R = Result<ExpandedSource>;
   fs::path p = fs::path(path).is_absolute() ? fs::path(path) : fs::path(shaderDir()) / path;
-  std::string text;
-  if (!readText(p, text)) return R::fail(p.string() + ": cannot open shader source");
+  std::vector<std::string> lines;
+  if (!readLines(p, lines)) return R::fail(p.string() + ": cannot open shader source");
   std::string file = fs::weakly_canonical(p).string();
-  std::vector<std::string> lines = splitLines(text);
   // Find #version: only blank lines and // comments may precede it.
+  static const std::regex blankOrComment(R"(^[ \t]*(//|$))");
   size_t v = 0;
-  while (v < lines.size() && !isVersionLine(lines[v])) {
-    std::string t = lines[v];
-    t.erase(0, t.find_first_not_of(" \t"));
-    if (!t.empty() && t.rfind("//", 0) != 0)
+  for (; v < lines.size() && !isVersionLine(lines[v]); ++v)
+    if (!std::regex_search(lines[v], blankOrComment))
       return R::fail(file + ":" + std::to_string(v + 1) + ": expected #version before any code");
-    ++v;
-  }
   if (v == lines.size()) return R::fail(file + ": no #version line");
 
   Expander e;
@@ -135,7 +129,8 @@ std::string mapLog(const std::string& log, const std::vector<std::string>& files
   static const std::regex mesa(R"(^(\d+):(\d+)\((\d+)\):\s*(.*)$)");
   static const std::regex nvidia(R"(^(\d+)\((\d+)\)\s*:\s*(.*)$)");
   std::string out;
-  for (const std::string& line : splitLines(log)) {
+  std::istringstream in(log);
+  for (const std::string& line : splitLines(in)) {
     std::smatch m;
     std::string mapped = line;
     if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia)) {
