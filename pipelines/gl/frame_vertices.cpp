@@ -4,10 +4,8 @@
 
 namespace mb::gl {
 
-bool uploadsTangent(const Primitive& p) { return !p.tangents.empty(); }
-
 std::vector<float> interleaveVertices(const Primitive& p) {
-  const bool tangent = uploadsTangent(p);
+  const bool tangent = !p.tangents.empty();
   return interleave<float>(p, size_t(tangent ? kFloatsWithTangent : kFloatsWithoutTangent), [&](auto& out, size_t v) {
     const glm::vec3 n = v < p.normals.size() ? p.normals[v] : glm::vec3(0, 0, 1);
     const glm::vec3& x = p.positions[v];
@@ -37,7 +35,7 @@ VertexFrame vertexFrame(const Primitive& p, size_t v) {
 }
 
 VertexFormat floatFrameFormat(const Primitive& p) {
-  const bool tangent = uploadsTangent(p);
+  const bool tangent = !p.tangents.empty();
   std::vector<PackedAttribute> attributes{{0, 3}, {1, 3}};
   if (tangent) attributes.push_back({2, 4});
   attributes.push_back({3, 2});

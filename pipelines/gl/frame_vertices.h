@@ -1,8 +1,11 @@
-// The float-frame vertex of the matrix forms (`matrix` and `affine`), per
-// primitive as the glTF-Sample-Viewer feeds its matrix shaders: position, normal, [tangent (xyz + handedness w),] TEXCOORD_0 interleaved.
-// The Sample Viewer has a tangent attribute only where the file authors TANGENT or the
-// material is normal-mapped (then it generates one); elsewhere its shader has no tangent
-// input. So: 12 floats (48 bytes) with a tangent, 8 floats (32 bytes) without.
+// The float-frame vertex of the matrix forms (`matrix` and `affine`), per primitive as the
+// glTF-Sample-Viewer feeds its matrix shaders: position, normal, [tangent (xyz + handedness w),]
+// TEXCOORD_0 interleaved. The Sample Viewer has a tangent attribute only where the file authors
+// TANGENT or the material is normal-mapped (then it generates one); elsewhere its shader has no
+// tangent input. So: 12 floats (48 bytes) with a tangent, 8 floats (32 bytes) without. The loader
+// fills Primitive::tangents exactly when TANGENT was authored or the material has a normal texture
+// (generated then), and built-in scenes set tangents where a file would author them, so the rule
+// is "tangents present".
 #pragma once
 #include <vector>
 
@@ -14,12 +17,7 @@ namespace mb::gl {
 constexpr int kFloatsWithTangent = 12;    // strides; stats are still measured from upload sizes
 constexpr int kFloatsWithoutTangent = 8;
 
-// The Sample Viewer's rule. The loader fills Primitive::tangents exactly when TANGENT was
-// authored or the material has a normal texture (generated then), and built-in scenes set
-// tangents where a file would author them, so this is "tangents present".
-bool uploadsTangent(const Primitive& p);
-
-// Interleaves `p`'s streams: position, normal, tangent (only when uploadsTangent(p)), uv0.
+// Interleaves `p`'s streams: position, normal, tangent (only when `p` has tangents), uv0.
 // Absent streams are filled so every vertex has the same layout: missing uv0 becomes (0, 0),
 // a missing normal (0, 0, 1).
 std::vector<float> interleaveVertices(const Primitive& p);

@@ -93,8 +93,31 @@ private:
   void instancedUniforms(const gl::Program& program, const gl::DrawItem& d) {
     if (format_ == FrameFormat::Compact) setDequant(program, cubes_, d);
   }
-  bool drawUniforms(const gl::Program& program, const gl::DrawItem& d, GLuint palette, bool patch, bool morph,
-                    gl::TransformCounters& c);
+
+  // Rigid draws: u_ModelMatrix and u_NormalMatrix (matrix_c: the mesh's cube folded into the
+  // model unless the draw morphs); skinned draws: the palette. u_Mirror on every draw, counted
+  // with the transform (its per-draw float, as the motor's u_Scale) on rigid ones.
+  bool drawUniforms(const gl::Program& program, const gl::Draw& m, GLuint palette, gl::TransformCounters& c) {
+    const gl::DrawItem& d = m.d;
+    const bool compact = format_ == FrameFormat::Compact;
+    glm::mat4x3 model = pose_.world[size_t(d.node)];
+    const float sign = pose_.mirrors[size_t(d.node)];
+    if (compact && !m.patch && !palette && !m.morph) {
+      const compact::PositionCube& cube = cubes_[size_t(d.mesh)][size_t(d.primitive)];
+      model = model * glm::scale(glm::translate(glm::mat4(1.0f), cube.center), glm::vec3(cube.extent));
+    }
+    if (compact && (palette || m.morph)) setDequant(program, cubes_, d);
+    if (palette) {
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
+    } else {
+      const glm::mat3& normal = pose_.normals[size_t(d.node)];
+      gl::uniformMatrix4x3(program.uniform("u_ModelMatrix"), 1, glm::value_ptr(model), c.transformBytes);
+      gl::uniformMatrix3(program.uniform("u_NormalMatrix"), 1, glm::value_ptr(normal), c.transformBytes);
+      ++c.transforms;
+    }
+    gl::uniform1f(program.uniform("u_Mirror"), sign, palette ? stats_.uniformBytesPerFrame : c.scaleBytes);
+    return sign < 0.0f;
+  }
 
   std::string name_;
   FrameFormat format_;
@@ -115,31 +138,6 @@ Status AffinePipeline::convert(const Scene& scene) {
     geometry_.upload(scene, gl::floatFrameFormat, stats_);  // as matrix: tangent only where needed
   }
   return {};
-}
-
-// Rigid draws: u_ModelMatrix and u_NormalMatrix (matrix_c: the mesh's cube folded into the
-// model unless the draw morphs); skinned draws: the palette. u_Mirror on every draw, counted
-// with the transform (its per-draw float, as the motor's u_Scale) on rigid ones.
-bool AffinePipeline::drawUniforms(const gl::Program& program, const gl::DrawItem& d, GLuint palette, bool patch,
-                                  bool morph, gl::TransformCounters& c) {
-  const bool compact = format_ == FrameFormat::Compact;
-  glm::mat4x3 model = pose_.world[size_t(d.node)];
-  const float sign = pose_.mirrors[size_t(d.node)];
-  if (compact && !patch && !palette && !morph) {
-    const compact::PositionCube& cube = cubes_[size_t(d.mesh)][size_t(d.primitive)];
-    model = model * glm::scale(glm::translate(glm::mat4(1.0f), cube.center), glm::vec3(cube.extent));
-  }
-  if (compact && (palette || morph)) setDequant(program, cubes_, d);
-  if (palette) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
-  } else {
-    const glm::mat3& normal = pose_.normals[size_t(d.node)];
-    gl::uniformMatrix4x3(program.uniform("u_ModelMatrix"), 1, glm::value_ptr(model), c.transformBytes);
-    gl::uniformMatrix3(program.uniform("u_NormalMatrix"), 1, glm::value_ptr(normal), c.transformBytes);
-    ++c.transforms;
-  }
-  gl::uniform1f(program.uniform("u_Mirror"), sign, palette ? stats_.uniformBytesPerFrame : c.scaleBytes);
-  return sign < 0.0f;
 }
 
 }  // namespace

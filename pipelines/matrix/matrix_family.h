@@ -8,7 +8,7 @@
 //   pose(state, clock), posed(clock)                       its CPU update
 //   palettes(), uploadPalette(i) -> joints                 its joint palettes
 //   instanceWorld(node), writeInstance(model, out) -> key  its per-instance data
-//   instancedUniforms(program, d), drawUniforms(program, d, palette, patch, morph, counters)
+//   instancedUniforms(program, d), drawUniforms(program, draw, palette, counters)
 //                                                          its per-draw uniforms (-> mirrored)
 // Every draw's program is picked from the grid by draw kind (rigid, skinned, instanced), frame
 // variant (GpuPrimitive::variant 1: MB_NO_TANGENT) and whether the draw morphs (MB_MORPH).
@@ -106,7 +106,7 @@ private:
     const GLuint palette = m.palette < 0 ? 0 : palettes_[size_t(m.palette)];
     CachedProgram& p = m.patch ? *programs_.patch[0] : tableProgram(m, palette ? kSkinned : kRigid);
     const Program& program = useProgram(f, m, p);
-    const bool mirrored = self().drawUniforms(program, m.d, palette, m.patch, m.morph, f);
+    const bool mirrored = self().drawUniforms(program, m, palette, f);
     bindMaterial(program, m.prim);
     setWinding(mirrored);
     drawCounted(m);
