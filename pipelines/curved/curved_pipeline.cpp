@@ -50,7 +50,6 @@ private:
   const Scene* scene_ = nullptr;
   std::unique_ptr<gl::Program> program_;
   GLuint vao_ = 0, vertexBuffer_ = 0, instanceBuffer_ = 0;
-  GLsizei vertexCount_ = 0, instanceCount_ = 0;
   // Posed by update(): the camera and the lights in view space, each side by its own math.
   glm::mat4 view_{1.0f};
   std::array<float, 8> viewMotor_{};
@@ -104,11 +103,9 @@ Status CurvedPipeline::prepare(const Scene& scene) {
   columns.resize(motor_ ? 2 : 4);
   gl::pointAttributes(columns, true);
   glBindVertexArray(0);
-  vertexCount_ = GLsizei(c.positions.size());
-  instanceCount_ = GLsizei(c.instances.size());
-  stats_.vertices = uint64_t(vertexCount_);
+  stats_.vertices = c.positions.size();
   stats_.floatsPerVertex = gl::floatsPer(stats_.vertexBytes, stats_.vertices);
-  stats_.floatsPerTransform = gl::floatsPer(stats_.extraVertexBytes, uint64_t(instanceCount_));
+  stats_.floatsPerTransform = gl::floatsPer(stats_.extraVertexBytes, c.instances.size());
   scene_ = &scene;
   update(AnimState{});
   GLenum err = glGetError();
@@ -152,7 +149,7 @@ void CurvedPipeline::render(const View& view) {
   gl::uniform4fv(program_->uniform("u_Lights"), 3, glm::value_ptr(lights_[0]), u);
   gl::uniform1f(program_->uniform("u_LightStrength"), scene_->curved.lightStrength, u);
   glBindVertexArray(vao_);
-  glDrawArraysInstanced(GL_TRIANGLES, 0, vertexCount_, instanceCount_);
+  glDrawArraysInstanced(GL_TRIANGLES, 0, GLsizei(stats_.vertices), GLsizei(scene_->curved.instances.size()));
   stats_.draws = 1;
   gl::endDraws();
 }

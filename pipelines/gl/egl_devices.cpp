@@ -30,13 +30,11 @@ std::vector<EglDevice> listEglDevices(std::string* why) {
   std::vector<EGLDeviceEXT> handles(size_t(count), nullptr);
   if (!queryDevices(count, handles.data(), &count)) return fail("eglQueryDevicesEXT failed");
   for (int i = 0; i < count; ++i) {
-    EglDevice d;
-    d.index = i;
-    d.handle = handles[size_t(i)];
-    const char* exts = queryString(handles[size_t(i)], EGL_EXTENSIONS);
+    EglDevice d{.index = i, .handle = handles[size_t(i)]};
+    const char* exts = queryString(d.handle, EGL_EXTENSIONS);
     d.software = eglExtensionListed(exts, "EGL_MESA_device_software");
     auto text = [&](EGLint what) {
-      const char* s = queryString(handles[size_t(i)], what);
+      const char* s = queryString(d.handle, what);
       return std::string(s ? s : "");
     };
     // The render node where the driver names one (needs no DRM master), else the card node.

@@ -5,12 +5,7 @@
 namespace mb::gl {
 
 std::string GpuChoice::text() const {
-  switch (kind) {
-    case Kind::Auto: return "auto";
-    case Kind::Llvmpipe: return "llvmpipe";
-    case Kind::Device: return std::to_string(index);
-  }
-  return "auto";
+  return kind == Kind::Device ? std::to_string(index) : kind == Kind::Llvmpipe ? "llvmpipe" : "auto";
 }
 
 Result<GpuChoice> parseGpuChoice(const std::string& text, const std::string& origin) {

@@ -55,7 +55,6 @@ Captured capture(const mb::Scene& scene, const std::string& vs, bool motor) {
     glUniform4fv(glGetUniformLocation(program, "u_World"), 2, unit);
     glUniform4fv(glGetUniformLocation(program, "u_Camera"), 2, unit);
     glUniform1f(glGetUniformLocation(program, "u_Scale"), 1.0f);
-    glUniform4f(glGetUniformLocation(program, "u_ProjectionK"), -2.4f, 2.4f, -0.2f, -1.0f);  // unread here
   } else {
     for (const char* u : {"u_ModelMatrix", "u_NormalMatrix", "u_ViewProjectionMatrix"})
       glUniformMatrix4fv(glGetUniformLocation(program, u), 1, GL_FALSE, identity);
