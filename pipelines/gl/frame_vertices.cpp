@@ -6,7 +6,7 @@ namespace mb::gl {
 
 std::vector<float> interleaveVertices(const Primitive& p) {
   const bool tangent = !p.tangents.empty();
-  return interleave<float>(p, size_t(tangent ? kFloatsWithTangent : kFloatsWithoutTangent), [&](auto& out, size_t v) {
+  return interleave<float>(p, tangent ? 12 : 8, [&](auto& out, size_t v) {
     const glm::vec3 n = v < p.normals.size() ? p.normals[v] : glm::vec3(0, 0, 1);
     const glm::vec3& x = p.positions[v];
     out.insert(out.end(), {x.x, x.y, x.z, n.x, n.y, n.z});

@@ -14,9 +14,6 @@
 
 namespace mb::gl {
 
-constexpr int kFloatsWithTangent = 12;    // strides; stats are still measured from upload sizes
-constexpr int kFloatsWithoutTangent = 8;
-
 // Interleaves `p`'s streams: position, normal, tangent (only when `p` has tangents), uv0.
 // Absent streams are filled so every vertex has the same layout: missing uv0 becomes (0, 0),
 // a missing normal (0, 0, 1).

@@ -45,7 +45,7 @@ struct Draw {
   const Primitive& prim;
   bool patch = false;  // Bezier patches: drawn rigidly by their node (never skinned)
   bool morph = false;  // its morph deltas bound (counted per draw call)
-  int palette = -1;    // the index of its node's joint palette (and of its buffer), -1: none
+  int palette = -1;    // its node's joint palette (its buffer bound at binding 0), -1: none
 };
 
 // How a draw reaches world space: the first index of a ProgramGrid.
@@ -134,7 +134,8 @@ protected:
   // per draw): self.drawInstanceGroups(frame, draw, groups) for an instanced node,
   // self.drawNode(frame, draw) for the others. `frame`, the pipeline's per-frame context, counts
   // the transforms. Draw::palette: the palette in `palettes` of the item's node (a mesh shared by
-  // a skinned and an unskinned node is drawn rigidly on the latter; patches are never skinned).
+  // a skinned and an unskinned node is drawn rigidly on the latter; patches are never skinned),
+  // its buffer bound at storage binding 0, where every skinned program reads its joints.
   template <class Self, class Frame, class Palette>
   void drawList(Self& self, Frame& frame, const SceneGeometry& geometry, const MorphBuffers& morph,
                 const std::vector<Palette>& palettes) {
@@ -146,6 +147,7 @@ protected:
       int palette = -1;
       for (size_t i = 0; !patch && g.skinned && i < palettes.size(); ++i)
         if (palettes[i].node == d.node) palette = int(i);
+      if (palette >= 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palettes_[size_t(palette)]);
       const Draw draw{d, g, primitiveOf(d), patch, !patch && morph.active(d), palette};
       const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
       if (groups.empty())

@@ -95,27 +95,25 @@ private:
   }
 
   // Rigid draws: u_ModelMatrix and u_NormalMatrix (matrix_c: the mesh's cube folded into the
-  // model unless the draw morphs); skinned draws: the palette. u_Mirror on every draw, counted
-  // with the transform (its per-draw float, as the motor's u_Scale) on rigid ones.
-  bool drawUniforms(const gl::Program& program, const gl::Draw& m, GLuint palette, gl::TransformCounters& c) {
+  // model unless the draw morphs); skinned draws: the palette (drawList() bound it). u_Mirror on
+  // every draw, counted with the transform (its per-draw float, as the motor's u_Scale) on rigid ones.
+  bool drawUniforms(const gl::Program& program, const gl::Draw& m, gl::TransformCounters& c) {
     const gl::DrawItem& d = m.d;
-    const bool compact = format_ == FrameFormat::Compact;
+    const bool compact = format_ == FrameFormat::Compact, skinned = m.palette >= 0;
     glm::mat4x3 model = pose_.world[size_t(d.node)];
     const float sign = pose_.mirrors[size_t(d.node)];
-    if (compact && !m.patch && !palette && !m.morph) {
+    if (compact && !m.patch && !skinned && !m.morph) {
       const compact::PositionCube& cube = cubes_[size_t(d.mesh)][size_t(d.primitive)];
       model = model * glm::scale(glm::translate(glm::mat4(1.0f), cube.center), glm::vec3(cube.extent));
     }
-    if (compact && (palette || m.morph)) setDequant(program, cubes_, d);
-    if (palette) {
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
-    } else {
+    if (compact && (skinned || m.morph)) setDequant(program, cubes_, d);
+    if (!skinned) {
       const glm::mat3& normal = pose_.normals[size_t(d.node)];
       gl::uniformMatrix4x3(program.uniform("u_ModelMatrix"), 1, glm::value_ptr(model), c.transformBytes);
       gl::uniformMatrix3(program.uniform("u_NormalMatrix"), 1, glm::value_ptr(normal), c.transformBytes);
       ++c.transforms;
     }
-    gl::uniform1f(program.uniform("u_Mirror"), sign, palette ? stats_.uniformBytesPerFrame : c.scaleBytes);
+    gl::uniform1f(program.uniform("u_Mirror"), sign, skinned ? stats_.uniformBytesPerFrame : c.scaleBytes);
     return sign < 0.0f;
   }
 

@@ -8,7 +8,7 @@
 //   pose(state, clock), posed(clock)                       its CPU update
 //   palettes(), uploadPalette(i) -> joints                 its joint palettes
 //   instanceWorld(node), writeInstance(model, out) -> key  its per-instance data
-//   instancedUniforms(program, d), drawUniforms(program, draw, palette, counters)
+//   instancedUniforms(program, d), drawUniforms(program, draw, counters)
 //                                                          its per-draw uniforms (-> mirrored)
 // Every draw's program is picked from the grid by draw kind (rigid, skinned, instanced), frame
 // variant (GpuPrimitive::variant 1: MB_NO_TANGENT) and whether the draw morphs (MB_MORPH).
@@ -95,7 +95,7 @@ private:
   // An instanced node: its program, uniforms, morph deltas and material once, then one instanced
   // draw per group (key 1: mirrored).
   void drawInstanceGroups(const MatrixFrame& f, const Draw& m, const std::vector<InstanceGroup>& groups) {
-    const Program& program = useProgram(f, m, tableProgram(m, kInstanced));
+    const Program& program = useProgram(f, m, programs_.of(m, kInstanced, m.g.variant));
     self().instancedUniforms(program, m.d);
     bindMaterial(program, m.prim);
     for (const InstanceGroup& group : groups) drawGroup(m.g, group, Self::kInstanceLayout, group.key == 1);
@@ -103,18 +103,12 @@ private:
 
   // A draw by its node's transform or its skin's palette, or a Bezier patch (kPatchShader).
   void drawNode(MatrixFrame& f, const Draw& m) {
-    const GLuint palette = m.palette < 0 ? 0 : palettes_[size_t(m.palette)];
-    CachedProgram& p = m.patch ? *programs_.patch[0] : tableProgram(m, palette ? kSkinned : kRigid);
+    CachedProgram& p = m.patch ? *programs_.patch[0] : programs_.of(m, m.palette < 0 ? kRigid : kSkinned, m.g.variant);
     const Program& program = useProgram(f, m, p);
-    const bool mirrored = self().drawUniforms(program, m, palette, f);
+    const bool mirrored = self().drawUniforms(program, m, f);
     bindMaterial(program, m.prim);
     setWinding(mirrored);
     drawCounted(m);
-  }
-
-  // The program of `kind` for the draw's frame variant.
-  CachedProgram& tableProgram(const Draw& m, DrawKind kind) const {
-    return programs_.of(m, kind, m.g.variant == 1 ? 1 : 0);
   }
 
   // `p` made current for `m`, the frame's view-projection and view uniforms set (see use()).

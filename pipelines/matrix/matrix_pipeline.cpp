@@ -70,8 +70,7 @@ private:
   }
 
   // u_ModelMatrix and u_NormalMatrix on every draw, skinned ones included.
-  bool drawUniforms(const gl::Program& program, const gl::Draw& m, GLuint palette, gl::TransformCounters& c) const {
-    if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palette);
+  bool drawUniforms(const gl::Program& program, const gl::Draw& m, gl::TransformCounters& c) const {
     const glm::mat4& model = pose_.world[size_t(m.d.node)];
     const glm::mat4& normal = pose_.normals[size_t(m.d.node)];
     gl::uniformMatrix4(program.uniform("u_ModelMatrix"), 1, glm::value_ptr(model), c.transformBytes);

@@ -187,7 +187,6 @@ private:
     }
     const motor::JointPalette* palette = m.palette < 0 ? nullptr : &pose_.palettes[size_t(m.palette)];
     const gl::DrawKind kind = palette ? gl::kSkinned : gl::kRigid;
-    if (palette) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palettes_[size_t(m.palette)]);
     if (palette ? palette->fallback : (!m.patch && rig_.general[size_t(m.d.node)]))
       return drawLinear(f, m, palette);
     const DrawTransform t = drawTransform(m, palette);
@@ -286,7 +285,7 @@ private:
     const gl::DrawItem& d = m.d;
     const gl::Program& program = useProgram(f, m, f.programs.of(m, palette ? gl::kSkinned : gl::kRigid, kLinear));
     bool mirrored = false;
-    if (palette) {  // (drawNode() bound its motors)
+    if (palette) {  // (drawList() bound its motors)
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, linearBuffers_[size_t(m.palette)]);
       // Winding as the matrix pipeline's skinned draw: the sign of the mesh node's world.
       const motor::ScaledMotor& node = pose_.world[size_t(d.node)];
