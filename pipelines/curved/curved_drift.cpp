@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "pipelines/curved/curved_motor.h"
 #include "pipelines/scene/curved_space.h"
@@ -9,17 +10,18 @@
 
 namespace mb::curved {
 
-template <class S> void gramSchmidt(int kappa, S (&m)[4][4]) {
+template <class Mat> void gramSchmidt(int kappa, Mat& m) {
+  using S = std::remove_cvref_t<decltype(m[0][0])>;
   // kappa = +-1 enters as a sign (free), as on the motor side.
-  auto form = [&](const S* a, const S* b) {
+  auto form = [&](const auto& a, const auto& b) {
     const S xyz = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     return kappa > 0 ? xyz + a[3] * b[3] : xyz - a[3] * b[3];
   };
   const int order[4] = {3, 0, 1, 2};  // the origin's image first (timelike in H3)
   for (int n = 0; n < 4; ++n) {
-    S* c = m[order[n]];
+    auto& c = m[order[n]];
     for (int p = 0; p < n; ++p) {  // remove the parts along the columns already done
-      const S* q = m[order[p]];
+      const auto& q = m[order[p]];
       const S fq = form(c, q);     // / form(q, q) = +-1: kappa for the w column, 1 otherwise
       const S f = (p == 0 && kappa < 0) ? -fq : fq;
       for (int r = 0; r < 4; ++r) c[r] = c[r] - f * q[r];
@@ -30,9 +32,9 @@ template <class S> void gramSchmidt(int kappa, S (&m)[4][4]) {
     for (int r = 0; r < 4; ++r) c[r] = c[r] * inv;
   }
 }
-template void gramSchmidt<float>(int, float (&)[4][4]);
-template void gramSchmidt<double>(int, double (&)[4][4]);
-template void gramSchmidt<Counted>(int, Counted (&)[4][4]);
+template void gramSchmidt(int, glm::mat4&);
+template void gramSchmidt(int, double (&)[4][4]);
+template void gramSchmidt(int, Counted (&)[4][4]);
 
 double matrixDistance(int kappa, const glm::mat4& m) {
   double worst = 0;
@@ -69,8 +71,7 @@ template <int K> DriftResult run(int64_t steps) {
   // circle of geodesic curvature 2 (closed in H3 too, where curvature <= 1 runs off to
   // infinity), radius atan(1/2) in S3, atanh(1/2) in H3.
   const glm::dmat4 stepD = elementaryMatrix(K, 0, 2, 2e-3) * elementaryMatrix(K, 2, 3, -1e-3);
-  const Motor8 stepM8 = compose(K, elementaryMotor(K, 0, 2, 2e-3), elementaryMotor(K, 2, 3, -1e-3));
-  const Motor8 stepU = shaderMotor(K, stepM8);
+  const Motor8 stepU = shaderMotor(K, compose(K, elementaryMotor(K, 0, 2, 2e-3), elementaryMotor(K, 2, 3, -1e-3)));
   using M = typename PgaK<float, K>::mat2x4;
   using V4 = typename PgaK<float, K>::vec4;
   auto& pk = pgaK<float, K>;
@@ -84,14 +85,6 @@ template <int K> DriftResult run(int64_t steps) {
   auto renormMotor = [](auto& pga, const auto& a) {
     if constexpr (K > 0) return pga.normalize_pair(a); else return pga.normalize_m_k(a);
   };
-  auto renormMatrix = [&](glm::mat4& m) {
-    float a[4][4];
-    for (int c = 0; c < 4; ++c)
-      for (int k = 0; k < 4; ++k) a[c][k] = m[c][k];
-    gramSchmidt(K, a);
-    for (int c = 0; c < 4; ++c)
-      for (int k = 0; k < 4; ++k) m[c][k] = a[c][k];
-  };
   const M identity(V4(1.0f, 0.0f, 0.0f, 0.0f), V4(K > 0 ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f));
   for (int renorm = 0; renorm < 2; ++renorm) {
     glm::mat4 v(1.0f);
@@ -100,7 +93,7 @@ template <int K> DriftResult run(int64_t steps) {
       v = stepMatrix * v;
       mv = composeMotor(pk, stepMotor, mv);
       if (renorm) {
-        renormMatrix(v);
+        gramSchmidt(K, v);
         mv = renormMotor(pk, mv);
       }
     }

@@ -30,8 +30,9 @@ double matrixDistance(int kappa, const glm::mat4& m);
 double motorDistance(int kappa, const float (&m)[8]);  // H3 motor or S3 pair [L, R]
 
 // Gram-Schmidt of the columns in the space's form (H3: the timelike column w first), the
-// matrix side's cheapest renormalisation; templated so that it can be counted.
-template <class S> void gramSchmidt(int kappa, S (&m)[4][4]);
+// matrix side's cheapest renormalisation: of a glm::mat4, or of S[4][4] (double, or mb::Counted
+// to count it).
+template <class Mat> void gramSchmidt(int kappa, Mat& m);
 
 // Runs `steps` camera steps (a turn of 2e-3 and a move of 1e-3 per step) for kappa = +-1.
 DriftResult measureDrift(int kappa, int64_t steps);
