@@ -39,12 +39,10 @@ void animatedLocalPose(const Rig& rig, const std::vector<TRS>& pose, int anim, s
 
 bool nodeIndexOk(const Scene& scene, int n) { return n >= 0 && size_t(n) < scene.nodes.size(); }
 
-// Animation blending by blending motors: per node shortest-arc blend + normalize_m, scales
-// lerped (scaled_motor.h blend). w = weight of b; `out` may be `a`.
-void blendLocal(const std::vector<ScaledMotor>& a, const std::vector<ScaledMotor>& b, float w,
-                std::vector<ScaledMotor>& out) {
-  if (&out != &a) out = a;
-  for (size_t n = 0; n < out.size() && n < b.size(); ++n) out[n] = blend(out[n], b[n], w);
+// Animation blending by blending motors, in place in `a`: per node shortest-arc blend +
+// normalize_m, scales lerped (scaled_motor.h blend). w = weight of b.
+void blendLocal(std::vector<ScaledMotor>& a, const std::vector<ScaledMotor>& b, float w) {
+  for (size_t n = 0; n < a.size() && n < b.size(); ++n) a[n] = blend(a[n], b[n], w);
 }
 
 }  // namespace
@@ -127,7 +125,7 @@ std::vector<ScaledMotor> localForState(const Scene& scene, const Rig& rig, const
                                        RigCounts* counts) {
   std::vector<ScaledMotor> a = localPose(rig, sampleAnimation(scene, state.anim, state.time), counts);
   if (state.anim2 < 0) return a;
-  blendLocal(a, localPose(rig, sampleAnimation(scene, state.anim2, state.time2)), state.blend, a);
+  blendLocal(a, localPose(rig, sampleAnimation(scene, state.anim2, state.time2)), state.blend);
   return a;
 }
 
@@ -215,7 +213,7 @@ void poseScene(const Scene& scene, const Rig& rig, const AnimState& state, bool 
     clock.lap(&UpdatePhases::samplingMs);
     localPose(rig, work.second, work.localSecond);
     clock.lap(&UpdatePhases::conversionMs);
-    blendLocal(work.local, work.localSecond, state.blend, work.local);
+    blendLocal(work.local, work.localSecond, state.blend);
     clock.lap(&UpdatePhases::blendingMs);
   }
   worldPose(rig.order, work.local, work.world);
