@@ -148,7 +148,8 @@ protected:
       for (size_t i = 0; !patch && g.skinned && i < palettes.size(); ++i)
         if (palettes[i].node == d.node) palette = int(i);
       if (palette >= 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, palettes_[size_t(palette)]);
-      const Draw draw{d, g, primitiveOf(d), patch, !patch && morph.active(d), palette};
+      const Primitive& prim = scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
+      const Draw draw{d, g, prim, patch, !patch && morph.active(d), palette};
       const auto& groups = instances_.groups(d.node);  // instanceable nodes only: no patch, no skin
       if (groups.empty())
         self.drawNode(frame, draw);
@@ -182,9 +183,6 @@ protected:
   void setDequant(const Program& program, const Cubes& cubes, const DrawItem& d) {
     const glm::vec4 q = cubes[size_t(d.mesh)][size_t(d.primitive)].dequant();
     uniform4f(program.uniform("u_Dequant"), &q[0], stats_.uniformBytesPerFrame);
-  }
-  const Primitive& primitiveOf(const DrawItem& d) const {
-    return scene_->meshes[size_t(d.mesh)].primitives[size_t(d.primitive)];
   }
   // The shared GL objects released (a pipeline's release() calls it after its own).
   void releaseShared();
