@@ -5,7 +5,6 @@
 #include "pipelines/compact/compact_encoding.h"
 #include "pipelines/gl/frame_vertices.h"
 #include "pipelines/motor/motor_vertices.h"
-#include "pipelines/motor/rotor_signs.h"
 
 namespace mb::motor {
 
@@ -22,20 +21,16 @@ gl::PackedStream interleaveCompact(const Primitive& p) {
 }
 
 SignedCompactStream interleaveCompactSigned(const Primitive& p) {
-  SignedCompactStream out;
+  int zeroScalarFrames = 0;
   std::vector<glm::vec4> rotors(p.positions.size());
-  for (size_t v = 0; v < rotors.size(); ++v) rotors[v] = vertexRotor(p, v, out.zeroScalarFrames);
-  SignedRotors s = signRotorsForInterpolation(p, rotors);
+  for (size_t v = 0; v < rotors.size(); ++v) rotors[v] = vertexRotor(p, v, zeroScalarFrames);
+  SignedCompactStream out{signRotorsForInterpolation(p, rotors), {}, zeroScalarFrames};
   const compact::PositionCube cube = compact::positionCube(p.positions);
-  for (size_t v = 0; v < s.primitive.positions.size(); ++v) {
-    const float handedness = std::signbit(rotors[s.source[v]].x) ? -1.0f : 1.0f;
-    compact::appendVertex(out.bytes, s.primitive.positions[v], cube, compact::encodeSignedRotorFrame(s.rotors[v]),
-                          gl::vertexUv(p, s.source[v]), handedness);
+  for (size_t v = 0; v < out.primitive.positions.size(); ++v) {
+    const float handedness = std::signbit(rotors[out.source[v]].x) ? -1.0f : 1.0f;
+    compact::appendVertex(out.bytes, out.primitive.positions[v], cube, compact::encodeSignedRotorFrame(out.rotors[v]),
+                          gl::vertexUv(p, out.source[v]), handedness);
   }
-  out.primitive = std::move(s.primitive);
-  out.splitVertices = s.splitVertices;
-  out.unresolvedTriangles = s.unresolvedTriangles;
-  out.interpolableIndices = s.interpolableIndices;
   return out;
 }
 

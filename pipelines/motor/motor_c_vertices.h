@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "pipelines/gl/packed_vertices.h"
+#include "pipelines/motor/rotor_signs.h"
 #include "pipelines/scene/scene.h"
 
 namespace mb::motor {
@@ -18,11 +19,9 @@ gl::PackedStream interleaveCompact(const Primitive& p);
 // triangle for interpolation (signRotorsForInterpolation, which may split vertices: the
 // primitive to upload comes with its bytes), the frame word's extra bit negating the rotor
 // and the handedness in the position's w.
-struct SignedCompactStream {
-  Primitive primitive;         // `p` with its split vertices
+struct SignedCompactStream : SignedRotors {
   std::vector<uint8_t> bytes;  // 16 bytes per vertex of `primitive`
-  int zeroScalarFrames = 0, splitVertices = 0, unresolvedTriangles = 0;
-  size_t interpolableIndices = 0;  // SignedRotors::interpolableIndices
+  int zeroScalarFrames = 0;
 };
 SignedCompactStream interleaveCompactSigned(const Primitive& p);
 
