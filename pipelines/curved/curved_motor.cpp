@@ -33,13 +33,13 @@ template <int K> Motor8 translatorK(double dist, const glm::dvec3& u) {
   return fromShim<K>(pgaK<double, K>.translator_k(dist, typename P<K>::vec3(u.x, u.y, u.z)));
 }
 
+Motor8 reverse(const Motor8& a) { return {a[0], -a[1], -a[2], -a[3], -a[4], -a[5], -a[6], a[7]}; }
+
 }  // namespace
 
 Motor8 compose(int kappa, const Motor8& a, const Motor8& b) {
   return kappa > 0 ? composeK<1>(a, b) : composeK<-1>(a, b);
 }
-
-Motor8 reverse(const Motor8& a) { return {a[0], -a[1], -a[2], -a[3], -a[4], -a[5], -a[6], a[7]}; }
 
 glm::dvec4 sandwich(int kappa, const Motor8& m, const glm::dvec4& p) {
   return kappa > 0 ? sandwichK<1>(m, p) : sandwichK<-1>(m, p);

@@ -16,9 +16,8 @@ using Motor8 = std::array<double, 8>;  // [s, e23, e31, e12, e01, e02, e03, e012
 // along e_i for j = 3. kappa = +1 or -1.
 Motor8 elementaryMotor(int kappa, int i, int j, double angle);
 
-// a b (b applied first), ~a, and the 4x4 matrix of a unit motor (its sandwich of the basis).
+// a b (b applied first), and the 4x4 matrix of a unit motor (its sandwich of the basis).
 Motor8 compose(int kappa, const Motor8& a, const Motor8& b);
-Motor8 reverse(const Motor8& a);
 glm::dmat4 matrixOfMotor(int kappa, const Motor8& m);
 
 // The motor of an orientation-preserving isometry `m` (O(4) with det +1 for S3; O(3,1)

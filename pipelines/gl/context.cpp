@@ -74,8 +74,7 @@ std::string startPlatform(Context::Impl& s, const char* extension, EGLenum platf
   if (!getPlatformDisplay) return "eglGetPlatformDisplayEXT not available";
   s.display = getPlatformDisplay(platform, native, nullptr);
   if (s.display == EGL_NO_DISPLAY) return eglErrorText("eglGetPlatformDisplayEXT(" + name + ")");
-  EGLint major = 0, minor = 0;
-  if (!eglInitialize(s.display, &major, &minor)) return eglErrorText("eglInitialize");
+  if (!eglInitialize(s.display, nullptr, nullptr)) return eglErrorText("eglInitialize");  // version not needed
   const char* exts = eglQueryString(s.display, EGL_EXTENSIONS);
   if (!eglExtensionListed(exts, "EGL_KHR_surfaceless_context"))
     return "EGL_KHR_surfaceless_context not available";

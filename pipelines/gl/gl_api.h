@@ -10,12 +10,10 @@
 
 #include <string>
 
-// Keep <GL/gl.h> / <GL/glext.h> out: their prototypes would clash with the pointers below.
+// Keep <GL/gl.h> out: its prototypes would clash with the pointers below. (<GL/glext.h> declares
+// none unless GL_GLEXT_PROTOTYPES is defined.)
 #ifndef __gl_h_
 #define __gl_h_
-#endif
-#ifndef __glext_h_
-#define __glext_h_
 #endif
 
 namespace mb::glapi {

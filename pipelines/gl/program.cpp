@@ -50,22 +50,20 @@ Result<std::unique_ptr<Program>> Program::fromFiles(const std::string& vsPath,
   Defines defines = ownDefines;
   defines.insert(defines.end(), globalDefines().begin(), globalDefines().end());
   std::string error;
-  GLuint vs = compile(GL_VERTEX_SHADER, vsPath, defines, error);
-  if (!vs) return R::fail(error);
-  GLuint fs = compile(GL_FRAGMENT_SHADER, fsPath, defines, error);
+  const GLuint vs = compile(GL_VERTEX_SHADER, vsPath, defines, error);
+  const GLuint fs = vs ? compile(GL_FRAGMENT_SHADER, fsPath, defines, error) : 0;
   if (!fs) {
-    glDeleteShader(vs);
+    glDeleteShader(vs);  // GL ignores 0 (the vertex shader failed)
     return R::fail(error);
   }
   std::unique_ptr<Program> p(new Program());
   p->id_ = glCreateProgram();
-  glAttachShader(p->id_, vs);
-  glAttachShader(p->id_, fs);
+  for (GLuint s : {vs, fs}) glAttachShader(p->id_, s);
   glLinkProgram(p->id_);
-  glDetachShader(p->id_, vs);
-  glDetachShader(p->id_, fs);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  for (GLuint s : {vs, fs}) {
+    glDetachShader(p->id_, s);
+    glDeleteShader(s);
+  }
   GLint ok = 0;
   glGetProgramiv(p->id_, GL_LINK_STATUS, &ok);
   if (!ok) return R::fail(vsPath + " + " + fsPath + ": link failed:\n" + infoLog(p->id_, glGetProgramiv, glGetProgramInfoLog));
