@@ -164,7 +164,7 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
   forEachDrawnSkin(scene, palettes, [&](JointPalette& p, const Skin& skin, size_t n) {
     p.skin = scene.nodes[n].skin;
     p.scale = 1.0f;
-    p.uniform = true;
+    bool uniform = true;  // the joints' scales agree
     p.motors.resize(skin.joints.size() * 8);
     const Motor toNode = relativeToNode ? mk().reverse_m(world[n].motor) : Motor();
     const bool general = rig.generalSkin[size_t(p.skin)] && exactWorld;
@@ -183,10 +183,10 @@ std::vector<JointPalette> jointPalettes(const Scene& scene, const Rig& rig,
       ScaledMotor m = jointMotor(j);
       if (relativeToNode) m.motor = gpMotors(toNode, m.motor);
       if (j == 0) p.scale = m.scale;
-      else if (std::fabs(m.scale - p.scale) > float(kSimilarityTolerance) * std::fabs(p.scale)) p.uniform = false;
+      else if (std::fabs(m.scale - p.scale) > float(kSimilarityTolerance) * std::fabs(p.scale)) uniform = false;
       store(j, m.motor);
     }
-    p.fallback = general || !p.uniform || !(p.scale > 0.0f);
+    p.fallback = general || !uniform || !(p.scale > 0.0f);
     if (!p.fallback) return;
     // Every joint as motor + linear part, in world space: exact per joint (linear_fallback.h).
     p.linear.resize(skin.joints.size() * 24);

@@ -72,7 +72,6 @@ struct JointPalette {
   std::vector<float> motors;   // 8 floats per joint: joint world motor * inverse-bind motor
                                // (relativeToNode: reverse(node world motor) * that)
   float scale = 1.0f;          // the skin's uniform scale (joint world scale * bind scale)
-  bool uniform = true;         // false: the joints' scales differ
   // Not one common positive uniform scale (joint scales differ, or a joint's transform is not a
   // similarity, or negative): every joint is a LinearTransform (linear_fallback.h), `motors`
   // holding its motor and `linear` its 24 floats (packLinear); always world space (no

@@ -170,7 +170,7 @@ TEST(MotorSkinning, PaletteMatchesMatrixPalette) {
     const glm::vec3 got = toGlm(mk().sw_mp(m, V3(q.x, q.y, q.z)));
     EXPECT_LT(glm::length(got - glm::vec3(want * glm::vec4(p, 1.0f))), 1e-5f) << "joint " << j;
   }
-  // The two joints' scales differ (0.8 vs 1): reported, joint 0's is used.
-  EXPECT_FALSE(palettes[0].uniform);
+  // The two joints' scales differ (0.8 vs 1): the palette takes the per-joint fallback; scale is joint 0's.
+  EXPECT_TRUE(palettes[0].fallback);
   EXPECT_NEAR(palettes[0].scale, 0.8f, 1e-6f);
 }
