@@ -92,12 +92,7 @@ struct Expander {
 
 std::string shaderDir() {
   const char* env = std::getenv("MB_SHADER_DIR");
-  if (env && *env) return env;
-#ifdef MB_SHADER_DIR
-  return MB_SHADER_DIR;
-#else
-  return "shaders";
-#endif
+  return env && *env ? env : MB_SHADER_DIR;  // the macro: shaders/CMakeLists.txt defines it
 }
 
 Result<ExpandedSource> expandShaderFile(const std::string& path, const Defines& defines) {
@@ -134,11 +129,9 @@ std::string mapLog(const std::string& log, const std::vector<std::string>& files
     std::smatch m;
     std::string mapped = line;
     if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia)) {
-      size_t id = std::stoul(m[1].str());
-      bool hasColumn = m.size() == 5;
-      if (id < files.size())
-        mapped = files[id] + ":" + m[2].str() + (hasColumn ? ":" + m[3].str() : "") + ": " +
-                 m[m.size() - 1].str();
+      const size_t id = std::stoul(m[1].str());
+      if (id < files.size())  // Mesa's has a column, m[3]
+        mapped = files[id] + ":" + m[2].str() + (m.size() == 5 ? ":" + m[3].str() : "") + ": " + m[m.size() - 1].str();
     }
     out += mapped + "\n";
   }
