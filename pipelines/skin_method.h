@@ -1,7 +1,7 @@
-// How a pipeline blends the joints of a skinned vertex, as its vertex shader does. Each pipeline
-// says it in its registry line (registry.cpp), so a new variant declares its method where it is
-// registered. The two methods pose a skinned mesh differently by design, so a skinned frame is
-// judged against its own method's reference (harness/render/skin_judgement.h).
+// How a pipeline blends the joints of a skinned vertex, as its vertex shader does: declared in
+// its registry entry (PipelineEntry::skin), where a new variant is registered. The two methods
+// pose a skinned mesh differently by design, so a skinned frame is judged against its own
+// method's reference (harness/render/skin_judgement.h).
 #pragma once
 #include <string>
 
