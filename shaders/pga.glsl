@@ -171,7 +171,7 @@ point sw_mo(motor a) {
 // World normal (column 0) and tangent (column 1) from a tangent-frame rotor that maps x to the
 // tangent and z to the normal: sw_mz and sw_mx sharing products; both SCALED BY 0.5.
 // The handedness is not in here: it is the sign of the vertex rotor's scalar part
-// (pipelines/motor/companion.h, decodeTangentRotor).
+// (shaders/motor_transform.glsl, motorHandedness).
 // measured: 9 mul, 8 add (paper: 9, 8)
 mat2x3 extractNormalTangent(motor a) {
   float yw = a[0].y * a[0].w;

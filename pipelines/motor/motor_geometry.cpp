@@ -25,7 +25,7 @@ void MotorGeometry::upload(const Scene& scene, const MotorVariant& variant, Morp
     auto format = [&stats](const Primitive& p) {
       VertexStream stream = interleaveVertices(p);
       stats.zeroScalarFrames += stream.zeroScalarFrames;
-      stats.biasedFrames += countBiasedFrames(stream.data);
+      stats.biasedFrames += stream.biasedFrames;
       return gl::VertexFormat{std::move(stream.data), {{0, 3}, {1, 4}, {2, 2}}};  // position, tangent rotor, uv0
     };
     vertices.upload(scene, format, stats);

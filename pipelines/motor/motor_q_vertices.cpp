@@ -12,19 +12,12 @@ void quantizeRotor(const glm::vec4& rotor, int16_t out[4]) {
   for (int i = 0; i < 4; ++i) out[i] = gl::snorm16(rotor[i]);
 }
 
-int countBiasedFrames(const std::vector<float>& motorVertices) {
-  int n = 0;
-  for (size_t v = 3; v < motorVertices.size(); v += size_t(kFloatsPerVertex))
-    n += std::abs(motorVertices[v]) == companion::kMinTangentScalar;
-  return n;
-}
-
 gl::PackedStream interleaveQuantized(const Primitive& p) {
   gl::PackedStream out;
   out.bytes = gl::interleave<uint8_t>(p, 28, [&](auto& bytes, size_t v) {
     const glm::vec4 r = vertexRotor(p, v, out.zeroScalarFrames);
     // vertexRotor applies the bias rule already: a biased rotor's scalar is exactly
-    // +-kMinTangentScalar (as countBiasedFrames counts it).
+    // +-kMinTangentScalar (as motor::interleaveVertices counts it).
     out.biasedFrames += std::abs(r.x) == companion::kMinTangentScalar;
     int16_t q[4];
     quantizeRotor(r, q);

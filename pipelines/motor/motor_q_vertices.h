@@ -18,10 +18,6 @@ namespace mb::motor {
 // The rotor as int16 SNORM, component order (s, e23, e31, e12).
 void quantizeRotor(const glm::vec4& rotor, int16_t out[4]);
 
-// Frames of motor::interleaveVertices' float stream that the bias rule changed (their scalar
-// is exactly +-1/32767, where companion::encodeTangentRotor puts a clamped one).
-int countBiasedFrames(const std::vector<float>& motorVertices);
-
 // `p`'s vertices in motor_q's layout (gl::snormFrameAttributes, 28 bytes per vertex; rotors as
 // motor::vertexRotor encodes them, a missing uv0 (0, 0)).
 gl::PackedStream interleaveQuantized(const Primitive& p);
