@@ -1,12 +1,16 @@
 #include "pipelines/gl/frame_vertices.h"
 
 #include <cmath>
+#include <utility>
 
 namespace mb::gl {
 
-std::vector<float> interleaveVertices(const Primitive& p) {
+VertexFormat floatFrameFormat(const Primitive& p) {
   const bool tangent = !p.tangents.empty();
-  return interleave<float>(p, tangent ? 12 : 8, [&](auto& out, size_t v) {
+  std::vector<PackedAttribute> attributes{{0, 3}, {1, 3}};
+  if (tangent) attributes.push_back({2, 4});
+  attributes.push_back({3, 2});
+  std::vector<float> data = interleave<float>(p, tangent ? 12 : 8, [&](auto& out, size_t v) {
     const glm::vec3 n = v < p.normals.size() ? p.normals[v] : glm::vec3(0, 0, 1);
     const glm::vec3& x = p.positions[v];
     out.insert(out.end(), {x.x, x.y, x.z, n.x, n.y, n.z});
@@ -18,6 +22,7 @@ std::vector<float> interleaveVertices(const Primitive& p) {
     const glm::vec2 uv = vertexUv(p, v);
     out.insert(out.end(), {uv.x, uv.y});
   });
+  return VertexFormat{std::move(data), attributes, tangent ? 0 : 1};
 }
 
 VertexFrame vertexFrame(const Primitive& p, size_t v) {
@@ -32,14 +37,6 @@ VertexFrame vertexFrame(const Primitive& p, size_t v) {
   const float len = glm::length(c);
   f.tangent = glm::vec4(len > 0.0f ? c / len : glm::vec3(1, 0, 0), 1.0f);
   return f;
-}
-
-VertexFormat floatFrameFormat(const Primitive& p) {
-  const bool tangent = !p.tangents.empty();
-  std::vector<PackedAttribute> attributes{{0, 3}, {1, 3}};
-  if (tangent) attributes.push_back({2, 4});
-  attributes.push_back({3, 2});
-  return VertexFormat{interleaveVertices(p), attributes, tangent ? 0 : 1};
 }
 
 }  // namespace mb::gl

@@ -14,11 +14,6 @@
 
 namespace mb::gl {
 
-// Interleaves `p`'s streams: position, normal, tangent (only when `p` has tangents), uv0.
-// Absent streams are filled so every vertex has the same layout: missing uv0 becomes (0, 0),
-// a missing normal (0, 0, 1).
-std::vector<float> interleaveVertices(const Primitive& p);
-
 // The frame of vertex v as the full-frame vertices (qtangent, matrix_c and the motor family)
 // fill it: a missing normal (0, 0, 1), a missing tangent any unit vector perpendicular to the
 // normal (w = +1; no normal map samples it), so every pipeline shades the same frames.
@@ -40,8 +35,9 @@ template <class T, class Encode> std::vector<T> interleave(const Primitive& p, s
   return out;
 }
 
-// interleaveVertices(p) with its attributes (locations 0 position, 1 normal, 2 tangent when
-// uploaded, 3 uv0) and variant 1 when it has no tangent (the shaders' MB_NO_TANGENT).
+// `p`'s streams interleaved: position, normal, tangent (only when `p` has tangents), uv0, at
+// locations 0, 1, 2, 3 (a missing uv0 (0, 0), a missing normal (0, 0, 1)); variant 1 when it has
+// no tangent (the shaders' MB_NO_TANGENT).
 VertexFormat floatFrameFormat(const Primitive& p);
 
 }  // namespace mb::gl

@@ -82,11 +82,4 @@ GLint Program::uniform(const std::string& name) const {
   return loc;
 }
 
-bool Program::bindStorageBlock(const std::string& block, GLuint binding) const {
-  GLuint index = glGetProgramResourceIndex(id_, GL_SHADER_STORAGE_BLOCK, block.c_str());
-  if (index == GL_INVALID_INDEX) return false;
-  glShaderStorageBlockBinding(id_, index, binding);
-  return true;
-}
-
 }  // namespace mb::gl

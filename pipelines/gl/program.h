@@ -32,8 +32,6 @@ public:
   void use() const { glUseProgram(id_); }
   // Location of a uniform (cached); -1 when the program does not use it.
   GLint uniform(const std::string& name) const;
-  // Binds the shader storage block `block` to binding point `binding`; false when inactive.
-  bool bindStorageBlock(const std::string& block, GLuint binding) const;
 
 private:
   Program() = default;

@@ -130,7 +130,7 @@ public:
     const MK::vec4 k = motor::projectionConstants(view);
     // An orthographic View draws with the MB_ORTHOGRAPHIC programs (a hand-made View on a scene
     // without an orthographic camera builds them here; prepare() did for the others).
-    if (view.orthographic && !orthographicLinked_ && !linkPrograms(true)) return;
+    if (view.orthographic && !orthographic_.at[gl::kRigid][kUniform][0] && !linkPrograms(true)) return;
     MotorFrame frame{{}, view, worldToView, k, view.orthographic ? orthographic_ : programs_};
     drawList(*this, frame, geometry_.vertices, geometry_.morph, pose_.palettes);
   }
@@ -262,10 +262,10 @@ private:
     return d;
   }
 
-  // The programs of one projection (orthographic: the MB_ORTHOGRAPHIC ones): every draw kind and
-  // scale form (instanced draws have no linear form), patch programs for scenes with Bezier patches.
+  // The programs of one projection (orthographic: the MB_ORTHOGRAPHIC ones), kept when all link: every
+  // draw kind and scale form (instanced: no linear form), patch programs for scenes with Bezier patches.
   Status linkPrograms(bool orthographic) {
-    gl::ProgramGrid& grid = orthographic ? orthographic_ : programs_;
+    gl::ProgramGrid grid;
     Status linked = linkGrid(grid, "motor.vs", [](int kind) { return kind == gl::kInstanced ? 2 : 3; },
                              [&](int kind, int form, bool morph) { return defines(kind, form, morph, orthographic); });
     for (int fallback = 0; linked && fallback < 2 && gl::hasPatches(*scene_); ++fallback) {
@@ -274,7 +274,7 @@ private:
       if (orthographic) d.push_back({"MB_ORTHOGRAPHIC", ""});
       grid.patch[fallback] = link(linked, "motor_patch.vs", d);
     }
-    if (orthographic) orthographicLinked_ = bool(linked);
+    if (linked) (orthographic ? orthographic_ : programs_) = grid;
     return linked;
   }
 
@@ -317,13 +317,11 @@ private:
     geometry_.release();
     linearBuffers_.release();
     orthographic_ = {};
-    orthographicLinked_ = false;
     releaseShared();
   }
 
   MotorVariant variant_;
   gl::ProgramGrid orthographic_;  // programs_ with MB_ORTHOGRAPHIC, for an orthographic View
-  bool orthographicLinked_ = false;
   MorphMethod morphMethod_ = MorphMethod::PipelineDefault;
   gl::PaletteBuffers linearBuffers_;             // per palette: the fallback's 24 floats per joint
   std::vector<std::vector<motor::ScaledMotor>> instanceMotors_;  // per node: fromTRS(instance)

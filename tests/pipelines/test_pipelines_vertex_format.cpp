@@ -59,11 +59,11 @@ TEST(MatrixVertexFormat, TangentOnlyWhereTheSampleViewerHasOne) {
   p.uv0 = {{0.25f, 0.5f}, {0.75f, 1.0f}};
   EXPECT_EQ(gl::floatFrameFormat(p).variant, 1);  // MB_NO_TANGENT: no tangent attribute
   // Hand-written layout: position, normal, uv.
-  EXPECT_EQ(gl::interleaveVertices(p),
+  EXPECT_EQ(gl::floatFrameFormat(p).data,
             (std::vector<float>{1, 2, 3, 0, 0, 1, 0.25f, 0.5f, 4, 5, 6, 0, 1, 0, 0.75f, 1.0f}));
   p.tangents = {{1, 0, 0, 1}, {0, 0, 1, -1}};
   EXPECT_EQ(gl::floatFrameFormat(p).variant, 0);
-  EXPECT_EQ(gl::interleaveVertices(p),
+  EXPECT_EQ(gl::floatFrameFormat(p).data,
             (std::vector<float>{1, 2, 3, 0, 0, 1, 1, 0, 0, 1, 0.25f, 0.5f,  //
                                 4, 5, 6, 0, 1, 0, 0, 0, 1, -1, 0.75f, 1.0f}));
 }
