@@ -22,15 +22,14 @@ Status GltfPipeline::endPrepare(const Scene& scene) {
 CachedProgram* GltfPipeline::link(Status& status, const std::string& vs, const Defines& defines) {
   std::string key = vs;
   for (const auto& [name, value] : defines) key += '\n' + name + '=' + value;
-  std::unique_ptr<CachedProgram>& cached = cache_[key];
-  if (cached) return cached.get();
+  if (auto found = cache_.find(key); found != cache_.end()) return found->second.get();
   auto program = Program::fromFiles(vs, "forward.fs", defines);
   if (!program) {
     status = Status::fail(program.error());
     return nullptr;
   }
-  cached = std::make_unique<CachedProgram>(CachedProgram{program.take()});
-  return cached.get();
+  // Stored only once linked: a key that failed is linked (and fails) again when asked for.
+  return (cache_[key] = std::make_unique<CachedProgram>(CachedProgram{program.take()})).get();
 }
 
 Status GltfPipeline::linkGrid(ProgramGrid& grid, const std::string& vs, const std::function<int(int)>& variants,
